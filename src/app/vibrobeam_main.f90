@@ -1,0 +1,182 @@
+!> vibrobeam: dynamics of a clamped-free Euler-Bernoulli beam between rigid obstacles.
+!!
+!! Command line (INTERFACE.md): `vibrobeam INPUT.nml`, `vibrobeam --check INPUT.nml`,
+!! `vibrobeam --help`, `vibrobeam --version`. This program is the only place where an
+!! error becomes a message on stderr and an exit status.
+program vibrobeam_main
+   use vibrobeam_kinds, only: dp, error_unit, output_unit
+   use vibrobeam_status, only: exit_ok, exit_other_error, exit_invalid_input, message_length
+   use vibrobeam_version, only: version_string
+   use vibrobeam_scene, only: scene_type, validate_scene, format_scene, rho_s_of, ei_of
+   use vibrobeam_input, only: read_scene
+   use vibrobeam_model, only: beam_model, build_model
+   use vibrobeam_contact_points, only: contact_set, build_contact_points, contact_value
+   use vibrobeam_initial_state, only: mode_field
+   use vibrobeam_modes, only: compute_modes
+   use vibrobeam_results, only: result_files
+   implicit none
+
+   type(scene_type) :: scene
+   type(beam_model) :: model
+   type(contact_set) :: contacts
+   character(len=message_length) :: errmsg
+   character(len=:), allocatable :: input_file, warnings
+   logical :: check_only
+   integer :: stat
+
+   call parse_command_line(input_file, check_only)
+   call read_scene(input_file, scene, stat, errmsg)
+   if (stat /= 0) call fail(exit_invalid_input, errmsg)
+   call validate_scene(scene, stat, errmsg)
+   if (stat /= 0) call fail(exit_invalid_input, errmsg)
+   call build_model(scene%basis, scene%elements, scene%length, rho_s_of(scene), ei_of(scene), model, stat, errmsg)
+   if (stat /= 0) call fail(exit_invalid_input, errmsg)
+   warnings = ''
+   call build_contact_points(scene, model, contacts, warnings, stat, errmsg)
+   if (stat /= 0) call fail(exit_invalid_input, errmsg)
+   call check_initial_state(stat, errmsg)
+   if (stat /= 0) call fail(exit_invalid_input, errmsg)
+   if (len(warnings) > 0) write (error_unit, '(a)', advance='no') prefixed(warnings, 'vibrobeam: warning: ')
+
+   if (check_only) then
+      call print_resolved_scene()
+      stop exit_ok
+   end if
+
+   select case (scene%kind)
+   case ('modes')
+      call run_modes()
+   case default
+      call fail(exit_invalid_input, '&analysis kind = '''//trim(scene%kind)// &
+                ''' is not available in version '//version_string//'; use ''modes''')
+   end select
+
+contains
+
+   !> Print `message` on stderr as 'vibrobeam: message' and stop with `code`.
+   subroutine fail(code, message)
+      integer, intent(in) :: code
+      character(len=*), intent(in) :: message
+      write (error_unit, '(a)') 'vibrobeam: '//trim(message)
+      if (code == exit_invalid_input) write (error_unit, '(a)') 'vibrobeam: invalid input, nothing written'
+      stop code, quiet=.true.
+   end subroutine fail
+
+   !> Every line of `text` with `prefix` in front.
+   pure function prefixed(text, prefix) result(out)
+      character(len=*), intent(in) :: text, prefix
+      character(len=:), allocatable :: out
+      integer :: start, finish
+      out = ''
+      start = 1
+      do while (start <= len(text))
+         finish = index(text(start:), new_line('a'))
+         if (finish == 0) finish = len(text) - start + 2
+         out = out//prefix//text(start:start + finish - 2)//new_line('a')
+         start = start + finish
+      end do
+   end function prefixed
+
+   subroutine parse_command_line(file, check)
+      character(len=:), allocatable, intent(out) :: file
+      logical, intent(out) :: check
+      character(len=4096) :: argument
+      integer :: count, length
+      count = command_argument_count()
+      check = .false.
+      if (count == 0) call usage_error('no input file given')
+      call get_command_argument(1, argument, length)
+      select case (trim(argument))
+      case ('--help', '-h')
+         call print_help()
+         stop exit_ok
+      case ('--version')
+         write (output_unit, '(a)') 'vibrobeam '//version_string
+         stop exit_ok
+      case ('--check')
+         if (count /= 2) call usage_error('--check takes exactly one input file')
+         check = .true.
+         call get_command_argument(2, argument, length)
+      case default
+         if (argument(1:1) == '-') call usage_error('unknown option '''//trim(argument)//'''')
+         if (count /= 1) call usage_error('give exactly one input file')
+      end select
+      if (length > len(argument)) call usage_error('input file name too long')
+      file = argument(1:length)
+   end subroutine parse_command_line
+
+   subroutine usage_error(message)
+      character(len=*), intent(in) :: message
+      write (error_unit, '(a)') 'vibrobeam: '//message
+      write (error_unit, '(a)') 'usage: vibrobeam INPUT.nml | vibrobeam --check INPUT.nml | vibrobeam --help | --version'
+      stop exit_other_error, quiet=.true.
+   end subroutine usage_error
+
+   subroutine print_help()
+      write (output_unit, '(a)') &
+         'vibrobeam '//version_string//': an elastic Euler-Bernoulli beam, clamped at x = 0 and free at', &
+         'x = L, vibrating between rigid obstacles (Newton impact law).', &
+         '', &
+         'usage:', &
+         '  vibrobeam INPUT.nml            run the scene described by INPUT.nml', &
+         '  vibrobeam --check INPUT.nml    validate the input, print the resolved scene, run nothing', &
+         '  vibrobeam --help | --version', &
+         '', &
+         'namelist groups: &beam &mesh &analysis &obstacles &impact &time &initial &load &output', &
+         '(every variable is optional; see docs/input.md for units, defaults and ranges).', &
+         '', &
+         'exit status: 0 success, 2 invalid input (nothing written), 3 numerical failure', &
+         '(results up to the failure kept, marked failed), 1 anything else.'
+   end subroutine print_help
+
+   subroutine print_resolved_scene()
+      write (output_unit, '(a)') 'vibrobeam '//version_string//': input '''//input_file//''' is valid', &
+         'resolved scene:'
+      write (output_unit, '(a)', advance='no') format_scene(scene)
+      write (output_unit, '(a,i0,a,i0,a)') 'discrete model: ', model%elements, ' '//trim(model%basis)// &
+         ' elements, ', model%unknowns, ' unknowns'
+      write (output_unit, '(a,i0)') 'contact points: ', contacts%count
+   end subroutine print_resolved_scene
+
+   !> The initial displacement must satisfy every obstacle (SPEC §1: u0 in K).
+   subroutine check_initial_state(stat, errmsg)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp), allocatable :: u0(:)
+      real(dp) :: value
+      integer :: c
+      stat = 0
+      errmsg = ''
+      if (scene%kind /= 'dynamics' .or. scene%displacement /= 'mode') return
+      u0 = mode_field(model, scene%displacement_mode, scene%displacement_amplitude)
+      do c = 1, contacts%count
+         value = contact_value(contacts, c, u0)
+         if (value < contacts%lower(c) .or. value > contacts%upper(c)) then
+            write (errmsg, '(a,g0.6,a,g0.6,a,g0.6,a,g0.6,a)') '&initial displacement_amplitude = ', &
+               scene%displacement_amplitude, ' puts the beam at u = ', value, ' m at x = ', contacts%x(c), &
+               ' m, outside the obstacles there [', contacts%lower(c), ', '
+            write (errmsg, '(a,g0.6,a)') trim(errmsg), contacts%upper(c), '] m'
+            stat = 1
+            return
+         end if
+      end do
+   end subroutine check_initial_state
+
+   subroutine run_modes()
+      real(dp), allocatable :: omega(:), shapes(:,:), vectors(:,:)
+      type(result_files) :: files
+      integer(kind=8) :: start, finish, rate
+      call system_clock(start, rate)
+      call compute_modes(model, scene%modes, omega, shapes, vectors, stat, errmsg)
+      if (stat /= 0) call fail(exit_other_error, errmsg)
+      call files%open(scene, model, stat, errmsg)
+      if (stat == 0) call files%write_modes(model, omega, shapes, stat, errmsg)
+      call system_clock(finish)
+      if (stat == 0) call files%commit('ok', 0, real(finish - start, dp)/rate, 0, 0, stat, errmsg)
+      if (stat /= 0) then
+         call files%discard()
+         call fail(exit_other_error, errmsg)
+      end if
+      write (output_unit, '(a,i0,a)') 'vibrobeam: ', size(omega), ' natural modes written to '//trim(scene%file)
+   end subroutine run_modes
+end program vibrobeam_main

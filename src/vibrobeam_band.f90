@@ -1,0 +1,150 @@
+!> Symmetric band matrices in LAPACK lower band storage, and the LAPACK/BLAS calls on them.
+!!
+!! Storage convention (Reference-LAPACK, UPLO = 'L'): the entry A(i,j), j <= i <= j+kd, is
+!! held in `lower(1+i-j, j)`; `lower` has kd+1 rows and n columns. The mass, stiffness and
+!! iteration matrices of vibrobeam (SPEC §2, §3) all live in this form; no dense n x n
+!! matrix is ever formed from them.
+module vibrobeam_band
+   use vibrobeam_kinds, only: dp
+   implicit none
+   private
+   public :: symmetric_band, band_cholesky
+   public :: band_allocate, band_add, band_entry, band_matvec, band_combination
+   public :: band_factor, band_solve, band_solve_many
+
+   !> A symmetric n x n matrix with kd sub-diagonals, lower band storage.
+   type :: symmetric_band
+      integer :: n = 0              !! order of the matrix
+      integer :: kd = 0             !! number of sub-diagonals
+      real(dp), allocatable :: lower(:,:)  !! (kd+1, n) lower band storage
+   end type symmetric_band
+
+   !> Cholesky factor L (A = L L^T) of a symmetric positive definite band matrix, as
+   !! returned by LAPACK dpbtrf with UPLO = 'L'.
+   type :: band_cholesky
+      integer :: n = 0
+      integer :: kd = 0
+      real(dp), allocatable :: factor(:,:)  !! (kd+1, n)
+   end type band_cholesky
+
+   interface
+      subroutine dpbtrf(uplo, n, kd, ab, ldab, info)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, kd, ldab
+         real(dp), intent(inout) :: ab(ldab, *)
+         integer, intent(out) :: info
+      end subroutine dpbtrf
+      subroutine dpbtrs(uplo, n, kd, nrhs, ab, ldab, b, ldb, info)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, kd, nrhs, ldab, ldb
+         real(dp), intent(in) :: ab(ldab, *)
+         real(dp), intent(inout) :: b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dpbtrs
+      subroutine dsbmv(uplo, n, k, alpha, a, lda, x, incx, beta, y, incy)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, k, lda, incx, incy
+         real(dp), intent(in) :: alpha, beta
+         real(dp), intent(in) :: a(lda, *), x(*)
+         real(dp), intent(inout) :: y(*)
+      end subroutine dsbmv
+   end interface
+
+contains
+
+   !> Make `a` the n x n zero matrix with kd sub-diagonals.
+   pure subroutine band_allocate(a, n, kd)
+      type(symmetric_band), intent(out) :: a
+      integer, intent(in) :: n, kd
+      a%n = n
+      a%kd = kd
+      allocate (a%lower(kd + 1, n), source=0.0_dp)
+   end subroutine band_allocate
+
+   !> Add `value` to A(i,j) (and implicitly to A(j,i)); only the lower triangle is stored,
+   !! so a call with i < j adds to A(j,i). Entries outside the band are an error of the
+   !! caller and are caught by -fcheck=bounds in debug builds.
+   pure subroutine band_add(a, i, j, value)
+      type(symmetric_band), intent(inout) :: a
+      integer, intent(in) :: i, j
+      real(dp), intent(in) :: value
+      a%lower(1 + max(i, j) - min(i, j), min(i, j)) = a%lower(1 + max(i, j) - min(i, j), min(i, j)) + value
+   end subroutine band_add
+
+   !> A(i,j) of a symmetric band matrix (zero outside the band).
+   pure function band_entry(a, i, j) result(value)
+      type(symmetric_band), intent(in) :: a
+      integer, intent(in) :: i, j
+      real(dp) :: value
+      if (abs(i - j) > a%kd) then
+         value = 0.0_dp
+      else
+         value = a%lower(1 + max(i, j) - min(i, j), min(i, j))
+      end if
+   end function band_entry
+
+   !> y = A x through BLAS dsbmv.
+   subroutine band_matvec(a, x, y)
+      type(symmetric_band), intent(in) :: a
+      real(dp), intent(in) :: x(:)   !! (n)
+      real(dp), intent(out) :: y(:)  !! (n)
+      y = 0.0_dp
+      if (a%n == 0) return
+      call dsbmv('L', a%n, a%kd, 1.0_dp, a%lower, a%kd + 1, x, 1, 0.0_dp, y, 1)
+   end subroutine band_matvec
+
+   !> c = alpha a + beta b for two band matrices of the same order (the band of c is the
+   !! wider of the two).
+   pure function band_combination(alpha, a, beta, b) result(c)
+      real(dp), intent(in) :: alpha, beta
+      type(symmetric_band), intent(in) :: a, b
+      type(symmetric_band) :: c
+      call band_allocate(c, a%n, max(a%kd, b%kd))
+      c%lower(1:a%kd + 1, :) = alpha*a%lower
+      c%lower(1:b%kd + 1, :) = c%lower(1:b%kd + 1, :) + beta*b%lower
+   end function band_combination
+
+   !> Cholesky factorization A = L L^T through LAPACK dpbtrf. stat = 0 on success,
+   !! stat = k > 0 if the leading minor of order k is not positive definite.
+   subroutine band_factor(a, chol, stat, errmsg)
+      type(symmetric_band), intent(in) :: a
+      type(band_cholesky), intent(out) :: chol
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      chol%n = a%n
+      chol%kd = a%kd
+      chol%factor = a%lower
+      errmsg = ''
+      stat = 0
+      if (a%n == 0) return
+      call dpbtrf('L', a%n, a%kd, chol%factor, a%kd + 1, stat)
+      if (stat > 0) then
+         write (errmsg, '(a,i0,a)') 'band Cholesky factorization failed: leading minor of order ', &
+            stat, ' is not positive definite'
+      else if (stat < 0) then
+         write (errmsg, '(a,i0)') 'dpbtrf rejected argument ', -stat
+      end if
+   end subroutine band_factor
+
+   !> Overwrite x with A^{-1} x, given the Cholesky factor of A (LAPACK dpbtrs).
+   subroutine band_solve(chol, x)
+      type(band_cholesky), intent(in) :: chol
+      real(dp), intent(inout) :: x(:)  !! (n) right-hand side in, solution out
+      integer :: info
+      if (chol%n == 0) return
+      call dpbtrs('L', chol%n, chol%kd, 1, chol%factor, chol%kd + 1, x, chol%n, info)
+   end subroutine band_solve
+
+   !> Overwrite every column of x with A^{-1} times it (LAPACK dpbtrs, several right-hand
+   !! sides in one call).
+   subroutine band_solve_many(chol, x)
+      type(band_cholesky), intent(in) :: chol
+      real(dp), intent(inout) :: x(:,:)  !! (n, nrhs)
+      integer :: info
+      if (chol%n == 0 .or. size(x, 2) == 0) return
+      call dpbtrs('L', chol%n, chol%kd, size(x, 2), chol%factor, chol%kd + 1, x, chol%n, info)
+   end subroutine band_solve_many
+end module vibrobeam_band

@@ -1,0 +1,144 @@
+!> From obstacles to discrete constraints (SPEC §2, "Discrete constraints" K_h).
+!!
+!! A node that an obstacle covers becomes a contact point c with bounds
+!! lower(c) <= u_h(x_c) <= upper(c). Only covered nodes become contact points: a scene with
+!! one obstacle at the tip has one contact point. Rules (also in docs/input.md):
+!! - punctual obstacle (x_from = x_to): acts at the nearest node; a warning says so when the
+!!   obstacle is not on a node (further than 1e-9 h);
+!! - longitudinal obstacle: acts at every node in [x_from, x_to] (1e-9 h tolerance), its
+!!   level interpolated linearly; one covering no node acts at the node nearest its middle,
+!!   with a warning;
+!! - several obstacles on the same side of a node: the most restrictive one counts;
+!! - the clamped node x = 0 never moves: an obstacle there is only checked (u = 0 must be
+!!   admissible).
+module vibrobeam_contact_points
+   use vibrobeam_kinds, only: dp
+   use vibrobeam_scene, only: scene_type
+   use vibrobeam_model, only: beam_model, node_row
+   implicit none
+   private
+   public :: contact_set, build_contact_points, contact_value, no_bound
+
+   real(dp), parameter :: no_bound = huge(1.0_dp)   !! |bound| of a side with no obstacle
+
+   !> The contact points of a scene, ordered by node.
+   type :: contact_set
+      integer :: count = 0
+      integer, allocatable :: node(:)        !! node index i (1..N), x_c = x_i
+      real(dp), allocatable :: x(:)          !! position (m)
+      real(dp), allocatable :: lower(:)      !! g1(x_c) (m), -no_bound if no obstacle below
+      real(dp), allocatable :: upper(:)      !! g2(x_c) (m), +no_bound if no obstacle above
+      integer, allocatable :: dofs(:,:)      !! (4, count) unknowns of row H_c (0 = none)
+      real(dp), allocatable :: weights(:,:)  !! (4, count) coefficients of row H_c
+   end type contact_set
+
+contains
+
+   !> Build the contact points of `scene` on `model`'s mesh. Warnings (one line each) are
+   !! appended to `warnings`; stat = 1 with a message when the obstacles contradict each
+   !! other (a 'below' level at or above an 'above' level) or the clamp.
+   subroutine build_contact_points(scene, model, contacts, warnings, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(beam_model), intent(in) :: model
+      type(contact_set), intent(out) :: contacts
+      character(len=:), allocatable, intent(inout) :: warnings
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp) :: lower(0:model%elements), upper(0:model%elements), level, tolerance, xi
+      integer :: lower_source(0:model%elements), upper_source(0:model%elements)
+      integer :: i, k, first, last, c
+      character(len=160) :: line
+      stat = 0
+      errmsg = ''
+      lower = -no_bound
+      upper = no_bound
+      lower_source = 0
+      upper_source = 0
+      tolerance = 1e-9_dp*model%h
+      do k = 1, size(scene%obstacles)
+         associate (o => scene%obstacles(k))
+            if (o%x_to - o%x_from <= tolerance) then
+               first = nint(o%x_from/model%h)
+               last = first
+               if (abs(model%x(first + 1) - o%x_from) > tolerance) then
+                  write (line, '(a,i0,a,g0.6,a,g0.6,a)') 'obstacle ', k, ' at x = ', o%x_from, &
+                     ' m is not on a node; it acts at the nearest node x = ', model%x(first + 1), ' m'
+                  warnings = warnings//trim(line)//new_line('a')
+               end if
+            else
+               first = ceiling((o%x_from - tolerance)/model%h)
+               last = floor((o%x_to + tolerance)/model%h)
+               if (last < first) then
+                  first = nint(0.5_dp*(o%x_from + o%x_to)/model%h)
+                  last = first
+                  write (line, '(a,i0,a,g0.6,a)') 'obstacle ', k, ' covers no node; it acts at the node x = ', &
+                     model%x(first + 1), ' m nearest its middle'
+                  warnings = warnings//trim(line)//new_line('a')
+               end if
+            end if
+            do i = first, last
+               if (o%x_to - o%x_from <= tolerance) then
+                  level = o%level_from
+               else
+                  xi = min(1.0_dp, max(0.0_dp, (model%x(i + 1) - o%x_from)/(o%x_to - o%x_from)))
+                  level = (1 - xi)*o%level_from + xi*o%level_to
+               end if
+               if (o%side == 'below') then
+                  if (level > lower(i)) then
+                     lower(i) = level
+                     lower_source(i) = k
+                  end if
+               else
+                  if (level < upper(i)) then
+                     upper(i) = level
+                     upper_source(i) = k
+                  end if
+               end if
+            end do
+         end associate
+      end do
+      if (lower(0) > 0 .or. upper(0) < 0) then
+         write (errmsg, '(a,i0,a)') '&obstacles: obstacle ', max(lower_source(0), upper_source(0)), &
+            ' cuts the clamped end x = 0, where u = 0 always; move x_from away from 0 or its level past 0'
+         stat = 1
+         return
+      end if
+      do i = 1, model%elements
+         if (lower(i) >= upper(i)) then
+            write (errmsg, '(a,i0,a,g0.6,a,i0,a,g0.6,a,g0.6,a)') '&obstacles: the ''below'' obstacle ', &
+               lower_source(i), ' (level ', lower(i), ' m) is not under the ''above'' obstacle ', &
+               upper_source(i), ' (level ', upper(i), ' m) at x = ', model%x(i + 1), &
+               ' m; a below level must be smaller than an above level'
+            stat = 1
+            return
+         end if
+      end do
+      contacts%count = count(lower(1:) > -no_bound .or. upper(1:) < no_bound)
+      allocate (contacts%node(contacts%count), contacts%x(contacts%count), contacts%lower(contacts%count), &
+                contacts%upper(contacts%count), contacts%dofs(4, contacts%count), &
+                contacts%weights(4, contacts%count))
+      c = 0
+      do i = 1, model%elements
+         if (lower(i) <= -no_bound .and. upper(i) >= no_bound) cycle
+         c = c + 1
+         contacts%node(c) = i
+         contacts%x(c) = model%x(i + 1)
+         contacts%lower(c) = lower(i)
+         contacts%upper(c) = upper(i)
+         call node_row(i, contacts%dofs(:, c), contacts%weights(:, c))
+      end do
+   end subroutine build_contact_points
+
+   !> H_c U: the displacement of the beam at contact point c (m).
+   pure function contact_value(contacts, c, u) result(value)
+      type(contact_set), intent(in) :: contacts
+      integer, intent(in) :: c
+      real(dp), intent(in) :: u(:)
+      real(dp) :: value
+      integer :: a
+      value = 0
+      do a = 1, 4
+         if (contacts%dofs(a, c) /= 0) value = value + contacts%weights(a, c)*u(contacts%dofs(a, c))
+      end do
+   end function contact_value
+end module vibrobeam_contact_points

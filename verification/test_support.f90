@@ -1,0 +1,62 @@
+!> Shared checks of the vibrobeam test programs: each check prints one line on failure
+!! naming the quantity, its value, the reference and the tolerance; `finish` prints
+!! 'NAME: N passed, M failed' and exits non-zero when anything failed.
+module vibrobeam_test_support
+   use vibrobeam_kinds, only: dp, error_unit, output_unit
+   implicit none
+   private
+   public :: test_counter
+
+   type, public :: test_counter
+      integer :: passed = 0
+      integer :: failed = 0
+   contains
+      procedure :: check_close     !! |value - reference| <= tolerance * max(|reference|, scale)
+      procedure :: check_true
+      procedure :: finish
+   end type test_counter
+
+contains
+
+   subroutine check_close(self, name, value, reference, tolerance, scale)
+      class(test_counter), intent(inout) :: self
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: value, reference, tolerance
+      real(dp), intent(in), optional :: scale   !! floor of the relative scale (default tiny)
+      real(dp) :: size
+      size = abs(reference)
+      if (present(scale)) size = max(size, scale)
+      if (abs(value - reference) <= tolerance*size) then
+         self%passed = self%passed + 1
+      else
+         self%failed = self%failed + 1
+         write (error_unit, '(a,es23.15,a,es23.15,a,es10.3,a,es10.3)') 'FAIL '//name//': value ', value, &
+            ', reference ', reference, ', relative difference ', abs(value - reference)/max(size, tiny(size)), &
+            ', tolerance ', tolerance
+      end if
+   end subroutine check_close
+
+   subroutine check_true(self, name, condition, detail)
+      class(test_counter), intent(inout) :: self
+      character(len=*), intent(in) :: name
+      logical, intent(in) :: condition
+      character(len=*), intent(in), optional :: detail
+      if (condition) then
+         self%passed = self%passed + 1
+      else
+         self%failed = self%failed + 1
+         if (present(detail)) then
+            write (error_unit, '(a)') 'FAIL '//name//': '//detail
+         else
+            write (error_unit, '(a)') 'FAIL '//name
+         end if
+      end if
+   end subroutine check_true
+
+   subroutine finish(self, program_name)
+      class(test_counter), intent(in) :: self
+      character(len=*), intent(in) :: program_name
+      write (output_unit, '(a,i0,a,i0,a)') program_name//': ', self%passed, ' passed, ', self%failed, ' failed'
+      if (self%failed > 0) error stop 1
+   end subroutine finish
+end module vibrobeam_test_support
