@@ -21,18 +21,13 @@ contains
       integer, intent(in) :: mode
       real(dp), intent(in) :: amplitude
       real(dp) :: u(model%unknowns)
+      real(dp) :: value(model%elements), slope(model%elements)
+      integer :: i
+      do i = 1, model%elements
+         value(i) = cantilever_mode_shape(mode, model%x(i + 1), model%length, 0)
+         slope(i) = cantilever_mode_shape(mode, model%x(i + 1), model%length, 1)
+      end do
       u = amplitude*interpolate_field(model, value, slope)
-   contains
-      pure function value(x) result(phi)
-         real(dp), intent(in) :: x
-         real(dp) :: phi
-         phi = cantilever_mode_shape(mode, x, model%length, 0)
-      end function value
-      pure function slope(x) result(phi)
-         real(dp), intent(in) :: x
-         real(dp) :: phi
-         phi = cantilever_mode_shape(mode, x, model%length, 1)
-      end function slope
    end function mode_field
 
    !> Initial velocity unknowns from `&initial velocity`.

@@ -172,15 +172,13 @@ contains
    end function point_load_vector
 
    !> Unknowns of the Hermite interpolant of a field given by its value and slope at the
-   !! nodes: w_i = value(x_i), theta_i = slope(x_i).
-   function interpolate_field(model, value, slope) result(u)
+   !! nodes x_1..x_N: w_i = value(i), theta_i = slope(i).
+   pure function interpolate_field(model, value, slope) result(u)
       type(beam_model), intent(in) :: model
-      procedure(space_profile) :: value, slope
+      real(dp), intent(in) :: value(:)   !! (N) u(x_i), i = 1..N (m)
+      real(dp), intent(in) :: slope(:)   !! (N) u_x(x_i)
       real(dp) :: u(model%unknowns)
-      integer :: i
-      do i = 1, model%elements
-         u(2*i - 1) = value(model%x(i + 1))
-         u(2*i) = slope(model%x(i + 1))
-      end do
+      u(1::2) = value
+      u(2::2) = slope
    end function interpolate_field
 end module vibrobeam_model

@@ -257,7 +257,7 @@ contains
       character(len=:), allocatable :: text
       character(len=40) :: buffer, format
       real(dp) :: back
-      integer :: digits, e, ios
+      integer :: digits, e, ios, exponent
       if (ieee_is_nan(value)) then
          text = 'NaN'
          return
@@ -266,17 +266,19 @@ contains
          text = trim(adjustl(text))
          return
       end if
-      do digits = 1, 17
-         if (value == 0 .or. (abs(value) >= 1e-3_dp .and. abs(value) < 1e6_dp)) then
-            write (format, '(a,i0,a)') '(g0.', digits, ')'
+      do digits = 0, 17
+         if (abs(value) < tiny(value) .or. (abs(value) >= 1e-3_dp .and. abs(value) < 1e6_dp)) then
+            write (format, '(a,i0,a)') '(f0.', digits, ')'
          else
-            write (format, '(a,i0,a)') '(1pe0.', digits - 1, ')'
+            write (format, '(a,i0,a)') '(es30.', digits, 'e3)'
          end if
          write (buffer, format) value
          read (buffer, *, iostat=ios) back
          if (ios == 0 .and. transfer(back, 1_int64) == transfer(value, 1_int64)) exit   ! bitwise: reads back exactly
       end do
       buffer = adjustl(buffer)
+      if (buffer(1:1) == '.') buffer = '0'//buffer(1:len(buffer) - 1)
+      if (buffer(1:2) == '-.') buffer = '-0'//buffer(2:len(buffer) - 1)
       e = scan(buffer, 'Ee')
       if (e == 0) e = len_trim(buffer) + 1
       text = buffer(1:e - 1)
@@ -287,11 +289,9 @@ contains
          if (text(len(text):len(text)) == '.') text = text(1:len(text) - 1)
       end if
       if (e <= len_trim(buffer)) then
-         if (buffer(e + 1:e + 1) == '+') then
-            text = text//'e'//trim(buffer(e + 2:))
-         else
-            text = text//'e'//trim(buffer(e + 1:))
-         end if
+         read (buffer(e + 1:), *) exponent
+         write (buffer, '(i0)') exponent
+         text = text//'e'//trim(buffer)
       end if
    end function real_text
 

@@ -40,7 +40,7 @@ program vibrobeam_main
 
    if (check_only) then
       call print_resolved_scene()
-      stop exit_ok
+      stop exit_ok, quiet=.true.
    end if
 
    select case (scene%kind)
@@ -89,10 +89,10 @@ contains
       select case (trim(argument))
       case ('--help', '-h')
          call print_help()
-         stop exit_ok
+         stop exit_ok, quiet=.true.
       case ('--version')
          write (output_unit, '(a)') 'vibrobeam '//version_string
-         stop exit_ok
+         stop exit_ok, quiet=.true.
       case ('--check')
          if (count /= 2) call usage_error('--check takes exactly one input file')
          check = .true.

@@ -93,6 +93,7 @@ contains
       call build_model('hermite', elements, length, rho_s, ei, model, stat, errmsg)
       call t%check_true(trim(label)//' build_model', stat == 0, errmsg)
       call t%check_true(trim(label)//' unknowns = 2N', model%unknowns == 2*elements)
+      allocate (work(model%unknowns, model%unknowns))
       scale_m = maxval(abs(mass))
       scale_k = maxval(abs(stiffness))
       err_m = 0
