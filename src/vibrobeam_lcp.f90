@@ -8,11 +8,12 @@
 !! (SPEC §3, step 3), symmetric positive definite and small (n = number of active contact
 !! points). For such a matrix (a P-matrix) the LCP has exactly one solution.
 !!
-!! Method: block principal pivoting in the form of Júdice & Pires (Comput. Oper. Res. 21,
-!! 1994, 587-596), with Murty's least-index single principal pivot as the safeguard
-!! (Murty, Linear Algebra Appl. 1974; Cottle, Pang & Stone, *The Linear Complementarity
-!! Problem*, 1992, §4.2). A trial set I (the indices with z_i basic) defines the
-!! complementary solution
+!! Method: block principal pivoting in the form of Júdice & Pires ("A block principal
+!! pivoting algorithm for large-scale strictly monotone linear complementarity problems",
+!! Comput. Oper. Res. 21, 1994), with Murty's least-index single principal pivot as the
+!! safeguard (K. G. Murty, Opsearch 11, 1974, 123-130; Cottle, Pang & Stone, *The Linear
+!! Complementarity Problem*, 1992, ch. 4). A trial set I (the indices with z_i basic)
+!! defines the complementary solution
 !!
 !!     A_II z_I = -q_I,   z_J = 0,   w_J = A_JI z_I + q_J,   w_I = 0     (J = complement of I)
 !!
