@@ -11,8 +11,8 @@ module vibrobeam_input
    private
    public :: read_scene
 
-   character(len=*), parameter :: known_groups(9) = [character(len=9) :: 'beam', 'mesh', &
-      'analysis', 'obstacles', 'impact', 'time', 'initial', 'load', 'output']
+   character(len=*), parameter :: known_groups(10) = [character(len=9) :: 'beam', 'mesh', &
+      'analysis', 'obstacles', 'impact', 'time', 'initial', 'load', 'solver', 'output']
 
 contains
 
@@ -44,6 +44,7 @@ contains
       if (stat == 0) call read_time(unit, scene, stat, errmsg)
       if (stat == 0) call read_initial(unit, scene, stat, errmsg)
       if (stat == 0) call read_load(unit, scene, stat, errmsg)
+      if (stat == 0) call read_solver(unit, scene, stat, errmsg)
       if (stat == 0) call read_output(unit, scene, stat, errmsg)
       close (unit)
    end subroutine read_scene
@@ -75,7 +76,7 @@ contains
          k = findloc(known_groups, trim(name), dim=1)
          if (k == 0) then
             write (errmsg, '(a,i0,a)') 'line ', line_number, ': unknown namelist group &'//trim(name)// &
-               ' (known: &beam &mesh &analysis &obstacles &impact &time &initial &load &output)'
+               ' (known: &beam &mesh &analysis &obstacles &impact &time &initial &load &solver &output)'
             stat = 1
             return
          end if
@@ -300,6 +301,25 @@ contains
       scene%point_position = point_position; scene%point_frequency = point_frequency
       scene%base_amplitude = base_amplitude; scene%base_frequency = base_frequency
    end subroutine read_load
+
+   subroutine read_solver(unit, scene, stat, errmsg)
+      integer, intent(in) :: unit
+      type(scene_type), intent(inout) :: scene
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=64) :: contact_solver
+      integer :: contact_max_iterations
+      namelist /solver/ contact_solver, contact_max_iterations
+      integer :: ios
+      character(len=256) :: iomsg
+      contact_solver = scene%contact_solver
+      contact_max_iterations = scene%contact_max_iterations
+      rewind (unit)
+      read (unit, nml=solver, iostat=ios, iomsg=iomsg)
+      call read_status('solver', ios, iomsg, stat, errmsg)
+      scene%contact_solver = lowercase(contact_solver)
+      scene%contact_max_iterations = contact_max_iterations
+   end subroutine read_solver
 
    subroutine read_output(unit, scene, stat, errmsg)
       integer, intent(in) :: unit

@@ -32,6 +32,7 @@ module vibrobeam_results
       procedure :: commit => commit_results
       procedure :: discard => discard_results
       procedure :: write_modes
+      procedure :: write_static
    end type result_files
 
 contains
@@ -169,4 +170,33 @@ contains
          write (unit, '(*(es24.15))') model%x(i), shapes(i, :)
       end do
    end subroutine write_modes
+
+   !> /static/displacement, /static/reaction (+ /static/contact_x) and _static.dat,
+   !! _reactions.dat.
+   subroutine write_static(self, model, displacement, contact_x, reaction, stat, errmsg)
+      class(result_files), intent(inout) :: self
+      type(beam_model), intent(in) :: model
+      real(dp), intent(in) :: displacement(:)   !! at the N+1 nodes (m)
+      real(dp), intent(in) :: contact_x(:)      !! contact point positions (m)
+      real(dp), intent(in) :: reaction(:)       !! reaction at each contact point (N)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: unit, i
+      call self%h5%write_real_1d('/static/displacement', displacement, 'm', stat, errmsg)
+      if (stat == 0) call self%h5%write_real_1d('/static/reaction', reaction, 'N', stat, errmsg)
+      if (stat == 0) call self%h5%write_real_1d('/static/contact_x', contact_x, 'm', stat, errmsg)
+      if (stat /= 0) return
+      call self%open_text('static', 'x (m)  u (m)', unit, stat, errmsg)
+      if (stat /= 0) return
+      if (unit /= -1) then
+         do i = 1, size(model%x)
+            write (unit, '(*(es24.15))') model%x(i), displacement(i)
+         end do
+      end if
+      call self%open_text('reactions', 'x (m)  reaction (N, positive upwards)', unit, stat, errmsg)
+      if (stat /= 0 .or. unit == -1) return
+      do i = 1, size(contact_x)
+         write (unit, '(*(es24.15))') contact_x(i), reaction(i)
+      end do
+   end subroutine write_static
 end module vibrobeam_results

@@ -56,6 +56,9 @@ module vibrobeam_scene
       real(dp) :: distributed = 0, distributed_frequency = 0, distributed_phase = 0
       real(dp) :: point_force = 0, point_position = unset, point_frequency = 0
       real(dp) :: base_amplitude = 0, base_frequency = 0
+      ! &solver (vibrobeam extension)
+      character(len=16) :: contact_solver = 'auto'
+      integer :: contact_max_iterations = 0
       ! &output
       character(len=text_length) :: file = 'results/vibrobeam.h5'
       integer :: every = 10
@@ -174,6 +177,9 @@ contains
       call in_range('load', 'point_frequency', scene%point_frequency, 0.0_dp, huge(1.0_dp))
       call finite('load', 'base_amplitude', scene%base_amplitude)
       call in_range('load', 'base_frequency', scene%base_frequency, 0.0_dp, huge(1.0_dp))
+      ! &solver
+      call one_of('solver', 'contact_solver', scene%contact_solver, [character(len=16) :: 'auto', 'delassus', 'band'])
+      call integer_in_range('solver', 'contact_max_iterations', scene%contact_max_iterations, 0, huge(1))
       ! &output
       if (len_trim(scene%file) == 0) call fail('&output file is empty; give a file name such as ''results/run.h5''')
       call integer_in_range('output', 'every', scene%every, 1, huge(1))
@@ -347,6 +353,8 @@ contains
       call add_real('load.point_frequency', scene%point_frequency, 'rad/s')
       call add_real('load.base_amplitude', scene%base_amplitude, 'm')
       call add_real('load.base_frequency', scene%base_frequency, 'rad/s')
+      call add_string('solver.contact_solver', scene%contact_solver)
+      call add_integer('solver.contact_max_iterations', scene%contact_max_iterations)
       call add_string('output.file', scene%file)
       call add_integer('output.every', scene%every)
       call add_logical('output.text', scene%text)

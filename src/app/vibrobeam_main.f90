@@ -5,20 +5,26 @@
 !! error becomes a message on stderr and an exit status.
 program vibrobeam_main
    use vibrobeam_kinds, only: dp, error_unit, output_unit
-   use vibrobeam_status, only: exit_ok, exit_other_error, exit_invalid_input, message_length
+   use vibrobeam_status, only: exit_ok, exit_other_error, exit_invalid_input, exit_numerical_failure, &
+                               message_length
    use vibrobeam_version, only: version_string
    use vibrobeam_scene, only: scene_type, validate_scene, format_scene, rho_s_of, ei_of
    use vibrobeam_input, only: read_scene
-   use vibrobeam_model, only: beam_model, build_model
+   use vibrobeam_model, only: beam_model, build_model, nodal_displacement
    use vibrobeam_contact_points, only: contact_set, build_contact_points, contact_value
-   use vibrobeam_initial_state, only: mode_field
+   use vibrobeam_initial_state, only: mode_field, initial_velocity
    use vibrobeam_modes, only: compute_modes
+   use vibrobeam_loads, only: load_set, build_loads
+   use vibrobeam_static, only: solve_static
+   use vibrobeam_dynamics, only: run_dynamics, run_outcome
    use vibrobeam_results, only: result_files
    implicit none
 
    type(scene_type) :: scene
    type(beam_model) :: model
    type(contact_set) :: contacts
+   type(load_set) :: loads
+   real(dp), allocatable :: u0(:)
    character(len=message_length) :: errmsg
    character(len=:), allocatable :: input_file, warnings
    logical :: check_only
@@ -34,7 +40,8 @@ program vibrobeam_main
    warnings = ''
    call build_contact_points(scene, model, contacts, warnings, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
-   call check_initial_state(stat, errmsg)
+   call build_loads(scene, model, rho_s_of(scene), loads)
+   call initial_displacement(stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    if (len(warnings) > 0) write (error_unit, '(a)', advance='no') prefixed(warnings, 'vibrobeam: warning: ')
 
@@ -46,9 +53,10 @@ program vibrobeam_main
    select case (scene%kind)
    case ('modes')
       call run_modes()
+   case ('static')
+      call run_static()
    case default
-      call fail(exit_invalid_input, '&analysis kind = '''//trim(scene%kind)// &
-                ''' is not available in version '//version_string//'; use ''modes''')
+      call run_dynamics_scene()
    end select
 
 contains
@@ -138,17 +146,30 @@ contains
       write (output_unit, '(a,i0)') 'contact points: ', contacts%count
    end subroutine print_resolved_scene
 
-   !> The initial displacement must satisfy every obstacle (SPEC §1: u0 in K).
-   subroutine check_initial_state(stat, errmsg)
+   !> The initial displacement of a dynamics run (zero, a mode, or the static equilibrium
+   !! under the loads at t = 0); it must satisfy every obstacle (SPEC §1: u0 in K).
+   subroutine initial_displacement(stat, errmsg)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp), allocatable :: u0(:)
+      real(dp), allocatable :: reaction(:)
       real(dp) :: value
-      integer :: c
+      integer :: c, iterations
       stat = 0
       errmsg = ''
-      if (scene%kind /= 'dynamics' .or. scene%displacement /= 'mode') return
-      u0 = mode_field(model, scene%displacement_mode, scene%displacement_amplitude)
+      allocate (u0(model%unknowns), source=0.0_dp)
+      if (scene%kind /= 'dynamics') return
+      select case (scene%displacement)
+      case ('mode')
+         u0 = mode_field(model, scene%displacement_mode, scene%displacement_amplitude)
+      case ('static')
+         allocate (reaction(contacts%count))
+         call solve_static(model%stiffness, contacts, loads%at(0.0_dp), scene%contact_solver, u0, reaction, &
+                           iterations, stat, errmsg)
+         if (stat /= 0) then
+            errmsg = '&initial displacement = ''static'': '//trim(errmsg)
+            return
+         end if
+      end select
       do c = 1, contacts%count
          value = contact_value(contacts, c, u0)
          if (value < contacts%lower(c) .or. value > contacts%upper(c)) then
@@ -160,7 +181,7 @@ contains
             return
          end if
       end do
-   end subroutine check_initial_state
+   end subroutine initial_displacement
 
    subroutine run_modes()
       real(dp), allocatable :: omega(:), shapes(:,:), vectors(:,:)
@@ -179,4 +200,41 @@ contains
       end if
       write (output_unit, '(a,i0,a)') 'vibrobeam: ', size(omega), ' natural modes written to '//trim(scene%file)
    end subroutine run_modes
+
+   subroutine run_static()
+      real(dp), allocatable :: u(:), reaction(:)
+      type(result_files) :: files
+      integer(kind=8) :: start, finish, rate
+      integer :: iterations
+      call system_clock(start, rate)
+      allocate (u(model%unknowns), reaction(contacts%count))
+      call solve_static(model%stiffness, contacts, loads%at(0.0_dp), scene%contact_solver, u, reaction, &
+                        iterations, stat, errmsg)
+      if (stat /= 0) call fail(exit_numerical_failure, errmsg)
+      call files%open(scene, model, stat, errmsg)
+      if (stat == 0) call files%write_static(model, nodal_displacement(model, u), contacts%x, reaction, stat, errmsg)
+      call system_clock(finish)
+      if (stat == 0) call files%commit('ok', 0, real(finish - start, dp)/rate, iterations, iterations, stat, errmsg)
+      if (stat /= 0) then
+         call files%discard()
+         call fail(exit_other_error, errmsg)
+      end if
+      write (output_unit, '(a,i0,a)') 'vibrobeam: static equilibrium with ', count(reaction /= 0), &
+         ' contact points in contact written to '//trim(scene%file)
+   end subroutine run_static
+
+   subroutine run_dynamics_scene()
+      type(run_outcome) :: outcome
+      call run_dynamics(scene, model, contacts, loads, u0, initial_velocity(scene, model), outcome, stat, errmsg)
+      if (stat /= 0) call fail(exit_other_error, errmsg)
+      if (outcome%failed) then
+         write (error_unit, '(a)') 'vibrobeam: numerical failure at '//trim(outcome%failure)
+         write (error_unit, '(a)') 'vibrobeam: results up to the failure written to '//trim(scene%file)// &
+            ' (/run status = ''failed'')'
+         stop exit_numerical_failure, quiet=.true.
+      end if
+      write (output_unit, '(a,i0,a,i0,a,es10.3,a,f0.2,a)') 'vibrobeam: ', outcome%steps, ' steps, ', outcome%impacts, &
+         ' impacts, largest penetration ', outcome%max_penetration, ' m, ', outcome%wall_seconds, ' s; written to '// &
+         trim(scene%file)
+   end subroutine run_dynamics_scene
 end program vibrobeam_main

@@ -1,0 +1,332 @@
+!> The contact projection (SPEC §3 step 3, §4 and the static problem): for a metric W
+!! (symmetric positive definite band matrix) and constraints k = 1..m on rows H_k of the
+!! contact set, find
+!!
+!!     x = argmin 1/2 (x - x_free)^T W (x - x_free)   subject to   s_k (H_k x - b_k) >= 0,
+!!
+!! equivalently x = x_free + W^-1 sum_k H_k^T P_k with the complementarity conditions
+!! 0 <= s_k P_k  _|_  s_k (H_k x - b_k) >= 0. P_k is the impulse (dynamics) or the force
+!! (statics) the obstacle exerts on the beam at contact point c_k.
+!!
+!! Two regimes (issue 3), chosen from the number of contact points of the scene:
+!! - 'delassus': the columns W^-1 H_c^T of every contact point are computed once per run
+!!   (one band solve each) and cached; a step builds the small Delassus matrix
+!!   A = S H W^-1 H^T S of its active points and solves LCP(A, q) with `solve_lcp`
+!!   (block principal pivoting, Murty fallback). Cost O(J m) per step.
+!! - 'band': the same block principal pivoting, but every trial set is solved through the
+!!   sparse saddle-point system [W, -H_F^T; -H_F, 0] [x; P_F] = [W x_free; -b_F], whose
+!!   unknowns are ordered so that each multiplier sits next to its last degree of
+!!   freedom: the system stays banded (LAPACK dgbsv), cost O(J) per pivoting iteration,
+!!   never a dense J x J or m x m matrix. Used when a longitudinal obstacle gives many
+!!   contact points.
+module vibrobeam_contact_solver
+   use vibrobeam_kinds, only: dp
+   use vibrobeam_band, only: symmetric_band, band_cholesky, band_solve, band_matvec, band_entry
+   use vibrobeam_contact_points, only: contact_set
+   use vibrobeam_lcp, only: solve_lcp
+   implicit none
+   private
+   public :: contact_projector, regime_delassus, regime_band, delassus_limit
+
+   integer, parameter :: regime_delassus = 1, regime_band = 2
+   !> Largest number of contact points for which 'auto' caches the Delassus columns.
+   integer, parameter :: delassus_limit = 64
+   !> Consecutive block pivots without progress before the single-pivot (Murty) rule.
+   integer, parameter :: block_pivot_patience = 3
+
+   !> What the projection needs about the scene, set up once per run.
+   type :: contact_projector
+      integer :: regime = regime_delassus
+      integer :: unknowns = 0
+      type(symmetric_band) :: metric              !! W
+      type(band_cholesky) :: metric_factor        !! Cholesky factor of W
+      type(contact_set) :: contacts
+      real(dp), allocatable :: response(:,:)      !! (J, contacts) W^-1 H_c^T ('delassus')
+      integer :: max_iterations = 0               !! 0: default of each regime
+   contains
+      procedure :: setup
+      procedure :: project
+   end type contact_projector
+
+contains
+
+   !> Prepare the projection for metric W (with its Cholesky factor) and the contact set.
+   !! regime: 'auto' (Delassus up to `delassus_limit` contact points, band beyond),
+   !! 'delassus' or 'band'.
+   subroutine setup(self, metric, metric_factor, contacts, regime)
+      class(contact_projector), intent(inout) :: self
+      type(symmetric_band), intent(in) :: metric
+      type(band_cholesky), intent(in) :: metric_factor
+      type(contact_set), intent(in) :: contacts
+      character(len=*), intent(in) :: regime
+      integer :: c, a
+      self%unknowns = metric%n
+      self%metric = metric
+      self%metric_factor = metric_factor
+      self%contacts = contacts
+      select case (regime)
+      case ('delassus')
+         self%regime = regime_delassus
+      case ('band')
+         self%regime = regime_band
+      case default
+         self%regime = merge(regime_delassus, regime_band, contacts%count <= delassus_limit)
+      end select
+      if (allocated(self%response)) deallocate (self%response)
+      if (self%regime == regime_delassus) then
+         allocate (self%response(metric%n, contacts%count), source=0.0_dp)
+         do c = 1, contacts%count
+            do a = 1, 4
+               if (contacts%dofs(a, c) /= 0) self%response(contacts%dofs(a, c), c) = contacts%weights(a, c)
+            end do
+         end do
+         do c = 1, contacts%count
+            call band_solve(metric_factor, self%response(:, c))
+         end do
+      end if
+   end subroutine setup
+
+   !> Solve the projection for the constraints k = 1..m on contact points active(k) with
+   !! signs s(k) (+1: from below, -1: from above) and offsets b(k).
+   !! stat: 0 ok; 1 no convergence; 2 linear solver failure; 3 residual check failed.
+   subroutine project(self, x_free, active, s, b, x, impulse, iterations, stat, errmsg)
+      class(contact_projector), intent(in) :: self
+      real(dp), intent(in) :: x_free(:)     !! (J) unconstrained solution
+      integer, intent(in) :: active(:)      !! (m) contact point indices
+      real(dp), intent(in) :: s(:)          !! (m) +1 or -1
+      real(dp), intent(in) :: b(:)          !! (m) offsets
+      real(dp), intent(out) :: x(:)         !! (J) projected solution
+      real(dp), intent(out) :: impulse(:)   !! (m) P_k, s_k P_k >= 0
+      integer, intent(out) :: iterations, stat
+      character(len=*), intent(out) :: errmsg
+      x = x_free
+      impulse = 0
+      iterations = 0
+      stat = 0
+      errmsg = ''
+      if (size(active) == 0) return
+      if (self%regime == regime_delassus) then
+         call project_delassus(self, x_free, active, s, b, x, impulse, iterations, stat, errmsg)
+      else
+         call project_band(self, x_free, active, s, b, x, impulse, iterations, stat, errmsg)
+      end if
+   end subroutine project
+
+   !> H_c v for contact point c.
+   pure function row_times(contacts, c, v) result(value)
+      type(contact_set), intent(in) :: contacts
+      integer, intent(in) :: c
+      real(dp), intent(in) :: v(:)
+      real(dp) :: value
+      integer :: a
+      value = 0
+      do a = 1, 4
+         if (contacts%dofs(a, c) /= 0) value = value + contacts%weights(a, c)*v(contacts%dofs(a, c))
+      end do
+   end function row_times
+
+   subroutine project_delassus(self, x_free, active, s, b, x, impulse, iterations, stat, errmsg)
+      type(contact_projector), intent(in) :: self
+      real(dp), intent(in) :: x_free(:), s(:), b(:)
+      integer, intent(in) :: active(:)
+      real(dp), intent(out) :: x(:), impulse(:)
+      integer, intent(out) :: iterations, stat
+      character(len=*), intent(out) :: errmsg
+      real(dp) :: a(size(active), size(active)), q(size(active)), z(size(active)), w(size(active))
+      integer :: k, l, m
+      m = size(active)
+      do l = 1, m
+         do k = 1, m
+            a(k, l) = s(k)*s(l)*row_times(self%contacts, active(k), self%response(:, active(l)))
+         end do
+         q(l) = s(l)*(row_times(self%contacts, active(l), x_free) - b(l))
+      end do
+      a = 0.5_dp*(a + transpose(a))   ! exact symmetry; the two triangles differ by round-off
+      if (self%max_iterations > 0) then
+         call solve_lcp(a, q, z, w, iterations, stat, errmsg, max_iterations=self%max_iterations)
+      else
+         call solve_lcp(a, q, z, w, iterations, stat, errmsg)
+      end if
+      if (stat == 4) stat = 2
+      impulse = s*z
+      x = x_free
+      do l = 1, m
+         if (z(l) > 0) x = x + impulse(l)*self%response(:, active(l))
+      end do
+   end subroutine project_delassus
+
+   !> Block principal pivoting on the banded saddle-point system (see the module comment).
+   subroutine project_band(self, x_free, active, s, b, x, impulse, iterations, stat, errmsg)
+      type(contact_projector), intent(in) :: self
+      real(dp), intent(in) :: x_free(:), s(:), b(:)
+      integer, intent(in) :: active(:)
+      real(dp), intent(out) :: x(:), impulse(:)
+      integer, intent(out) :: iterations, stat
+      character(len=*), intent(out) :: errmsg
+      logical :: in_set(size(active)), infeasible(size(active))
+      real(dp) :: gap(size(active)), w_x_free(size(x_free)), gap_scale, impulse_scale, slack
+      integer :: m, k, count_infeasible, best, patience, limit
+      m = size(active)
+      call band_matvec(self%metric, x_free, w_x_free)
+      do k = 1, m
+         gap(k) = s(k)*(row_times(self%contacts, active(k), x_free) - b(k))
+      end do
+      gap_scale = maxval(abs([(row_times(self%contacts, active(k), x_free), k=1, m)])) + maxval(abs(b))
+      gap_scale = max(gap_scale, tiny(1.0_dp))
+      slack = max(1e-12_dp, 16*m*epsilon(1.0_dp))
+      in_set = gap < 0
+      limit = self%max_iterations
+      if (limit <= 0) limit = max(100, 10*m)
+      best = m + 1
+      patience = block_pivot_patience
+      iterations = 0
+      do
+         call solve_trial_set(self, w_x_free, active, b, in_set, x, impulse, stat, errmsg)
+         if (stat /= 0) return
+         impulse_scale = max(maxval(abs(impulse)), tiny(1.0_dp))
+         do k = 1, m
+            if (in_set(k)) then
+               infeasible(k) = s(k)*impulse(k) < -slack*impulse_scale
+            else
+               gap(k) = s(k)*(row_times(self%contacts, active(k), x) - b(k))
+               infeasible(k) = gap(k) < -slack*gap_scale
+            end if
+         end do
+         count_infeasible = count(infeasible)
+         if (count_infeasible == 0) exit
+         if (iterations >= limit) then
+            stat = 1
+            write (errmsg, '(a,i0,a,i0,a)') 'band contact solver did not converge in ', limit, &
+               ' pivoting iterations (', count_infeasible, ' infeasible constraints left)'
+            return
+         end if
+         iterations = iterations + 1
+         if (count_infeasible < best) then
+            best = count_infeasible
+            patience = block_pivot_patience
+         else
+            patience = patience - 1
+         end if
+         if (patience > 0) then
+            where (infeasible) in_set = .not. in_set
+         else
+            k = findloc(infeasible, .true., dim=1)   ! Murty: least infeasible index
+            in_set(k) = .not. in_set(k)
+         end if
+      end do
+      ! clip the sign of round-off-sized impulses so that s P >= 0 holds exactly
+      where (s*impulse < 0) impulse = 0
+   end subroutine project_band
+
+   !> Solve [W, -H_F^T; -H_F, 0] [x; P_F] = [W x_free; -b_F], P = 0 outside F, as one
+   !! general band system (LAPACK dgbsv) with each multiplier ordered right after the last
+   !! degree of freedom of its row.
+   subroutine solve_trial_set(self, w_x_free, active, b, in_set, x, impulse, stat, errmsg)
+      type(contact_projector), intent(in) :: self
+      real(dp), intent(in) :: w_x_free(:), b(:)
+      integer, intent(in) :: active(:)
+      logical, intent(in) :: in_set(:)
+      real(dp), intent(out) :: x(:), impulse(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      interface
+         subroutine dgbsv(n, kl, ku, nrhs, ab, ldab, ipiv, rhs, ldb, info)
+            import :: dp
+            integer, intent(in) :: n, kl, ku, nrhs, ldab, ldb
+            real(dp), intent(inout) :: ab(ldab, *), rhs(ldb, *)
+            integer, intent(out) :: ipiv(*), info
+         end subroutine dgbsv
+      end interface
+      integer :: j, m, total, kd, i, k, a, width, position, col
+      integer, allocatable :: dof_position(:), multiplier_position(:), ipiv(:), order(:)
+      integer, allocatable :: anchors(:)
+      real(dp), allocatable :: ab(:,:), rhs(:)
+      j = self%unknowns
+      kd = self%metric%kd
+      m = count(in_set)
+      total = j + m
+      allocate (dof_position(j), multiplier_position(size(active)), anchors(size(active)))
+      multiplier_position = 0
+      ! anchor of each constraint in the set: the last degree of freedom of its row
+      do k = 1, size(active)
+         anchors(k) = maxval(self%contacts%dofs(:, active(k)))
+      end do
+      order = pack([(k, k=1, size(active))], in_set)
+      ! order[set] by anchor (insertion sort: the active list is already by node)
+      do i = 2, size(order)
+         k = order(i)
+         a = i - 1
+         do while (a >= 1)
+            if (anchors(order(a)) <= anchors(k)) exit
+            order(a + 1) = order(a)
+            a = a - 1
+         end do
+         order(a + 1) = k
+      end do
+      position = 0
+      a = 1
+      do i = 1, j
+         position = position + 1
+         dof_position(i) = position
+         do while (a <= size(order))
+            if (anchors(order(a)) /= i) exit
+            position = position + 1
+            multiplier_position(order(a)) = position
+            a = a + 1
+         end do
+      end do
+      ! bandwidth of the ordered system
+      width = 0
+      do i = 1, j
+         do col = i, min(j, i + kd)
+            width = max(width, abs(dof_position(col) - dof_position(i)))
+         end do
+      end do
+      do k = 1, size(active)
+         if (.not. in_set(k)) cycle
+         do a = 1, 4
+            if (self%contacts%dofs(a, active(k)) /= 0) width = max(width, &
+               abs(multiplier_position(k) - dof_position(self%contacts%dofs(a, active(k)))))
+         end do
+      end do
+      allocate (ab(3*width + 1, total), source=0.0_dp)
+      allocate (rhs(total), ipiv(total))
+      do i = 1, j
+         do col = max(1, i - kd), min(j, i + kd)
+            call put(dof_position(i), dof_position(col), band_entry(self%metric, i, col))
+         end do
+         rhs(dof_position(i)) = w_x_free(i)
+      end do
+      do k = 1, size(active)
+         if (.not. in_set(k)) cycle
+         do a = 1, 4
+            col = self%contacts%dofs(a, active(k))
+            if (col == 0) cycle
+            call put(dof_position(col), multiplier_position(k), -self%contacts%weights(a, active(k)))
+            call put(multiplier_position(k), dof_position(col), -self%contacts%weights(a, active(k)))
+         end do
+         rhs(multiplier_position(k)) = -b(k)
+      end do
+      call dgbsv(total, width, width, 1, ab, 3*width + 1, ipiv, rhs, total, stat)
+      if (stat /= 0) then
+         write (errmsg, '(a,i0)') 'band saddle-point solve (dgbsv) failed: info = ', stat
+         stat = 2
+         return
+      end if
+      do i = 1, j
+         x(i) = rhs(dof_position(i))
+      end do
+      impulse = 0
+      do k = 1, size(active)
+         if (in_set(k)) impulse(k) = rhs(multiplier_position(k))
+      end do
+   contains
+      subroutine put(r, c, value)
+         integer, intent(in) :: r, c
+         real(dp), intent(in) :: value
+         integer :: row
+         row = 2*width + 1 + r - c
+         ab(row, c) = ab(row, c) + value
+      end subroutine put
+   end subroutine solve_trial_set
+end module vibrobeam_contact_solver

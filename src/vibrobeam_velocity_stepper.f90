@@ -1,0 +1,199 @@
+!> The velocity-based time stepper (SPEC §3), one step at a time.
+!!
+!! With W = M + theta^2 dt^2 K + theta dt C (factored once), each step does
+!!  1. free velocity  V_free = V^n + W^-1 dt [F^{n+theta} - K (U^n + theta dt V^n) - C V^n],
+!!     F^{n+theta} = theta F(t_{n+1}) + (1 - theta) F(t_n);
+!!  2. activation: contact point c is active from below (s = +1) if H_c U~ <= g1(x_c), from
+!!     above (s = -1) if H_c U~ >= g2(x_c), with U~ = U^n + gamma dt V^n;
+!!  3. projection with Newton's law: V^{n+1} = V_free + W^-1 H^T P,
+!!     0 <= s_c P_c _|_ s_c H_c (V^{n+1} + e_c V^n) >= 0 on the active points;
+!!  4. positions U^{n+1} = U^n + dt (theta V^{n+1} + (1 - theta) V^n).
+!!
+!! Restitution per point (our remedy, docs/method.md): e_c = e for an active point that
+!! approaches its obstacle (s_c H_c V^n <= 0) and e_c = 1 for one that already moves away.
+!! The work of the impulses is 1/2 sum_c (1 - e_c) P_c H_c V^n (for theta = 1/2); with
+!! e_c = e everywhere a separating active point gives it the wrong sign and the energy can
+!! grow; with e_c = 1 there its term vanishes, so impacts only dissipate.
+module vibrobeam_velocity_stepper
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use vibrobeam_kinds, only: dp
+   use vibrobeam_band, only: symmetric_band, band_cholesky, band_combination, band_factor, band_solve, &
+                             band_matvec
+   use vibrobeam_model, only: beam_model
+   use vibrobeam_contact_points, only: contact_set, contact_value
+   use vibrobeam_contact_solver, only: contact_projector
+   use vibrobeam_loads, only: load_set
+   implicit none
+   private
+   public :: velocity_stepper
+
+   type :: velocity_stepper
+      real(dp) :: dt = 0, theta = 0.5_dp, gamma = 0.5_dp, restitution = 1
+      real(dp) :: rayleigh_mass = 0, rayleigh_stiffness = 0
+      type(symmetric_band) :: mass, stiffness, iteration_matrix
+      type(band_cholesky) :: iteration_factor
+      type(contact_set) :: contacts
+      type(contact_projector) :: projector
+      type(load_set) :: loads
+      real(dp), allocatable :: u(:), v(:)         !! U^n (m), V^n (m/s)
+      real(dp), allocatable :: force(:)           !! F(t_n)
+      real(dp) :: t = 0                            !! t_n (s)
+      integer :: steps = 0                         !! n
+      ! what the last step did
+      integer :: active_count = 0
+      integer, allocatable :: active(:)            !! active contact points (first active_count)
+      real(dp), allocatable :: impulse(:)          !! P_c of each active point (N s)
+      real(dp), allocatable :: velocity_before(:), velocity_after(:)   !! H_c V^n, H_c V^{n+1}
+      integer :: iterations = 0                    !! contact solver iterations of the last step
+      ! running sums since t = 0 (SPEC §3 energy balance, exact for theta = 1/2)
+      real(dp) :: work = 0                   !! sum F^{n+theta} . (U^{n+1} - U^n)
+      real(dp) :: dissipated_impacts = 0     !! -sum P . H V^{n+theta}
+      real(dp) :: dissipated_damping = 0     !! sum dt V^{n+theta} . C V^{n+theta}
+   contains
+      procedure :: init
+      procedure :: step
+      procedure :: kinetic_energy
+      procedure :: elastic_energy
+   end type velocity_stepper
+
+contains
+
+   !> Set up for a run: build and factor W, prepare the contact projection.
+   subroutine init(self, model, contacts, loads, dt, theta, gamma, restitution, rayleigh_mass, &
+                   rayleigh_stiffness, contact_regime, u0, v0, stat, errmsg)
+      class(velocity_stepper), intent(inout) :: self
+      type(beam_model), intent(in) :: model
+      type(contact_set), intent(in) :: contacts
+      type(load_set), intent(in) :: loads
+      real(dp), intent(in) :: dt, theta, gamma, restitution, rayleigh_mass, rayleigh_stiffness
+      character(len=*), intent(in) :: contact_regime   !! 'auto' | 'delassus' | 'band'
+      real(dp), intent(in) :: u0(:), v0(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      self%dt = dt
+      self%theta = theta
+      self%gamma = gamma
+      self%restitution = restitution
+      self%rayleigh_mass = rayleigh_mass
+      self%rayleigh_stiffness = rayleigh_stiffness
+      self%mass = model%mass
+      self%stiffness = model%stiffness
+      self%contacts = contacts
+      self%loads = loads
+      ! W = (1 + theta dt a) M + (theta^2 dt^2 + theta dt b) K
+      self%iteration_matrix = band_combination(1 + theta*dt*rayleigh_mass, model%mass, &
+                                               theta**2*dt**2 + theta*dt*rayleigh_stiffness, model%stiffness)
+      call band_factor(self%iteration_matrix, self%iteration_factor, stat, errmsg)
+      if (stat /= 0) return
+      call self%projector%setup(self%iteration_matrix, self%iteration_factor, contacts, contact_regime)
+      self%u = u0
+      self%v = v0
+      self%t = 0
+      self%steps = 0
+      self%force = loads%at(0.0_dp)
+      allocate (self%active(contacts%count), self%impulse(contacts%count), &
+                self%velocity_before(contacts%count), self%velocity_after(contacts%count))
+      self%active_count = 0
+   end subroutine init
+
+   !> Advance from t_n to t_{n+1}. stat: 0 ok; 1..3 contact solver failure (errmsg says);
+   !! 4 the state is no longer finite.
+   subroutine step(self, stat, errmsg)
+      class(velocity_stepper), intent(inout) :: self
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp), dimension(size(self%u)) :: rhs, work_vector, v_free, v_new, u_new, force_new, force_theta, v_theta
+      real(dp) :: predicted, approach, e_c
+      real(dp) :: signs(self%contacts%count), offsets(self%contacts%count)
+      integer :: c, m, k
+      associate (dt => self%dt, theta => self%theta)
+         ! 1. free velocity
+         force_new = self%loads%at(self%t + dt)
+         force_theta = theta*force_new + (1 - theta)*self%force
+         call band_matvec(self%stiffness, self%u + theta*dt*self%v, work_vector)
+         rhs = force_theta - work_vector
+         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) rhs = rhs - damping_times(self, self%v)
+         rhs = dt*rhs
+         call band_solve(self%iteration_factor, rhs)
+         v_free = self%v + rhs
+         ! 2. active set at U~ = U^n + gamma dt V^n
+         m = 0
+         do c = 1, self%contacts%count
+            predicted = contact_value(self%contacts, c, self%u) + self%gamma*dt*contact_value(self%contacts, c, self%v)
+            if (predicted <= self%contacts%lower(c)) then
+               m = m + 1
+               signs(m) = 1
+            else if (predicted >= self%contacts%upper(c)) then
+               m = m + 1
+               signs(m) = -1
+            else
+               cycle
+            end if
+            self%active(m) = c
+            self%velocity_before(m) = contact_value(self%contacts, c, self%v)
+            approach = signs(m)*self%velocity_before(m)
+            e_c = merge(self%restitution, 1.0_dp, approach <= 0)
+            offsets(m) = -e_c*self%velocity_before(m)
+         end do
+         self%active_count = m
+         ! 3. projection
+         call self%projector%project(v_free, self%active(1:m), signs(1:m), offsets(1:m), v_new, &
+                                     self%impulse(1:m), self%iterations, stat, errmsg)
+         if (stat /= 0) return
+         ! 4. positions
+         v_theta = theta*v_new + (1 - theta)*self%v
+         u_new = self%u + dt*v_theta
+         if (.not. ieee_is_finite(sum(v_new)) .or. .not. ieee_is_finite(sum(u_new))) then
+            stat = 4
+            write (errmsg, '(a,es12.5,a)') 'the solution is no longer finite at t = ', self%t + dt, ' s'
+            return
+         end if
+         ! energy bookkeeping
+         if (self%loads%present) self%work = self%work + dot_product(force_theta, u_new - self%u)
+         do k = 1, m
+            self%velocity_after(k) = contact_value(self%contacts, self%active(k), v_new)
+            self%dissipated_impacts = self%dissipated_impacts - self%impulse(k)* &
+                                      contact_value(self%contacts, self%active(k), v_theta)
+         end do
+         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) &
+            self%dissipated_damping = self%dissipated_damping + dt*dot_product(v_theta, damping_times(self, v_theta))
+         self%u = u_new
+         self%v = v_new
+         self%force = force_new
+         self%steps = self%steps + 1
+         self%t = self%steps*dt
+      end associate
+   end subroutine step
+
+   !> C x = a M x + b K x (Rayleigh damping).
+   function damping_times(self, x) result(y)
+      type(velocity_stepper), intent(in) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp) :: y(size(x)), z(size(x))
+      y = 0
+      if (self%rayleigh_mass > 0) then
+         call band_matvec(self%mass, x, z)
+         y = self%rayleigh_mass*z
+      end if
+      if (self%rayleigh_stiffness > 0) then
+         call band_matvec(self%stiffness, x, z)
+         y = y + self%rayleigh_stiffness*z
+      end if
+   end function damping_times
+
+   !> 1/2 V^T M V (J; per unit mass when the beam is given by k2).
+   function kinetic_energy(self) result(energy)
+      class(velocity_stepper), intent(in) :: self
+      real(dp) :: energy, mv(size(self%v))
+      call band_matvec(self%mass, self%v, mv)
+      energy = 0.5_dp*dot_product(self%v, mv)
+   end function kinetic_energy
+
+   !> 1/2 U^T K U (J).
+   function elastic_energy(self) result(energy)
+      class(velocity_stepper), intent(in) :: self
+      real(dp) :: energy, ku(size(self%u))
+      call band_matvec(self%stiffness, self%u, ku)
+      energy = 0.5_dp*dot_product(self%u, ku)
+   end function elastic_energy
+end module vibrobeam_velocity_stepper
