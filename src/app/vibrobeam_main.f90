@@ -8,23 +8,18 @@ program vibrobeam_main
    use vibrobeam_status, only: exit_ok, exit_other_error, exit_invalid_input, exit_numerical_failure, &
                                message_length
    use vibrobeam_version, only: version_string
-   use vibrobeam_scene, only: scene_type, validate_scene, format_scene, rho_s_of, ei_of
+   use vibrobeam_scene, only: scene_type, validate_scene, format_scene
    use vibrobeam_input, only: read_scene
-   use vibrobeam_model, only: beam_model, build_model, nodal_displacement
-   use vibrobeam_contact_points, only: contact_set, build_contact_points, contact_value
-   use vibrobeam_initial_state, only: mode_field, initial_velocity
+   use vibrobeam_model, only: nodal_displacement
    use vibrobeam_modes, only: compute_modes
-   use vibrobeam_loads, only: load_set, build_loads
    use vibrobeam_static, only: solve_static
+   use vibrobeam_setup, only: prepared_scene, prepare_scene
    use vibrobeam_dynamics, only: run_dynamics, run_outcome
    use vibrobeam_results, only: result_files
    implicit none
 
    type(scene_type) :: scene
-   type(beam_model) :: model
-   type(contact_set) :: contacts
-   type(load_set) :: loads
-   real(dp), allocatable :: u0(:)
+   type(prepared_scene) :: prepared
    character(len=message_length) :: errmsg
    character(len=:), allocatable :: input_file, warnings
    logical :: check_only
@@ -35,13 +30,8 @@ program vibrobeam_main
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    call validate_scene(scene, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
-   call build_model(scene%basis, scene%elements, scene%length, rho_s_of(scene), ei_of(scene), model, stat, errmsg)
-   if (stat /= 0) call fail(exit_invalid_input, errmsg)
    warnings = ''
-   call build_contact_points(scene, model, contacts, warnings, stat, errmsg)
-   if (stat /= 0) call fail(exit_invalid_input, errmsg)
-   call build_loads(scene, model, rho_s_of(scene), loads)
-   call initial_displacement(stat, errmsg)
+   call prepare_scene(scene, prepared, warnings, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    if (len(warnings) > 0) write (error_unit, '(a)', advance='no') prefixed(warnings, 'vibrobeam: warning: ')
 
@@ -138,55 +128,21 @@ contains
    end subroutine print_help
 
    subroutine print_resolved_scene()
+      associate (model => prepared%model, contacts => prepared%contacts)
       write (output_unit, '(a)') 'vibrobeam '//version_string//': input '''//input_file//''' is valid', &
          'resolved scene:'
       write (output_unit, '(a)', advance='no') format_scene(scene)
       write (output_unit, '(a,i0,a,i0,a)') 'discrete model: ', model%elements, ' '//trim(model%basis)// &
          ' elements, ', model%unknowns, ' unknowns'
       write (output_unit, '(a,i0)') 'contact points: ', contacts%count
+      end associate
    end subroutine print_resolved_scene
-
-   !> The initial displacement of a dynamics run (zero, a mode, or the static equilibrium
-   !! under the loads at t = 0); it must satisfy every obstacle (SPEC §1: u0 in K).
-   subroutine initial_displacement(stat, errmsg)
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      real(dp), allocatable :: reaction(:)
-      real(dp) :: value
-      integer :: c, iterations
-      stat = 0
-      errmsg = ''
-      allocate (u0(model%unknowns), source=0.0_dp)
-      if (scene%kind /= 'dynamics') return
-      select case (scene%displacement)
-      case ('mode')
-         u0 = mode_field(model, scene%displacement_mode, scene%displacement_amplitude)
-      case ('static')
-         allocate (reaction(contacts%count))
-         call solve_static(model%stiffness, contacts, loads%at(0.0_dp), scene%contact_solver, u0, reaction, &
-                           iterations, stat, errmsg)
-         if (stat /= 0) then
-            errmsg = '&initial displacement = ''static'': '//trim(errmsg)
-            return
-         end if
-      end select
-      do c = 1, contacts%count
-         value = contact_value(contacts, c, u0)
-         if (value < contacts%lower(c) .or. value > contacts%upper(c)) then
-            write (errmsg, '(a,g0.6,a,g0.6,a,g0.6,a,g0.6,a)') '&initial displacement_amplitude = ', &
-               scene%displacement_amplitude, ' puts the beam at u = ', value, ' m at x = ', contacts%x(c), &
-               ' m, outside the obstacles there [', contacts%lower(c), ', '
-            write (errmsg, '(a,g0.6,a)') trim(errmsg), contacts%upper(c), '] m'
-            stat = 1
-            return
-         end if
-      end do
-   end subroutine initial_displacement
 
    subroutine run_modes()
       real(dp), allocatable :: omega(:), shapes(:,:), vectors(:,:)
       type(result_files) :: files
       integer(kind=8) :: start, finish, rate
+      associate (model => prepared%model)
       call system_clock(start, rate)
       call compute_modes(model, scene%modes, omega, shapes, vectors, stat, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
@@ -199,6 +155,7 @@ contains
          call fail(exit_other_error, errmsg)
       end if
       write (output_unit, '(a,i0,a)') 'vibrobeam: ', size(omega), ' natural modes written to '//trim(scene%file)
+      end associate
    end subroutine run_modes
 
    subroutine run_static()
@@ -206,6 +163,7 @@ contains
       type(result_files) :: files
       integer(kind=8) :: start, finish, rate
       integer :: iterations
+      associate (model => prepared%model, contacts => prepared%contacts, loads => prepared%loads)
       call system_clock(start, rate)
       allocate (u(model%unknowns), reaction(contacts%count))
       call solve_static(model%stiffness, contacts, loads%at(0.0_dp), scene%contact_solver, u, reaction, &
@@ -219,13 +177,15 @@ contains
          call files%discard()
          call fail(exit_other_error, errmsg)
       end if
-      write (output_unit, '(a,i0,a)') 'vibrobeam: static equilibrium with ', count(reaction /= 0), &
+      write (output_unit, '(a,i0,a)') 'vibrobeam: static equilibrium with ', count(abs(reaction) > 0), &
          ' contact points in contact written to '//trim(scene%file)
+      end associate
    end subroutine run_static
 
    subroutine run_dynamics_scene()
       type(run_outcome) :: outcome
-      call run_dynamics(scene, model, contacts, loads, u0, initial_velocity(scene, model), outcome, stat, errmsg)
+      call run_dynamics(scene, prepared%model, prepared%contacts, prepared%loads, prepared%u0, prepared%v0, &
+                        outcome, stat, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
       if (outcome%failed) then
          write (error_unit, '(a)') 'vibrobeam: numerical failure at '//trim(outcome%failure)

@@ -1,0 +1,102 @@
+!> From a validated scene to everything a run needs (STYLE.md data flow: scene ->
+!! discrete model): the beam model, its contact points, its loads and its initial state.
+!! Used by the program and by the verification drivers, so both run the same set-up.
+module vibrobeam_setup
+   use vibrobeam_kinds, only: dp
+   use vibrobeam_scene, only: scene_type, rho_s_of, ei_of
+   use vibrobeam_model, only: beam_model, build_model
+   use vibrobeam_contact_points, only: contact_set, build_contact_points, contact_value
+   use vibrobeam_loads, only: load_set, build_loads
+   use vibrobeam_initial_state, only: mode_field, initial_velocity
+   use vibrobeam_static, only: solve_static
+   use vibrobeam_velocity_stepper, only: velocity_stepper
+   implicit none
+   private
+   public :: prepared_scene, prepare_scene, start_stepper
+
+   type :: prepared_scene
+      type(beam_model) :: model
+      type(contact_set) :: contacts
+      type(load_set) :: loads
+      real(dp), allocatable :: u0(:)   !! initial displacement unknowns (dynamics)
+      real(dp), allocatable :: v0(:)   !! initial velocity unknowns (dynamics)
+   end type prepared_scene
+
+contains
+
+   !> Build model, contact points, loads and initial state of `scene` (already validated).
+   !! stat = 1 with a message naming the input when the scene is inconsistent (obstacles
+   !! that contradict each other, an initial displacement outside the obstacles);
+   !! `warnings` collects one line per warning.
+   subroutine prepare_scene(scene, prepared, warnings, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(prepared_scene), intent(out) :: prepared
+      character(len=:), allocatable, intent(inout) :: warnings
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      call build_model(scene%basis, scene%elements, scene%length, rho_s_of(scene), ei_of(scene), &
+                       prepared%model, stat, errmsg)
+      if (stat /= 0) return
+      call build_contact_points(scene, prepared%model, prepared%contacts, warnings, stat, errmsg)
+      if (stat /= 0) return
+      call build_loads(scene, prepared%model, rho_s_of(scene), prepared%loads)
+      call initial_displacement(scene, prepared, stat, errmsg)
+      if (stat /= 0) return
+      prepared%v0 = initial_velocity(scene, prepared%model)
+   end subroutine prepare_scene
+
+   !> The initial displacement of a dynamics run (zero, a mode, or the static equilibrium
+   !! under the loads at t = 0); it must satisfy every obstacle (SPEC §1: u0 in K).
+   subroutine initial_displacement(scene, prepared, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(prepared_scene), intent(inout) :: prepared
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp), allocatable :: reaction(:)
+      real(dp) :: value
+      integer :: c, iterations
+      stat = 0
+      errmsg = ''
+      allocate (prepared%u0(prepared%model%unknowns), source=0.0_dp)
+      if (scene%kind /= 'dynamics') return
+      associate (model => prepared%model, contacts => prepared%contacts)
+         select case (scene%displacement)
+         case ('mode')
+            prepared%u0 = mode_field(model, scene%displacement_mode, scene%displacement_amplitude)
+         case ('static')
+            allocate (reaction(contacts%count))
+            call solve_static(model%stiffness, contacts, prepared%loads%at(0.0_dp), scene%contact_solver, &
+                              prepared%u0, reaction, iterations, stat, errmsg)
+            if (stat /= 0) then
+               errmsg = '&initial displacement = ''static'': '//trim(errmsg)
+               return
+            end if
+         end select
+         do c = 1, contacts%count
+            value = contact_value(contacts, c, prepared%u0)
+            ! a static equilibrium sits on its obstacles up to round-off
+            if (value + 1e-12_dp*abs(value) < contacts%lower(c) .or. value - 1e-12_dp*abs(value) > contacts%upper(c)) then
+               write (errmsg, '(a,g0.6,a,g0.6,a,g0.6,a,g0.6,a)') '&initial displacement_amplitude = ', &
+                  scene%displacement_amplitude, ' puts the beam at u = ', value, ' m at x = ', contacts%x(c), &
+                  ' m, outside the obstacles there [', contacts%lower(c), ', '
+               write (errmsg, '(a,g0.6,a)') trim(errmsg), contacts%upper(c), '] m'
+               stat = 1
+               return
+            end if
+         end do
+      end associate
+   end subroutine initial_displacement
+
+   !> A velocity stepper at t = 0 for a prepared scene, with the scene's time settings.
+   subroutine start_stepper(scene, prepared, stepper, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(prepared_scene), intent(in) :: prepared
+      type(velocity_stepper), intent(out) :: stepper
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      call stepper%init(prepared%model, prepared%contacts, prepared%loads, scene%dt, scene%theta, scene%gamma, &
+                        scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
+                        prepared%u0, prepared%v0, stat, errmsg)
+      stepper%projector%max_iterations = scene%contact_max_iterations
+   end subroutine start_stepper
+end module vibrobeam_setup
