@@ -9,9 +9,7 @@ module vibrobeam_dynamics
    use, intrinsic :: iso_c_binding, only: c_int
    use vibrobeam_kinds, only: dp, int64, error_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_model, only: beam_model
-   use vibrobeam_contact_points, only: contact_set
-   use vibrobeam_loads, only: load_set
+   use vibrobeam_setup, only: prepared_scene, start_stepper
    use vibrobeam_velocity_stepper, only: velocity_stepper
    use vibrobeam_recorder, only: dynamics_recorder
    use vibrobeam_results, only: result_files
@@ -30,23 +28,20 @@ module vibrobeam_dynamics
    end type run_outcome
 
    interface
-      function isatty(fd) result(flag) bind(C, name='isatty')
+      function c_isatty(fd) result(flag) bind(C, name='isatty')
          import :: c_int
          integer(c_int), value :: fd
          integer(c_int) :: flag
-      end function isatty
+      end function c_isatty
    end interface
 
 contains
 
    !> Run the scene and write its results. stat /= 0 (with errmsg) only for failures that
    !! prevented writing results (I/O); a numerical failure is reported in `outcome`.
-   subroutine run_dynamics(scene, model, contacts, loads, u0, v0, outcome, stat, errmsg)
+   subroutine run_dynamics(scene, prepared, outcome, stat, errmsg)
       type(scene_type), intent(in) :: scene
-      type(beam_model), intent(in) :: model
-      type(contact_set), intent(in) :: contacts
-      type(load_set), intent(in) :: loads
-      real(dp), intent(in) :: u0(:), v0(:)
+      type(prepared_scene), intent(in) :: prepared
       type(run_outcome), intent(out) :: outcome
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
@@ -61,13 +56,11 @@ contains
       steps = max(1, nint(scene%t_end/scene%dt))
       if (abs(steps*scene%dt - scene%t_end) > 1e-9_dp*scene%dt) write (error_unit, '(a,es14.7,a)') &
          'vibrobeam: warning: t_end is not a whole number of steps; the run ends at ', steps*scene%dt, ' s'
-      call stepper%init(model, contacts, loads, scene%dt, scene%theta, scene%gamma, scene%restitution, &
-                        scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, u0, v0, stat, errmsg)
+      call start_stepper(scene, prepared, stepper, stat, errmsg)
       if (stat /= 0) return
-      stepper%projector%max_iterations = scene%contact_max_iterations
-      call recorder%init(stepper, model)
-      call recorder%sample(stepper, model)
-      report = scene%progress .or. isatty(2_c_int) == 1
+      call recorder%init(stepper, prepared%model)
+      call recorder%sample(stepper, prepared%model)
+      report = scene%progress .or. c_isatty(2_c_int) == 1
       last_report = start
       do n = 1, steps
          call stepper%step(step_stat, step_message)
@@ -78,7 +71,7 @@ contains
             exit
          end if
          call recorder%after_step(stepper)
-         if (mod(n, scene%every) == 0 .or. n == steps) call recorder%sample(stepper, model)
+         if (mod(n, scene%every) == 0 .or. n == steps) call recorder%sample(stepper, prepared%model)
          if (report) then
             call system_clock(now)
             if (now - last_report >= rate) then
@@ -88,13 +81,13 @@ contains
          end if
       end do
       ! a failed run still ends with a sample of the last good state
-      if (outcome%failed .and. recorder%last_output_time < stepper%t) call recorder%sample(stepper, model)
+      if (outcome%failed .and. recorder%last_output_time < stepper%t) call recorder%sample(stepper, prepared%model)
       if (report) write (error_unit, '(a)') ''
       outcome%steps = stepper%steps
       outcome%impacts = recorder%impacts%rows
       outcome%max_penetration = recorder%max_penetration
-      call files%open(scene, model, stat, errmsg)
-      if (stat == 0) call recorder%write(files, model, stepper, stat, errmsg)
+      call files%open(scene, prepared%model, stat, errmsg)
+      if (stat == 0) call recorder%write(files, prepared%model, stepper, stat, errmsg)
       call system_clock(now)
       outcome%wall_seconds = real(now - start, dp)/rate
       if (stat == 0) call files%commit(trim(merge('failed', 'ok    ', outcome%failed)), stepper%steps, &

@@ -224,14 +224,17 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp) :: restitution
-      namelist /impact/ restitution
+      character(len=64) :: separating_points
+      namelist /impact/ restitution, separating_points
       integer :: ios
       character(len=256) :: iomsg
       restitution = scene%restitution
+      separating_points = scene%separating_points
       rewind (unit)
       read (unit, nml=impact, iostat=ios, iomsg=iomsg)
       call read_status('impact', ios, iomsg, stat, errmsg)
       scene%restitution = restitution
+      scene%separating_points = lowercase(separating_points)
    end subroutine read_impact
 
    subroutine read_time(unit, scene, stat, errmsg)

@@ -41,6 +41,7 @@ module vibrobeam_scene
       type(obstacle_type), allocatable :: obstacles(:)
       ! &impact
       real(dp) :: restitution = 1
+      character(len=16) :: separating_points = 'elastic'   !! restitution of active points moving away
       ! &time
       real(dp) :: t_end = 1, dt = 1e-4_dp
       character(len=16) :: scheme = 'velocity'
@@ -153,6 +154,7 @@ contains
       end do
       ! &impact
       call in_range('impact', 'restitution', scene%restitution, 0.0_dp, 1.0_dp)
+      call one_of('impact', 'separating_points', scene%separating_points, [character(len=16) :: 'elastic', 'restitution'])
       ! &time
       call positive('time', 't_end', scene%t_end)
       call positive('time', 'dt', scene%dt)
@@ -334,6 +336,7 @@ contains
          call add_real('obstacles.level_to'//trim(index), scene%obstacles(i)%level_to, 'm')
       end do
       call add_real('impact.restitution', scene%restitution, '')
+      call add_string('impact.separating_points', scene%separating_points)
       call add_real('time.t_end', scene%t_end, 's')
       call add_real('time.dt', scene%dt, 's')
       call add_string('time.scheme', scene%scheme)

@@ -98,5 +98,6 @@ contains
                         scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
                         prepared%u0, prepared%v0, stat, errmsg)
       stepper%projector%max_iterations = scene%contact_max_iterations
+      if (scene%separating_points == 'restitution') stepper%separating_restitution = scene%restitution
    end subroutine start_stepper
 end module vibrobeam_setup

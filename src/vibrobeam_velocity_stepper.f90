@@ -29,6 +29,9 @@ module vibrobeam_velocity_stepper
 
    type :: velocity_stepper
       real(dp) :: dt = 0, theta = 0.5_dp, gamma = 0.5_dp, restitution = 1
+      !> restitution of an active point already moving away from its obstacle: 1 (our
+      !! remedy, default) or `restitution` (the plain law of SPEC §3, for comparison)
+      real(dp) :: separating_restitution = 1
       real(dp) :: rayleigh_mass = 0, rayleigh_stiffness = 0
       type(symmetric_band) :: mass, stiffness, iteration_matrix
       type(band_cholesky) :: iteration_factor
@@ -132,7 +135,7 @@ contains
             self%active(m) = c
             self%velocity_before(m) = contact_value(self%contacts, c, self%v)
             approach = signs(m)*self%velocity_before(m)
-            e_c = merge(self%restitution, 1.0_dp, approach <= 0)
+            e_c = merge(self%restitution, self%separating_restitution, approach <= 0)
             offsets(m) = -e_c*self%velocity_before(m)
          end do
          self%active_count = m

@@ -184,8 +184,7 @@ contains
 
    subroutine run_dynamics_scene()
       type(run_outcome) :: outcome
-      call run_dynamics(scene, prepared%model, prepared%contacts, prepared%loads, prepared%u0, prepared%v0, &
-                        outcome, stat, errmsg)
+      call run_dynamics(scene, prepared, outcome, stat, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
       if (outcome%failed) then
          write (error_unit, '(a)') 'vibrobeam: numerical failure at '//trim(outcome%failure)
