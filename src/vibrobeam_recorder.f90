@@ -3,8 +3,9 @@
 !! Recorded at every output time (t = 0, every `every` steps, and the last step): time,
 !! tip displacement, velocity and mean contact force at the tip over the output interval,
 !! energies, largest penetration, and the displacement field. Recorded at every step: new
-!! impacts (a contact point that receives an impulse after a step without one), the time
-!! each contact point spends in contact, and the largest penetration of the run.
+!! impacts (a contact point approaching its obstacle that receives an impulse after a step
+!! without one; an impulse on a point already moving away holds it, it is not an impact),
+!! the time each contact point spends in contact, and the largest penetration of the run.
 module vibrobeam_recorder
    use vibrobeam_kinds, only: dp
    use vibrobeam_model, only: beam_model, nodal_displacement
@@ -99,7 +100,7 @@ contains
          c = stepper%active(k)
          if (abs(stepper%impulse(k)) <= 0) cycle
          now(c) = .true.
-         if (.not. self%in_contact(c)) call append(self%impacts, [stepper%t, stepper%contacts%x(c), &
+         if (.not. self%in_contact(c) .and. stepper%approaching(k)) call append(self%impacts, [stepper%t, stepper%contacts%x(c), &
                                                    stepper%impulse(k), stepper%velocity_before(k), stepper%velocity_after(k)])
          if (c == self%tip_contact) self%tip_impulse = self%tip_impulse + stepper%impulse(k)
       end do

@@ -47,6 +47,7 @@ module vibrobeam_velocity_stepper
       integer, allocatable :: active(:)            !! active contact points (first active_count)
       real(dp), allocatable :: impulse(:)          !! P_c of each active point (N s)
       real(dp), allocatable :: velocity_before(:), velocity_after(:)   !! H_c V^n, H_c V^{n+1}
+      logical, allocatable :: approaching(:)       !! s_c H_c V^n <= 0: moving toward the obstacle
       integer :: iterations = 0                    !! contact solver iterations of the last step
       ! running sums since t = 0 (SPEC §3 energy balance, exact for theta = 1/2)
       real(dp) :: work = 0                   !! sum F^{n+theta} . (U^{n+1} - U^n)
@@ -95,7 +96,8 @@ contains
       self%steps = 0
       self%force = loads%at(0.0_dp)
       allocate (self%active(contacts%count), self%impulse(contacts%count), &
-                self%velocity_before(contacts%count), self%velocity_after(contacts%count))
+                self%velocity_before(contacts%count), self%velocity_after(contacts%count), &
+                self%approaching(contacts%count))
       self%active_count = 0
    end subroutine init
 
@@ -106,7 +108,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp), dimension(size(self%u)) :: rhs, work_vector, v_free, v_new, u_new, force_new, force_theta, v_theta
-      real(dp) :: predicted, approach, e_c
+      real(dp) :: predicted, e_c
       real(dp) :: signs(self%contacts%count), offsets(self%contacts%count)
       integer :: c, m, k
       associate (dt => self%dt, theta => self%theta)
@@ -134,8 +136,8 @@ contains
             end if
             self%active(m) = c
             self%velocity_before(m) = contact_value(self%contacts, c, self%v)
-            approach = signs(m)*self%velocity_before(m)
-            e_c = merge(self%restitution, self%separating_restitution, approach <= 0)
+            self%approaching(m) = signs(m)*self%velocity_before(m) <= 0
+            e_c = merge(self%restitution, self%separating_restitution, self%approaching(m))
             offsets(m) = -e_c*self%velocity_before(m)
          end do
          self%active_count = m

@@ -3,9 +3,12 @@
 !! 'NAME: N passed, M failed' and exits non-zero when anything failed.
 module vibrobeam_test_support
    use vibrobeam_kinds, only: dp, error_unit, output_unit
+   use vibrobeam_scene, only: scene_type, validate_scene
+   use vibrobeam_input, only: read_scene
+   use vibrobeam_setup, only: prepared_scene, prepare_scene
    implicit none
    private
-   public :: test_counter
+   public :: test_counter, read_test_scene, prepare_test_scene
 
    type, public :: test_counter
       integer :: passed = 0
@@ -59,4 +62,33 @@ contains
       write (output_unit, '(a,i0,a,i0,a)') program_name//': ', self%passed, ' passed, ', self%failed, ' failed'
       if (self%failed > 0) error stop 1
    end subroutine finish
+
+   !> The scene of a verification namelist file; stops the test if it is not valid.
+   function read_test_scene(path) result(scene)
+      character(len=*), intent(in) :: path
+      type(scene_type) :: scene
+      integer :: stat
+      character(len=512) :: errmsg
+      call read_scene(path, scene, stat, errmsg)
+      if (stat == 0) call validate_scene(scene, stat, errmsg)
+      if (stat /= 0) then
+         write (error_unit, '(a)') 'FAIL reading '//path//': '//trim(errmsg)
+         error stop 1
+      end if
+   end function read_test_scene
+
+   !> prepare_scene, stopping the test on failure.
+   subroutine prepare_test_scene(scene, prepared)
+      type(scene_type), intent(in) :: scene
+      type(prepared_scene), intent(out) :: prepared
+      character(len=:), allocatable :: warnings
+      integer :: stat
+      character(len=512) :: errmsg
+      warnings = ''
+      call prepare_scene(scene, prepared, warnings, stat, errmsg)
+      if (stat /= 0) then
+         write (error_unit, '(a)') 'FAIL preparing the scene: '//trim(errmsg)
+         error stop 1
+      end if
+   end subroutine prepare_test_scene
 end module vibrobeam_test_support
