@@ -165,7 +165,7 @@ contains
       character(len=*), intent(out) :: errmsg
       logical :: in_set(size(active)), infeasible(size(active))
       real(dp) :: gap(size(active)), w_x_free(size(x_free)), gap_scale, impulse_scale, slack
-      integer :: m, k, a, count_infeasible, best, patience, limit
+      integer :: m, k, count_infeasible, best, patience, limit
       m = size(active)
       call band_matvec(self%metric, x_free, w_x_free)
       do k = 1, m
@@ -214,20 +214,11 @@ contains
             in_set(k) = .not. in_set(k)
          end if
       end do
-      ! clip the sign of round-off-sized impulses so that s P >= 0 holds exactly, then
-      ! recompute x = x_free + W^-1 H^T P with the Cholesky factor of W, so that x and P
-      ! satisfy the momentum equation to the accuracy of a band solve (the saddle-point
-      ! LU solve is less accurate, and the energy balance of SPEC §3 relies on it)
+      ! clip the sign of round-off-sized impulses so that s P >= 0 holds exactly. x is kept
+      ! from the saddle-point solve, which satisfies the active constraints to round-off;
+      ! rebuilding it as x_free + W^-1 H^T P would not (measured: 1.5e-10 relative
+      ! penetration in the static test at N = 64) and did not improve the energy balance.
       where (s*impulse < 0) impulse = 0
-      x = 0
-      do k = 1, m
-         do a = 1, 4
-            if (self%contacts%dofs(a, active(k)) /= 0) x(self%contacts%dofs(a, active(k))) = &
-               x(self%contacts%dofs(a, active(k))) + self%contacts%weights(a, active(k))*impulse(k)
-         end do
-      end do
-      call band_solve(self%metric_factor, x)
-      x = x_free + x
    end subroutine project_band
 
    !> Solve [W, -H_F^T; -H_F, 0] [x; P_F] = [W x_free; -b_F], P = 0 outside F, as one
