@@ -125,7 +125,7 @@ contains
          contacts%x(c) = model%x(i + 1)
          contacts%lower(c) = lower(i)
          contacts%upper(c) = upper(i)
-         call node_row(i, contacts%dofs(:, c), contacts%weights(:, c))
+         call node_row(model, i, contacts%dofs(:, c), contacts%weights(:, c))
       end do
    end subroutine build_contact_points
 

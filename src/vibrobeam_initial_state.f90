@@ -2,8 +2,10 @@
 !!
 !! 'mode' data are the closed-form cantilever mode shapes (SPEC §6), scaled so that the
 !! tip value is the given amplitude, and interpolated on the mesh (Hermite: nodal values
-!! and slopes). 'uniform' velocity is v = amplitude at every node with zero rotation
-!! rate, i.e. a rigid translation everywhere but at the clamp.
+!! and slopes; B-splines: the spline through the nodal values with the tip slope).
+!! 'uniform' velocity is v = amplitude at every node with zero slope rate (Hermite: zero
+!! rotation rates; B-splines: zero slope rate at the tip), a rigid translation everywhere
+!! but next to the clamp.
 module vibrobeam_initial_state
    use vibrobeam_kinds, only: dp
    use vibrobeam_scene, only: scene_type
@@ -35,12 +37,13 @@ contains
       type(scene_type), intent(in) :: scene
       type(beam_model), intent(in) :: model
       real(dp) :: v(model%unknowns)
+      integer :: i
       select case (scene%velocity)
       case ('mode')
          v = mode_field(model, scene%velocity_mode, scene%velocity_amplitude)
       case ('uniform')
-         v = 0
-         v(1:model%unknowns:2) = scene%velocity_amplitude
+         v = interpolate_field(model, [(scene%velocity_amplitude, i=1, model%elements)], &
+                               [(0.0_dp, i=1, model%elements)])
       case default
          v = 0
       end select

@@ -1,22 +1,27 @@
 !> The discrete beam model (SPEC §2): mesh, unknowns, banded mass and stiffness matrices,
 !! load vectors and the map from unknowns to the displacement at a point.
 !!
-!! Hermite cubic elements: the unknowns are (w_1, theta_1, ..., w_N, theta_N) (node 0 is
-!! clamped and carries no unknown), so M and K have 3 sub-diagonals. Every matrix is kept
-!! in LAPACK band storage (`vibrobeam_band`).
+!! Two bases, both with M and K of 3 sub-diagonals kept in LAPACK band storage
+!! (`vibrobeam_band`):
+!! - 'hermite': Hermite cubic elements, unknowns (w_1, theta_1, ..., w_N, theta_N), J = 2N
+!!   (node 0 is clamped and carries no unknown);
+!! - 'bspline': cubic B-splines on the open uniform knot vector (`vibrobeam_bspline`),
+!!   unknowns the coefficients c_3..c_{N+3}, J = N + 1 (the clamp u(0) = u_x(0) = 0 sets
+!!   c_1 = c_2 = 0). The displacement at a node is a combination of 3 coefficients.
 module vibrobeam_model
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_allocate, band_add
    use vibrobeam_hermite, only: hermite_shape, hermite_element_mass, hermite_element_stiffness
+   use vibrobeam_bspline, only: bspline_knots, bspline_shape
    implicit none
    private
    public :: beam_model, build_model, element_dofs, point_row, node_row, nodal_displacement
-   public :: load_vector, point_load_vector, interpolate_field, space_profile
+   public :: load_vector, point_load_vector, interpolate_field, space_profile, energy_integrals
 
    integer, parameter :: bandwidth = 3   !! sub-diagonals of M and K for both bases
 
    !> 4-point Gauss-Legendre rule on [0, 1] (exact for polynomials of degree 7, hence for
-   !! every Hermite mass and stiffness integrand and for loads that are cubic in x).
+   !! every mass and stiffness integrand of cubic elements and for loads cubic in x).
    real(dp), parameter :: gauss_points(4) = 0.5_dp + 0.5_dp*[-0.861136311594052575_dp, &
       -0.339981043584856265_dp, 0.339981043584856265_dp, 0.861136311594052575_dp]
    real(dp), parameter :: gauss_weights(4) = 0.5_dp*[0.347854845137453857_dp, &
@@ -24,14 +29,15 @@ module vibrobeam_model
 
    !> What the discretized beam is.
    type :: beam_model
-      character(len=16) :: basis = 'hermite'  !! 'hermite'
+      character(len=16) :: basis = 'hermite'  !! 'hermite' | 'bspline'
       integer :: elements = 0      !! N
-      integer :: unknowns = 0      !! J = 2N for Hermite elements
+      integer :: unknowns = 0      !! J = 2N (Hermite), N + 1 (B-splines)
       real(dp) :: length = 0       !! L (m)
       real(dp) :: h = 0            !! element length L/N (m)
       real(dp) :: rho_s = 1        !! mass per unit length rho S (kg/m)
       real(dp) :: ei = 1           !! bending stiffness E I (N m^2)
       real(dp), allocatable :: x(:)          !! node positions x_0..x_N (m), index 1..N+1
+      real(dp), allocatable :: knots(:)      !! B-spline knots (N + 7), B-splines only
       type(symmetric_band) :: mass           !! M, (J x J, 3 sub-diagonals)
       type(symmetric_band) :: stiffness      !! K, (J x J, 3 sub-diagonals)
    end type beam_model
@@ -47,9 +53,9 @@ module vibrobeam_model
 
 contains
 
-   !> Assemble the model of a clamped-free beam of `elements` Hermite elements.
+   !> Assemble the model of a clamped-free beam of N elements of the given basis.
    subroutine build_model(basis, elements, length, rho_s, ei, model, stat, errmsg)
-      character(len=*), intent(in) :: basis  !! 'hermite'
+      character(len=*), intent(in) :: basis  !! 'hermite' | 'bspline'
       integer, intent(in) :: elements        !! N >= 1
       real(dp), intent(in) :: length         !! L > 0 (m)
       real(dp), intent(in) :: rho_s          !! rho S > 0 (kg/m)
@@ -57,29 +63,50 @@ contains
       type(beam_model), intent(out) :: model
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp) :: element_mass(4, 4), element_stiffness(4, 4)
-      integer :: e, a, b, dofs(4), i
+      real(dp) :: element_mass(4, 4), element_stiffness(4, 4), n(4), d2n(4), x, w
+      integer :: e, a, b, dofs(4), i, g
       stat = 0
       errmsg = ''
-      if (basis /= 'hermite') then
-         stat = 1
-         errmsg = 'basis '''//trim(basis)//''' is not available'
-         return
-      end if
       model%basis = basis
       model%elements = elements
-      model%unknowns = 2*elements
       model%length = length
       model%h = length/elements
       model%rho_s = rho_s
       model%ei = ei
       model%x = [(length*i/elements, i=0, elements)]
+      select case (basis)
+      case ('hermite')
+         model%unknowns = 2*elements
+      case ('bspline')
+         model%unknowns = elements + 1
+         model%knots = bspline_knots(elements, length)
+      case default
+         stat = 1
+         errmsg = 'basis '''//trim(basis)//''' is not available'
+         return
+      end select
       call band_allocate(model%mass, model%unknowns, bandwidth)
       call band_allocate(model%stiffness, model%unknowns, bandwidth)
-      element_mass = rho_s*hermite_element_mass(model%h)
-      element_stiffness = ei*hermite_element_stiffness(model%h)
       do e = 1, elements
-         dofs = element_dofs(e)
+         if (basis == 'hermite') then
+            element_mass = rho_s*hermite_element_mass(model%h)
+            element_stiffness = ei*hermite_element_stiffness(model%h)
+         else
+            ! Gauss quadrature, exact for the degree-6 and degree-2 integrands
+            element_mass = 0
+            element_stiffness = 0
+            do g = 1, 4
+               x = model%x(e) + gauss_points(g)*model%h
+               w = gauss_weights(g)*model%h
+               n = bspline_shape(model%knots, e, x, 0)
+               d2n = bspline_shape(model%knots, e, x, 2)
+               do b = 1, 4
+                  element_mass(:, b) = element_mass(:, b) + w*rho_s*n*n(b)
+                  element_stiffness(:, b) = element_stiffness(:, b) + w*ei*d2n*d2n(b)
+               end do
+            end do
+         end if
+         dofs = element_dofs(model, e)
          do b = 1, 4
             do a = b, 4
                if (dofs(a) == 0 .or. dofs(b) == 0) cycle
@@ -90,14 +117,32 @@ contains
       end do
    end subroutine build_model
 
-   !> Global unknowns of element e (1..N) in the order of `hermite_shape`; 0 marks a
-   !! clamped degree of freedom (node 0), which has no unknown.
-   pure function element_dofs(e) result(dofs)
+   !> Global unknowns of element e (1..N) in the order of the element's shape functions;
+   !! 0 marks a clamped degree of freedom, which has no unknown.
+   pure function element_dofs(model, e) result(dofs)
+      type(beam_model), intent(in) :: model
       integer, intent(in) :: e
       integer :: dofs(4)
-      dofs = [2*e - 3, 2*e - 2, 2*e - 1, 2*e]
-      if (e == 1) dofs(1:2) = 0
+      if (model%basis == 'hermite') then
+         dofs = [2*e - 3, 2*e - 2, 2*e - 1, 2*e]
+      else
+         dofs = [e - 2, e - 1, e, e + 1]   ! B_e..B_{e+3}, unknown index = basis index - 2
+      end if
+      where (dofs < 1) dofs = 0
    end function element_dofs
+
+   !> Shape functions of element e at x (derivative of order `order`).
+   pure function element_shape(model, e, x, order) result(n)
+      type(beam_model), intent(in) :: model
+      integer, intent(in) :: e, order
+      real(dp), intent(in) :: x
+      real(dp) :: n(4)
+      if (model%basis == 'hermite') then
+         n = hermite_shape((x - model%x(e))/model%h, model%h, order)
+      else
+         n = bspline_shape(model%knots, e, x, order)
+      end if
+   end function element_shape
 
    !> The displacement at x as a combination of unknowns: u_h(x) = sum(weights * U(dofs)),
    !! where a dof of 0 (clamped) contributes nothing. `order` 1 or 2 gives u_x, u_xx.
@@ -111,19 +156,28 @@ contains
       derivative = 0
       if (present(order)) derivative = order
       e = min(model%elements, max(1, floor(x/model%h) + 1))
-      dofs = element_dofs(e)
-      weights = hermite_shape((x - model%x(e))/model%h, model%h, derivative)
+      dofs = element_dofs(model, e)
+      weights = element_shape(model, e, x, derivative)
       where (dofs == 0) weights = 0
    end subroutine point_row
 
    !> The displacement at node i (1..N) as a combination of unknowns, like `point_row`
-   !! but exact: for Hermite elements u_h(x_i) = w_i is an unknown itself (SPEC §2).
-   pure subroutine node_row(node, dofs, weights)
+   !! but exact at the node: for Hermite elements u_h(x_i) = w_i is an unknown itself
+   !! (SPEC §2); for B-splines it is the value of the element ending at x_i.
+   pure subroutine node_row(model, node, dofs, weights)
+      type(beam_model), intent(in) :: model
       integer, intent(in) :: node
       integer, intent(out) :: dofs(4)
       real(dp), intent(out) :: weights(4)
-      dofs = [2*node - 1, 0, 0, 0]
-      weights = [1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]
+      if (model%basis == 'hermite') then
+         dofs = [2*node - 1, 0, 0, 0]
+         weights = [1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]
+      else
+         dofs = element_dofs(model, node)
+         weights = bspline_shape(model%knots, node, model%x(node + 1), 0)
+         where (dofs == 0 .or. abs(weights) < epsilon(1.0_dp)) weights = 0
+         where (abs(weights) <= 0) dofs = 0
+      end if
    end subroutine node_row
 
    !> Displacement at the N+1 nodes (node 0 included, where it is 0) from the unknowns.
@@ -131,9 +185,48 @@ contains
       type(beam_model), intent(in) :: model
       real(dp), intent(in) :: u(:)   !! (J) unknowns
       real(dp) :: w(model%elements + 1)
+      integer :: i, a, dofs(4)
+      real(dp) :: weights(4)
       w(1) = 0
-      w(2:) = u(1:model%unknowns:2)
+      if (model%basis == 'hermite') then
+         w(2:) = u(1:model%unknowns:2)
+         return
+      end if
+      do i = 1, model%elements
+         call node_row(model, i, dofs, weights)
+         w(i + 1) = 0
+         do a = 1, 4
+            if (dofs(a) /= 0) w(i + 1) = w(i + 1) + weights(a)*u(dofs(a))
+         end do
+      end do
    end function nodal_displacement
+
+   !> The integrals 1/2 int EI (u_h'')^2 dx = 1/2 U^T K U and 1/2 int rho S u_h^2 dx =
+   !! 1/2 U^T M U, summed element by element by Gauss quadrature (exact for cubic
+   !! elements). Sums of non-negative terms: full relative accuracy even when K is
+   !! ill-conditioned, unlike the product U^T (K U), which cancels for smooth U.
+   pure subroutine energy_integrals(model, u, bending, inertia)
+      type(beam_model), intent(in) :: model
+      real(dp), intent(in) :: u(:)          !! (J) unknowns
+      real(dp), intent(out) :: bending      !! 1/2 U^T K U
+      real(dp), intent(out) :: inertia      !! 1/2 U^T M U
+      integer :: e, g, dofs(4)
+      real(dp) :: x, local(4), curvature, value
+      bending = 0
+      inertia = 0
+      do e = 1, model%elements
+         dofs = element_dofs(model, e)
+         local = 0
+         where (dofs /= 0) local = u(max(dofs, 1))
+         do g = 1, 4
+            x = model%x(e) + gauss_points(g)*model%h
+            curvature = dot_product(element_shape(model, e, x, 2), local)
+            value = dot_product(element_shape(model, e, x, 0), local)
+            bending = bending + 0.5_dp*gauss_weights(g)*model%h*model%ei*curvature**2
+            inertia = inertia + 0.5_dp*gauss_weights(g)*model%h*model%rho_s*value**2
+         end do
+      end do
+   end subroutine energy_integrals
 
    !> Consistent load vector F_j = integral over (0, L) of profile(x) phi_j(x) dx, by
    !! 4-point Gauss quadrature per element (exact for profiles of degree <= 4).
@@ -145,10 +238,10 @@ contains
       real(dp) :: n(4), x
       f = 0
       do e = 1, model%elements
-         dofs = element_dofs(e)
+         dofs = element_dofs(model, e)
          do g = 1, 4
             x = model%x(e) + gauss_points(g)*model%h
-            n = hermite_shape(gauss_points(g), model%h, 0)
+            n = element_shape(model, e, x, 0)
             do a = 1, 4
                if (dofs(a) /= 0) f(dofs(a)) = f(dofs(a)) + gauss_weights(g)*model%h*profile(x)*n(a)
             end do
@@ -171,14 +264,45 @@ contains
       end do
    end function point_load_vector
 
-   !> Unknowns of the Hermite interpolant of a field given by its value and slope at the
-   !! nodes x_1..x_N: w_i = value(i), theta_i = slope(i).
-   pure function interpolate_field(model, value, slope) result(u)
+   !> Unknowns of a field given by its value and slope at the nodes x_1..x_N.
+   !! Hermite: the interpolant w_i = value(i), theta_i = slope(i). B-splines: the spline
+   !! through value(1..N) at the nodes with slope(N) at the tip (N + 1 conditions for the
+   !! N + 1 unknowns; the clamp gives u = u_x = 0 at x = 0), solved as a band system.
+   function interpolate_field(model, value, slope) result(u)
       type(beam_model), intent(in) :: model
       real(dp), intent(in) :: value(:)   !! (N) u(x_i), i = 1..N (m)
       real(dp), intent(in) :: slope(:)   !! (N) u_x(x_i)
       real(dp) :: u(model%unknowns)
-      u(1::2) = value
-      u(2::2) = slope
+      interface
+         subroutine dgbsv(n, kl, ku, nrhs, ab, ldab, ipiv, b, ldb, info)
+            import :: dp
+            integer, intent(in) :: n, kl, ku, nrhs, ldab, ldb
+            real(dp), intent(inout) :: ab(ldab, *), b(ldb, *)
+            integer, intent(out) :: ipiv(*), info
+         end subroutine dgbsv
+      end interface
+      integer, parameter :: kl = 3, ku = 3
+      real(dp) :: ab(2*kl + ku + 1, model%unknowns), weights(4)
+      integer :: ipiv(model%unknowns), i, a, dofs(4), info, n
+      if (model%basis == 'hermite') then
+         u(1::2) = value
+         u(2::2) = slope
+         return
+      end if
+      n = model%unknowns
+      ab = 0
+      do i = 1, model%elements          ! row i: u_h(x_i) = value(i)
+         call node_row(model, i, dofs, weights)
+         do a = 1, 4
+            if (dofs(a) /= 0) ab(kl + ku + 1 + i - dofs(a), dofs(a)) = weights(a)
+         end do
+      end do
+      call point_row(model, model%length, dofs, weights, order=1)   ! row N+1: u_x(L) = slope(N)
+      do a = 1, 4
+         if (dofs(a) /= 0) ab(kl + ku + 1 + n - dofs(a), dofs(a)) = weights(a)
+      end do
+      u(1:model%elements) = value
+      u(n) = slope(model%elements)
+      call dgbsv(n, kl, ku, 1, ab, 2*kl + ku + 1, ipiv, u, n, info)
    end function interpolate_field
 end module vibrobeam_model

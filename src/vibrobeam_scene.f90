@@ -135,11 +135,12 @@ contains
       call in_range('beam', 'rayleigh_stiffness', scene%rayleigh_stiffness, 0.0_dp, huge(1.0_dp))
       ! &mesh
       call integer_in_range('mesh', 'elements', scene%elements, 1, 1000000)
-      call one_of('mesh', 'basis', scene%basis, [character(len=16) :: 'hermite'])
+      call one_of('mesh', 'basis', scene%basis, [character(len=16) :: 'hermite', 'bspline'])
       ! &analysis
       call one_of('analysis', 'kind', scene%kind, [character(len=16) :: 'modes', 'static', 'dynamics'])
       if (stat /= 0) return
-      call integer_in_range('analysis', 'modes', scene%modes, 1, 2*scene%elements)
+      call integer_in_range('analysis', 'modes', scene%modes, 1, &
+                            merge(2*scene%elements, scene%elements + 1, scene%basis == 'hermite'))
       ! &obstacles
       do i = 1, size(scene%obstacles)
          write (index, '(i0)') i
