@@ -22,7 +22,7 @@
 module vibrobeam_contact_solver
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_solve, band_matvec, band_entry
-   use vibrobeam_contact_points, only: contact_set
+   use vibrobeam_contact_points, only: contact_set, no_bound
    use vibrobeam_lcp, only: solve_lcp
    implicit none
    private
@@ -46,6 +46,7 @@ module vibrobeam_contact_solver
    contains
       procedure :: setup
       procedure :: project
+      procedure :: project_admissible
    end type contact_projector
 
 contains
@@ -111,6 +112,65 @@ contains
          call project_band(self, x_free, active, s, b, x, impulse, iterations, stat, errmsg)
       end if
    end subroutine project
+
+   !> Projection onto the whole admissible set {lower(c) <= H_c x <= upper(c), every
+   !! contact point c} (statics, SPEC §4's position projection). Each point may bound from
+   !! below and above; the side that can be active is the one a solution violates, so we
+   !! start from the points x_free violates and add (or switch the side of) every point a
+   !! solution still violates, until none does. multiplier(c) = P_c, 0 off contact.
+   subroutine project_admissible(self, x_free, x, multiplier, iterations, stat, errmsg)
+      class(contact_projector), intent(in) :: self
+      real(dp), intent(in) :: x_free(:)
+      real(dp), intent(out) :: x(:)
+      real(dp), intent(out) :: multiplier(:)     !! (contacts%count)
+      integer, intent(out) :: iterations, stat
+      character(len=*), intent(out) :: errmsg
+      real(dp) :: value, scale
+      real(dp), allocatable :: signs(:), offsets(:), impulse(:)
+      integer, allocatable :: side(:), active(:)
+      integer :: c, round, solver_iterations, m
+      logical :: changed
+      x = x_free
+      multiplier = 0
+      iterations = 0
+      stat = 0
+      errmsg = ''
+      if (self%contacts%count == 0) return
+      allocate (side(self%contacts%count), source=0)   ! +1 below, -1 above, 0 not a candidate
+      ! violations are judged relative to the size of the free solution and of the levels
+      scale = maxval(abs(x_free)) + tiny(1.0_dp)
+      do c = 1, self%contacts%count
+         if (self%contacts%lower(c) > -no_bound) scale = max(scale, abs(self%contacts%lower(c)))
+         if (self%contacts%upper(c) < no_bound) scale = max(scale, abs(self%contacts%upper(c)))
+      end do
+      do round = 1, 2*self%contacts%count + 1
+         changed = .false.
+         do c = 1, self%contacts%count
+            value = row_times(self%contacts, c, x)
+            if (value < self%contacts%lower(c) - 1e-12_dp*scale .and. side(c) /= 1) then
+               side(c) = 1
+               changed = .true.
+            else if (value > self%contacts%upper(c) + 1e-12_dp*scale .and. side(c) /= -1) then
+               side(c) = -1
+               changed = .true.
+            end if
+         end do
+         if (.not. changed) return
+         active = pack([(c, c=1, self%contacts%count)], side /= 0)
+         m = size(active)
+         signs = real(side(active), dp)
+         offsets = merge(self%contacts%lower(active), self%contacts%upper(active), side(active) == 1)
+         if (allocated(impulse)) deallocate (impulse)
+         allocate (impulse(m))
+         call self%project(x_free, active, signs, offsets, x, impulse, solver_iterations, stat, errmsg)
+         iterations = iterations + solver_iterations
+         if (stat /= 0) return
+         multiplier = 0
+         multiplier(active) = impulse
+      end do
+      stat = 1
+      errmsg = 'contact projection: the candidate contact set did not settle'
+   end subroutine project_admissible
 
    !> H_c v for contact point c.
    pure function row_times(contacts, c, v) result(value)
@@ -212,6 +272,17 @@ contains
          else
             k = findloc(infeasible, .true., dim=1)   ! Murty: least infeasible index
             in_set(k) = .not. in_set(k)
+         end if
+      end do
+      ! residual check: the constraints held as equalities must hold to the solve's accuracy
+      ! (complementarity: P = 0 off the set by construction, gap = 0 on it)
+      do k = 1, m
+         if (.not. in_set(k)) cycle
+         if (abs(row_times(self%contacts, active(k), x) - b(k)) > 1e-8_dp*gap_scale) then
+            stat = 3
+            write (errmsg, '(a,i0,a,es10.3)') 'band contact solver: residual check failed at contact point ', &
+               active(k), ', |H x - b| = ', abs(row_times(self%contacts, active(k), x) - b(k))
+            return
          end if
       end do
       ! clip the sign of round-off-sized impulses so that s P >= 0 holds exactly. x is kept

@@ -1,5 +1,5 @@
 !> A dynamics run from start to result files (&analysis kind = 'dynamics'): the time loop
-!! around `velocity_stepper`, output sampling, progress reports and failure handling.
+!! around the scheme's stepper, output sampling, progress reports and failure handling.
 !!
 !! The run takes n = nint(t_end/dt) steps (t_end is rounded to a whole number of steps;
 !! a warning says so when that changes it by more than 1e-9 dt). On a numerical failure
@@ -9,8 +9,8 @@ module vibrobeam_dynamics
    use, intrinsic :: iso_c_binding, only: c_int
    use vibrobeam_kinds, only: dp, int64, error_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_stepper
-   use vibrobeam_velocity_stepper, only: velocity_stepper
+   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_stepper, only: time_stepper
    use vibrobeam_recorder, only: dynamics_recorder
    use vibrobeam_results, only: result_files
    implicit none
@@ -45,7 +45,7 @@ contains
       type(run_outcome), intent(out) :: outcome
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      type(velocity_stepper) :: stepper
+      class(time_stepper), allocatable :: stepper
       type(dynamics_recorder) :: recorder
       type(result_files) :: files
       integer :: steps, n, step_stat
@@ -56,7 +56,7 @@ contains
       steps = max(1, nint(scene%t_end/scene%dt))
       if (abs(steps*scene%dt - scene%t_end) > 1e-9_dp*scene%dt) write (error_unit, '(a,es14.7,a)') &
          'vibrobeam: warning: t_end is not a whole number of steps; the run ends at ', steps*scene%dt, ' s'
-      call start_stepper(scene, prepared, stepper, stat, errmsg)
+      call start_time_stepper(scene, prepared, stepper, stat, errmsg)
       if (stat /= 0) return
       call recorder%init(stepper, prepared%model)
       call recorder%sample(stepper, prepared%model)

@@ -10,8 +10,9 @@ module vibrobeam_recorder
    use vibrobeam_kinds, only: dp
    use vibrobeam_model, only: beam_model, nodal_displacement
    use vibrobeam_contact_points, only: contact_value
-   use vibrobeam_velocity_stepper, only: velocity_stepper
+   use vibrobeam_stepper, only: time_stepper
    use vibrobeam_results, only: result_files
+   use vibrobeam_spectrum, only: amplitude_spectrum, bin_width
    implicit none
    private
    public :: dynamics_recorder
@@ -64,7 +65,7 @@ contains
 
    subroutine recorder_init(self, stepper, model)
       class(dynamics_recorder), intent(inout) :: self
-      type(velocity_stepper), intent(in) :: stepper
+      class(time_stepper), intent(in) :: stepper
       type(beam_model), intent(in) :: model
       integer :: c
       allocate (self%in_contact(stepper%contacts%count), source=.false.)
@@ -78,7 +79,7 @@ contains
 
    !> Largest penetration of the current positions into an obstacle (m, >= 0).
    pure function penetration(stepper) result(depth)
-      type(velocity_stepper), intent(in) :: stepper
+      class(time_stepper), intent(in) :: stepper
       real(dp) :: depth, u
       integer :: c
       depth = 0
@@ -91,7 +92,7 @@ contains
    !> Bookkeeping after every step: impacts, contact time, penetration, iterations.
    subroutine after_step(self, stepper)
       class(dynamics_recorder), intent(inout) :: self
-      type(velocity_stepper), intent(in) :: stepper
+      class(time_stepper), intent(in) :: stepper
       logical :: now(size(self%in_contact))
       real(dp) :: depth
       integer :: k, c
@@ -100,7 +101,8 @@ contains
          c = stepper%active(k)
          if (abs(stepper%impulse(k)) <= 0) cycle
          now(c) = .true.
-         if (.not. self%in_contact(c) .and. stepper%approaching(k)) call append(self%impacts, [stepper%t, stepper%contacts%x(c), &
+         if (.not. self%in_contact(c) .and. stepper%approaching(k)) call append(self%impacts, &
+                                                   [stepper%impulse_time, stepper%contacts%x(c), &
                                                    stepper%impulse(k), stepper%velocity_before(k), stepper%velocity_after(k)])
          if (c == self%tip_contact) self%tip_impulse = self%tip_impulse + stepper%impulse(k)
       end do
@@ -118,7 +120,7 @@ contains
    !> Record the state at an output time.
    subroutine sample(self, stepper, model)
       class(dynamics_recorder), intent(inout) :: self
-      type(velocity_stepper), intent(in) :: stepper
+      class(time_stepper), intent(in) :: stepper
       type(beam_model), intent(in) :: model
       real(dp) :: row(series_columns), nodes(model%elements + 1), nodal_velocity(model%elements + 1)
       real(dp) :: interval
@@ -149,11 +151,15 @@ contains
       class(dynamics_recorder), intent(in) :: self
       type(result_files), intent(inout) :: files
       type(beam_model), intent(in) :: model
-      type(velocity_stepper), intent(in) :: stepper
+      class(time_stepper), intent(in) :: stepper
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: n, unit, i, k
       real(dp), allocatable :: s(:,:), impacts(:,:)
+      real(dp), allocatable :: frequency(:), tip_amplitude(:)
+      integer :: uniform, spectrum_stat
+      real(dp) :: interval
+      character(len=256) :: spectrum_message
       n = self%series%rows
       allocate (s, source=self%series%values(:, 1:n))
       allocate (impacts(5, self%impacts%rows))
@@ -184,6 +190,32 @@ contains
       if (stat == 0) call files%h5%attr_real('/contact', 'max_penetration', self%max_penetration, stat, errmsg)
       if (stat == 0) call files%h5%attr_real('/contact', 'max_penetration_time', self%max_penetration_time, stat, errmsg)
       if (stat /= 0) return
+      ! Spectrum of the tip displacement (SPEC §5) over the uniformly spaced output times
+      ! t = 0, every*dt, ...: the last row (end of run / last good state) is dropped when its
+      ! interval differs from the others. Fewer than 2 samples: an empty spectrum.
+      uniform = n
+      interval = 0
+      if (n >= 2) interval = s(c_time, 2) - s(c_time, 1)
+      if (n >= 3) then
+         if (abs((s(c_time, n) - s(c_time, n - 1)) - interval) > 1e-9_dp*interval) uniform = n - 1
+      end if
+      call amplitude_spectrum(s(c_tip_u, 1:uniform), interval, frequency, tip_amplitude, spectrum_stat, &
+                              spectrum_message, window='hann')
+      call files%h5%write_real_1d('/spectrum/frequency', frequency, 'Hz', stat, errmsg)
+      if (stat == 0) call files%h5%write_real_1d('/spectrum/tip_amplitude', tip_amplitude, 'm', stat, errmsg)
+      if (stat == 0 .and. uniform >= 2) &
+         call files%h5%attr_real('/spectrum', 'bin_width', bin_width(uniform, interval), stat, errmsg)
+      if (stat == 0) call files%h5%attr_real('/spectrum', 'sampling_interval', interval, stat, errmsg)
+      if (stat == 0) call files%h5%attr_string('/spectrum', 'window', 'hann', stat, errmsg)
+      if (stat /= 0) return
+      call files%open_text('spectrum', 'frequency (Hz)  amplitude of the tip displacement (m): single-sided, '// &
+                           'mean removed, Hann window', unit, stat, errmsg)
+      if (stat /= 0) return
+      if (unit /= -1) then
+         do i = 1, size(frequency)
+            write (unit, '(*(es24.15))') frequency(i), tip_amplitude(i)
+         end do
+      end if
       call files%open_text('tip', 't (s)  u_tip (m)  v_tip (m/s)  mean tip contact force over the output interval (N)', &
                            unit, stat, errmsg)
       if (stat /= 0) return

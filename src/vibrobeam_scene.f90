@@ -161,7 +161,7 @@ contains
       call positive('time', 'dt', scene%dt)
       if (stat /= 0) return
       call in_range('time', 'dt', scene%dt, tiny(1.0_dp), scene%t_end)
-      call one_of('time', 'scheme', scene%scheme, [character(len=16) :: 'velocity'])
+      call one_of('time', 'scheme', scene%scheme, [character(len=16) :: 'velocity', 'position'])
       call in_range('time', 'theta', scene%theta, 0.5_dp, 1.0_dp)
       call in_range('time', 'gamma', scene%gamma, 0.0_dp, 1.0_dp)
       ! &initial

@@ -9,10 +9,12 @@ module vibrobeam_setup
    use vibrobeam_loads, only: load_set, build_loads
    use vibrobeam_initial_state, only: mode_field, initial_velocity
    use vibrobeam_static, only: solve_static
+   use vibrobeam_stepper, only: time_stepper
    use vibrobeam_velocity_stepper, only: velocity_stepper
+   use vibrobeam_position_stepper, only: position_stepper
    implicit none
    private
-   public :: prepared_scene, prepare_scene, start_stepper
+   public :: prepared_scene, prepare_scene, start_stepper, start_time_stepper
 
    type :: prepared_scene
       type(beam_model) :: model
@@ -100,4 +102,27 @@ contains
       stepper%projector%max_iterations = scene%contact_max_iterations
       if (scene%separating_points == 'restitution') stepper%separating_restitution = scene%restitution
    end subroutine start_stepper
+
+   !> The stepper of the scene's scheme (&time scheme: 'velocity' or 'position') at t = 0.
+   subroutine start_time_stepper(scene, prepared, stepper, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(prepared_scene), intent(in) :: prepared
+      class(time_stepper), allocatable, intent(out) :: stepper
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(velocity_stepper), allocatable :: velocity
+      type(position_stepper), allocatable :: position
+      if (scene%scheme == 'position') then
+         allocate (position)
+         call position%init(prepared%model, prepared%contacts, prepared%loads, scene%dt, scene%theta, &
+                            scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
+                            prepared%u0, prepared%v0, stat, errmsg)
+         position%projector%max_iterations = scene%contact_max_iterations
+         call move_alloc(position, stepper)
+      else
+         allocate (velocity)
+         call start_stepper(scene, prepared, velocity, stat, errmsg)
+         call move_alloc(velocity, stepper)
+      end if
+   end subroutine start_time_stepper
 end module vibrobeam_setup

@@ -23,41 +23,24 @@ module vibrobeam_velocity_stepper
    use vibrobeam_contact_points, only: contact_set, contact_value
    use vibrobeam_contact_solver, only: contact_projector
    use vibrobeam_loads, only: load_set
+   use vibrobeam_stepper, only: time_stepper
    implicit none
    private
    public :: velocity_stepper
 
-   type :: velocity_stepper
-      real(dp) :: dt = 0, theta = 0.5_dp, gamma = 0.5_dp, restitution = 1
+   type, extends(time_stepper) :: velocity_stepper
+      real(dp) :: gamma = 0.5_dp                   !! activation at U^n + gamma dt V^n
       !> restitution of an active point already moving away from its obstacle: 1 (our
       !! remedy, default) or `restitution` (the plain law of SPEC §3, for comparison)
       real(dp) :: separating_restitution = 1
-      real(dp) :: rayleigh_mass = 0, rayleigh_stiffness = 0
-      type(symmetric_band) :: mass, stiffness, iteration_matrix
+      type(symmetric_band) :: iteration_matrix     !! W
       type(band_cholesky) :: iteration_factor
-      type(contact_set) :: contacts
-      type(contact_projector) :: projector
-      type(load_set) :: loads
-      real(dp), allocatable :: u(:), v(:)         !! U^n (m), V^n (m/s)
-      real(dp), allocatable :: force(:)           !! F(t_n)
-      real(dp) :: t = 0                            !! t_n (s)
-      integer :: steps = 0                         !! n
-      ! what the last step did
-      integer :: active_count = 0
-      integer, allocatable :: active(:)            !! active contact points (first active_count)
-      real(dp), allocatable :: impulse(:)          !! P_c of each active point (N s)
-      real(dp), allocatable :: velocity_before(:), velocity_after(:)   !! H_c V^n, H_c V^{n+1}
-      logical, allocatable :: approaching(:)       !! s_c H_c V^n <= 0: moving toward the obstacle
-      integer :: iterations = 0                    !! contact solver iterations of the last step
-      ! running sums since t = 0 (SPEC §3 energy balance, exact for theta = 1/2)
-      real(dp) :: work = 0                   !! sum F^{n+theta} . (U^{n+1} - U^n)
-      real(dp) :: dissipated_impacts = 0     !! -sum P . H V^{n+theta}
-      real(dp) :: dissipated_damping = 0     !! sum dt V^{n+theta} . C V^{n+theta}
+      real(dp), allocatable :: force(:)            !! F(t_n)
+      ! u = U^n, v = V^n; work = sum F^{n+theta}.(U^{n+1} - U^n),
+      ! dissipated_impacts = -sum P.H V^{n+theta}, dissipated_damping = sum dt V^{n+theta}.C V^{n+theta}
    contains
       procedure :: init
       procedure :: step
-      procedure :: kinetic_energy
-      procedure :: elastic_energy
    end type velocity_stepper
 
 contains
@@ -95,10 +78,7 @@ contains
       self%t = 0
       self%steps = 0
       self%force = loads%at(0.0_dp)
-      allocate (self%active(contacts%count), self%impulse(contacts%count), &
-                self%velocity_before(contacts%count), self%velocity_after(contacts%count), &
-                self%approaching(contacts%count))
-      self%active_count = 0
+      call self%allocate_step_record()
    end subroutine init
 
    !> Advance from t_n to t_{n+1}. stat: 0 ok; 1..3 contact solver failure (errmsg says);
@@ -117,7 +97,7 @@ contains
          force_theta = theta*force_new + (1 - theta)*self%force
          call band_matvec(self%stiffness, self%u + theta*dt*self%v, work_vector)
          rhs = force_theta - work_vector
-         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) rhs = rhs - damping_times(self, self%v)
+         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) rhs = rhs - self%damping_times(self%v)
          rhs = dt*rhs
          call band_solve(self%iteration_factor, rhs)
          v_free = self%v + rhs
@@ -161,44 +141,15 @@ contains
                                       contact_value(self%contacts, self%active(k), v_theta)
          end do
          if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) &
-            self%dissipated_damping = self%dissipated_damping + dt*dot_product(v_theta, damping_times(self, v_theta))
+            self%dissipated_damping = self%dissipated_damping + dt*dot_product(v_theta, self%damping_times(v_theta))
          self%u = u_new
          self%v = v_new
          self%force = force_new
          self%steps = self%steps + 1
          self%t = self%steps*dt
+         self%impulse_time = self%t   ! the impulse acts over [t_n, t_{n+1}]; recorded at its end
       end associate
    end subroutine step
 
-   !> C x = a M x + b K x (Rayleigh damping).
-   function damping_times(self, x) result(y)
-      type(velocity_stepper), intent(in) :: self
-      real(dp), intent(in) :: x(:)
-      real(dp) :: y(size(x)), z(size(x))
-      y = 0
-      if (self%rayleigh_mass > 0) then
-         call band_matvec(self%mass, x, z)
-         y = self%rayleigh_mass*z
-      end if
-      if (self%rayleigh_stiffness > 0) then
-         call band_matvec(self%stiffness, x, z)
-         y = y + self%rayleigh_stiffness*z
-      end if
-   end function damping_times
 
-   !> 1/2 V^T M V (J; per unit mass when the beam is given by k2).
-   function kinetic_energy(self) result(energy)
-      class(velocity_stepper), intent(in) :: self
-      real(dp) :: energy, mv(size(self%v))
-      call band_matvec(self%mass, self%v, mv)
-      energy = 0.5_dp*dot_product(self%v, mv)
-   end function kinetic_energy
-
-   !> 1/2 U^T K U (J).
-   function elastic_energy(self) result(energy)
-      class(velocity_stepper), intent(in) :: self
-      real(dp) :: energy, ku(size(self%u))
-      call band_matvec(self%stiffness, self%u, ku)
-      energy = 0.5_dp*dot_product(self%u, ku)
-   end function elastic_energy
 end module vibrobeam_velocity_stepper

@@ -1,0 +1,162 @@
+!> The position-based scheme of Paoli and Schatzman used by Dumont & Paoli (2006)
+!! (SPEC §4), for comparison with the velocity-based one:
+!!
+!!   M (U^{n+1} - 2U^n + U^{n-1})/dt^2 + C (U^{n+1} - U^{n-1})/(2 dt)
+!!     + K (theta U^{n+1} + (1 - 2 theta) U^n + theta U^{n-1}) = F^n + H^T r^n,
+!!   (U^{n+1} + e U^{n-1})/(1 + e) = Proj_{K_h}^W ((U_free^{n+1} + e U^{n-1})/(1 + e)),
+!!
+!! W = M + dt/2 C + theta dt^2 K (SPEC §4's M + theta dt^2 K when C = 0), U_free the
+!! solution without reaction. The projection onto the whole admissible set K_h uses
+!! `contact_projector%project_admissible`. With e = 0 every computed position is
+!! admissible (to the solver's round-off); with e > 0 the law reflects U^{n-1} about the
+!! obstacle, so U^{n+1} = (1 + e) Z - e U^{n-1} lies up to e (H U^{n-1} - g) inside it.
+!!
+!! Start: U^{-1} = U^0 - dt V^0 + dt^2/2 M^-1 (F^0 - K U^0 - C V^0) (second order).
+!! What it reports: u = U^{n+1}; v = (U^{n+1} - U^n)/dt, the velocity at t_{n+1/2}; the
+!! energy E_{n+1/2} = 1/2 v^T (M + (theta - 1/4) dt^2 K) v + 1/2 Ubar^T K Ubar, Ubar =
+!! (U^{n+1} + U^n)/2, which the scheme conserves without load, damping or contact; the
+!! work F^n.(U^{n+1} - U^{n-1})/2 and the impulses' -r^n.H(U^{n+1} - U^{n-1})/2 close the
+!! balance. An impulse is r^n dt, the velocities before/after an impact are H(U^n -
+!! U^{n-1})/dt and H(U^{n+1} - U^n)/dt.
+module vibrobeam_position_stepper
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use vibrobeam_kinds, only: dp
+   use vibrobeam_band, only: symmetric_band, band_cholesky, band_combination, band_factor, band_solve, &
+                             band_matvec
+   use vibrobeam_model, only: beam_model
+   use vibrobeam_contact_points, only: contact_set, contact_value
+   use vibrobeam_loads, only: load_set
+   use vibrobeam_stepper, only: time_stepper
+   implicit none
+   private
+   public :: position_stepper
+
+   type, extends(time_stepper) :: position_stepper
+      type(symmetric_band) :: iteration_matrix     !! W
+      type(band_cholesky) :: iteration_factor
+      real(dp), allocatable :: u_previous(:)       !! U^n after a step (U^{-1} at the start)
+      real(dp), allocatable :: multiplier(:)       !! projection multipliers per contact point
+   contains
+      procedure :: init
+      procedure :: step
+      procedure :: kinetic_energy => half_step_kinetic_energy
+      procedure :: elastic_energy => half_step_elastic_energy
+   end type position_stepper
+
+contains
+
+   subroutine init(self, model, contacts, loads, dt, theta, restitution, rayleigh_mass, rayleigh_stiffness, &
+                   contact_regime, u0, v0, stat, errmsg)
+      class(position_stepper), intent(inout) :: self
+      type(beam_model), intent(in) :: model
+      type(contact_set), intent(in) :: contacts
+      type(load_set), intent(in) :: loads
+      real(dp), intent(in) :: dt, theta, restitution, rayleigh_mass, rayleigh_stiffness
+      character(len=*), intent(in) :: contact_regime
+      real(dp), intent(in) :: u0(:), v0(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(band_cholesky) :: mass_factor
+      real(dp) :: acceleration(size(u0)), ku(size(u0))
+      self%dt = dt
+      self%theta = theta
+      self%restitution = restitution
+      self%rayleigh_mass = rayleigh_mass
+      self%rayleigh_stiffness = rayleigh_stiffness
+      self%mass = model%mass
+      self%stiffness = model%stiffness
+      self%contacts = contacts
+      self%loads = loads
+      ! W = (1 + dt a/2) M + (theta dt^2 + dt b/2) K
+      self%iteration_matrix = band_combination(1 + 0.5_dp*dt*rayleigh_mass, model%mass, &
+                                               theta*dt**2 + 0.5_dp*dt*rayleigh_stiffness, model%stiffness)
+      call band_factor(self%iteration_matrix, self%iteration_factor, stat, errmsg)
+      if (stat /= 0) return
+      call self%projector%setup(self%iteration_matrix, self%iteration_factor, contacts, contact_regime)
+      call band_factor(model%mass, mass_factor, stat, errmsg)
+      if (stat /= 0) return
+      call band_matvec(model%stiffness, u0, ku)
+      acceleration = loads%at(0.0_dp) - ku
+      if (rayleigh_mass > 0 .or. rayleigh_stiffness > 0) acceleration = acceleration - self%damping_times(v0)
+      call band_solve(mass_factor, acceleration)
+      self%u = u0
+      self%u_previous = u0 - dt*v0 + 0.5_dp*dt**2*acceleration
+      self%v = (self%u - self%u_previous)/dt
+      self%t = 0
+      self%steps = 0
+      allocate (self%multiplier(contacts%count), source=0.0_dp)
+      call self%allocate_step_record()
+   end subroutine init
+
+   subroutine step(self, stat, errmsg)
+      class(position_stepper), intent(inout) :: self
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp), dimension(size(self%u)) :: rhs, work_vector, u_free, z_free, z, u_new, force, stride
+      real(dp) :: e, before, after, reaction
+      integer :: c, m
+      associate (dt => self%dt, theta => self%theta, u => self%u, u_old => self%u_previous)
+         e = self%restitution
+         force = self%loads%at(self%t)
+         call band_matvec(self%mass, 2*u - u_old, rhs)
+         call band_matvec(self%stiffness, (1 - 2*theta)*u + theta*u_old, work_vector)
+         rhs = rhs - dt**2*work_vector + dt**2*force
+         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) &
+            rhs = rhs + 0.5_dp*dt*self%damping_times(u_old)
+         call band_solve(self%iteration_factor, rhs)
+         u_free = rhs
+         z_free = (u_free + e*u_old)/(1 + e)
+         call self%projector%project_admissible(z_free, z, self%multiplier, self%iterations, stat, errmsg)
+         if (stat /= 0) return
+         u_new = (1 + e)*z - e*u_old
+         if (.not. ieee_is_finite(sum(u_new))) then
+            stat = 4
+            write (errmsg, '(a,es12.5,a)') 'the solution is no longer finite at t = ', self%t + dt, ' s'
+            return
+         end if
+         stride = u_new - u_old   ! U^{n+1} - U^{n-1}
+         if (self%loads%present) self%work = self%work + 0.5_dp*dot_product(force, stride)
+         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) self%dissipated_damping = &
+            self%dissipated_damping + 0.5_dp*dot_product(stride, self%damping_times(stride))/(2*dt)
+         ! contact record: reaction r = (1 + e) P_z/dt^2 (W (U^{n+1} - U_free) = dt^2 H^T r)
+         m = 0
+         do c = 1, self%contacts%count
+            if (abs(self%multiplier(c)) <= 0) cycle
+            m = m + 1
+            reaction = (1 + e)*self%multiplier(c)/dt**2
+            before = (contact_value(self%contacts, c, u) - contact_value(self%contacts, c, u_old))/dt
+            after = (contact_value(self%contacts, c, u_new) - contact_value(self%contacts, c, u))/dt
+            self%active(m) = c
+            self%impulse(m) = reaction*dt
+            self%velocity_before(m) = before
+            self%velocity_after(m) = after
+            self%approaching(m) = sign(1.0_dp, reaction)*before <= 0
+            self%dissipated_impacts = self%dissipated_impacts - 0.5_dp*reaction*contact_value(self%contacts, c, stride)
+         end do
+         self%active_count = m
+         self%u_previous = u
+         self%u = u_new
+         self%v = (self%u - self%u_previous)/dt
+         self%impulse_time = self%t   ! the scheme is centred at t_n, where r^n acts
+         self%steps = self%steps + 1
+         self%t = self%steps*dt
+      end associate
+   end subroutine step
+
+   !> 1/2 v^T (M + (theta - 1/4) dt^2 K) v at t_{n-1/2} (the scheme's kinetic part).
+   function half_step_kinetic_energy(self) result(energy)
+      class(position_stepper), intent(in) :: self
+      real(dp) :: energy, mv(size(self%v)), kv(size(self%v))
+      call band_matvec(self%mass, self%v, mv)
+      call band_matvec(self%stiffness, self%v, kv)
+      energy = 0.5_dp*dot_product(self%v, mv + (self%theta - 0.25_dp)*self%dt**2*kv)
+   end function half_step_kinetic_energy
+
+   !> 1/2 Ubar^T K Ubar, Ubar = (U^n + U^{n-1})/2 (the scheme's elastic part).
+   function half_step_elastic_energy(self) result(energy)
+      class(position_stepper), intent(in) :: self
+      real(dp) :: energy, ku(size(self%u))
+      call band_matvec(self%stiffness, 0.5_dp*(self%u + self%u_previous), ku)
+      energy = 0.25_dp*dot_product(self%u + self%u_previous, ku)
+   end function half_step_elastic_energy
+end module vibrobeam_position_stepper

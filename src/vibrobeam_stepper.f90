@@ -1,0 +1,99 @@
+!> What every time stepper of vibrobeam holds and offers (STYLE.md: the one-step
+!! integrator, separate from the system and from the contact solver). The velocity-based
+!! scheme (SPEC §3, `vibrobeam_velocity_stepper`) and the position-based one (SPEC §4,
+!! `vibrobeam_position_stepper`) extend it; the recorder and the run loop see only this.
+module vibrobeam_stepper
+   use vibrobeam_kinds, only: dp
+   use vibrobeam_band, only: symmetric_band, band_matvec
+   use vibrobeam_contact_points, only: contact_set
+   use vibrobeam_contact_solver, only: contact_projector
+   use vibrobeam_loads, only: load_set
+   implicit none
+   private
+   public :: time_stepper
+
+   type, abstract :: time_stepper
+      real(dp) :: dt = 0, theta = 0.5_dp, restitution = 1
+      real(dp) :: rayleigh_mass = 0, rayleigh_stiffness = 0
+      type(symmetric_band) :: mass, stiffness
+      type(contact_set) :: contacts
+      type(contact_projector) :: projector
+      type(load_set) :: loads
+      real(dp), allocatable :: u(:)               !! displacement unknowns at t (m)
+      real(dp), allocatable :: v(:)               !! velocity unknowns (m/s), see each scheme
+      real(dp) :: t = 0                            !! time of u (s)
+      integer :: steps = 0                         !! steps taken
+      ! what the last step did
+      integer :: active_count = 0
+      integer, allocatable :: active(:)            !! contact points with a constraint (first active_count)
+      real(dp), allocatable :: impulse(:)          !! impulse of each (N s), positive upwards
+      real(dp), allocatable :: velocity_before(:), velocity_after(:)   !! of each point (m/s)
+      logical, allocatable :: approaching(:)       !! the point moved toward its obstacle
+      integer :: iterations = 0                    !! contact solver iterations of the last step
+      real(dp) :: impulse_time = 0                 !! when the last step's impulses act (s)
+      ! running sums since t = 0 (each scheme says how it defines them)
+      real(dp) :: work = 0                   !! work of the loads (J)
+      real(dp) :: dissipated_impacts = 0     !! energy taken by impacts (J)
+      real(dp) :: dissipated_damping = 0     !! energy taken by Rayleigh damping (J)
+   contains
+      procedure(step_interface), deferred :: step
+      procedure :: kinetic_energy
+      procedure :: elastic_energy
+      procedure :: allocate_step_record
+      procedure :: damping_times
+   end type time_stepper
+
+   abstract interface
+      !> Advance one step. stat: 0 ok; 1..3 contact solver failure; 4 not finite.
+      subroutine step_interface(self, stat, errmsg)
+         import :: time_stepper
+         class(time_stepper), intent(inout) :: self
+         integer, intent(out) :: stat
+         character(len=*), intent(out) :: errmsg
+      end subroutine step_interface
+   end interface
+
+contains
+
+   !> 1/2 V^T M V (J; per unit mass when the beam is given by k2).
+   function kinetic_energy(self) result(energy)
+      class(time_stepper), intent(in) :: self
+      real(dp) :: energy, mv(size(self%v))
+      call band_matvec(self%mass, self%v, mv)
+      energy = 0.5_dp*dot_product(self%v, mv)
+   end function kinetic_energy
+
+   !> 1/2 U^T K U (J).
+   function elastic_energy(self) result(energy)
+      class(time_stepper), intent(in) :: self
+      real(dp) :: energy, ku(size(self%u))
+      call band_matvec(self%stiffness, self%u, ku)
+      energy = 0.5_dp*dot_product(self%u, ku)
+   end function elastic_energy
+
+   !> Room for one record per contact point in the per-step arrays.
+   subroutine allocate_step_record(self)
+      class(time_stepper), intent(inout) :: self
+      integer :: n
+      n = self%contacts%count
+      allocate (self%active(n), self%impulse(n), self%velocity_before(n), self%velocity_after(n), &
+                self%approaching(n))
+      self%active_count = 0
+   end subroutine allocate_step_record
+
+   !> C x = a M x + b K x (Rayleigh damping).
+   function damping_times(self, x) result(y)
+      class(time_stepper), intent(in) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp) :: y(size(x)), z(size(x))
+      y = 0
+      if (self%rayleigh_mass > 0) then
+         call band_matvec(self%mass, x, z)
+         y = self%rayleigh_mass*z
+      end if
+      if (self%rayleigh_stiffness > 0) then
+         call band_matvec(self%stiffness, x, z)
+         y = y + self%rayleigh_stiffness*z
+      end if
+   end function damping_times
+end module vibrobeam_stepper
