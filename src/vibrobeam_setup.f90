@@ -76,8 +76,10 @@ contains
          end select
          do c = 1, contacts%count
             value = contact_value(contacts, c, prepared%u0)
-            ! a static equilibrium sits on its obstacles up to round-off
-            if (value + 1e-12_dp*abs(value) < contacts%lower(c) .or. value - 1e-12_dp*abs(value) > contacts%upper(c)) then
+            ! a static equilibrium sits on its obstacles up to round-off, relative to the
+            ! beam's length (a floor at level 0 has no scale of its own)
+            if (value + 1e-12_dp*(abs(value) + model%length) < contacts%lower(c) .or. &
+                value - 1e-12_dp*(abs(value) + model%length) > contacts%upper(c)) then
                write (errmsg, '(a,g0.6,a,g0.6,a,g0.6,a,g0.6,a)') '&initial displacement_amplitude = ', &
                   scene%displacement_amplitude, ' puts the beam at u = ', value, ' m at x = ', contacts%x(c), &
                   ' m, outside the obstacles there [', contacts%lower(c), ', '

@@ -4,7 +4,7 @@
 !!  1. free velocity  V_free = V^n + W^-1 dt [F^{n+theta} - K (U^n + theta dt V^n) - C V^n],
 !!     F^{n+theta} = theta F(t_{n+1}) + (1 - theta) F(t_n);
 !!  2. activation: contact point c is active from below (s = +1) if H_c U~ <= g1(x_c), from
-!!     above (s = -1) if H_c U~ >= g2(x_c), with U~ = U^n + gamma dt V^n;
+!!     above (s = -1) if H_c U~ >= g2(x_c), with U~ = U^n + gamma dt V^n (to 1e-12 L);
 !!  3. projection with Newton's law: V^{n+1} = V_free + W^-1 H^T P,
 !!     0 <= s_c P_c _|_ s_c H_c (V^{n+1} + e_c V^n) >= 0 on the active points;
 !!  4. positions U^{n+1} = U^n + dt (theta V^{n+1} + (1 - theta) V^n).
@@ -30,6 +30,7 @@ module vibrobeam_velocity_stepper
 
    type, extends(time_stepper) :: velocity_stepper
       real(dp) :: gamma = 0.5_dp                   !! activation at U^n + gamma dt V^n
+      real(dp) :: activation_tolerance = 0         !! 1e-12 L (m): round-off allowance of the activation test
       !> restitution of an active point already moving away from its obstacle: 1 (our
       !! remedy, default) or `restitution` (the plain law of SPEC §3, for comparison)
       real(dp) :: separating_restitution = 1
@@ -65,6 +66,7 @@ contains
       self%rayleigh_stiffness = rayleigh_stiffness
       self%mass = model%mass
       self%stiffness = model%stiffness
+      self%activation_tolerance = 1e-12_dp*model%length
       self%contacts = contacts
       self%loads = loads
       ! W = (1 + theta dt a) M + (theta^2 dt^2 + theta dt b) K
@@ -105,10 +107,12 @@ contains
          m = 0
          do c = 1, self%contacts%count
             predicted = contact_value(self%contacts, c, self%u) + self%gamma*dt*contact_value(self%contacts, c, self%v)
-            if (predicted <= self%contacts%lower(c)) then
+            ! a point resting on its obstacle (a static equilibrium, a point held in the
+            ! previous step) sits there up to round-off: the tolerance keeps it active
+            if (predicted <= self%contacts%lower(c) + self%activation_tolerance) then
                m = m + 1
                signs(m) = 1
-            else if (predicted >= self%contacts%upper(c)) then
+            else if (predicted >= self%contacts%upper(c) - self%activation_tolerance) then
                m = m + 1
                signs(m) = -1
             else
