@@ -1,0 +1,641 @@
+!> Self-convergence study of the velocity-based stepper (SPEC §3) on the two-stop
+!! looseness scene (inputs/looseness_tip_stops.nml): a steel cantilever whose tip rattles
+!! between rigid stops at +-1 mm. Results and discussion: verification/convergence/REPORT.md.
+!!
+!! There is no closed form, so every run is compared with a finer run of the same scene
+!! (self-convergence) over a window [0, T] that holds about five impact events. Errors of
+!! a run (dt, N) against a finer run (dt_f, N_f):
+!! - tip: max over the run's steps t_n in [0, T] of |u_h(L, t_n) - u_f(L, t_n)|; every dt
+!!   is dt_f times a power of 2, so the finer grid contains every t_n;
+!! - field: the time-RMS of the displacement error at 11 equally spaced points
+!!   x_p = p L/10, p = 0..10 (evaluated with `point_row`, so the meshes need not match):
+!!   ( 1/T int_0^T 1/11 sum_p (u_h - u_f)(x_p, t)^2 dt )^(1/2), trapezoidal rule on the t_n;
+!! - energy: |E_h(T) - E_f(T)|, E = 1/2 V^T M V + 1/2 U^T K U.
+!!
+!! Studies, in the order of the output:
+!! 1. survey: the scene as given (its dt, N, t_end) and its impact events, to place T;
+!! 2. joint refinement (the acceptance item): level k has dt = dt0/2^k and
+!!    N = nint(N0 2^(k/2)); level 4 = (dt0/16, 4 N0) is the reference, levels 0..3 are
+!!    compared with it (level 3 is one level coarser than the reference);
+!! 3. dt alone at N = 32, reference dt0/256 (4 times finer than the finest row);
+!! 4. N alone at dt = dt0/64, reference N = 256 (4 times finer than the finest row);
+!! 5. the tip error of the joint levels over shorter windows [0, T_j];
+!! 6. successive differences along the joint path (level k against level k + 1, no fixed
+!!    reference) far beyond level 4, for the scene and for two variants: theta = 0.55
+!!    (numerical damping of the unresolved modes) and e = 1 (no dissipation at impacts).
+!!
+!! An impact event: the impulses on one side of one contact point whose successive
+!! impulses are at most `event_gap` apart (the rebounds of one contact episode, every step
+!! or every other step, count once).
+!!
+!! usage: self_convergence [--check] SCENE.nml OUTPUT_DIRECTORY
+!! Writes OUTPUT_DIRECTORY/self_convergence.txt (the tables, also printed) and
+!! OUTPUT_DIRECTORY/self_convergence.dat (gnuplot blocks, each named by the start of its
+!! first comment line). Exit status 0; 2 on a usage, input or numerical failure; with --check, 1 when an
+!! error of the joint refinement does not decrease from one level to the next.
+program self_convergence
+   use vibrobeam_kinds, only: dp, int64, error_unit, output_unit
+   use vibrobeam_status, only: message_length
+   use vibrobeam_scene, only: scene_type, validate_scene
+   use vibrobeam_input, only: read_scene
+   use vibrobeam_model, only: point_row
+   use vibrobeam_contact_points, only: contact_value
+   use vibrobeam_setup, only: prepared_scene, prepare_scene, start_stepper
+   use vibrobeam_velocity_stepper, only: velocity_stepper
+   implicit none
+
+   real(dp), parameter :: window_end = 0.025_dp      !! T (s): free flight after the 4th event
+   real(dp), parameter :: coarsest_dt = 4e-5_dp      !! dt0 (s)
+   integer, parameter :: coarsest_elements = 16      !! N0
+   integer, parameter :: joint_levels = 4            !! levels 0..4; level 4 is the reference
+   integer, parameter :: time_study_elements = 32    !! N of the dt-alone study
+   integer, parameter :: time_study_levels = 6       !! rows dt0 .. dt0/2^6, reference dt0/2^8
+   integer, parameter :: space_study_elements(4) = [8, 16, 32, 64]   !! reference 4*64
+   real(dp), parameter :: space_study_dt = coarsest_dt/64            !! dt of the N-alone study (s)
+   integer, parameter :: cauchy_levels = 9           !! successive differences up to level 9
+   integer, parameter :: variant_levels = 8          !! ... and up to level 8 for the variants
+   real(dp), parameter :: free_flight_end = 2e-3_dp  !! before the first impact (t* = 2.06e-3 s)
+   real(dp), parameter :: first_contact_end = 2.5e-3_dp   !! 0.4 ms into the first contact episode
+   real(dp), parameter :: event_gap = 5e-4_dp        !! largest gap inside one impact event (s)
+   integer, parameter :: sample_points = 11          !! x_p = p L/10, p = 0..10
+   !> window ends of study 5 (s): free flight, inside the first contact episode, then
+   !! after each of the four events
+   real(dp), parameter :: window_ends(6) = [free_flight_end, first_contact_end, 4e-3_dp, 8e-3_dp, 1.6e-2_dp, &
+                                            window_end]
+
+   !> What a run leaves for the comparisons: histories at every time step.
+   type :: run_history
+      real(dp) :: dt = 0                    !! time step (s)
+      integer :: elements = 0               !! N
+      integer :: steps = 0                  !! number of steps taken
+      real(dp), allocatable :: tip(:)       !! (0:steps) u_h(L, t_n) (m)
+      real(dp), allocatable :: field(:,:)   !! (sample_points, 0:steps) u_h(x_p, t_n) (m)
+      real(dp), allocatable :: energy(:)    !! (0:steps) E^n (J)
+      integer :: impulse_steps = 0          !! steps with a nonzero impulse somewhere
+      real(dp) :: max_penetration = 0       !! largest penetration over the run (m)
+      real(dp) :: wall_seconds = 0
+      integer :: events = 0                 !! impact events (see the program's doc)
+      real(dp), allocatable :: event_first(:), event_last(:)   !! first, last impulse (s)
+      integer, allocatable :: event_side(:)                    !! +1 from below, -1 from above
+      integer, allocatable :: event_impulses(:)                !! steps with an impulse
+   end type run_history
+
+   !> Errors of one run against a finer one.
+   type :: run_errors
+      real(dp) :: tip = 0       !! max-in-time tip displacement error (m)
+      real(dp) :: field = 0     !! time-RMS of the error at the sample points (m)
+      real(dp) :: energy = 0    !! |E_h(T) - E_f(T)| (J)
+   end type run_errors
+
+   type(scene_type) :: base
+   character(len=:), allocatable :: scene_file, output_directory
+   character(len=message_length) :: errmsg
+   logical :: check, accepted
+   integer :: stat, text_unit, data_unit, k
+   integer(int64) :: clock_start, clock_now, clock_rate
+   type(run_history) :: survey, joint(0:joint_levels), time_runs(0:time_study_levels), time_reference
+   type(run_history) :: space_runs(size(space_study_elements)), space_reference
+   type(run_errors) :: joint_errors(0:joint_levels - 1), time_errors(0:time_study_levels)
+   type(run_errors) :: space_errors(size(space_study_elements))
+   real(dp) :: joint_dt(0:cauchy_levels), time_dt(0:time_study_levels), space_h(size(space_study_elements))
+   integer :: joint_elements(0:cauchy_levels)
+
+   call system_clock(clock_start, clock_rate)
+   call parse_arguments(scene_file, output_directory, check)
+   call read_scene(scene_file, base, stat, errmsg)
+   if (stat == 0) call validate_scene(base, stat, errmsg)
+   if (stat /= 0) call fail(errmsg)
+   open (newunit=text_unit, file=output_directory//'/self_convergence.txt', status='replace', action='write', &
+         iostat=stat, iomsg=errmsg)
+   if (stat /= 0) call fail(errmsg)
+   open (newunit=data_unit, file=output_directory//'/self_convergence.dat', status='replace', action='write', &
+         iostat=stat, iomsg=errmsg)
+   if (stat /= 0) call fail(errmsg)
+   write (data_unit, '(a)') '# self_convergence.dat, written by verification/convergence/self_convergence.f90 '// &
+      'for '//scene_file, '# one block per study; gnuplot selects one by the start of its first comment '// &
+      'line: index ''name''', '', ''
+
+   call emit('Self-convergence of the velocity-based stepper (SPEC 3) on '//scene_file)
+   call emit('(verification/convergence/self_convergence.f90; discussion in verification/convergence/REPORT.md)')
+   call emit('')
+
+   ! the joint path: dt halves, N grows by sqrt(2), from (dt0, N0)
+   do k = 0, cauchy_levels
+      joint_dt(k) = coarsest_dt/2**k
+      joint_elements(k) = nint(coarsest_elements*2.0_dp**(0.5_dp*k))
+   end do
+
+   ! 1. survey of the scene as given
+   call simulate(base, base%dt, base%elements, base%t_end, survey)
+   call write_survey()
+
+   ! 2. joint refinement against level joint_levels = (dt0/16, 4 N0)
+   do k = 0, joint_levels
+      call simulate(base, joint_dt(k), joint_elements(k), window_end, joint(k))
+   end do
+   do k = 0, joint_levels - 1
+      joint_errors(k) = compare(joint(k), joint(joint_levels), window_end)
+   end do
+   call write_table('2. Joint refinement (acceptance item): dt = dt0/2^k, N = nint(N0 2^(k/2)), k = 0..3, '// &
+                    'against k = 4', joint(0:joint_levels - 1), joint(joint_levels), joint_errors, &
+                    joint_dt(0:joint_levels - 1), 'dt (ratio 2; the h ratio is sqrt 2)')
+   call emit('   (level 3 is one level coarser than the reference: its error also estimates the reference''s own)')
+   call write_data_block('joint refinement', joint(0:joint_levels - 1), joint(joint_levels), joint_errors)
+
+   ! 3. dt alone
+   do k = 0, time_study_levels
+      time_dt(k) = coarsest_dt/2**k
+      call simulate(base, time_dt(k), time_study_elements, window_end, time_runs(k))
+   end do
+   call simulate(base, coarsest_dt/2**(time_study_levels + 2), time_study_elements, window_end, time_reference)
+   do k = 0, time_study_levels
+      time_errors(k) = compare(time_runs(k), time_reference, window_end)
+   end do
+   call write_table('3. Refinement in dt alone (N fixed)', time_runs, time_reference, time_errors, time_dt, 'dt')
+   call write_data_block('dt alone', time_runs, time_reference, time_errors)
+
+   ! 4. N alone
+   do k = 1, size(space_study_elements)
+      call simulate(base, space_study_dt, space_study_elements(k), window_end, space_runs(k))
+      space_h(k) = base%length/space_study_elements(k)
+   end do
+   call simulate(base, space_study_dt, 4*space_study_elements(size(space_study_elements)), window_end, &
+                 space_reference)
+   do k = 1, size(space_study_elements)
+      space_errors(k) = compare(space_runs(k), space_reference, window_end)
+   end do
+   call write_table('4. Refinement in N alone (dt fixed)', space_runs, space_reference, space_errors, space_h, 'h')
+   call write_data_block('N alone', space_runs, space_reference, space_errors)
+
+   ! 5. where the convergence is lost
+   call write_window_table()
+
+   ! 6. successive differences along the joint path, far beyond the reference
+   call successive_differences(base%theta, base%restitution, cauchy_levels, 'scene as given')
+   call successive_differences(0.55_dp, base%restitution, variant_levels, 'numerical damping of the unresolved modes')
+   call successive_differences(base%theta, 1.0_dp, variant_levels, 'no dissipation at impacts')
+
+   accepted = decreasing(joint_errors)
+   call emit('')
+   call emit('Acceptance item (every error of study 2 decreases from one level to the next): '// &
+             trim(merge('met    ', 'not met', accepted)))
+   call system_clock(clock_now)
+   call emit('total wall time '//fixed(real(clock_now - clock_start, dp)/clock_rate, 1)//' s')
+   close (text_unit)
+   close (data_unit)
+   if (check .and. .not. accepted) then
+      write (error_unit, '(a)') 'self_convergence: the errors of the joint refinement do not all decrease'
+      stop 1, quiet=.true.
+   end if
+
+contains
+
+   !> Print `message` as 'self_convergence: message' on stderr and stop with status 2.
+   subroutine fail(message)
+      character(len=*), intent(in) :: message
+      write (error_unit, '(a)') 'self_convergence: '//trim(message)
+      stop 2, quiet=.true.
+   end subroutine fail
+
+   subroutine parse_arguments(file, directory, check_flag)
+      character(len=:), allocatable, intent(out) :: file       !! scene namelist
+      character(len=:), allocatable, intent(out) :: directory  !! where the tables go
+      logical, intent(out) :: check_flag                       !! --check given
+      character(len=4096) :: argument
+      integer :: first, length
+      check_flag = .false.
+      first = 1
+      call get_command_argument(1, argument, length)
+      if (trim(argument) == '--check') then
+         check_flag = .true.
+         first = 2
+      end if
+      if (command_argument_count() /= first + 1) &
+         call fail('usage: self_convergence [--check] SCENE.nml OUTPUT_DIRECTORY')
+      call get_command_argument(first, argument, length)
+      file = argument(1:length)
+      call get_command_argument(first + 1, argument, length)
+      directory = argument(1:length)
+   end subroutine parse_arguments
+
+   !> Write one line to the text file and to stdout.
+   subroutine emit(line)
+      character(len=*), intent(in) :: line
+      write (text_unit, '(a)') line
+      write (output_unit, '(a)') line
+   end subroutine emit
+
+   !> Run `scene` with time step `dt` and `elements` elements from t = 0 to `t_end` and
+   !! keep the histories (tip, sample points, energy) and the impact events.
+   subroutine simulate(scene, dt, elements, t_end, run)
+      type(scene_type), intent(in) :: scene
+      real(dp), intent(in) :: dt           !! time step (s)
+      integer, intent(in) :: elements      !! N
+      real(dp), intent(in) :: t_end        !! end of the run (s), a whole number of steps
+      type(run_history), intent(out) :: run
+      type(scene_type) :: variant
+      type(prepared_scene) :: prepared
+      type(velocity_stepper) :: stepper
+      character(len=:), allocatable :: warnings
+      character(len=message_length) :: message
+      integer :: point_dofs(4, sample_points), tip_dofs(4), n, p, k, c, side, status
+      real(dp) :: point_weights(4, sample_points), tip_weights(4), value
+      real(dp), allocatable :: last_impulse(:)
+      integer, allocatable :: last_side(:), last_event(:)
+      integer(int64) :: start, finish, rate
+      call system_clock(start, rate)
+      variant = scene
+      variant%dt = dt
+      variant%elements = elements
+      variant%t_end = t_end
+      call validate_scene(variant, status, message)
+      if (status /= 0) call fail(message)
+      warnings = ''
+      call prepare_scene(variant, prepared, warnings, status, message)
+      if (status /= 0) call fail(message)
+      if (len(warnings) > 0) write (error_unit, '(a)', advance='no') warnings
+      call start_stepper(variant, prepared, stepper, status, message)
+      if (status /= 0) call fail(message)
+      run%dt = dt
+      run%elements = elements
+      run%steps = nint(t_end/dt)
+      if (abs(run%steps*dt - t_end) > 1e-9_dp*dt) &
+         call fail('t_end = '//sci(t_end)//' s is not a whole number of steps dt = '//sci(dt)//' s')
+      allocate (run%tip(0:run%steps), run%field(sample_points, 0:run%steps), run%energy(0:run%steps))
+      allocate (run%event_first(0), run%event_last(0), run%event_side(0), run%event_impulses(0))
+      do p = 1, sample_points
+         call point_row(prepared%model, scene%length*(p - 1)/(sample_points - 1), point_dofs(:, p), &
+                        point_weights(:, p))
+      end do
+      call point_row(prepared%model, scene%length, tip_dofs, tip_weights)
+      allocate (last_impulse(stepper%contacts%count), source=-huge(1.0_dp))
+      allocate (last_side(stepper%contacts%count), last_event(stepper%contacts%count), source=0)
+      call record_state(run, 0, stepper, point_dofs, point_weights, tip_dofs, tip_weights)
+      do n = 1, run%steps
+         call stepper%step(status, message)
+         if (status /= 0) call fail('dt = '//sci(dt)//' s, N = '//integer_text(elements)//': '//trim(message))
+         call record_state(run, n, stepper, point_dofs, point_weights, tip_dofs, tip_weights)
+         if (any(abs(stepper%impulse(1:stepper%active_count)) > 0)) run%impulse_steps = run%impulse_steps + 1
+         do k = 1, stepper%active_count
+            if (.not. abs(stepper%impulse(k)) > 0) cycle
+            c = stepper%active(k)
+            side = nint(sign(1.0_dp, stepper%impulse(k)))   ! s_c P_c >= 0: the sign of P is s_c
+            if (side /= last_side(c) .or. stepper%t - last_impulse(c) > event_gap*(1 + 1e-9_dp)) then
+               run%events = run%events + 1
+               run%event_first = [run%event_first, stepper%t]
+               run%event_last = [run%event_last, stepper%t]
+               run%event_side = [run%event_side, side]
+               run%event_impulses = [run%event_impulses, 0]
+               last_event(c) = run%events
+               last_side(c) = side
+            end if
+            run%event_last(last_event(c)) = stepper%t
+            run%event_impulses(last_event(c)) = run%event_impulses(last_event(c)) + 1
+            last_impulse(c) = stepper%t
+         end do
+         do c = 1, stepper%contacts%count
+            value = contact_value(stepper%contacts, c, stepper%u)
+            run%max_penetration = max(run%max_penetration, stepper%contacts%lower(c) - value, &
+                                      value - stepper%contacts%upper(c))
+         end do
+      end do
+      call system_clock(finish)
+      run%wall_seconds = real(finish - start, dp)/rate
+      write (output_unit, '(a)') '  run dt = '//sci(dt)//' s, N = '//integer_text(elements)//', theta = '// &
+         fixed(scene%theta, 2)//', e = '//fixed(scene%restitution, 2)//', T = '//sci(t_end)//' s: '// &
+         integer_text(run%events)//' impact events, '//fixed(run%wall_seconds, 2)//' s'
+   end subroutine simulate
+
+   !> Store the state of `stepper` as time step `step` of `run`.
+   subroutine record_state(run, step, stepper, point_dofs, point_weights, tip_dofs, tip_weights)
+      type(run_history), intent(inout) :: run
+      integer, intent(in) :: step
+      type(velocity_stepper), intent(in) :: stepper
+      integer, intent(in) :: point_dofs(:,:), tip_dofs(:)          !! rows from `point_row`
+      real(dp), intent(in) :: point_weights(:,:), tip_weights(:)
+      integer :: p
+      do p = 1, sample_points
+         run%field(p, step) = row_value(point_dofs(:, p), point_weights(:, p), stepper%u)
+      end do
+      run%tip(step) = row_value(tip_dofs, tip_weights, stepper%u)
+      run%energy(step) = stepper%kinetic_energy() + stepper%elastic_energy()
+   end subroutine record_state
+
+   !> sum(weights * u(dofs)) over the dofs that are not clamped (0).
+   pure real(dp) function row_value(dofs, weights, u)
+      integer, intent(in) :: dofs(:)
+      real(dp), intent(in) :: weights(:)
+      real(dp), intent(in) :: u(:)
+      integer :: a
+      row_value = 0
+      do a = 1, size(dofs)
+         if (dofs(a) /= 0) row_value = row_value + weights(a)*u(dofs(a))
+      end do
+   end function row_value
+
+   !> Errors of `run` against the finer run `fine` over [0, t_end] (program's doc).
+   function compare(run, fine, t_end) result(errors)
+      type(run_history), intent(in) :: run, fine
+      real(dp), intent(in) :: t_end   !! end of the window (s), a step of both runs
+      type(run_errors) :: errors
+      integer :: stride, last, n
+      real(dp) :: weight, square_sum
+      stride = nint(run%dt/fine%dt)
+      if (stride < 1 .or. abs(stride*fine%dt - run%dt) > 1e-9_dp*run%dt) &
+         call fail('dt = '//sci(run%dt)//' s is not a multiple of the finer dt = '//sci(fine%dt)//' s')
+      last = nint(t_end/run%dt)
+      if (last > run%steps .or. last*stride > fine%steps) call fail('window beyond the end of a run')
+      errors%tip = maxval(abs(run%tip(0:last) - fine%tip(0:last*stride:stride)))
+      square_sum = 0
+      do n = 0, last
+         weight = merge(0.5_dp, 1.0_dp, n == 0 .or. n == last)
+         square_sum = square_sum + weight*run%dt*sum((run%field(:, n) - fine%field(:, n*stride))**2)
+      end do
+      errors%field = sqrt(square_sum/(sample_points*t_end))
+      errors%energy = abs(run%energy(last) - fine%energy(last*stride))
+   end function compare
+
+   !> Tip error of `run` against `fine` over [0, t_end].
+   real(dp) function tip_error(run, fine, t_end)
+      type(run_history), intent(in) :: run, fine
+      real(dp), intent(in) :: t_end
+      type(run_errors) :: errors
+      errors = compare(run, fine, t_end)
+      tip_error = errors%tip
+   end function tip_error
+
+   !> The time-RMS over [0, T] of a run's own field at the sample points (m).
+   real(dp) function field_size(run)
+      type(run_history), intent(in) :: run
+      real(dp) :: weight, square_sum
+      integer :: n, last
+      last = nint(window_end/run%dt)
+      square_sum = 0
+      do n = 0, last
+         weight = merge(0.5_dp, 1.0_dp, n == 0 .or. n == last)
+         square_sum = square_sum + weight*run%dt*sum(run%field(:, n)**2)
+      end do
+      field_size = sqrt(square_sum/(sample_points*window_end))
+   end function field_size
+
+   !> Observed order ln(e1/e2)/ln(s1/s2) for errors e at sizes s; 0 when undefined.
+   pure real(dp) function rate(e1, e2, s1, s2)
+      real(dp), intent(in) :: e1, e2   !! errors at the coarser and the finer size
+      real(dp), intent(in) :: s1, s2   !! sizes (dt or h), s1 > s2
+      rate = 0
+      if (e1 > 0 .and. e2 > 0 .and. s1 > s2) rate = log(e1/e2)/log(s1/s2)
+   end function rate
+
+   !> Rate of row k against row k - 1 as text, '-' for the first row.
+   function rate_text(errors, sizes, k) result(text)
+      real(dp), intent(in) :: errors(:), sizes(:)
+      integer, intent(in) :: k
+      character(len=:), allocatable :: text
+      if (k == 1) then
+         text = '     -'
+      else
+         text = fixed(rate(errors(k - 1), errors(k), sizes(k - 1), sizes(k)), 2, 6)
+      end if
+   end function rate_text
+
+   !> A refinement table: one row per run, errors against `reference`, rates against
+   !! `sizes` (dt or h) between successive rows.
+   subroutine write_table(title, runs, reference, errors, sizes, size_name)
+      character(len=*), intent(in) :: title
+      type(run_history), intent(in) :: runs(:), reference
+      type(run_errors), intent(in) :: errors(:)
+      real(dp), intent(in) :: sizes(:)
+      character(len=*), intent(in) :: size_name   !! what `sizes` are, for the caption
+      real(dp) :: tip_errors(size(errors)), field_errors(size(errors)), energy_errors(size(errors))
+      integer :: k
+      tip_errors = errors%tip
+      field_errors = errors%field
+      energy_errors = errors%energy
+      call emit('')
+      call emit(title)
+      call emit('reference: dt = '//sci(reference%dt)//' s, N = '//integer_text(reference%elements)//': '// &
+                integer_text(reference%events)//' impact events, E(T) = '// &
+                sci(reference%energy(nint(window_end/reference%dt)))//' J, max |u_tip| = '// &
+                sci(maxval(abs(reference%tip)))//' m, time-RMS field = '//sci(field_size(reference))//' m')
+      call emit('     dt (s)     N  events impulses max pen (m)   tip max (m)  rate  field L2 (m)  rate'// &
+                '   energy (J)  rate  wall (s)')
+      do k = 1, size(runs)
+         call emit(sci(runs(k)%dt)//' '//padded(runs(k)%elements, 5)//' '//padded(runs(k)%events, 7)//' '// &
+                   padded(runs(k)%impulse_steps, 8)//'   '//sci(runs(k)%max_penetration)//'    '// &
+                   sci(tip_errors(k))//rate_text(tip_errors, sizes, k)//'    '//sci(field_errors(k))// &
+                   rate_text(field_errors, sizes, k)//'    '//sci(energy_errors(k))// &
+                   rate_text(energy_errors, sizes, k)//'  '//fixed(runs(k)%wall_seconds, 2, 8))
+      end do
+      call emit('   (rates against '//size_name//' between successive rows; "impulses": steps with an impulse)')
+   end subroutine write_table
+
+   !> One gnuplot block (two blank lines after it): dt, N, h, errors, and the errors
+   !! relative to the size of the reference's own solution.
+   subroutine write_data_block(title, runs, reference, errors)
+      character(len=*), intent(in) :: title
+      type(run_history), intent(in) :: runs(:), reference
+      type(run_errors), intent(in) :: errors(:)
+      real(dp) :: tip_scale, field_scale, energy_scale
+      integer :: k, last
+      last = nint(window_end/reference%dt)
+      tip_scale = maxval(abs(reference%tip(0:last)))
+      field_scale = field_size(reference)
+      energy_scale = reference%energy(last)
+      write (data_unit, '(a)') '# '//title//'; reference dt = '//sci(reference%dt)//' s, N = '// &
+         integer_text(reference%elements)//'; window [0, '//sci(window_end)//'] s'
+      write (data_unit, '(a)') '# dt (s)  N  h (m)  tip max error (m)  field L2 error (m)  energy error (J)  '// &
+         'tip/max|u_tip,ref|  field/|u_ref|_L2  energy/E_ref(T)'
+      do k = 1, size(runs)
+         write (data_unit, '(es14.6,i6,*(es14.6))') runs(k)%dt, runs(k)%elements, base%length/runs(k)%elements, &
+            errors(k)%tip, errors(k)%field, errors(k)%energy, errors(k)%tip/tip_scale, &
+            errors(k)%field/field_scale, errors(k)%energy/energy_scale
+      end do
+      write (data_unit, '(a)') '', ''
+   end subroutine write_data_block
+
+   !> The impact events of the survey run, and how many fall in the window.
+   subroutine write_survey()
+      integer :: k
+      call emit('1. Impact events of the scene as given (dt = '//sci(survey%dt)//' s, N = '// &
+                integer_text(survey%elements)//', t_end = '//sci(survey%steps*survey%dt)//' s): '// &
+                integer_text(survey%events)//' events, '//integer_text(survey%impulse_steps)// &
+                ' steps with an impulse')
+      call emit('   an event: impulses on one side of one contact point at most '//sci(event_gap)// &
+                ' s apart (its rebounds count once)')
+      call emit('  event  side    first impulse (s)  last impulse (s)  steps with an impulse')
+      do k = 1, survey%events
+         call emit(padded(k, 7)//'  '//merge('below', 'above', survey%event_side(k) > 0)//'   '// &
+                   sci(survey%event_first(k))//'          '//sci(survey%event_last(k))//'        '// &
+                   padded(survey%event_impulses(k), 6))
+      end do
+      call emit('window [0, T], T = '//sci(window_end)//' s: '// &
+                integer_text(count(survey%event_first <= window_end))//' events, the last one ends at '// &
+                sci(maxval(survey%event_last, mask=survey%event_last <= window_end))//' s, the next one starts at '// &
+                sci(minval(survey%event_first, mask=survey%event_first > window_end))//' s')
+   end subroutine write_survey
+
+   !> Tip error of each joint level against the reference over [0, T_j].
+   subroutine write_window_table()
+      integer :: j, level
+      character(len=:), allocatable :: line
+      call emit('')
+      call emit('5. Tip max error (m) of the joint levels against the reference (level 4) over [0, T_j]')
+      line = '  level    dt (s)   N'
+      do j = 1, size(window_ends)
+         line = line//'  T_j = '//sci(window_ends(j))
+      end do
+      call emit(line)
+      do level = 0, joint_levels - 1
+         line = padded(level, 7)//'  '//sci(joint(level)%dt)//' '//padded(joint(level)%elements, 3)
+         do j = 1, size(window_ends)
+            line = line//'        '//sci(tip_error(joint(level), joint(joint_levels), window_ends(j)))
+         end do
+         call emit(line)
+      end do
+      line = '  rate, level 0 to 2  '
+      do j = 1, size(window_ends)
+         line = line//'      '//fixed(rate(tip_error(joint(0), joint(joint_levels), window_ends(j)), &
+                                          tip_error(joint(2), joint(joint_levels), window_ends(j)), &
+                                          joint(0)%dt, joint(2)%dt), 2, 11)
+      end do
+      call emit(line)
+      call emit('   (T_j: before the first impact, 0.4 ms into the first contact episode, then after events 1, 2, 3, 4)')
+      write (data_unit, '(a)') '# window ends: tip max error over [0, T_j] of joint levels 0..3 against level 4'
+      write (data_unit, '(a)') '# T_j (s)  level 0  level 1  level 2  level 3 (m)'
+      do j = 1, size(window_ends)
+         write (data_unit, '(*(es14.6))') window_ends(j), &
+            (tip_error(joint(level), joint(joint_levels), window_ends(j)), level=0, joint_levels - 1)
+      end do
+      write (data_unit, '(a)') '', ''
+   end subroutine write_window_table
+
+   !> Along the joint path with theta and e replaced, the difference between each level
+   !! and the next one, up to level `levels`: if the runs converge at order p in dt, the
+   !! differences shrink by 2^p per level too.
+   subroutine successive_differences(theta, restitution, levels, label)
+      real(dp), intent(in) :: theta, restitution
+      integer, intent(in) :: levels
+      character(len=*), intent(in) :: label   !! what the variant is, for the titles
+      type(scene_type) :: variant
+      type(run_history) :: previous, current
+      type(run_errors) :: whole
+      real(dp), dimension(0:levels - 1) :: free, first, tip, field, energy
+      integer :: level, events(0:levels - 1), impulses(0:levels - 1)
+      character(len=:), allocatable :: title
+      variant = base
+      variant%theta = theta
+      variant%restitution = restitution
+      title = 'successive differences, theta = '//fixed(theta, 2)//', e = '//fixed(restitution, 2)//' ('//label//')'
+      call simulate(variant, joint_dt(0), joint_elements(0), window_end, previous)
+      do level = 0, levels - 1
+         call simulate(variant, joint_dt(level + 1), joint_elements(level + 1), window_end, current)
+         free(level) = tip_error(previous, current, free_flight_end)
+         first(level) = tip_error(previous, current, first_contact_end)
+         whole = compare(previous, current, window_end)
+         tip(level) = whole%tip
+         field(level) = whole%field
+         energy(level) = whole%energy
+         events(level) = previous%events
+         impulses(level) = previous%impulse_steps
+         call move_alloc_history(current, previous)
+      end do
+      call emit('')
+      call emit('6. Level k against level k + 1 along the joint path: '//title)
+      call emit('   tip max difference over [0, '//sci(free_flight_end)//'] s (free flight), [0, '// &
+                sci(first_contact_end)//'] s (into the first contact episode) and [0, T]')
+      call emit('  k     dt (s)     N  events impulses  tip free   rate  tip first  rate   tip [0,T]  rate'// &
+                '  field L2   rate   energy    rate')
+      do level = 0, levels - 1
+         call emit(padded(level, 3)//'  '//sci(joint_dt(level))//' '//padded(joint_elements(level), 5)//' '// &
+                   padded(events(level), 7)//' '//padded(impulses(level), 8)//'  '// &
+                   sci(free(level))//rate_text(free, joint_dt(0:levels - 1), level + 1)//'  '// &
+                   sci(first(level))//rate_text(first, joint_dt(0:levels - 1), level + 1)//'  '// &
+                   sci(tip(level))//rate_text(tip, joint_dt(0:levels - 1), level + 1)//'  '// &
+                   sci(field(level))//rate_text(field, joint_dt(0:levels - 1), level + 1)//'  '// &
+                   sci(energy(level))//rate_text(energy, joint_dt(0:levels - 1), level + 1))
+      end do
+      call emit('   (differences in m, energy in J; rates against dt between successive rows)')
+      write (data_unit, '(a)') '# '//title
+      write (data_unit, '(a)') '# k  dt (s)  N  tip [0, free flight] (m)  tip [0, first contact] (m)  '// &
+         'tip [0, T] (m)  field L2 [0, T] (m)  energy at T (J)'
+      do level = 0, levels - 1
+         write (data_unit, '(i3,es14.6,i6,*(es14.6))') level, joint_dt(level), joint_elements(level), free(level), &
+            first(level), tip(level), field(level), energy(level)
+      end do
+      write (data_unit, '(a)') '', ''
+   end subroutine successive_differences
+
+   !> previous <- current (the histories move, nothing is copied).
+   subroutine move_alloc_history(current, previous)
+      type(run_history), intent(inout) :: current
+      type(run_history), intent(inout) :: previous
+      previous%dt = current%dt
+      previous%elements = current%elements
+      previous%steps = current%steps
+      previous%impulse_steps = current%impulse_steps
+      previous%max_penetration = current%max_penetration
+      previous%wall_seconds = current%wall_seconds
+      previous%events = current%events
+      call move_alloc(current%tip, previous%tip)
+      call move_alloc(current%field, previous%field)
+      call move_alloc(current%energy, previous%energy)
+      call move_alloc(current%event_first, previous%event_first)
+      call move_alloc(current%event_last, previous%event_last)
+      call move_alloc(current%event_side, previous%event_side)
+      call move_alloc(current%event_impulses, previous%event_impulses)
+   end subroutine move_alloc_history
+
+   !> True when tip, field and energy errors all decrease strictly from row to row.
+   pure logical function decreasing(errors)
+      type(run_errors), intent(in) :: errors(:)
+      integer :: k
+      decreasing = .true.
+      do k = 2, size(errors)
+         decreasing = decreasing .and. errors(k)%tip < errors(k - 1)%tip .and. &
+                      errors(k)%field < errors(k - 1)%field .and. errors(k)%energy < errors(k - 1)%energy
+      end do
+   end function decreasing
+
+   !> `value` as 'd.dddE+xx'.
+   function sci(value) result(text)
+      real(dp), intent(in) :: value
+      character(len=:), allocatable :: text
+      character(len=16) :: buffer
+      write (buffer, '(es10.3)') value
+      text = trim(adjustl(buffer))
+   end function sci
+
+   !> `value` with `decimals` decimals, right-aligned in `width` characters if given.
+   function fixed(value, decimals, width) result(text)
+      real(dp), intent(in) :: value
+      integer, intent(in) :: decimals
+      integer, intent(in), optional :: width
+      character(len=:), allocatable :: text
+      character(len=32) :: buffer
+      character(len=16) :: form
+      write (form, '(a,i0,a)') '(f0.', decimals, ')'
+      write (buffer, form) value
+      text = trim(adjustl(buffer))
+      if (text(1:1) == '.') text = '0'//text
+      if (len(text) > 1) then
+         if (text(1:2) == '-.') text = '-0'//text(2:)
+      end if
+      if (present(width)) text = repeat(' ', max(0, width - len(text)))//text
+   end function fixed
+
+   function integer_text(value) result(text)
+      integer, intent(in) :: value
+      character(len=:), allocatable :: text
+      character(len=16) :: buffer
+      write (buffer, '(i0)') value
+      text = trim(buffer)
+   end function integer_text
+
+   !> `value` right-aligned in `width` characters.
+   function padded(value, width) result(text)
+      integer, intent(in) :: value, width
+      character(len=:), allocatable :: text
+      text = integer_text(value)
+      text = repeat(' ', max(0, width - len(text)))//text
+   end function padded
+end program self_convergence
