@@ -22,7 +22,7 @@
 module vibrobeam_contact_solver
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_solve, band_matvec, band_entry
-   use vibrobeam_contact_points, only: contact_set, no_bound
+   use vibrobeam_contact_points, only: contact_set, contact_value, no_bound
    use vibrobeam_lcp, only: solve_lcp
    implicit none
    private
@@ -148,7 +148,7 @@ contains
       do round = 1, 2*self%contacts%count + 1
          changed = .false.
          do c = 1, self%contacts%count
-            value = row_times(self%contacts, c, x)
+            value = contact_value(self%contacts, c, x)
             if (value < self%contacts%lower(c) - 1e-12_dp*scale .and. side(c) /= 1) then
                side(c) = 1
                changed = .true.
@@ -174,18 +174,6 @@ contains
       errmsg = 'contact projection: the candidate contact set did not settle'
    end subroutine project_admissible
 
-   !> H_c v for contact point c.
-   pure function row_times(contacts, c, v) result(value)
-      type(contact_set), intent(in) :: contacts
-      integer, intent(in) :: c
-      real(dp), intent(in) :: v(:)
-      real(dp) :: value
-      integer :: a
-      value = 0
-      do a = 1, 4
-         if (contacts%dofs(a, c) /= 0) value = value + contacts%weights(a, c)*v(contacts%dofs(a, c))
-      end do
-   end function row_times
 
    subroutine project_delassus(self, x_free, active, s, b, x, impulse, iterations, stat, errmsg)
       type(contact_projector), intent(in) :: self
@@ -199,9 +187,9 @@ contains
       m = size(active)
       do l = 1, m
          do k = 1, m
-            a(k, l) = s(k)*s(l)*row_times(self%contacts, active(k), self%response(:, active(l)))
+            a(k, l) = s(k)*s(l)*contact_value(self%contacts, active(k), self%response(:, active(l)))
          end do
-         q(l) = s(l)*(row_times(self%contacts, active(l), x_free) - b(l))
+         q(l) = s(l)*(contact_value(self%contacts, active(l), x_free) - b(l))
       end do
       a = 0.5_dp*(a + transpose(a))   ! exact symmetry; the two triangles differ by round-off
       if (self%max_iterations > 0) then
@@ -231,9 +219,9 @@ contains
       m = size(active)
       call band_matvec(self%metric, x_free, w_x_free)
       do k = 1, m
-         gap(k) = s(k)*(row_times(self%contacts, active(k), x_free) - b(k))
+         gap(k) = s(k)*(contact_value(self%contacts, active(k), x_free) - b(k))
       end do
-      gap_scale = maxval(abs([(row_times(self%contacts, active(k), x_free), k=1, m)])) + maxval(abs(b))
+      gap_scale = maxval(abs([(contact_value(self%contacts, active(k), x_free), k=1, m)])) + maxval(abs(b))
       gap_scale = max(gap_scale, tiny(1.0_dp))
       slack = max(1e-12_dp, 16*m*epsilon(1.0_dp))
       in_set = gap < 0
@@ -250,7 +238,7 @@ contains
             if (in_set(k)) then
                infeasible(k) = s(k)*impulse(k) < -slack*impulse_scale
             else
-               gap(k) = s(k)*(row_times(self%contacts, active(k), x) - b(k))
+               gap(k) = s(k)*(contact_value(self%contacts, active(k), x) - b(k))
                infeasible(k) = gap(k) < -slack*gap_scale
             end if
          end do
@@ -280,10 +268,10 @@ contains
       ! (complementarity: P = 0 off the set by construction, gap = 0 on it)
       do k = 1, m
          if (.not. in_set(k)) cycle
-         if (abs(row_times(self%contacts, active(k), x) - b(k)) > 1e-8_dp*gap_scale) then
+         if (abs(contact_value(self%contacts, active(k), x) - b(k)) > 1e-8_dp*gap_scale) then
             stat = 3
             write (errmsg, '(a,i0,a,es10.3)') 'band contact solver: residual check failed at contact point ', &
-               active(k), ', |H x - b| = ', abs(row_times(self%contacts, active(k), x) - b(k))
+               active(k), ', |H x - b| = ', abs(contact_value(self%contacts, active(k), x) - b(k))
             return
          end if
       end do

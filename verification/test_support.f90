@@ -8,7 +8,7 @@ module vibrobeam_test_support
    use vibrobeam_setup, only: prepared_scene, prepare_scene
    implicit none
    private
-   public :: test_counter, read_test_scene, prepare_test_scene
+   public :: test_counter, read_test_scene, prepare_test_scene, fitted_order
 
    type, public :: test_counter
       integer :: passed = 0
@@ -62,6 +62,22 @@ contains
       write (output_unit, '(a,i0,a,i0,a)') program_name//': ', self%passed, ' passed, ', self%failed, ' failed'
       if (self%failed > 0) error stop 1
    end subroutine finish
+
+   !> Least-squares slope of log(error) against log(1/N) over the points marked `use`: the
+   !! observed order of convergence in h = L/N (0 when fewer than 2 points are used).
+   pure function fitted_order(elements, error, use) result(slope)
+      integer, intent(in) :: elements(:)     !! N of each point
+      real(dp), intent(in) :: error(:)       !! error of each point (> 0 where used)
+      logical, intent(in) :: use(:)
+      real(dp) :: slope
+      real(dp) :: x(size(error)), y(size(error))
+      integer :: m
+      x = log(1.0_dp/elements)
+      y = log(max(min(error, 1.0_dp), tiny(1.0_dp)))
+      m = count(use)
+      slope = 0
+      if (m >= 2) slope = (m*sum(x*y, use) - sum(x, use)*sum(y, use))/(m*sum(x*x, use) - sum(x, use)**2)
+   end function fitted_order
 
    !> The scene of a verification namelist file; stops the test if it is not valid.
    function read_test_scene(path) result(scene)

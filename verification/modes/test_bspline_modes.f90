@@ -12,7 +12,7 @@ program test_bspline_modes
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_modes, only: compute_modes
-   use vibrobeam_test_support, only: test_counter
+   use vibrobeam_test_support, only: test_counter, fitted_order
    implicit none
    type(test_counter) :: t
    integer, parameter :: modes = 6, meshes(6) = [4, 8, 16, 32, 64, 128], unknowns(3) = [16, 32, 64]
@@ -29,7 +29,7 @@ program test_bspline_modes
    end do
    write (output_unit, '(a)', advance='no') 'observed order (least squares, N >= 16, error > 1e-9):'
    do n = 1, 4
-      order = fitted_order(error(:, n))
+      order = fitted_order(meshes, error(:, n), error(:, n) > 1e-9_dp .and. meshes >= 16)
       write (output_unit, '(f8.3)', advance='no') order
       write (label, '(a,i0)') 'B-spline convergence order of mode ', n
       call t%check_true(trim(label), order >= 3.7_dp .and. order <= 4.5_dp, 'outside [3.7, 4.5]')
@@ -64,17 +64,4 @@ contains
       err(1:size(omega)) = abs(omega - beta_l(1:size(omega))**2)/beta_l(1:size(omega))**2
    end function relative_errors
 
-   function fitted_order(err) result(slope)
-      real(dp), intent(in) :: err(:)
-      real(dp) :: slope
-      real(dp) :: x(size(err)), y(size(err))
-      logical :: use(size(err))
-      integer :: m
-      use = err > 1e-9_dp .and. meshes >= 16
-      x = log(1.0_dp/meshes)
-      y = log(max(min(err, 1.0_dp), tiny(1.0_dp)))
-      m = count(use)
-      slope = 0
-      if (m >= 2) slope = (m*sum(x*y, use) - sum(x, use)*sum(y, use))/(m*sum(x*x, use) - sum(x, use)**2)
-   end function fitted_order
 end program test_bspline_modes

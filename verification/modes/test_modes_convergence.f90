@@ -10,7 +10,7 @@ program test_modes_convergence
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_modes, only: compute_modes
-   use vibrobeam_test_support, only: test_counter
+   use vibrobeam_test_support, only: test_counter, fitted_order
    implicit none
    type(test_counter) :: t
    integer, parameter :: meshes(5) = [4, 8, 16, 32, 64], modes = 6
@@ -38,29 +38,11 @@ program test_modes_convergence
    call t%check_close('mode 1 relative error at N = 32', error(4, 1), 0.0_dp, 1.0_dp, 1e-7_dp)
    write (output_unit, '(a)', advance='no') 'observed order (least squares, N >= 8, error > 1e-9):'
    do n = 1, 4
-      order = fitted_order(error(:, n))
+      order = fitted_order(meshes, error(:, n), error(:, n) > floor_error .and. meshes >= 8)
       write (output_unit, '(f8.3)', advance='no') order
       write (label, '(a,i0)') 'convergence order of mode ', n
       call t%check_true(trim(label), order >= 3.7_dp .and. order <= 4.3_dp, 'outside [3.7, 4.3]')
    end do
    write (output_unit, *)
    call t%finish('test_modes_convergence')
-contains
-   !> Least-squares slope of log(error) against log(1/N) over the points above floor_error.
-   function fitted_order(err) result(slope)
-      real(dp), intent(in) :: err(:)
-      real(dp) :: slope
-      real(dp) :: x(size(err)), y(size(err))
-      logical :: use(size(err))
-      integer :: m
-      use = err > floor_error .and. meshes >= 8
-      x = log(1.0_dp/meshes)
-      y = log(max(err, tiny(1.0_dp)))
-      m = count(use)
-      if (m < 2) then
-         slope = 0
-         return
-      end if
-      slope = (m*sum(x*y, use) - sum(x, use)*sum(y, use))/(m*sum(x*x, use) - sum(x, use)**2)
-   end function fitted_order
 end program test_modes_convergence
