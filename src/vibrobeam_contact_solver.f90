@@ -31,7 +31,8 @@ module vibrobeam_contact_solver
    integer, parameter :: regime_delassus = 1, regime_band = 2
    !> Largest number of contact points for which 'auto' caches the Delassus columns
    !! (measured, verification/benchmark: with every point active the band regime is
-   !! already as fast at 16 points and 4.7 times faster at 64).
+   !! already 1.3 times faster at 16 points and 4.7 times faster at 64; with one or two
+   !! active points of a few stops the cached columns are cheaper).
    integer, parameter :: delassus_limit = 16
    !> Consecutive block pivots without progress before the single-pivot (Murty) rule.
    integer, parameter :: block_pivot_patience = 3
