@@ -31,8 +31,8 @@ module vibrobeam_contact_solver
    integer, parameter :: regime_delassus = 1, regime_band = 2
    !> Largest number of contact points for which 'auto' caches the Delassus columns
    !! (measured, verification/benchmark: with every point active the band regime is
-   !! already 1.3 times faster at 16 points and 4.7 times faster at 64; with one or two
-   !! active points of a few stops the cached columns are cheaper).
+   !! already 1.3 times faster at 16 points and 4.7 times faster at 64; a scene with a
+   !! few stops keeps the cached columns, which need no factorization per step).
    integer, parameter :: delassus_limit = 16
    !> Consecutive block pivots without progress before the single-pivot (Murty) rule.
    integer, parameter :: block_pivot_patience = 3
