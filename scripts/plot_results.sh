@@ -13,6 +13,7 @@ plot() {  # plot SCRIPT REQUIRED_DAT
   fi
 }
 plot plot_modes.gp shapes
+plot plot_static.gp static
 for gp in "$here"/plot_dynamics_*.gp; do
   [ -e "$gp" ] || continue
   name=$(basename "$gp" .gp)
