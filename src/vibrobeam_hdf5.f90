@@ -28,6 +28,7 @@
 !! may call `h5close_f`.
 module vibrobeam_hdf5
    use vibrobeam_kinds, only: dp
+   use vibrobeam_text, only: integer_text
    use vibrobeam_filesystem, only: make_parent_directories, rename_file, remove_file, &
       file_exists, temporary_name
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5kind_to_type, &
@@ -1150,13 +1151,5 @@ contains
       list_id = no_id
    end subroutine close_property_list
 
-   !> Decimal text of an integer.
-   pure function integer_text(value) result(text)
-      integer, intent(in) :: value
-      character(len=:), allocatable :: text
-      character(len=24) :: buffer
-      write (buffer, '(i0)') value
-      text = trim(buffer)
-   end function integer_text
 
 end module vibrobeam_hdf5

@@ -3,7 +3,8 @@
 !! module knows what values are allowed and how to list them with their units.
 module vibrobeam_scene
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
-   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_kinds, only: dp
+   use vibrobeam_text, only: real_text, integer_text
    implicit none
    private
    public :: scene_type, obstacle_type, scene_entry, max_obstacles, unset
@@ -259,50 +260,6 @@ contains
       end subroutine one_of
    end subroutine validate_scene
 
-   !> A real number as short text that reads back to the same value (for messages and the
-   !! resolved-scene listing): 1.5, 0, 32, 2.1e11, 1.6666666666666667e-9.
-   function real_text(value) result(text)
-      real(dp), intent(in) :: value
-      character(len=:), allocatable :: text
-      character(len=40) :: buffer, format
-      real(dp) :: back
-      integer :: digits, e, ios, exponent
-      if (ieee_is_nan(value)) then
-         text = 'NaN'
-         return
-      else if (abs(value) >= huge(1.0_dp)) then
-         text = merge('-inf', ' inf', value < 0)
-         text = trim(adjustl(text))
-         return
-      end if
-      do digits = 0, 17
-         if (abs(value) < tiny(value) .or. (abs(value) >= 1e-3_dp .and. abs(value) < 1e6_dp)) then
-            write (format, '(a,i0,a)') '(f0.', digits, ')'
-         else
-            write (format, '(a,i0,a)') '(es30.', digits, 'e3)'
-         end if
-         write (buffer, format) value
-         read (buffer, *, iostat=ios) back
-         if (ios == 0 .and. transfer(back, 1_int64) == transfer(value, 1_int64)) exit   ! bitwise: reads back exactly
-      end do
-      buffer = adjustl(buffer)
-      if (buffer(1:1) == '.') buffer = '0'//buffer(1:len(buffer) - 1)
-      if (buffer(1:2) == '-.') buffer = '-0'//buffer(2:len(buffer) - 1)
-      e = scan(buffer, 'Ee')
-      if (e == 0) e = len_trim(buffer) + 1
-      text = buffer(1:e - 1)
-      if (index(text, '.') > 0) then
-         do while (text(len(text):len(text)) == '0')
-            text = text(1:len(text) - 1)
-         end do
-         if (text(len(text):len(text)) == '.') text = text(1:len(text) - 1)
-      end if
-      if (e <= len_trim(buffer)) then
-         read (buffer(e + 1:), *) exponent
-         write (buffer, '(i0)') exponent
-         text = text//'e'//trim(buffer)
-      end if
-   end function real_text
 
    !> Every resolved input value as a list of entries (name 'group.variable', value, unit).
    pure function scene_entries(scene) result(list)
@@ -426,13 +383,5 @@ contains
          if (len_trim(list(i)%unit) > 0) text = text//'   ! '//trim(list(i)%unit)
          text = text//new_line('a')
       end do
-   contains
-      pure function integer_text(number) result(t)
-         integer, intent(in) :: number
-         character(len=:), allocatable :: t
-         character(len=16) :: buffer
-         write (buffer, '(i0)') number
-         t = trim(buffer)
-      end function integer_text
    end function format_scene
 end module vibrobeam_scene

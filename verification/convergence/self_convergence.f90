@@ -35,6 +35,7 @@
 !! error of the joint refinement does not decrease from one level to the next.
 program self_convergence
    use vibrobeam_kinds, only: dp, int64, error_unit, output_unit
+   use vibrobeam_text, only: integer_text
    use vibrobeam_status, only: message_length
    use vibrobeam_scene, only: scene_type, validate_scene
    use vibrobeam_input, only: read_scene
@@ -623,13 +624,6 @@ contains
       if (present(width)) text = repeat(' ', max(0, width - len(text)))//text
    end function fixed
 
-   function integer_text(value) result(text)
-      integer, intent(in) :: value
-      character(len=:), allocatable :: text
-      character(len=16) :: buffer
-      write (buffer, '(i0)') value
-      text = trim(buffer)
-   end function integer_text
 
    !> `value` right-aligned in `width` characters.
    function padded(value, width) result(text)

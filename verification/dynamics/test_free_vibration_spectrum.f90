@@ -16,6 +16,7 @@
 !! usage: test_free_vibration_spectrum verification/dynamics/free_vibration_spectrum.nml
 program test_free_vibration_spectrum
    use vibrobeam_kinds, only: dp, pi, output_unit, error_unit
+   use vibrobeam_text, only: integer_text, real_text
    use vibrobeam_scene, only: scene_type
    use vibrobeam_model, only: nodal_displacement
    use vibrobeam_setup, only: prepared_scene, start_stepper
@@ -152,19 +153,5 @@ contains
       end do
    end function sorted
 
-   pure function integer_text(value) result(text)
-      integer, intent(in) :: value
-      character(len=:), allocatable :: text
-      character(len=16) :: buffer
-      write (buffer, '(i0)') value
-      text = trim(buffer)
-   end function integer_text
 
-   pure function real_text(value) result(text)
-      real(dp), intent(in) :: value
-      character(len=:), allocatable :: text
-      character(len=32) :: buffer
-      write (buffer, '(es14.7)') value
-      text = trim(adjustl(buffer))
-   end function real_text
 end program test_free_vibration_spectrum

@@ -14,6 +14,7 @@
 !! Prints one line per failed check and a summary; `error stop 1` on any failure.
 program test_hdf5_roundtrip
    use vibrobeam_kinds, only: dp, int64, error_unit
+   use vibrobeam_text, only: integer_text, real_text
    use vibrobeam_filesystem, only: file_exists, remove_file, temporary_name, &
       open_text_for_atomic_write, commit_text_file, discard_text_file
    use vibrobeam_hdf5, only: h5_writer, read_real_1d, read_real_2d, read_int_1d, &
@@ -516,20 +517,6 @@ contains
       call record(.true., quantity)
    end subroutine check_int_1d
 
-   pure function integer_text(value) result(text)
-      integer, intent(in) :: value
-      character(len=:), allocatable :: text
-      character(len=24) :: buffer
-      write (buffer, '(i0)') value
-      text = trim(buffer)
-   end function integer_text
 
-   pure function real_text(value) result(text)
-      real(dp), intent(in) :: value
-      character(len=:), allocatable :: text
-      character(len=32) :: buffer
-      write (buffer, '(es24.16e3)') value
-      text = trim(adjustl(buffer))
-   end function real_text
 
 end program test_hdf5_roundtrip

@@ -14,6 +14,7 @@
 program test_spectrum
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use vibrobeam_kinds, only: dp, pi
+   use vibrobeam_text, only: integer_text, real_text
    use vibrobeam_spectrum, only: amplitude_spectrum, spectral_peaks, bin_width
    use vibrobeam_test_support, only: test_counter
    implicit none
@@ -255,19 +256,5 @@ contains
       call t%check_true('peaks: count = 0 -> none', size(peaks) == 0)
    end subroutine peak_edge_cases
 
-   pure function integer_text(value) result(text)
-      integer, intent(in) :: value
-      character(len=:), allocatable :: text
-      character(len=16) :: buffer
-      write (buffer, '(i0)') value
-      text = trim(buffer)
-   end function integer_text
 
-   pure function real_text(value) result(text)
-      real(dp), intent(in) :: value
-      character(len=:), allocatable :: text
-      character(len=32) :: buffer
-      write (buffer, '(es14.7)') value
-      text = trim(adjustl(buffer))
-   end function real_text
 end program test_spectrum

@@ -1,0 +1,64 @@
+!> Numbers as text for messages, listings and attributes.
+module vibrobeam_text
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+   use vibrobeam_kinds, only: dp, int64
+   implicit none
+   private
+   public :: real_text, integer_text
+
+contains
+
+   !> Decimal text of an integer, without blanks.
+   pure function integer_text(value) result(text)
+      integer, intent(in) :: value
+      character(len=:), allocatable :: text
+      character(len=24) :: buffer
+      write (buffer, '(i0)') value
+      text = trim(buffer)
+   end function integer_text
+
+   !> A real number as short text that reads back to the same value (for messages and the
+   !! resolved-scene listing): 1.5, 0, 32, 2.1e11, 1.6666666666666667e-9.
+   function real_text(value) result(text)
+      real(dp), intent(in) :: value
+      character(len=:), allocatable :: text
+      character(len=40) :: buffer, format
+      real(dp) :: back
+      integer :: digits, e, ios, exponent
+      if (ieee_is_nan(value)) then
+         text = 'NaN'
+         return
+      else if (abs(value) >= huge(1.0_dp)) then
+         text = merge('-inf', ' inf', value < 0)
+         text = trim(adjustl(text))
+         return
+      end if
+      do digits = 0, 17
+         if (abs(value) < tiny(value) .or. (abs(value) >= 1e-3_dp .and. abs(value) < 1e6_dp)) then
+            write (format, '(a,i0,a)') '(f0.', digits, ')'
+         else
+            write (format, '(a,i0,a)') '(es30.', digits, 'e3)'
+         end if
+         write (buffer, format) value
+         read (buffer, *, iostat=ios) back
+         if (ios == 0 .and. transfer(back, 1_int64) == transfer(value, 1_int64)) exit   ! bitwise: reads back exactly
+      end do
+      buffer = adjustl(buffer)
+      if (buffer(1:1) == '.') buffer = '0'//buffer(1:len(buffer) - 1)
+      if (buffer(1:2) == '-.') buffer = '-0'//buffer(2:len(buffer) - 1)
+      e = scan(buffer, 'Ee')
+      if (e == 0) e = len_trim(buffer) + 1
+      text = buffer(1:e - 1)
+      if (index(text, '.') > 0) then
+         do while (text(len(text):len(text)) == '0')
+            text = text(1:len(text) - 1)
+         end do
+         if (text(len(text):len(text)) == '.') text = text(1:len(text) - 1)
+      end if
+      if (e <= len_trim(buffer)) then
+         read (buffer(e + 1:), *) exponent
+         write (buffer, '(i0)') exponent
+         text = text//'e'//trim(buffer)
+      end if
+   end function real_text
+end module vibrobeam_text
