@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# A numerical failure (INTERFACE.md): exit status 3, a message naming the step, and a
+# complete HDF5 file whose /run status is 'failed' and whose histories stop before t_end.
+# usage: run_numerical_failure.sh VIBROBEAM INPUT.nml
+# (Release builds only: a Debug build traps the overflow itself, -ffpe-trap=overflow.)
+set -uo pipefail
+vibrobeam=$1; input=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+"$vibrobeam" "$input" > stdout.txt 2> stderr.txt
+status=$?
+passed=0; failed=0
+check() { if eval "$2"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL $1"; fi; }
+check "exit status $status, expected 3" '[ "$status" -eq 3 ]'
+check "stderr names the numerical failure" 'grep -q "numerical failure at step [0-9]" stderr.txt'
+check "no temporary file left" '[ ! -e failure.h5.tmp ]'
+check "/run status is failed" 'h5dump -a /run/status failure.h5 | grep -q "\"failed\""'
+steps=$(h5dump -a /run/steps failure.h5 | sed -n 's/.*(0): *\([0-9]*\).*/\1/p')
+check "steps before the failure ($steps) fewer than the 1000 asked" '[ -n "$steps" ] && [ "$steps" -lt 1000 ] && [ "$steps" -gt 0 ]'
+samples=$(h5dump -H -d /time failure.h5 | sed -n 's/.*SIMPLE { ( \([0-9]*\) ).*/\1/p' | head -1)
+check "/time holds every step up to the failure ($samples samples for $steps steps)" '[ "$samples" = "$((steps + 1))" ]'
+cat stderr.txt
+echo "run_numerical_failure: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
