@@ -16,12 +16,13 @@
 !! - 'band': the same block principal pivoting, but every trial set is solved through the
 !!   sparse saddle-point system [W, -H_F^T; -H_F, 0] [x; P_F] = [W x_free; -b_F], whose
 !!   unknowns are ordered so that each multiplier sits next to its last degree of
-!!   freedom: the system stays banded (LAPACK dgbsv), cost O(J) per pivoting iteration,
-!!   never a dense J x J or m x m matrix. Used when a longitudinal obstacle gives many
-!!   contact points.
+!!   freedom: the system stays banded (LAPACK dgbtrf/dgbtrs), cost O(J) per pivoting
+!!   iteration, never a dense J x J or m x m matrix; the factors are reused while the set
+!!   of held points does not change. Used when a longitudinal obstacle gives many contact
+!!   points.
 module vibrobeam_contact_solver
    use vibrobeam_kinds, only: dp
-   use vibrobeam_band, only: symmetric_band, band_cholesky, band_solve, band_matvec, band_entry
+   use vibrobeam_band, only: symmetric_band, band_cholesky, band_solve, band_matvec
    use vibrobeam_contact_points, only: contact_set, contact_value, no_bound
    use vibrobeam_lcp, only: solve_lcp
    implicit none
@@ -46,6 +47,14 @@ module vibrobeam_contact_solver
       type(contact_set) :: contacts
       real(dp), allocatable :: response(:,:)      !! (J, contacts) W^-1 H_c^T ('delassus')
       integer :: max_iterations = 0               !! 0: default of each regime
+      ! 'band' regime: LU factors of the last trial set's saddle-point matrix, reused while
+      ! the set of contact points held does not change
+      integer, allocatable :: factored_points(:)          !! contact points of that set
+      integer, allocatable :: factored_dof_position(:)    !! row of each unknown
+      integer, allocatable :: factored_multiplier_position(:)   !! row of each multiplier
+      real(dp), allocatable :: factored_lu(:,:)           !! dgbtrf factors
+      integer, allocatable :: factored_pivots(:)
+      integer :: factored_width = 0                       !! kl = ku of the ordered system
    contains
       procedure :: setup
       procedure :: project
@@ -94,7 +103,7 @@ contains
    !! signs s(k) (+1: from below, -1: from above) and offsets b(k).
    !! stat: 0 ok; 1 no convergence; 2 linear solver failure; 3 residual check failed.
    subroutine project(self, x_free, active, s, b, x, impulse, iterations, stat, errmsg)
-      class(contact_projector), intent(in) :: self
+      class(contact_projector), intent(inout) :: self
       real(dp), intent(in) :: x_free(:)     !! (J) unconstrained solution
       integer, intent(in) :: active(:)      !! (m) contact point indices
       real(dp), intent(in) :: s(:)          !! (m) +1 or -1
@@ -122,7 +131,7 @@ contains
    !! start from the points x_free violates and add (or switch the side of) every point a
    !! solution still violates, until none does. multiplier(c) = P_c, 0 off contact.
    subroutine project_admissible(self, x_free, x, multiplier, iterations, stat, errmsg)
-      class(contact_projector), intent(in) :: self
+      class(contact_projector), intent(inout) :: self
       real(dp), intent(in) :: x_free(:)
       real(dp), intent(out) :: x(:)
       real(dp), intent(out) :: multiplier(:)     !! (contacts%count)
@@ -208,7 +217,7 @@ contains
 
    !> Block principal pivoting on the banded saddle-point system (see the module comment).
    subroutine project_band(self, x_free, active, s, b, x, impulse, iterations, stat, errmsg)
-      type(contact_projector), intent(in) :: self
+      type(contact_projector), intent(inout) :: self
       real(dp), intent(in) :: x_free(:), s(:), b(:)
       integer, intent(in) :: active(:)
       real(dp), intent(out) :: x(:), impulse(:)
@@ -284,10 +293,12 @@ contains
    end subroutine project_band
 
    !> Solve [W, -H_F^T; -H_F, 0] [x; P_F] = [W x_free; -b_F], P = 0 outside F, as one
-   !! general band system (LAPACK dgbsv) with each multiplier ordered right after the last
-   !! degree of freedom of its row.
+   !! general band system (LAPACK dgbtrf/dgbtrs) with each multiplier ordered right after
+   !! the last degree of freedom of its row. The matrix depends only on which contact
+   !! points are in F, so its LU factors are kept and reused while F does not change (a
+   !! persistent contact: one band back-substitution per step).
    subroutine solve_trial_set(self, w_x_free, active, b, in_set, x, impulse, stat, errmsg)
-      type(contact_projector), intent(in) :: self
+      type(contact_projector), intent(inout) :: self
       real(dp), intent(in) :: w_x_free(:), b(:)
       integer, intent(in) :: active(:)
       logical, intent(in) :: in_set(:)
@@ -295,29 +306,97 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       interface
-         subroutine dgbsv(n, kl, ku, nrhs, ab, ldab, ipiv, rhs, ldb, info)
+         subroutine dgbtrs(trans, n, kl, ku, nrhs, ab, ldab, ipiv, rhs, ldb, info)
             import :: dp
+            character, intent(in) :: trans
             integer, intent(in) :: n, kl, ku, nrhs, ldab, ldb
-            real(dp), intent(inout) :: ab(ldab, *), rhs(ldb, *)
-            integer, intent(out) :: ipiv(*), info
-         end subroutine dgbsv
+            real(dp), intent(in) :: ab(ldab, *)
+            integer, intent(in) :: ipiv(*)
+            real(dp), intent(inout) :: rhs(ldb, *)
+            integer, intent(out) :: info
+         end subroutine dgbtrs
       end interface
-      integer :: j, m, total, kd, i, k, a, width, position, col
-      integer, allocatable :: dof_position(:), multiplier_position(:), ipiv(:), order(:)
-      integer, allocatable :: anchors(:)
-      real(dp), allocatable :: ab(:,:), rhs(:)
+      integer, allocatable :: points(:)
+      real(dp), allocatable :: rhs(:)
+      integer :: i, k, n_set, total
+      stat = 0
+      errmsg = ''
+      points = pack(active, in_set)
+      if (.not. same_points(self%factored_points, points)) then
+         call factor_trial_set(self, points, stat, errmsg)
+         if (stat /= 0) return
+      end if
+      total = self%unknowns + size(points)
+      allocate (rhs(total))
+      do i = 1, self%unknowns
+         rhs(self%factored_dof_position(i)) = w_x_free(i)
+      end do
+      n_set = 0
+      do k = 1, size(active)
+         if (.not. in_set(k)) cycle
+         n_set = n_set + 1
+         rhs(self%factored_multiplier_position(n_set)) = -b(k)
+      end do
+      call dgbtrs('N', total, self%factored_width, self%factored_width, 1, self%factored_lu, &
+                  3*self%factored_width + 1, self%factored_pivots, rhs, total, stat)
+      if (stat /= 0) then
+         write (errmsg, '(a,i0)') 'band saddle-point solve (dgbtrs) failed: info = ', stat
+         stat = 2
+         return
+      end if
+      do i = 1, self%unknowns
+         x(i) = rhs(self%factored_dof_position(i))
+      end do
+      impulse = 0
+      n_set = 0
+      do k = 1, size(active)
+         if (.not. in_set(k)) cycle
+         n_set = n_set + 1
+         impulse(k) = rhs(self%factored_multiplier_position(n_set))
+      end do
+   contains
+      pure logical function same_points(cached, wanted)
+         integer, allocatable, intent(in) :: cached(:)
+         integer, intent(in) :: wanted(:)
+         same_points = .false.
+         if (.not. allocated(cached)) return
+         if (size(cached) /= size(wanted)) return
+         same_points = all(cached == wanted)
+      end function same_points
+   end subroutine solve_trial_set
+
+   !> Order, assemble and LU-factor (LAPACK dgbtrf) the saddle-point matrix of the contact
+   !! points `points` (the set F, in the order of the active list), and keep the factors.
+   subroutine factor_trial_set(self, points, stat, errmsg)
+      type(contact_projector), intent(inout) :: self
+      integer, intent(in) :: points(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      interface
+         subroutine dgbtrf(m, n, kl, ku, ab, ldab, ipiv, info)
+            import :: dp
+            integer, intent(in) :: m, n, kl, ku, ldab
+            real(dp), intent(inout) :: ab(ldab, *)
+            integer, intent(out) :: ipiv(*), info
+         end subroutine dgbtrf
+      end interface
+      integer :: j, total, kd, i, k, a, width, position, col, row
+      integer :: order(size(points)), anchors(size(points))
       j = self%unknowns
       kd = self%metric%kd
-      m = count(in_set)
-      total = j + m
-      allocate (dof_position(j), multiplier_position(size(active)), anchors(size(active)))
-      multiplier_position = 0
-      ! anchor of each constraint in the set: the last degree of freedom of its row
-      do k = 1, size(active)
-         anchors(k) = maxval(self%contacts%dofs(:, active(k)))
+      total = j + size(points)
+      if (allocated(self%factored_points)) deallocate (self%factored_points)
+      if (allocated(self%factored_dof_position)) deallocate (self%factored_dof_position)
+      if (allocated(self%factored_multiplier_position)) deallocate (self%factored_multiplier_position)
+      if (allocated(self%factored_lu)) deallocate (self%factored_lu)
+      if (allocated(self%factored_pivots)) deallocate (self%factored_pivots)
+      allocate (self%factored_dof_position(j), self%factored_multiplier_position(size(points)))
+      ! anchor of each constraint: the last degree of freedom of its row; order the set by
+      ! anchor (insertion sort: the active list is already ordered by node)
+      do k = 1, size(points)
+         anchors(k) = maxval(self%contacts%dofs(:, points(k)))
+         order(k) = k
       end do
-      order = pack([(k, k=1, size(active))], in_set)
-      ! order[set] by anchor (insertion sort: the active list is already by node)
       do i = 2, size(order)
          k = order(i)
          a = i - 1
@@ -332,66 +411,60 @@ contains
       a = 1
       do i = 1, j
          position = position + 1
-         dof_position(i) = position
+         self%factored_dof_position(i) = position
          do while (a <= size(order))
             if (anchors(order(a)) /= i) exit
             position = position + 1
-            multiplier_position(order(a)) = position
+            self%factored_multiplier_position(order(a)) = position
             a = a + 1
          end do
       end do
-      ! bandwidth of the ordered system
-      width = 0
-      do i = 1, j
-         do col = i, min(j, i + kd)
-            width = max(width, abs(dof_position(col) - dof_position(i)))
+      associate (dof_position => self%factored_dof_position, multiplier_position => self%factored_multiplier_position)
+         ! bandwidth of the ordered system
+         width = 0
+         do i = 1, j
+            do col = i, min(j, i + kd)
+               width = max(width, abs(dof_position(col) - dof_position(i)))
+            end do
          end do
-      end do
-      do k = 1, size(active)
-         if (.not. in_set(k)) cycle
-         do a = 1, 4
-            if (self%contacts%dofs(a, active(k)) /= 0) width = max(width, &
-               abs(multiplier_position(k) - dof_position(self%contacts%dofs(a, active(k)))))
+         do k = 1, size(points)
+            do a = 1, 4
+               if (self%contacts%dofs(a, points(k)) /= 0) width = max(width, &
+                  abs(multiplier_position(k) - dof_position(self%contacts%dofs(a, points(k)))))
+            end do
          end do
-      end do
-      allocate (ab(3*width + 1, total), source=0.0_dp)
-      allocate (rhs(total), ipiv(total))
-      do i = 1, j
-         do col = max(1, i - kd), min(j, i + kd)
-            call put(dof_position(i), dof_position(col), band_entry(self%metric, i, col))
+         allocate (self%factored_lu(3*width + 1, total), source=0.0_dp)
+         allocate (self%factored_pivots(total))
+         ! W, read straight from its lower band storage (A(r,c) at lower(1 + r - c, c))
+         do col = 1, j
+            do row = col, min(j, col + kd)
+               call put(dof_position(row), dof_position(col), self%metric%lower(1 + row - col, col))
+               if (row /= col) call put(dof_position(col), dof_position(row), self%metric%lower(1 + row - col, col))
+            end do
          end do
-         rhs(dof_position(i)) = w_x_free(i)
-      end do
-      do k = 1, size(active)
-         if (.not. in_set(k)) cycle
-         do a = 1, 4
-            col = self%contacts%dofs(a, active(k))
-            if (col == 0) cycle
-            call put(dof_position(col), multiplier_position(k), -self%contacts%weights(a, active(k)))
-            call put(multiplier_position(k), dof_position(col), -self%contacts%weights(a, active(k)))
+         do k = 1, size(points)
+            do a = 1, 4
+               col = self%contacts%dofs(a, points(k))
+               if (col == 0) cycle
+               call put(dof_position(col), multiplier_position(k), -self%contacts%weights(a, points(k)))
+               call put(multiplier_position(k), dof_position(col), -self%contacts%weights(a, points(k)))
+            end do
          end do
-         rhs(multiplier_position(k)) = -b(k)
-      end do
-      call dgbsv(total, width, width, 1, ab, 3*width + 1, ipiv, rhs, total, stat)
+      end associate
+      self%factored_width = width
+      call dgbtrf(total, total, width, width, self%factored_lu, 3*width + 1, self%factored_pivots, stat)
       if (stat /= 0) then
-         write (errmsg, '(a,i0)') 'band saddle-point solve (dgbsv) failed: info = ', stat
+         write (errmsg, '(a,i0)') 'band saddle-point factorization (dgbtrf) failed: info = ', stat
          stat = 2
+         deallocate (self%factored_lu)   ! no valid factors: the next call refactors
          return
       end if
-      do i = 1, j
-         x(i) = rhs(dof_position(i))
-      end do
-      impulse = 0
-      do k = 1, size(active)
-         if (in_set(k)) impulse(k) = rhs(multiplier_position(k))
-      end do
+      self%factored_points = points
    contains
       subroutine put(r, c, value)
          integer, intent(in) :: r, c
          real(dp), intent(in) :: value
-         integer :: row
-         row = 2*width + 1 + r - c
-         ab(row, c) = ab(row, c) + value
+         self%factored_lu(2*width + 1 + r - c, c) = self%factored_lu(2*width + 1 + r - c, c) + value
       end subroutine put
-   end subroutine solve_trial_set
+   end subroutine factor_trial_set
 end module vibrobeam_contact_solver
