@@ -10,7 +10,7 @@ module vibrobeam_band
    private
    public :: symmetric_band, band_cholesky
    public :: band_allocate, band_add, band_entry, band_matvec, band_combination
-   public :: band_factor, band_solve, band_solve_many
+   public :: band_factor, band_solve
 
    !> A symmetric n x n matrix with kd sub-diagonals, lower band storage.
    type :: symmetric_band
@@ -137,14 +137,4 @@ contains
       if (chol%n == 0) return
       call dpbtrs('L', chol%n, chol%kd, 1, chol%factor, chol%kd + 1, x, chol%n, info)
    end subroutine band_solve
-
-   !> Overwrite every column of x with A^{-1} times it (LAPACK dpbtrs, several right-hand
-   !! sides in one call).
-   subroutine band_solve_many(chol, x)
-      type(band_cholesky), intent(in) :: chol
-      real(dp), intent(inout) :: x(:,:)  !! (n, nrhs)
-      integer :: info
-      if (chol%n == 0 .or. size(x, 2) == 0) return
-      call dpbtrs('L', chol%n, chol%kd, size(x, 2), chol%factor, chol%kd + 1, x, chol%n, info)
-   end subroutine band_solve_many
 end module vibrobeam_band

@@ -15,7 +15,7 @@ module vibrobeam_model
    use vibrobeam_bspline, only: bspline_knots, bspline_shape
    implicit none
    private
-   public :: beam_model, build_model, element_dofs, point_row, node_row, nodal_displacement
+   public :: beam_model, build_model, point_row, node_row, nodal_displacement
    public :: load_vector, point_load_vector, interpolate_field, space_profile, energy_integrals
 
    integer, parameter :: bandwidth = 3   !! sub-diagonals of M and K for both bases
