@@ -90,17 +90,115 @@ contains
    end subroutine check_group_names
 
    !> Turn a namelist read status into stat/errmsg: end of file means the group is absent.
-   subroutine read_status(group, ios, iomsg, stat, errmsg)
+   !! The run-time library reports an unknown variable and a malformed value alike, as
+   !! "Cannot match namelist object name X"; we look X up in the group's text to say which:
+   !! X followed by '=' (or '(') is an unknown variable, otherwise X is part of the value of
+   !! the variable assigned just before it.
+   subroutine read_status(unit, group, ios, iomsg, stat, errmsg)
+      integer, intent(in) :: unit
       character(len=*), intent(in) :: group, iomsg
       integer, intent(in) :: ios
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      character(len=*), parameter :: marker = 'object name '
+      character(len=:), allocatable :: text, token
+      character(len=1) :: next
+      integer :: where_token, after, before, name_end, name_start
       stat = 0
       errmsg = ''
       if (is_iostat_end(ios) .or. ios == 0) return
       stat = 1
       errmsg = '&'//group//': '//trim(iomsg)//' (unknown variable or malformed value)'
+      where_token = index(iomsg, marker)
+      if (where_token == 0) return
+      token = trim(lowercase(iomsg(where_token + len(marker):)))
+      if (len(token) == 0) return
+      text = lowercase(group_text(unit, group))
+      where_token = token_position(text, token)
+      if (where_token == 0) return
+      after = where_token + len(token) - 1 + verify(text(where_token + len(token):)//'x', ' ')
+      next = text(after:after)
+      if (next == '=' .or. next == '(') then
+         errmsg = '&'//group//': unknown variable '''//token//''''
+         return
+      end if
+      before = index(text(1:where_token - 1), '=', back=.true.)
+      if (before <= 1) return
+      name_end = len_trim(text(1:before - 1))
+      if (name_end == 0) return
+      if (text(name_end:name_end) == ')') name_end = index(text(1:name_end), '(', back=.true.) - 1
+      if (name_end <= 0) return
+      name_start = scan(text(1:name_end), ' ,&'//achar(9), back=.true.) + 1
+      errmsg = '&'//group//' '//text(name_start:name_end)//': malformed value near '''//token// &
+               ''' (a number, a quoted string or .true./.false. is expected)'
+   contains
+      !> Position of `word` in `line` as a whole token (not the end of a longer name), 0 if
+      !! absent.
+      pure integer function token_position(line, word)
+         character(len=*), intent(in) :: line, word
+         character(len=*), parameter :: name_characters = 'abcdefghijklmnopqrstuvwxyz0123456789_'
+         integer :: start, found
+         token_position = 0
+         start = 1
+         do
+            found = index(line(start:), word)
+            if (found == 0) return
+            found = start + found - 1
+            if (found == 1) then
+               token_position = found
+               return
+            end if
+            if (index(name_characters, line(found - 1:found - 1)) == 0 .or. word(1:1) == '.') then
+               token_position = found
+               return
+            end if
+            start = found + 1
+         end do
+      end function token_position
    end subroutine read_status
+
+   !> The text of group &name in the file (its lines joined by blanks, up to and including
+   !! the '/' that closes it outside quotes, comments left out); '' if the group is absent.
+   function group_text(unit, name) result(text)
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: text
+      character(len=1024) :: line
+      character(len=1) :: quote
+      integer :: ios, i, first, last
+      logical :: inside
+      text = ''
+      inside = .false.
+      quote = ' '
+      rewind (unit)
+      do
+         read (unit, '(a)', iostat=ios) line
+         if (ios /= 0) return
+         if (.not. inside) then
+            first = index(lowercase(line), '&'//name)
+            if (first == 0) cycle
+            last = first + len(name) + 1
+            if (last <= len(line)) then
+               if (scan(line(last:last), ' ,/!'//achar(9)) == 0) cycle   ! a longer group name
+            end if
+            inside = .true.
+            line = line(last:)
+         end if
+         do i = 1, len_trim(line)
+            if (quote /= ' ') then
+               if (line(i:i) == quote) quote = ' '
+            else if (line(i:i) == achar(39) .or. line(i:i) == achar(34)) then
+               quote = line(i:i)
+            else if (line(i:i) == '!') then
+               exit
+            else if (line(i:i) == '/') then
+               text = text//' '//line(1:i)
+               return
+            end if
+         end do
+         text = text//' '//line(1:i - 1)
+      end do
+   end function group_text
 
    subroutine read_beam(unit, scene, stat, errmsg)
       integer, intent(in) :: unit
@@ -117,7 +215,7 @@ contains
       rayleigh_mass = scene%rayleigh_mass; rayleigh_stiffness = scene%rayleigh_stiffness
       rewind (unit)
       read (unit, nml=beam, iostat=ios, iomsg=iomsg)
-      call read_status('beam', ios, iomsg, stat, errmsg)
+      call read_status(unit, 'beam', ios, iomsg, stat, errmsg)
       scene%length = length; scene%k2 = k2
       scene%youngs_modulus = youngs_modulus; scene%density = density
       scene%area = area; scene%inertia = inertia
@@ -138,7 +236,7 @@ contains
       basis = scene%basis
       rewind (unit)
       read (unit, nml=mesh, iostat=ios, iomsg=iomsg)
-      call read_status('mesh', ios, iomsg, stat, errmsg)
+      call read_status(unit, 'mesh', ios, iomsg, stat, errmsg)
       scene%elements = elements
       scene%basis = lowercase(basis)
    end subroutine read_mesh
@@ -157,7 +255,7 @@ contains
       modes = scene%modes
       rewind (unit)
       read (unit, nml=analysis, iostat=ios, iomsg=iomsg)
-      call read_status('analysis', ios, iomsg, stat, errmsg)
+      call read_status(unit, 'analysis', ios, iomsg, stat, errmsg)
       scene%kind = lowercase(kind)
       scene%modes = modes
    end subroutine read_analysis
@@ -179,7 +277,7 @@ contains
       x_from = unset; x_to = unset; level_from = unset; level_to = unset
       rewind (unit)
       read (unit, nml=obstacles, iostat=ios, iomsg=iomsg)
-      call read_status('obstacles', ios, iomsg, stat, errmsg)
+      call read_status(unit, 'obstacles', ios, iomsg, stat, errmsg)
       if (stat /= 0) return
       write (number, '(i0)') count
       if (count < 0 .or. count > max_obstacles) then
@@ -232,7 +330,7 @@ contains
       separating_points = scene%separating_points
       rewind (unit)
       read (unit, nml=impact, iostat=ios, iomsg=iomsg)
-      call read_status('impact', ios, iomsg, stat, errmsg)
+      call read_status(unit, 'impact', ios, iomsg, stat, errmsg)
       scene%restitution = restitution
       scene%separating_points = lowercase(separating_points)
    end subroutine read_impact
@@ -251,7 +349,7 @@ contains
       theta = scene%theta; gamma = scene%gamma
       rewind (unit)
       read (unit, nml=time, iostat=ios, iomsg=iomsg)
-      call read_status('time', ios, iomsg, stat, errmsg)
+      call read_status(unit, 'time', ios, iomsg, stat, errmsg)
       scene%t_end = t_end; scene%dt = dt; scene%scheme = lowercase(scheme)
       scene%theta = theta; scene%gamma = gamma
    end subroutine read_time
@@ -274,7 +372,7 @@ contains
       velocity_amplitude = scene%velocity_amplitude
       rewind (unit)
       read (unit, nml=initial, iostat=ios, iomsg=iomsg)
-      call read_status('initial', ios, iomsg, stat, errmsg)
+      call read_status(unit, 'initial', ios, iomsg, stat, errmsg)
       scene%displacement = lowercase(displacement); scene%displacement_mode = displacement_mode
       scene%displacement_amplitude = displacement_amplitude
       scene%velocity = lowercase(velocity); scene%velocity_mode = velocity_mode
@@ -298,7 +396,7 @@ contains
       base_amplitude = scene%base_amplitude; base_frequency = scene%base_frequency
       rewind (unit)
       read (unit, nml=load, iostat=ios, iomsg=iomsg)
-      call read_status('load', ios, iomsg, stat, errmsg)
+      call read_status(unit, 'load', ios, iomsg, stat, errmsg)
       scene%distributed = distributed; scene%distributed_frequency = distributed_frequency
       scene%distributed_phase = distributed_phase; scene%point_force = point_force
       scene%point_position = point_position; scene%point_frequency = point_frequency
@@ -319,7 +417,7 @@ contains
       contact_max_iterations = scene%contact_max_iterations
       rewind (unit)
       read (unit, nml=solver, iostat=ios, iomsg=iomsg)
-      call read_status('solver', ios, iomsg, stat, errmsg)
+      call read_status(unit, 'solver', ios, iomsg, stat, errmsg)
       scene%contact_solver = lowercase(contact_solver)
       scene%contact_max_iterations = contact_max_iterations
    end subroutine read_solver
@@ -338,7 +436,7 @@ contains
       file = scene%file; every = scene%every; text = scene%text; progress = scene%progress
       rewind (unit)
       read (unit, nml=output, iostat=ios, iomsg=iomsg)
-      call read_status('output', ios, iomsg, stat, errmsg)
+      call read_status(unit, 'output', ios, iomsg, stat, errmsg)
       scene%file = file; scene%every = every; scene%text = text; scene%progress = progress
    end subroutine read_output
 
