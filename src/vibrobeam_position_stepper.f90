@@ -21,8 +21,7 @@
 module vibrobeam_position_stepper
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
-   use vibrobeam_band, only: symmetric_band, band_cholesky, band_combination, band_factor, band_solve, &
-                             band_matvec
+   use vibrobeam_band, only: band_cholesky, band_factor, band_solve, band_matvec
    use vibrobeam_model, only: beam_model
    use vibrobeam_contact_points, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
@@ -32,8 +31,6 @@ module vibrobeam_position_stepper
    public :: position_stepper
 
    type, extends(time_stepper) :: position_stepper
-      type(symmetric_band) :: iteration_matrix     !! W
-      type(band_cholesky) :: iteration_factor
       real(dp), allocatable :: u_previous(:)       !! U^n after a step (U^{-1} at the start)
       real(dp), allocatable :: multiplier(:)       !! projection multipliers per contact point
    contains
@@ -58,21 +55,11 @@ contains
       character(len=*), intent(out) :: errmsg
       type(band_cholesky) :: mass_factor
       real(dp) :: acceleration(size(u0)), ku(size(u0))
-      self%dt = dt
-      self%theta = theta
-      self%restitution = restitution
-      self%rayleigh_mass = rayleigh_mass
-      self%rayleigh_stiffness = rayleigh_stiffness
-      self%mass = model%mass
-      self%stiffness = model%stiffness
-      self%contacts = contacts
-      self%loads = loads
       ! W = (1 + dt a/2) M + (theta dt^2 + dt b/2) K
-      self%iteration_matrix = band_combination(1 + 0.5_dp*dt*rayleigh_mass, model%mass, &
-                                               theta*dt**2 + 0.5_dp*dt*rayleigh_stiffness, model%stiffness)
-      call band_factor(self%iteration_matrix, self%iteration_factor, stat, errmsg)
+      call self%set_up_system(model, contacts, loads, dt, theta, restitution, rayleigh_mass, rayleigh_stiffness, &
+                              1 + 0.5_dp*dt*rayleigh_mass, theta*dt**2 + 0.5_dp*dt*rayleigh_stiffness, &
+                              contact_regime, stat, errmsg)
       if (stat /= 0) return
-      call self%projector%setup(self%iteration_matrix, self%iteration_factor, contacts, contact_regime)
       call band_factor(model%mass, mass_factor, stat, errmsg)
       if (stat /= 0) return
       call band_matvec(model%stiffness, u0, ku)
@@ -82,10 +69,7 @@ contains
       self%u = u0
       self%u_previous = u0 - dt*v0 + 0.5_dp*dt**2*acceleration
       self%v = (self%u - self%u_previous)/dt
-      self%t = 0
-      self%steps = 0
       allocate (self%multiplier(contacts%count), source=0.0_dp)
-      call self%allocate_step_record()
    end subroutine init
 
    subroutine step(self, stat, errmsg)

@@ -4,7 +4,8 @@
 !! `vibrobeam_position_stepper`) extend it; the recorder and the run loop see only this.
 module vibrobeam_stepper
    use vibrobeam_kinds, only: dp
-   use vibrobeam_band, only: symmetric_band, band_matvec
+   use vibrobeam_band, only: symmetric_band, band_cholesky, band_matvec, band_combination, band_factor
+   use vibrobeam_model, only: beam_model
    use vibrobeam_contact_points, only: contact_set
    use vibrobeam_contact_solver, only: contact_projector
    use vibrobeam_loads, only: load_set
@@ -16,6 +17,8 @@ module vibrobeam_stepper
       real(dp) :: dt = 0, theta = 0.5_dp, restitution = 1
       real(dp) :: rayleigh_mass = 0, rayleigh_stiffness = 0
       type(symmetric_band) :: mass, stiffness
+      type(symmetric_band) :: iteration_matrix     !! W of the scheme, factored once per run
+      type(band_cholesky) :: iteration_factor
       type(contact_set) :: contacts
       type(contact_projector) :: projector
       type(load_set) :: loads
@@ -39,7 +42,7 @@ module vibrobeam_stepper
       procedure(step_interface), deferred :: step
       procedure :: kinetic_energy
       procedure :: elastic_energy
-      procedure :: allocate_step_record
+      procedure :: set_up_system
       procedure :: damping_times
    end type time_stepper
 
@@ -71,15 +74,42 @@ contains
       energy = 0.5_dp*dot_product(self%u, ku)
    end function elastic_energy
 
-   !> Room for one record per contact point in the per-step arrays.
-   subroutine allocate_step_record(self)
+   !> What both schemes set up the same way: the data of the run, the iteration matrix
+   !! W = mass_coefficient M + stiffness_coefficient K (each scheme gives its own
+   !! coefficients) with its Cholesky factor, the contact projection in the metric of W,
+   !! room for one record per contact point, and t = 0.
+   subroutine set_up_system(self, model, contacts, loads, dt, theta, restitution, rayleigh_mass, &
+                            rayleigh_stiffness, mass_coefficient, stiffness_coefficient, contact_regime, stat, errmsg)
       class(time_stepper), intent(inout) :: self
+      type(beam_model), intent(in) :: model
+      type(contact_set), intent(in) :: contacts
+      type(load_set), intent(in) :: loads
+      real(dp), intent(in) :: dt, theta, restitution, rayleigh_mass, rayleigh_stiffness
+      real(dp), intent(in) :: mass_coefficient, stiffness_coefficient
+      character(len=*), intent(in) :: contact_regime   !! 'auto' | 'delassus' | 'band'
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
       integer :: n
-      n = self%contacts%count
+      self%dt = dt
+      self%theta = theta
+      self%restitution = restitution
+      self%rayleigh_mass = rayleigh_mass
+      self%rayleigh_stiffness = rayleigh_stiffness
+      self%mass = model%mass
+      self%stiffness = model%stiffness
+      self%contacts = contacts
+      self%loads = loads
+      self%t = 0
+      self%steps = 0
+      n = contacts%count
       allocate (self%active(n), self%impulse(n), self%velocity_before(n), self%velocity_after(n), &
                 self%approaching(n))
       self%active_count = 0
-   end subroutine allocate_step_record
+      self%iteration_matrix = band_combination(mass_coefficient, model%mass, stiffness_coefficient, model%stiffness)
+      call band_factor(self%iteration_matrix, self%iteration_factor, stat, errmsg)
+      if (stat /= 0) return
+      call self%projector%setup(self%iteration_matrix, self%iteration_factor, contacts, contact_regime)
+   end subroutine set_up_system
 
    !> C x = a M x + b K x (Rayleigh damping).
    function damping_times(self, x) result(y)

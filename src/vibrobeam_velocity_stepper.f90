@@ -17,11 +17,9 @@
 module vibrobeam_velocity_stepper
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
-   use vibrobeam_band, only: symmetric_band, band_cholesky, band_combination, band_factor, band_solve, &
-                             band_matvec
+   use vibrobeam_band, only: band_solve, band_matvec
    use vibrobeam_model, only: beam_model
    use vibrobeam_contact_points, only: contact_set, contact_value
-   use vibrobeam_contact_solver, only: contact_projector
    use vibrobeam_loads, only: load_set
    use vibrobeam_stepper, only: time_stepper
    implicit none
@@ -34,8 +32,6 @@ module vibrobeam_velocity_stepper
       !> restitution of an active point already moving away from its obstacle: 1 (our
       !! remedy, default) or `restitution` (the plain law of SPEC §3, for comparison)
       real(dp) :: separating_restitution = 1
-      type(symmetric_band) :: iteration_matrix     !! W
-      type(band_cholesky) :: iteration_factor
       real(dp), allocatable :: force(:)            !! F(t_n)
       ! u = U^n, v = V^n; work = sum F^{n+theta}.(U^{n+1} - U^n),
       ! dissipated_impacts = -sum P.H V^{n+theta}, dissipated_damping = sum dt V^{n+theta}.C V^{n+theta}
@@ -58,29 +54,16 @@ contains
       real(dp), intent(in) :: u0(:), v0(:)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      self%dt = dt
-      self%theta = theta
-      self%gamma = gamma
-      self%restitution = restitution
-      self%rayleigh_mass = rayleigh_mass
-      self%rayleigh_stiffness = rayleigh_stiffness
-      self%mass = model%mass
-      self%stiffness = model%stiffness
-      self%activation_tolerance = 1e-12_dp*model%length
-      self%contacts = contacts
-      self%loads = loads
       ! W = (1 + theta dt a) M + (theta^2 dt^2 + theta dt b) K
-      self%iteration_matrix = band_combination(1 + theta*dt*rayleigh_mass, model%mass, &
-                                               theta**2*dt**2 + theta*dt*rayleigh_stiffness, model%stiffness)
-      call band_factor(self%iteration_matrix, self%iteration_factor, stat, errmsg)
+      call self%set_up_system(model, contacts, loads, dt, theta, restitution, rayleigh_mass, rayleigh_stiffness, &
+                              1 + theta*dt*rayleigh_mass, theta**2*dt**2 + theta*dt*rayleigh_stiffness, &
+                              contact_regime, stat, errmsg)
       if (stat /= 0) return
-      call self%projector%setup(self%iteration_matrix, self%iteration_factor, contacts, contact_regime)
+      self%gamma = gamma
+      self%activation_tolerance = 1e-12_dp*model%length
       self%u = u0
       self%v = v0
-      self%t = 0
-      self%steps = 0
       self%force = loads%at(0.0_dp)
-      call self%allocate_step_record()
    end subroutine init
 
    !> Advance from t_n to t_{n+1}. stat: 0 ok; 1..3 contact solver failure (errmsg says);
