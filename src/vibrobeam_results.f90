@@ -111,7 +111,8 @@ contains
       write (unit, '(a)') '# '//header
    end subroutine open_text_file
 
-   !> Write the /run attributes, then rename every temporary file to its final name.
+   !> Write the /run attributes, then rename every temporary file to its final name. On
+   !! failure the caller discards the set (`discard`), as after any other failure.
    subroutine commit_results(self, status, steps, wall_seconds, iterations_total, iterations_max, stat, errmsg)
       class(result_files), intent(inout) :: self
       character(len=*), intent(in) :: status   !! 'ok' | 'failed'
@@ -130,8 +131,7 @@ contains
          call commit_text_file(self%text_units(i), trim(self%text_names(i)), stat, errmsg)
       end do
       if (stat == 0) call self%h5%commit(stat, errmsg)
-      if (stat /= 0) call self%discard()
-      self%text_count = 0
+      if (stat == 0) self%text_count = 0
    end subroutine commit_results
 
    !> Remove every temporary file of the set.
