@@ -1,0 +1,130 @@
+#!/usr/bin/env bash
+# Refinement of the two-stop looseness scene with time steps that resolve the mesh: the
+# follow-up of scripts/convergence_study.sh (verification/convergence/REPORT.md, section
+# "Resolved time steps"). Every run is the bundled scene inputs/looseness_tip_stops.nml
+# with only `elements`, `dt`, `t_end`, `restitution` and the output file changed, run by
+# the vibrobeam executable itself; the comparisons use its _tip.dat and _energy.dat files.
+#
+# Studies (window [0, 25 ms], tip history sampled every 1e-5 s):
+#   A. N = 8 fixed, dt = 2e-6 ... 6.25e-8 s against dt = 3.125e-8 s (omega_max dt from
+#      0.46 down to 0.007), for e = 0.8 (the scene), e = 1 and e = 0;
+#   B. joint path dt = dt0/2^k, N = nint(16 2^(k/2)), dt0 = 5e-7 s (omega_max dt = 0.46
+#      at every level), against the reference (dt0/16, 4 N0) = (3.125e-8 s, 64), e = 0.8
+#      and e = 1;
+#   C. the energy left at T = 25 ms for N = 8 ... 64 with omega_max dt = 0.06, e = 0, 0.8
+#      and 1: how much the impacts dissipate as the mesh is refined.
+#
+# usage: scripts/resolved_refinement.sh [BUILD_DIR]   (default: build; about 3 min on 2 cores)
+# writes verification/convergence/resolved_refinement.txt
+# needs: cmake, a Fortran compiler, the project's libraries, awk
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build}
+scene=inputs/looseness_tip_stops.nml
+table=verification/convergence/resolved_refinement.txt
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
+if ! cmake --build "$build" -j 2 --target vibrobeam > "$work/build.log" 2>&1; then
+  cat "$work/build.log"
+  echo "resolved_refinement: the build failed (log above)" >&2
+  exit 1
+fi
+program=$build/vibrobeam
+window=0.025
+
+# run NAME N DT E: the scene with N elements, time step DT, restitution E, over [0, window]
+run() {
+  local name=$1 elements=$2 dt=$3 restitution=$4
+  local every
+  every=$(awk -v dt="$dt" 'BEGIN { k = int(1e-5/dt + 0.5); print (k < 1 ? 1 : k) }')
+  sed -e "s/elements = [0-9]*/elements = $elements/" \
+      -e "s/restitution = [0-9.]*/restitution = $restitution/" \
+      -e "s/t_end = [0-9.eE+-]*, dt = [0-9.eE+-]*/t_end = $window, dt = $dt/" \
+      -e "s|file = '[^']*', every = [0-9]*|file = '$work/$name.h5', every = $every|" \
+      "$scene" > "$work/$name.nml"
+  for value in "elements = $elements" "restitution = $restitution" "dt = $dt" "$work/$name.h5"; do
+    grep -q -- "$value" "$work/$name.nml" || { echo "resolved_refinement: could not set '$value'" >&2; exit 1; }
+  done
+  "$program" "$work/$name.nml" > "$work/$name.log" 2>&1 || { cat "$work/$name.log"; exit 1; }
+}
+
+# tip_errors RUN REFERENCE: max |u_tip - u_tip,ref| over [0, T] for T = 2.5, 5, 12, 25 ms
+tip_errors() {
+  paste <(grep -v '^#' "$work/$1_tip.dat") <(grep -v '^#' "$work/$2_tip.dat") | awk '
+    NF >= 8 {
+      if ($1 - $5 > 1e-12 || $5 - $1 > 1e-12) { print "times differ: " $1 " " $5 > "/dev/stderr"; exit 1 }
+      d = $2 - $6; if (d < 0) d = -d
+      if ($1 <= 0.0025 + 1e-12 && d > a) a = d
+      if ($1 <= 0.005 + 1e-12 && d > b) b = d
+      if ($1 <= 0.012 + 1e-12 && d > c) c = d
+      if (d > e) e = d
+    }
+    END { printf "%10.2e %10.2e %10.2e %10.2e", a, b, c, e }'
+}
+
+# energy_at_end RUN: E = kinetic + elastic at the last output time (J)
+energy_at_end() {
+  grep -v '^#' "$work/$1_energy.dat" | awk 'NF > 2 { e = $2 + $3 } END { printf "%.6e", e }'
+}
+
+# events RUN: impact events (impulses on one side less than 0.5 ms apart count once)
+events() {
+  grep -v '^#' "$work/$1_impacts.dat" | awk '
+    NF >= 5 { side = ($3 > 0) ? 1 : -1
+              if (n == 0 || $1 - last > 5e-4 || side != lastside) n++
+              last = $1; lastside = side }
+    END { print n + 0 }'
+}
+
+impulses() { grep -v '^#' "$work/$1_impacts.dat" | awk 'NF >= 5' | wc -l; }
+
+start=$(date +%s)
+{
+echo "# Resolved refinement of $scene over [0, $window s] (scripts/resolved_refinement.sh)"
+echo "# tip errors: max over the output times (every 1e-5 s) in [0, T] of |u_tip - u_tip,ref| (m)"
+echo "# omega_max = 2.2886e5 (N/8)^2 rad/s (the largest eigenvalue of the Hermite pencil, N = 8)"
+echo
+echo "## A. N = 8, dt alone, against dt = 3.125e-8 s"
+for e in 0.8 1 0; do
+  run a_ref_$e 8 3.125e-8 $e
+  echo "# e = $e; reference: $(events a_ref_$e) events, $(impulses a_ref_$e) impulses, E(T) = $(energy_at_end a_ref_$e) J"
+  printf "%10s %10s %10s %10s %10s %10s %7s %13s\n" dt omega_dt "T=2.5ms" "T=5ms" "T=12ms" "T=25ms" events "E(T) (J)"
+  for dt in 2e-6 1e-6 5e-7 2.5e-7 1.25e-7 6.25e-8; do
+    run a_$e 8 $dt $e
+    printf "%10s %10.3f %s %7s %13s\n" $dt "$(awk -v dt=$dt 'BEGIN { print 2.2886e5*dt }')" \
+      "$(tip_errors a_$e a_ref_$e)" "$(events a_$e)" "$(energy_at_end a_$e)"
+  done
+  echo
+done
+
+echo "## B. joint path dt = 5e-7/2^k, N = nint(16 2^(k/2)) (omega_max dt = 0.46), reference (3.125e-8 s, 64)"
+for e in 0.8 1; do
+  run b_ref_$e 64 3.125e-8 $e
+  echo "# e = $e; reference: $(events b_ref_$e) events, $(impulses b_ref_$e) impulses, E(T) = $(energy_at_end b_ref_$e) J"
+  printf "%3s %10s %4s %10s %10s %10s %10s %7s %9s %13s\n" k dt N "T=2.5ms" "T=5ms" "T=12ms" "T=25ms" events impulses "E(T) (J)"
+  for k in 0 1 2 3; do
+    elements=$(awk -v k=$k 'BEGIN { printf "%d", 16*2^(k/2) + 0.5 }')
+    dt=$(awk -v k=$k 'BEGIN { printf "%.6g", 5e-7/2^k }')
+    run b_$e $elements $dt $e
+    printf "%3d %10s %4d %s %7s %9s %13s\n" $k $dt $elements "$(tip_errors b_$e b_ref_$e)" \
+      "$(events b_$e)" "$(impulses b_$e)" "$(energy_at_end b_$e)"
+  done
+  echo
+done
+
+echo "## C. energy left at T = 25 ms, dt = 2.5e-7 (8/N)^2 s (omega_max dt = 0.057); E(0) is the first row's"
+printf "%4s %11s %8s %13s %11s %9s\n" N dt e "E(T) (J)" "1-E(T)/E0" impulses
+for e in 0 0.8 1; do
+  for elements in 8 16 32 64; do
+    dt=$(awk -v n=$elements 'BEGIN { printf "%.6g", 2.5e-7*(8/n)^2 }')
+    run c $elements $dt $e
+    energy0=$(awk '!/^#/ && NF > 2 && !done { printf "%.6e", $2 + $3; done = 1 }' "$work/c_energy.dat")
+    energy=$(energy_at_end c)
+    printf "%4d %11s %8s %13s %11.4f %9s\n" $elements $dt $e $energy \
+      "$(awk -v a=$energy -v b=$energy0 'BEGIN { print 1 - a/b }')" "$(impulses c)"
+  done
+done
+} | tee "$table"
+echo "resolved_refinement: the study took $(( $(date +%s) - start )) s; wrote $table"
