@@ -12,7 +12,9 @@
 #      at every level), against the reference (dt0/16, 4 N0) = (3.125e-8 s, 64), e = 0.8
 #      and e = 1;
 #   C. the energy left at T = 25 ms for N = 8 ... 64 with omega_max dt = 0.06, e = 0, 0.8
-#      and 1: how much the impacts dissipate as the mesh is refined.
+#      and 1: how much the impacts dissipate as the mesh is refined;
+#   D. the position scheme (SPEC §4) on four joint paths (dt0, N0), reference (dt0/16, 4 N0).
+# (D is printed before C, which holds the longest runs.)
 #
 # usage: scripts/resolved_refinement.sh [BUILD_DIR]   (default: build; about 3 min on 2 cores)
 # writes verification/convergence/resolved_refinement.txt
@@ -34,14 +36,15 @@ fi
 program=$build/vibrobeam
 window=0.025
 
-# run NAME N DT E: the scene with N elements, time step DT, restitution E, over [0, window]
+# run NAME N DT E [SCHEME]: the scene with N elements, time step DT, restitution E and the
+# time scheme SCHEME (default: the scene's, 'velocity'), over [0, window]
 run() {
-  local name=$1 elements=$2 dt=$3 restitution=$4
+  local name=$1 elements=$2 dt=$3 restitution=$4 scheme=${5:-velocity}
   local every
   every=$(awk -v dt="$dt" 'BEGIN { k = int(1e-5/dt + 0.5); print (k < 1 ? 1 : k) }')
   sed -e "s/elements = [0-9]*/elements = $elements/" \
       -e "s/restitution = [0-9.]*/restitution = $restitution/" \
-      -e "s/t_end = [0-9.eE+-]*, dt = [0-9.eE+-]*/t_end = $window, dt = $dt/" \
+      -e "s/t_end = [0-9.eE+-]*, dt = [0-9.eE+-]*/t_end = $window, dt = $dt, scheme = '$scheme'/" \
       -e "s|file = '[^']*', every = [0-9]*|file = '$work/$name.h5', every = $every|" \
       "$scene" > "$work/$name.nml"
   for value in "elements = $elements" "restitution = $restitution" "dt = $dt" "$work/$name.h5"; do
@@ -50,18 +53,22 @@ run() {
   "$program" "$work/$name.nml" > "$work/$name.log" 2>&1 || { cat "$work/$name.log"; exit 1; }
 }
 
-# tip_errors RUN REFERENCE: max |u_tip - u_tip,ref| over [0, T] for T = 2.5, 5, 12, 25 ms
+# tip_errors RUN REFERENCE: max |u_tip - u_tip,ref| over [0, T] for T = 2.5, 5, 12, 25 ms,
+# at the output times of RUN (each of them must be an output time of REFERENCE)
 tip_errors() {
-  paste <(grep -v '^#' "$work/$1_tip.dat") <(grep -v '^#' "$work/$2_tip.dat") | awk '
-    NF >= 8 {
-      if ($1 - $5 > 1e-12 || $5 - $1 > 1e-12) { print "times differ: " $1 " " $5 > "/dev/stderr"; exit 1 }
-      d = $2 - $6; if (d < 0) d = -d
+  awk '
+    /^#/ || NF < 4 { next }
+    FNR == NR { ref[sprintf("%.9f", $1)] = $2; next }
+    {
+      key = sprintf("%.9f", $1)
+      if (!(key in ref)) { print "tip_errors: no reference value at t = " $1 > "/dev/stderr"; failed = 1; exit 1 }
+      d = $2 - ref[key]; if (d < 0) d = -d
       if ($1 <= 0.0025 + 1e-12 && d > a) a = d
       if ($1 <= 0.005 + 1e-12 && d > b) b = d
       if ($1 <= 0.012 + 1e-12 && d > c) c = d
       if (d > e) e = d
     }
-    END { printf "%10.2e %10.2e %10.2e %10.2e", a, b, c, e }'
+    END { if (!failed) printf "%10.2e %10.2e %10.2e %10.2e", a, b, c, e }' "$work/$2_tip.dat" "$work/$1_tip.dat"
 }
 
 # energy_at_end RUN: E = kinetic + elastic at the last output time (J)
@@ -93,8 +100,9 @@ for e in 0.8 1 0; do
   printf "%10s %10s %10s %10s %10s %10s %7s %13s\n" dt omega_dt "T=2.5ms" "T=5ms" "T=12ms" "T=25ms" events "E(T) (J)"
   for dt in 2e-6 1e-6 5e-7 2.5e-7 1.25e-7 6.25e-8; do
     run a_$e 8 $dt $e
+    errors=$(tip_errors a_$e a_ref_$e)
     printf "%10s %10.3f %s %7s %13s\n" $dt "$(awk -v dt=$dt 'BEGIN { print 2.2886e5*dt }')" \
-      "$(tip_errors a_$e a_ref_$e)" "$(events a_$e)" "$(energy_at_end a_$e)"
+      "$errors" "$(events a_$e)" "$(energy_at_end a_$e)"
   done
   echo
 done
@@ -108,8 +116,26 @@ for e in 0.8 1; do
     elements=$(awk -v k=$k 'BEGIN { printf "%d", 16*2^(k/2) + 0.5 }')
     dt=$(awk -v k=$k 'BEGIN { printf "%.6g", 5e-7/2^k }')
     run b_$e $elements $dt $e
-    printf "%3d %10s %4d %s %7s %9s %13s\n" $k $dt $elements "$(tip_errors b_$e b_ref_$e)" \
+    errors=$(tip_errors b_$e b_ref_$e)
+    printf "%3d %10s %4d %s %7s %9s %13s\n" $k $dt $elements "$errors" \
       "$(events b_$e)" "$(impulses b_$e)" "$(energy_at_end b_$e)"
+  done
+  echo
+done
+
+echo "## D. the position scheme (SPEC §4) on joint paths dt = dt0/2^k, N = nint(N0 2^(k/2)), reference (dt0/16, 4 N0), e = 0.8"
+for path in "2e-5 16" "4e-5 16" "1e-5 16" "1e-5 32"; do
+  set -- $path
+  dt0=$1; n0=$2
+  run d_ref $((4*n0)) "$(awk -v d=$dt0 'BEGIN { printf "%.6g", d/16 }')" 0.8 position
+  echo "# dt0 = $dt0 s, N0 = $n0; reference: $(events d_ref) events, $(impulses d_ref) impulses"
+  printf "%3s %10s %4s %10s %10s %10s %10s %7s\n" k dt N "T=2.5ms" "T=5ms" "T=12ms" "T=25ms" events
+  for k in 0 1 2 3; do
+    elements=$(awk -v k=$k -v n=$n0 'BEGIN { printf "%d", n*2^(k/2) + 0.5 }')
+    dt=$(awk -v k=$k -v d=$dt0 'BEGIN { printf "%.6g", d/2^k }')
+    run d $elements $dt 0.8 position
+    errors=$(tip_errors d d_ref)
+    printf "%3d %10s %4d %s %7s\n" $k $dt $elements "$errors" "$(events d)"
   done
   echo
 done
