@@ -15,8 +15,8 @@ build=${1:-build}
 table=verification/benchmark/benchmark_steps.txt
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" --target vibrobeam benchmark_steps -j "$(nproc)" >/dev/null
+source scripts/build_release.sh
+build_release "$build" benchmark_steps vibrobeam
 program=$build/verification/benchmark/benchmark_steps
 fortran=$(sed -n 's/^CMAKE_Fortran_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")
 

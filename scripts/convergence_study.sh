@@ -13,14 +13,9 @@ build=${1:-build}
 results=verification/convergence
 scene=inputs/looseness_tip_stops.nml
 
-tree=$build
-cmake -S . -B "$tree" -DCMAKE_BUILD_TYPE=Release > /dev/null
-program=$tree/verification/convergence/self_convergence
-if ! cmake --build "$tree" -j 2 --target self_convergence > "$tree/convergence_study_build.log" 2>&1; then
-  cat "$tree/convergence_study_build.log"
-  echo "convergence_study: the build failed (log above)" >&2
-  exit 1
-fi
+source scripts/build_release.sh
+build_release "$build" self_convergence
+program=$build/verification/convergence/self_convergence
 
 start=$(date +%s)
 "$program" "$scene" "$results"

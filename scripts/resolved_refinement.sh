@@ -27,12 +27,8 @@ table=verification/convergence/resolved_refinement.txt
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
-if ! cmake --build "$build" -j 2 --target vibrobeam > "$work/build.log" 2>&1; then
-  cat "$work/build.log"
-  echo "resolved_refinement: the build failed (log above)" >&2
-  exit 1
-fi
+source scripts/build_release.sh
+build_release "$build" vibrobeam
 program=$build/vibrobeam
 window=0.025
 

@@ -14,14 +14,9 @@ cd "$(dirname "$0")/.."
 build=${1:-build}
 results=verification/work_precision
 
-tree=$build
-cmake -S . -B "$tree" -DCMAKE_BUILD_TYPE=Release > /dev/null
-program=$tree/verification/work_precision/work_precision
-if ! cmake --build "$tree" -j 2 --target work_precision > "$tree/work_precision_build.log" 2>&1; then
-  cat "$tree/work_precision_build.log"
-  echo "work_precision: the build failed (log above)" >&2
-  exit 1
-fi
+source scripts/build_release.sh
+build_release "$build" work_precision
+program=$build/verification/work_precision/work_precision
 
 # The machine the timings come from (appended to both tables).
 machine_notes() {
