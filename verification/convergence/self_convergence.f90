@@ -39,10 +39,8 @@ program self_convergence
    use vibrobeam_status, only: message_length
    use vibrobeam_scene, only: scene_type, validate_scene
    use vibrobeam_input, only: read_scene
-   use vibrobeam_model, only: point_row
-   use vibrobeam_contact_points, only: contact_value
-   use vibrobeam_setup, only: prepared_scene, prepare_scene, start_stepper
-   use vibrobeam_velocity_stepper, only: velocity_stepper
+   use convergence_runs, only: event_gap, run_history, run_errors, simulate, compare, tip_error, &
+                               field_size, move_alloc_history, fail, sci, fixed, padded
    implicit none
 
    real(dp), parameter :: window_end = 0.025_dp      !! T (s): free flight after the 4th event
@@ -57,36 +55,11 @@ program self_convergence
    integer, parameter :: variant_levels = 8          !! ... and up to level 8 for the variants
    real(dp), parameter :: free_flight_end = 2e-3_dp  !! before the first impact (t* = 2.06e-3 s)
    real(dp), parameter :: first_contact_end = 2.5e-3_dp   !! 0.4 ms into the first contact episode
-   real(dp), parameter :: event_gap = 5e-4_dp        !! largest gap inside one impact event (s)
-   integer, parameter :: sample_points = 11          !! x_p = p L/10, p = 0..10
    !> window ends of study 5 (s): free flight, inside the first contact episode, then
    !! after each of the four events
    real(dp), parameter :: window_ends(6) = [free_flight_end, first_contact_end, 4e-3_dp, 8e-3_dp, 1.6e-2_dp, &
                                             window_end]
 
-   !> What a run leaves for the comparisons: histories at every time step.
-   type :: run_history
-      real(dp) :: dt = 0                    !! time step (s)
-      integer :: elements = 0               !! N
-      integer :: steps = 0                  !! number of steps taken
-      real(dp), allocatable :: tip(:)       !! (0:steps) u_h(L, t_n) (m)
-      real(dp), allocatable :: field(:,:)   !! (sample_points, 0:steps) u_h(x_p, t_n) (m)
-      real(dp), allocatable :: energy(:)    !! (0:steps) E^n (J)
-      integer :: impulse_steps = 0          !! steps with a nonzero impulse somewhere
-      real(dp) :: max_penetration = 0       !! largest penetration over the run (m)
-      real(dp) :: wall_seconds = 0
-      integer :: events = 0                 !! impact events (see the program's doc)
-      real(dp), allocatable :: event_first(:), event_last(:)   !! first, last impulse (s)
-      integer, allocatable :: event_side(:)                    !! +1 from below, -1 from above
-      integer, allocatable :: event_impulses(:)                !! steps with an impulse
-   end type run_history
-
-   !> Errors of one run against a finer one.
-   type :: run_errors
-      real(dp) :: tip = 0       !! max-in-time tip displacement error (m)
-      real(dp) :: field = 0     !! time-RMS of the error at the sample points (m)
-      real(dp) :: energy = 0    !! |E_h(T) - E_f(T)| (J)
-   end type run_errors
 
    type(scene_type) :: base
    character(len=:), allocatable :: scene_file, output_directory
@@ -191,13 +164,6 @@ program self_convergence
 
 contains
 
-   !> Print `message` as 'self_convergence: message' on stderr and stop with status 2.
-   subroutine fail(message)
-      character(len=*), intent(in) :: message
-      write (error_unit, '(a)') 'self_convergence: '//trim(message)
-      stop 2, quiet=.true.
-   end subroutine fail
-
    subroutine parse_arguments(file, directory, check_flag)
       character(len=:), allocatable, intent(out) :: file       !! scene namelist
       character(len=:), allocatable, intent(out) :: directory  !! where the tables go
@@ -225,159 +191,6 @@ contains
       write (text_unit, '(a)') line
       write (output_unit, '(a)') line
    end subroutine emit
-
-   !> Run `scene` with time step `dt` and `elements` elements from t = 0 to `t_end` and
-   !! keep the histories (tip, sample points, energy) and the impact events.
-   subroutine simulate(scene, dt, elements, t_end, run)
-      type(scene_type), intent(in) :: scene
-      real(dp), intent(in) :: dt           !! time step (s)
-      integer, intent(in) :: elements      !! N
-      real(dp), intent(in) :: t_end        !! end of the run (s), a whole number of steps
-      type(run_history), intent(out) :: run
-      type(scene_type) :: variant
-      type(prepared_scene) :: prepared
-      type(velocity_stepper) :: stepper
-      character(len=:), allocatable :: warnings
-      character(len=message_length) :: message
-      integer :: point_dofs(4, sample_points), tip_dofs(4), n, p, k, c, side, status
-      real(dp) :: point_weights(4, sample_points), tip_weights(4), value
-      real(dp), allocatable :: last_impulse(:)
-      integer, allocatable :: last_side(:), last_event(:)
-      integer(int64) :: start, finish, rate
-      call system_clock(start, rate)
-      variant = scene
-      variant%dt = dt
-      variant%elements = elements
-      variant%t_end = t_end
-      call validate_scene(variant, status, message)
-      if (status /= 0) call fail(message)
-      warnings = ''
-      call prepare_scene(variant, prepared, warnings, status, message)
-      if (status /= 0) call fail(message)
-      if (len(warnings) > 0) write (error_unit, '(a)', advance='no') warnings
-      call start_stepper(variant, prepared, stepper, status, message)
-      if (status /= 0) call fail(message)
-      run%dt = dt
-      run%elements = elements
-      run%steps = nint(t_end/dt)
-      if (abs(run%steps*dt - t_end) > 1e-9_dp*dt) &
-         call fail('t_end = '//sci(t_end)//' s is not a whole number of steps dt = '//sci(dt)//' s')
-      allocate (run%tip(0:run%steps), run%field(sample_points, 0:run%steps), run%energy(0:run%steps))
-      allocate (run%event_first(0), run%event_last(0), run%event_side(0), run%event_impulses(0))
-      do p = 1, sample_points
-         call point_row(prepared%model, scene%length*(p - 1)/(sample_points - 1), point_dofs(:, p), &
-                        point_weights(:, p))
-      end do
-      call point_row(prepared%model, scene%length, tip_dofs, tip_weights)
-      allocate (last_impulse(stepper%contacts%count), source=-huge(1.0_dp))
-      allocate (last_side(stepper%contacts%count), last_event(stepper%contacts%count), source=0)
-      call record_state(run, 0, stepper, point_dofs, point_weights, tip_dofs, tip_weights)
-      do n = 1, run%steps
-         call stepper%step(status, message)
-         if (status /= 0) call fail('dt = '//sci(dt)//' s, N = '//integer_text(elements)//': '//trim(message))
-         call record_state(run, n, stepper, point_dofs, point_weights, tip_dofs, tip_weights)
-         if (any(abs(stepper%impulse(1:stepper%active_count)) > 0)) run%impulse_steps = run%impulse_steps + 1
-         do k = 1, stepper%active_count
-            if (.not. abs(stepper%impulse(k)) > 0) cycle
-            c = stepper%active(k)
-            side = nint(sign(1.0_dp, stepper%impulse(k)))   ! s_c P_c >= 0: the sign of P is s_c
-            if (side /= last_side(c) .or. stepper%t - last_impulse(c) > event_gap*(1 + 1e-9_dp)) then
-               run%events = run%events + 1
-               run%event_first = [run%event_first, stepper%t]
-               run%event_last = [run%event_last, stepper%t]
-               run%event_side = [run%event_side, side]
-               run%event_impulses = [run%event_impulses, 0]
-               last_event(c) = run%events
-               last_side(c) = side
-            end if
-            run%event_last(last_event(c)) = stepper%t
-            run%event_impulses(last_event(c)) = run%event_impulses(last_event(c)) + 1
-            last_impulse(c) = stepper%t
-         end do
-         do c = 1, stepper%contacts%count
-            value = contact_value(stepper%contacts, c, stepper%u)
-            run%max_penetration = max(run%max_penetration, stepper%contacts%lower(c) - value, &
-                                      value - stepper%contacts%upper(c))
-         end do
-      end do
-      call system_clock(finish)
-      run%wall_seconds = real(finish - start, dp)/rate
-      write (output_unit, '(a)') '  run dt = '//sci(dt)//' s, N = '//integer_text(elements)//', theta = '// &
-         fixed(scene%theta, 2)//', e = '//fixed(scene%restitution, 2)//', T = '//sci(t_end)//' s: '// &
-         integer_text(run%events)//' impact events, '//fixed(run%wall_seconds, 2)//' s'
-   end subroutine simulate
-
-   !> Store the state of `stepper` as time step `step` of `run`.
-   subroutine record_state(run, step, stepper, point_dofs, point_weights, tip_dofs, tip_weights)
-      type(run_history), intent(inout) :: run
-      integer, intent(in) :: step
-      type(velocity_stepper), intent(in) :: stepper
-      integer, intent(in) :: point_dofs(:,:), tip_dofs(:)          !! rows from `point_row`
-      real(dp), intent(in) :: point_weights(:,:), tip_weights(:)
-      integer :: p
-      do p = 1, sample_points
-         run%field(p, step) = row_value(point_dofs(:, p), point_weights(:, p), stepper%u)
-      end do
-      run%tip(step) = row_value(tip_dofs, tip_weights, stepper%u)
-      run%energy(step) = stepper%kinetic_energy() + stepper%elastic_energy()
-   end subroutine record_state
-
-   !> sum(weights * u(dofs)) over the dofs that are not clamped (0).
-   pure real(dp) function row_value(dofs, weights, u)
-      integer, intent(in) :: dofs(:)
-      real(dp), intent(in) :: weights(:)
-      real(dp), intent(in) :: u(:)
-      integer :: a
-      row_value = 0
-      do a = 1, size(dofs)
-         if (dofs(a) /= 0) row_value = row_value + weights(a)*u(dofs(a))
-      end do
-   end function row_value
-
-   !> Errors of `run` against the finer run `fine` over [0, t_end] (program's doc).
-   function compare(run, fine, t_end) result(errors)
-      type(run_history), intent(in) :: run, fine
-      real(dp), intent(in) :: t_end   !! end of the window (s), a step of both runs
-      type(run_errors) :: errors
-      integer :: stride, last, n
-      real(dp) :: weight, square_sum
-      stride = nint(run%dt/fine%dt)
-      if (stride < 1 .or. abs(stride*fine%dt - run%dt) > 1e-9_dp*run%dt) &
-         call fail('dt = '//sci(run%dt)//' s is not a multiple of the finer dt = '//sci(fine%dt)//' s')
-      last = nint(t_end/run%dt)
-      if (last > run%steps .or. last*stride > fine%steps) call fail('window beyond the end of a run')
-      errors%tip = maxval(abs(run%tip(0:last) - fine%tip(0:last*stride:stride)))
-      square_sum = 0
-      do n = 0, last
-         weight = merge(0.5_dp, 1.0_dp, n == 0 .or. n == last)
-         square_sum = square_sum + weight*run%dt*sum((run%field(:, n) - fine%field(:, n*stride))**2)
-      end do
-      errors%field = sqrt(square_sum/(sample_points*t_end))
-      errors%energy = abs(run%energy(last) - fine%energy(last*stride))
-   end function compare
-
-   !> Tip error of `run` against `fine` over [0, t_end].
-   real(dp) function tip_error(run, fine, t_end)
-      type(run_history), intent(in) :: run, fine
-      real(dp), intent(in) :: t_end
-      type(run_errors) :: errors
-      errors = compare(run, fine, t_end)
-      tip_error = errors%tip
-   end function tip_error
-
-   !> The time-RMS over [0, T] of a run's own field at the sample points (m).
-   real(dp) function field_size(run)
-      type(run_history), intent(in) :: run
-      real(dp) :: weight, square_sum
-      integer :: n, last
-      last = nint(window_end/run%dt)
-      square_sum = 0
-      do n = 0, last
-         weight = merge(0.5_dp, 1.0_dp, n == 0 .or. n == last)
-         square_sum = square_sum + weight*run%dt*sum(run%field(:, n)**2)
-      end do
-      field_size = sqrt(square_sum/(sample_points*window_end))
-   end function field_size
 
    !> Observed order ln(e1/e2)/ln(s1/s2) for errors e at sizes s; 0 when undefined.
    pure real(dp) function rate(e1, e2, s1, s2)
@@ -417,7 +230,7 @@ contains
       call emit('reference: dt = '//sci(reference%dt)//' s, N = '//integer_text(reference%elements)//': '// &
                 integer_text(reference%events)//' impact events, E(T) = '// &
                 sci(reference%energy(nint(window_end/reference%dt)))//' J, max |u_tip| = '// &
-                sci(maxval(abs(reference%tip)))//' m, time-RMS field = '//sci(field_size(reference))//' m')
+                sci(maxval(abs(reference%tip)))//' m, time-RMS field = '//sci(field_size(reference, window_end))//' m')
       call emit('     dt (s)     N  events impulses max pen (m)   tip max (m)  rate  field L2 (m)  rate'// &
                 '   energy (J)  rate  wall (s)')
       do k = 1, size(runs)
@@ -440,7 +253,7 @@ contains
       integer :: k, last
       last = nint(window_end/reference%dt)
       tip_scale = maxval(abs(reference%tip(0:last)))
-      field_scale = field_size(reference)
+      field_scale = field_size(reference, window_end)
       energy_scale = reference%energy(last)
       write (data_unit, '(a)') '# '//title//'; reference dt = '//sci(reference%dt)//' s, N = '// &
          integer_text(reference%elements)//'; window [0, '//sci(window_end)//'] s'
@@ -566,26 +379,6 @@ contains
       write (data_unit, '(a)') '', ''
    end subroutine successive_differences
 
-   !> previous <- current (the histories move, nothing is copied).
-   subroutine move_alloc_history(current, previous)
-      type(run_history), intent(inout) :: current
-      type(run_history), intent(inout) :: previous
-      previous%dt = current%dt
-      previous%elements = current%elements
-      previous%steps = current%steps
-      previous%impulse_steps = current%impulse_steps
-      previous%max_penetration = current%max_penetration
-      previous%wall_seconds = current%wall_seconds
-      previous%events = current%events
-      call move_alloc(current%tip, previous%tip)
-      call move_alloc(current%field, previous%field)
-      call move_alloc(current%energy, previous%energy)
-      call move_alloc(current%event_first, previous%event_first)
-      call move_alloc(current%event_last, previous%event_last)
-      call move_alloc(current%event_side, previous%event_side)
-      call move_alloc(current%event_impulses, previous%event_impulses)
-   end subroutine move_alloc_history
-
    !> True when tip, field and energy errors all decrease strictly from row to row.
    pure logical function decreasing(errors)
       type(run_errors), intent(in) :: errors(:)
@@ -597,39 +390,5 @@ contains
       end do
    end function decreasing
 
-   !> `value` as 'd.dddE+xx'.
-   function sci(value) result(text)
-      real(dp), intent(in) :: value
-      character(len=:), allocatable :: text
-      character(len=16) :: buffer
-      write (buffer, '(es10.3)') value
-      text = trim(adjustl(buffer))
-   end function sci
 
-   !> `value` with `decimals` decimals, right-aligned in `width` characters if given.
-   function fixed(value, decimals, width) result(text)
-      real(dp), intent(in) :: value
-      integer, intent(in) :: decimals
-      integer, intent(in), optional :: width
-      character(len=:), allocatable :: text
-      character(len=32) :: buffer
-      character(len=16) :: form
-      write (form, '(a,i0,a)') '(f0.', decimals, ')'
-      write (buffer, form) value
-      text = trim(adjustl(buffer))
-      if (text(1:1) == '.') text = '0'//text
-      if (len(text) > 1) then
-         if (text(1:2) == '-.') text = '-0'//text(2:)
-      end if
-      if (present(width)) text = repeat(' ', max(0, width - len(text)))//text
-   end function fixed
-
-
-   !> `value` right-aligned in `width` characters.
-   function padded(value, width) result(text)
-      integer, intent(in) :: value, width
-      character(len=:), allocatable :: text
-      text = integer_text(value)
-      text = repeat(' ', max(0, width - len(text)))//text
-   end function padded
 end program self_convergence
