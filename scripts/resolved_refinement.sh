@@ -13,8 +13,9 @@
 #      and e = 1;
 #   C. the energy left at T = 25 ms for N = 8 ... 64 with omega_max dt = 0.06, e = 0, 0.8
 #      and 1: how much the impacts dissipate as the mesh is refined;
-#   D. the position scheme (SPEC §4) on four joint paths (dt0, N0), reference (dt0/16, 4 N0).
-# (D is printed before C, which holds the longest runs.)
+#   D. the position scheme (SPEC §4) on four joint paths (dt0, N0), reference (dt0/16, 4 N0);
+#   E. the sensitivity to the data: the initial velocity perturbed by a relative 1e-10 ... 1e-5.
+# (D and E are printed before C, which holds the longest runs.)
 #
 # usage: scripts/resolved_refinement.sh [BUILD_DIR]   (default: build; about 3 min on 2 cores)
 # writes verification/convergence/resolved_refinement.txt
@@ -32,18 +33,21 @@ build_release "$build" vibrobeam
 program=$build/vibrobeam
 window=0.025
 
-# run NAME N DT E [SCHEME]: the scene with N elements, time step DT, restitution E and the
-# time scheme SCHEME (default: the scene's, 'velocity'), over [0, window]
+# run NAME N DT E [SCHEME [V0]]: the scene with N elements, time step DT, restitution E,
+# the time scheme SCHEME (default: the scene's, 'velocity') and the initial tip velocity
+# V0 (default: the scene's, 0.5 m/s), over [0, window]
 run() {
-  local name=$1 elements=$2 dt=$3 restitution=$4 scheme=${5:-velocity}
+  local name=$1 elements=$2 dt=$3 restitution=$4 scheme=${5:-velocity} amplitude=${6:-0.5}
   local every
   every=$(awk -v dt="$dt" 'BEGIN { k = int(1e-5/dt + 0.5); print (k < 1 ? 1 : k) }')
   sed -e "s/elements = [0-9]*/elements = $elements/" \
       -e "s/restitution = [0-9.]*/restitution = $restitution/" \
       -e "s/t_end = [0-9.eE+-]*, dt = [0-9.eE+-]*/t_end = $window, dt = $dt, scheme = '$scheme'/" \
       -e "s|file = '[^']*', every = [0-9]*|file = '$work/$name.h5', every = $every|" \
+      -e "s/velocity_amplitude = 0.5 /velocity_amplitude = $amplitude /" \
       "$scene" > "$work/$name.nml"
-  for value in "elements = $elements" "restitution = $restitution" "dt = $dt" "$work/$name.h5"; do
+  for value in "elements = $elements" "restitution = $restitution" "dt = $dt" "$work/$name.h5" \
+               "velocity_amplitude = $amplitude "; do
     grep -q -- "$value" "$work/$name.nml" || { echo "resolved_refinement: could not set '$value'" >&2; exit 1; }
   done
   "$program" "$work/$name.nml" > "$work/$name.log" 2>&1 || { cat "$work/$name.log"; exit 1; }
@@ -132,6 +136,20 @@ for path in "2e-5 16" "4e-5 16" "1e-5 16" "1e-5 32"; do
     run d $elements $dt 0.8 position
     errors=$(tip_errors d d_ref)
     printf "%3d %10s %4d %s %7s\n" $k $dt $elements "$errors" "$(events d)"
+  done
+  echo
+done
+
+echo "## E. sensitivity to the data: v0 = 0.5 (1 + delta) m/s against v0 = 0.5 m/s, same dt and N, e = 0.8"
+for case in "1e-5 32" "2.5e-6 64"; do
+  set -- $case
+  run e_ref $2 $1 0.8
+  echo "# dt = $1 s, N = $2 (the scene's mesh and step / the reference of study 2 of REPORT.md); E(T) = $(energy_at_end e_ref) J"
+  printf "%8s %10s %10s %10s %10s %13s\n" delta "T=2.5ms" "T=5ms" "T=12ms" "T=25ms" "E(T) (J)"
+  for delta in 1e-10 1e-8 1e-7 3e-7 1e-6 3e-6 1e-5; do
+    run e $2 $1 0.8 velocity "$(awk -v d=$delta 'BEGIN { printf "%.12f", 0.5*(1 + d) }')"
+    errors=$(tip_errors e e_ref)
+    printf "%8s %s %13s\n" $delta "$errors" "$(energy_at_end e)"
   done
   echo
 done
