@@ -36,7 +36,7 @@
 program work_precision
    use vibrobeam_kinds, only: dp, int64, output_unit, error_unit
    use vibrobeam_scene, only: scene_type, validate_scene, unset
-   use vibrobeam_input, only: read_scene
+   use vibrobeam_test_support, only: read_test_scene
    use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper
    use vibrobeam_stepper, only: time_stepper
    use vibrobeam_model, only: point_row
@@ -141,7 +141,7 @@ contains
       integer :: samples, k, f, i, j, done, unit
       integer(int64) :: study_start, study_end, rate
       call system_clock(study_start, rate)
-      scene = load_scene(path)
+      scene = read_test_scene(path)
       ! the normalized beam of SPEC §6, whatever the file says
       scene%length = 1
       scene%k2 = 1
@@ -287,7 +287,7 @@ contains
       integer :: done, f, i, j, unit, c
       integer(int64) :: study_start, study_end, rate
       call system_clock(study_start, rate)
-      scene = load_scene(path)
+      scene = read_test_scene(path)
       scene%t_end = window
 
       ! the reference: finest settings, 16 x below the sweep's finest dt, N = 1024
@@ -392,19 +392,6 @@ contains
       if (check) call expect('reference against its next-coarser level (relative to max |u_tip|)', uncertainty, &
                              0.0_dp, 1e-2_dp)
    end subroutine impacts_study
-
-   !> Read the namelist file (defaults for what it does not give) or stop with its message.
-   function load_scene(path) result(scene)
-      character(len=*), intent(in) :: path
-      type(scene_type) :: scene
-      integer :: stat
-      character(len=512) :: errmsg
-      call read_scene(path, scene, stat, errmsg)
-      if (stat /= 0) then
-         write (error_unit, '(a)') 'work_precision: '//trim(errmsg)
-         error stop 1
-      end if
-   end function load_scene
 
    !> Run `row`'s settings on `scene`, keep the tip at every multiple of `sample_interval`
    !! and the stepping loop's CPU time: the median of 3 repetitions below `repeat_below`,
