@@ -45,10 +45,14 @@ module convergence_runs
 
 contains
 
-   !> Print `message` as 'self_convergence: message' on stderr and stop with status 2.
+   !> Print `message` as 'PROGRAM: message' on stderr (PROGRAM: the executable's name) and stop with status 2.
    subroutine fail(message)
       character(len=*), intent(in) :: message
-      write (error_unit, '(a)') 'self_convergence: '//trim(message)
+      character(len=4096) :: program_path
+      integer :: length
+      call get_command_argument(0, program_path, length)
+      write (error_unit, '(a)') program_path(index(program_path(1:length), '/', back=.true.) + 1:length)//': '// &
+         trim(message)
       stop 2, quiet=.true.
    end subroutine fail
 
