@@ -2,10 +2,12 @@
 # Refinement of the two-stop looseness scene with time steps that resolve the mesh: the
 # follow-up of scripts/convergence_study.sh (verification/convergence/REPORT.md, section
 # "Resolved time steps"). Every run is the bundled scene inputs/looseness_tip_stops.nml
-# with only `elements`, `dt`, `t_end`, `restitution` and the output file changed, run by
-# the vibrobeam executable itself; the comparisons use its _tip.dat and _energy.dat files.
+# with only `elements`, `dt`, `t_end`, `restitution`, `scheme`, `velocity_amplitude` and
+# the output file and interval changed, run by the vibrobeam executable itself; the
+# comparisons use its _tip.dat, _energy.dat and _impacts.dat files.
 #
-# Studies (window [0, 25 ms], tip history sampled every 1e-5 s):
+# Studies (window [0, 25 ms], tip history sampled every 1e-5 s, or every step when dt is
+# larger):
 #   A. N = 8 fixed, dt = 2e-6 ... 6.25e-8 s against dt = 3.125e-8 s (omega_max dt from
 #      0.46 down to 0.007), for e = 0.8 (the scene), e = 1 and e = 0;
 #   B. joint path dt = dt0/2^k, N = nint(16 2^(k/2)), dt0 = 5e-7 s (omega_max dt = 0.46
@@ -17,7 +19,7 @@
 #   E. the sensitivity to the data: the initial velocity perturbed by a relative 1e-10 ... 1e-5.
 # (D and E are printed before C, which holds the longest runs.)
 #
-# usage: scripts/resolved_refinement.sh [BUILD_DIR]   (default: build; about 3 min on 2 cores)
+# usage: scripts/resolved_refinement.sh [BUILD_DIR]   (default: build; about 2 min on 2 cores)
 # writes verification/convergence/resolved_refinement.txt
 # needs: cmake, a Fortran compiler, the project's libraries, awk
 set -euo pipefail
@@ -46,9 +48,12 @@ run() {
       -e "s|file = '[^']*', every = [0-9]*|file = '$work/$name.h5', every = $every|" \
       -e "s/velocity_amplitude = 0.5 /velocity_amplitude = $amplitude /" \
       "$scene" > "$work/$name.nml"
-  for value in "elements = $elements" "restitution = $restitution" "dt = $dt" "$work/$name.h5" \
-               "velocity_amplitude = $amplitude "; do
-    grep -q -- "$value" "$work/$name.nml" || { echo "resolved_refinement: could not set '$value'" >&2; exit 1; }
+  # every value must appear exactly as set (followed by a delimiter), or the run would
+  # silently use the scene's own value
+  for value in "elements = $elements /" "restitution = $restitution /" \
+               "t_end = $window, dt = $dt, scheme = '$scheme' /" "file = '$work/$name.h5'" \
+               "velocity_amplitude = $amplitude /"; do
+    grep -qF -- "$value" "$work/$name.nml" || { echo "resolved_refinement: could not set '$value'" >&2; exit 1; }
   done
   "$program" "$work/$name.nml" > "$work/$name.log" 2>&1 || { cat "$work/$name.log"; exit 1; }
 }
@@ -141,10 +146,10 @@ for path in "2e-5 16" "4e-5 16" "1e-5 16" "1e-5 32"; do
 done
 
 echo "## E. sensitivity to the data: v0 = 0.5 (1 + delta) m/s against v0 = 0.5 m/s, same dt and N, e = 0.8"
-for case in "1e-5 32" "2.5e-6 64"; do
+for case in "1e-5 32 the_scene's_mesh_and_step" "2.5e-6 64 the_reference_of_study_2_of_REPORT.md"; do
   set -- $case
   run e_ref $2 $1 0.8
-  echo "# dt = $1 s, N = $2 (the scene's mesh and step / the reference of study 2 of REPORT.md); E(T) = $(energy_at_end e_ref) J"
+  echo "# dt = $1 s, N = $2 (${3//_/ }); E(T) = $(energy_at_end e_ref) J"
   printf "%8s %10s %10s %10s %10s %13s\n" delta "T=2.5ms" "T=5ms" "T=12ms" "T=25ms" "E(T) (J)"
   for delta in 1e-10 1e-8 1e-7 3e-7 1e-6 3e-6 1e-5; do
     run e $2 $1 0.8 velocity "$(awk -v d=$delta 'BEGIN { printf "%.12f", 0.5*(1 + d) }')"
@@ -154,7 +159,7 @@ for case in "1e-5 32" "2.5e-6 64"; do
   echo
 done
 
-echo "## C. energy left at T = 25 ms, dt = 2.5e-7 (8/N)^2 s (omega_max dt = 0.057); E(0) is the first row's"
+echo "## C. energy left at T = 25 ms, dt = 2.5e-7 (8/N)^2 s (omega_max dt = 0.057); E0: each run's own E(0)"
 printf "%4s %11s %8s %13s %11s %9s\n" N dt e "E(T) (J)" "1-E(T)/E0" impulses
 for e in 0 0.8 1; do
   for elements in 8 16 32 64; do

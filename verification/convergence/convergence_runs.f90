@@ -30,7 +30,7 @@ module convergence_runs
       integer :: impulse_steps = 0          !! steps with a nonzero impulse somewhere
       real(dp) :: max_penetration = 0       !! largest penetration over the run (m)
       real(dp) :: wall_seconds = 0
-      integer :: events = 0                 !! impact events (see the program's doc)
+      integer :: events = 0                 !! impact events (see self_convergence.f90's header)
       real(dp), allocatable :: event_first(:), event_last(:)   !! first, last impulse (s)
       integer, allocatable :: event_side(:)                    !! +1 from below, -1 from above
       integer, allocatable :: event_impulses(:)                !! steps with an impulse
@@ -164,7 +164,7 @@ contains
       end do
    end function row_value
 
-   !> Errors of `run` against the finer run `fine` over [0, t_end] (program's doc).
+   !> Errors of `run` against the finer run `fine` over [0, t_end] (self_convergence.f90's header).
    function compare(run, fine, t_end) result(errors)
       type(run_history), intent(in) :: run, fine
       real(dp), intent(in) :: t_end   !! end of the window (s), a step of both runs
