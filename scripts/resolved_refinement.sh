@@ -13,13 +13,15 @@
 #   B. joint path dt = dt0/2^k, N = nint(16 2^(k/2)), dt0 = 5e-7 s (omega_max dt = 0.46
 #      at every level), against the reference (dt0/16, 4 N0) = (3.125e-8 s, 64), e = 0.8
 #      and e = 1;
-#   C. the energy left at T = 25 ms for N = 8 ... 64 with omega_max dt = 0.06, e = 0, 0.8
-#      and 1: how much the impacts dissipate as the mesh is refined;
+#   C. the energy lost by T = 25 ms for N = 8 ... 128 with omega_max dt = 0.06, e = 0.8, 0
+#      and 1: how much the impacts dissipate as the mesh is refined (e = 0.8: the mean of
+#      five runs with the initial velocity changed by up to 1e-3, as the loss jumps);
 #   D. the position scheme (SPEC §4) on four joint paths (dt0, N0), reference (dt0/16, 4 N0);
 #   E. the sensitivity to the data: the initial velocity perturbed by a relative 1e-10 ... 1e-5.
 # (D and E are printed before C, which holds the longest runs.)
 #
-# usage: scripts/resolved_refinement.sh [BUILD_DIR]   (default: build; about 2 min on 2 cores)
+# usage: scripts/resolved_refinement.sh [BUILD_DIR]   (default: build; about 10 min on 2 cores,
+#        of which 6 min for the two runs at N = 128)
 # writes verification/convergence/resolved_refinement.txt
 # needs: cmake, a Fortran compiler, the project's libraries, awk
 set -euo pipefail
@@ -119,7 +121,7 @@ for e in 0.8 1; do
   printf "%3s %10s %4s %10s %10s %10s %10s %7s %9s %13s\n" k dt N "T=2.5ms" "T=5ms" "T=12ms" "T=25ms" events impulses "E(T) (J)"
   for k in 0 1 2 3; do
     elements=$(awk -v k=$k 'BEGIN { printf "%d", 16*2^(k/2) + 0.5 }')
-    dt=$(awk -v k=$k 'BEGIN { printf "%.6g", 5e-7/2^k }')
+    dt=$(awk -v k=$k 'BEGIN { printf "%.10g", 5e-7/2^k }')
     run b_$e $elements $dt $e
     errors=$(tip_errors b_$e b_ref_$e)
     printf "%3d %10s %4d %s %7s %9s %13s\n" $k $dt $elements "$errors" \
@@ -132,12 +134,12 @@ echo "## D. the position scheme (SPEC §4) on joint paths dt = dt0/2^k, N = nint
 for path in "2e-5 16" "4e-5 16" "1e-5 16" "1e-5 32"; do
   set -- $path
   dt0=$1; n0=$2
-  run d_ref $((4*n0)) "$(awk -v d=$dt0 'BEGIN { printf "%.6g", d/16 }')" 0.8 position
+  run d_ref $((4*n0)) "$(awk -v d=$dt0 'BEGIN { printf "%.10g", d/16 }')" 0.8 position
   echo "# dt0 = $dt0 s, N0 = $n0; reference: $(events d_ref) events, $(impulses d_ref) impulses"
   printf "%3s %10s %4s %10s %10s %10s %10s %7s\n" k dt N "T=2.5ms" "T=5ms" "T=12ms" "T=25ms" events
   for k in 0 1 2 3; do
     elements=$(awk -v k=$k -v n=$n0 'BEGIN { printf "%d", n*2^(k/2) + 0.5 }')
-    dt=$(awk -v k=$k -v d=$dt0 'BEGIN { printf "%.6g", d/2^k }')
+    dt=$(awk -v k=$k -v d=$dt0 'BEGIN { printf "%.10g", d/2^k }')
     run d $elements $dt 0.8 position
     errors=$(tip_errors d d_ref)
     printf "%3d %10s %4d %s %7s\n" $k $dt $elements "$errors" "$(events d)"
@@ -159,16 +161,33 @@ for case in "1e-5 32 the_scene's_mesh_and_step" "2.5e-6 64 the_reference_of_stud
   echo
 done
 
-echo "## C. energy left at T = 25 ms, dt = 2.5e-7 (8/N)^2 s (omega_max dt = 0.057); E0: each run's own E(0)"
-printf "%4s %11s %8s %13s %11s %9s\n" N dt e "E(T) (J)" "1-E(T)/E0" impulses
-for e in 0 0.8 1; do
-  for elements in 8 16 32 64; do
-    dt=$(awk -v n=$elements 'BEGIN { printf "%.6g", 2.5e-7*(8/n)^2 }')
-    run c $elements $dt $e
-    energy0=$(awk '!/^#/ && NF > 2 && !done { printf "%.6e", $2 + $3; done = 1 }' "$work/c_energy.dat")
-    energy=$(energy_at_end c)
-    printf "%4d %11s %8s %13s %11.4f %9s\n" $elements $dt $e $energy \
-      "$(awk -v a=$energy -v b=$energy0 'BEGIN { print 1 - a/b }')" "$(impulses c)"
+echo "## C. energy lost by T = 25 ms, dt = 2.5e-7 (8/N)^2 s (omega_max dt = 0.057)"
+echo "# loss = 1 - E(T)/E(0), each run against its own E(0); with e = 0.8 up to N = 64, five runs"
+echo "# with v0 = 0.5 (1 + delta), delta = 0, 1e-6, 1e-5, 1e-4, 1e-3 (study E: the loss jumps"
+echo "# under such changes), and their mean, smallest and largest loss; otherwise delta = 0 only"
+printf "%4s %11s %5s %5s %9s %9s %9s %16s\n" N dt e runs "loss" smallest largest "impulses (d=0)"
+# loss_of RUN: 1 - E(T)/E(0)
+loss_of() {
+  awk '!/^#/ && NF > 2 { e = $2 + $3; if (!started) { e0 = e; started = 1 } } END { printf "%.4f", 1 - e/e0 }' \
+    "$work/$1_energy.dat"
+}
+for e in 0.8 0 1; do
+  sizes="8 16 32 64"
+  [ "$e" != 1 ] && sizes="$sizes 128"
+  for elements in $sizes; do
+    dt=$(awk -v n=$elements 'BEGIN { printf "%.10g", 2.5e-7*(8/n)^2 }')
+    deltas=0
+    [ "$e" = 0.8 ] && [ "$elements" -le 64 ] && deltas="0 1e-6 1e-5 1e-4 1e-3"
+    losses=""
+    for delta in $deltas; do
+      run c $elements $dt $e velocity "$(awk -v d=$delta 'BEGIN { printf "%.12f", 0.5*(1 + d) }')"
+      losses="$losses $(loss_of c)"
+      [ "$delta" = 0 ] && count=$(impulses c)
+    done
+    echo "$losses" | awk -v n=$elements -v dt=$dt -v e=$e -v count=$count '{
+      lo = $1; hi = $1; sum = 0
+      for (k = 1; k <= NF; k++) { sum += $k; if ($k < lo) lo = $k; if ($k > hi) hi = $k }
+      printf "%4d %11s %5s %5d %9.4f %9.4f %9.4f %16s\n", n, dt, e, NF, sum/NF, lo, hi, count }'
   done
 done
 } | tee "$table"
