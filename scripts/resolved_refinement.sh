@@ -22,15 +22,43 @@
 #
 # usage: scripts/resolved_refinement.sh [BUILD_DIR]   (default: build; about 10 min on 2 cores,
 #        of which 6 min for the two runs at N = 128)
-# writes verification/convergence/resolved_refinement.txt
-# needs: cmake, a Fortran compiler, the project's libraries, awk
+#        scripts/resolved_refinement.sh --plot-only     (redraws the figure from the table)
+# writes verification/convergence/resolved_refinement.txt and resolved_refinement_dissipation.png
+# needs: cmake, a Fortran compiler, the project's libraries, awk, gnuplot (pngcairo terminal)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
 scene=inputs/looseness_tip_stops.nml
 table=verification/convergence/resolved_refinement.txt
+figure=verification/convergence/resolved_refinement_dissipation.png
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+
+# plot_dissipation: the figure of study C, drawn from the table
+plot_dissipation() {
+  awk '/^## C\./ { inside = 1; next } /^##/ { inside = 0 } inside && $1 ~ /^[0-9]+$/' "$table" > "$work/c.dat"
+  gnuplot <<EOF
+set terminal pngcairo size 900,600 font ',10' noenhanced
+set output '$figure'
+set title "Energy lost at the stops by t = 25 ms, inputs/looseness_tip_stops.nml, omega_max dt = 0.057\n(e = 0.8: mean of 5 runs with v0 changed by up to 1e-3, bars: smallest and largest; N = 128: one run)"
+set logscale x 2
+set xrange [6:170]
+set yrange [-0.01:0.35]
+set xlabel 'N (elements)'
+set ylabel '1 - E(T)/E(0)'
+set grid
+set key bottom left box opaque
+plot '$work/c.dat' using (\$3 == 0.8 ? \$1 : 1/0):5:6:7 with yerrorlines pt 7 title 'e = 0.8', \
+     ''            using (\$3 == 0 ? \$1*1.04 : 1/0):5 with linespoints pt 5 title 'e = 0 (one run each)', \
+     ''            using (\$3 == 1 ? \$1 : 1/0):5 with linespoints pt 6 title 'e = 1 (conserves energy)'
+EOF
+}
+
+if [ "$build" = --plot-only ]; then
+  plot_dissipation
+  echo "resolved_refinement: wrote $figure from $table"
+  exit 0
+fi
 
 source scripts/build_release.sh
 build_release "$build" vibrobeam
@@ -191,4 +219,5 @@ for e in 0.8 0 1; do
   done
 done
 } | tee "$table"
-echo "resolved_refinement: the study took $(( $(date +%s) - start )) s; wrote $table"
+plot_dissipation
+echo "resolved_refinement: the study took $(( $(date +%s) - start )) s; wrote $table and $figure"
