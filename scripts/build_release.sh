@@ -7,9 +7,14 @@ build_release() {
   shift
   local log=$tree/$1_build.log
   rm -f "$log"
-  if ! cmake -S . -B "$tree" -DCMAKE_BUILD_TYPE=Release > /dev/null \
-     || ! cmake --build "$tree" -j 2 --target "$@" > "$log" 2>&1; then
-    [ -f "$log" ] && cat "$log"
+  local source_dir
+  source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+  if ! cmake -S "$source_dir" -B "$tree" -DCMAKE_BUILD_TYPE=Release > /dev/null; then
+    echo "$(basename "$0"): configuring $tree failed (cmake's message above)" >&2
+    exit 1
+  fi
+  if ! cmake --build "$tree" -j 2 --target "$@" > "$log" 2>&1; then
+    cat "$log"
     echo "$(basename "$0"): the build of $* in $tree failed (log above)" >&2
     exit 1
   fi

@@ -20,7 +20,8 @@
 #   E. the sensitivity to the data: the initial velocity perturbed by a relative 1e-10 ... 1e-5.
 # (D and E are printed before C, which holds the longest runs.)
 #
-# usage: scripts/resolved_refinement.sh [BUILD_DIR]   (default: build; about 10 min on 2 cores,
+# usage: scripts/resolved_refinement.sh [BUILD_DIR]   (default: build, relative to the repository
+#        root like the other scripts; about 10 min on 2 cores,
 #        of which 6 min for the two runs at N = 128)
 #        scripts/resolved_refinement.sh --plot-only     (redraws the figure from the table)
 # writes verification/convergence/resolved_refinement.txt and resolved_refinement_dissipation.png
@@ -47,7 +48,7 @@ set yrange [-0.01:0.35]
 set xlabel 'N (elements)'
 set ylabel '1 - E(T)/E(0)'
 set grid
-set key bottom left box opaque
+set key top right box opaque
 plot '$work/c.dat' using (\$3 == 0.8 ? \$1 : 1/0):5:6:7 with yerrorlines pt 7 title 'e = 0.8', \
      ''            using (\$3 == 0 ? \$1*1.04 : 1/0):5 with linespoints pt 5 title 'e = 0 (one run each)', \
      ''            using (\$3 == 1 ? \$1 : 1/0):5 with linespoints pt 6 title 'e = 1 (conserves energy)'
@@ -85,7 +86,7 @@ run() {
                "velocity_amplitude = $amplitude /"; do
     grep -qF -- "$value" "$work/$name.nml" || { echo "resolved_refinement: could not set '$value'" >&2; exit 1; }
   done
-  "$program" "$work/$name.nml" > "$work/$name.log" 2>&1 || { cat "$work/$name.log"; exit 1; }
+  "$program" "$work/$name.nml" > "$work/$name.log" 2>&1 || { cat "$work/$name.log" >&2; exit 1; }
 }
 
 # tip_errors RUN REFERENCE: max |u_tip - u_tip,ref| over [0, T] for T = 2.5, 5, 12, 25 ms,
@@ -106,21 +107,23 @@ tip_errors() {
     END { if (!failed) printf "%10.2e %10.2e %10.2e %10.2e", a, b, c, e }' "$work/$2_tip.dat" "$work/$1_tip.dat"
 }
 
-# energy_at_end RUN: E = kinetic + elastic at the last output time (J)
-energy_at_end() {
-  grep -v '^#' "$work/$1_energy.dat" | awk 'NF > 2 { e = $2 + $3 } END { printf "%.6e", e }'
+# summarize RUN: sets run_events (impact events: impulses on one side less than 0.5 ms apart
+# count once), run_impulses (impulses) and run_energy (kinetic + elastic energy at the
+# last output time, J); stops the script if the run left no results
+summarize() {
+  local impacts=$work/$1_impacts.dat energies=$work/$1_energy.dat
+  if [ ! -f "$impacts" ] || [ ! -f "$energies" ]; then
+    echo "resolved_refinement: run $1 left no results" >&2
+    exit 1
+  fi
+  run_events=$(awk '
+    !/^#/ && NF >= 5 { side = ($3 > 0) ? 1 : -1
+                       if (n == 0 || $1 - last > 5e-4 || side != lastside) n++
+                       last = $1; lastside = side }
+    END { print n + 0 }' "$impacts")
+  run_impulses=$(awk '!/^#/ && NF >= 5 { n++ } END { print n + 0 }' "$impacts")
+  run_energy=$(awk '!/^#/ && NF > 2 { e = $2 + $3 } END { printf "%.6e", e }' "$energies")
 }
-
-# events RUN: impact events (impulses on one side less than 0.5 ms apart count once)
-events() {
-  grep -v '^#' "$work/$1_impacts.dat" | awk '
-    NF >= 5 { side = ($3 > 0) ? 1 : -1
-              if (n == 0 || $1 - last > 5e-4 || side != lastside) n++
-              last = $1; lastside = side }
-    END { print n + 0 }'
-}
-
-impulses() { grep -v '^#' "$work/$1_impacts.dat" | awk 'NF >= 5' | wc -l; }
 
 start=$(date +%s)
 {
@@ -131,13 +134,15 @@ echo
 echo "## A. N = 8, dt alone, against dt = 3.125e-8 s"
 for e in 0.8 1 0; do
   run a_ref_$e 8 3.125e-8 $e
-  echo "# e = $e; reference: $(events a_ref_$e) events, $(impulses a_ref_$e) impulses, E(T) = $(energy_at_end a_ref_$e) J"
+  summarize a_ref_$e
+  echo "# e = $e; reference: $run_events events, $run_impulses impulses, E(T) = $run_energy J"
   printf "%10s %10s %10s %10s %10s %10s %7s %13s\n" dt omega_dt "T=2.5ms" "T=5ms" "T=12ms" "T=25ms" events "E(T) (J)"
   for dt in 2e-6 1e-6 5e-7 2.5e-7 1.25e-7 6.25e-8; do
     run a_$e 8 $dt $e
     errors=$(tip_errors a_$e a_ref_$e)
+    summarize a_$e
     printf "%10s %10.3f %s %7s %13s\n" $dt "$(awk -v dt=$dt 'BEGIN { print 2.2886e5*dt }')" \
-      "$errors" "$(events a_$e)" "$(energy_at_end a_$e)"
+      "$errors" "$run_events" "$run_energy"
   done
   echo
 done
@@ -145,15 +150,17 @@ done
 echo "## B. joint path dt = 5e-7/2^k, N = nint(16 2^(k/2)) (omega_max dt = 0.46), reference (3.125e-8 s, 64)"
 for e in 0.8 1; do
   run b_ref_$e 64 3.125e-8 $e
-  echo "# e = $e; reference: $(events b_ref_$e) events, $(impulses b_ref_$e) impulses, E(T) = $(energy_at_end b_ref_$e) J"
+  summarize b_ref_$e
+  echo "# e = $e; reference: $run_events events, $run_impulses impulses, E(T) = $run_energy J"
   printf "%3s %10s %4s %10s %10s %10s %10s %7s %9s %13s\n" k dt N "T=2.5ms" "T=5ms" "T=12ms" "T=25ms" events impulses "E(T) (J)"
   for k in 0 1 2 3; do
     elements=$(awk -v k=$k 'BEGIN { printf "%d", 16*2^(k/2) + 0.5 }')
     dt=$(awk -v k=$k 'BEGIN { printf "%.10g", 5e-7/2^k }')
     run b_$e $elements $dt $e
     errors=$(tip_errors b_$e b_ref_$e)
+    summarize b_$e
     printf "%3d %10s %4d %s %7s %9s %13s\n" $k $dt $elements "$errors" \
-      "$(events b_$e)" "$(impulses b_$e)" "$(energy_at_end b_$e)"
+      "$run_events" "$run_impulses" "$run_energy"
   done
   echo
 done
@@ -163,14 +170,16 @@ for path in "2e-5 16" "4e-5 16" "1e-5 16" "1e-5 32"; do
   set -- $path
   dt0=$1; n0=$2
   run d_ref $((4*n0)) "$(awk -v d=$dt0 'BEGIN { printf "%.10g", d/16 }')" 0.8 position
-  echo "# dt0 = $dt0 s, N0 = $n0; reference: $(events d_ref) events, $(impulses d_ref) impulses"
+  summarize d_ref
+  echo "# dt0 = $dt0 s, N0 = $n0; reference: $run_events events, $run_impulses impulses"
   printf "%3s %10s %4s %10s %10s %10s %10s %7s\n" k dt N "T=2.5ms" "T=5ms" "T=12ms" "T=25ms" events
   for k in 0 1 2 3; do
     elements=$(awk -v k=$k -v n=$n0 'BEGIN { printf "%d", n*2^(k/2) + 0.5 }')
     dt=$(awk -v k=$k -v d=$dt0 'BEGIN { printf "%.10g", d/2^k }')
     run d $elements $dt 0.8 position
     errors=$(tip_errors d d_ref)
-    printf "%3d %10s %4d %s %7s\n" $k $dt $elements "$errors" "$(events d)"
+    summarize d
+    printf "%3d %10s %4d %s %7s\n" $k $dt $elements "$errors" "$run_events"
   done
   echo
 done
@@ -179,12 +188,14 @@ echo "## E. sensitivity to the data: v0 = 0.5 (1 + delta) m/s against v0 = 0.5 m
 for case in "1e-5 32 the_scene's_mesh_and_step" "2.5e-6 64 the_reference_of_study_2_of_REPORT.md"; do
   set -- $case
   run e_ref $2 $1 0.8
-  echo "# dt = $1 s, N = $2 (${3//_/ }); E(T) = $(energy_at_end e_ref) J"
+  summarize e_ref
+  echo "# dt = $1 s, N = $2 (${3//_/ }); E(T) = $run_energy J"
   printf "%8s %10s %10s %10s %10s %13s\n" delta "T=2.5ms" "T=5ms" "T=12ms" "T=25ms" "E(T) (J)"
   for delta in 1e-10 1e-8 1e-7 3e-7 1e-6 3e-6 1e-5; do
     run e $2 $1 0.8 velocity "$(awk -v d=$delta 'BEGIN { printf "%.12f", 0.5*(1 + d) }')"
     errors=$(tip_errors e e_ref)
-    printf "%8s %s %13s\n" $delta "$errors" "$(energy_at_end e)"
+    summarize e
+    printf "%8s %s %13s\n" $delta "$errors" "$run_energy"
   done
   echo
 done
@@ -210,7 +221,7 @@ for e in 0.8 0 1; do
     for delta in $deltas; do
       run c $elements $dt $e velocity "$(awk -v d=$delta 'BEGIN { printf "%.12f", 0.5*(1 + d) }')"
       losses="$losses $(loss_of c)"
-      [ "$delta" = 0 ] && count=$(impulses c)
+      if [ "$delta" = 0 ]; then summarize c; count=$run_impulses; fi
     done
     echo "$losses" | awk -v n=$elements -v dt=$dt -v e=$e -v count=$count '{
       lo = $1; hi = $1; sum = 0
@@ -218,6 +229,7 @@ for e in 0.8 0 1; do
       printf "%4d %11s %5s %5d %9.4f %9.4f %9.4f %16s\n", n, dt, e, NF, sum/NF, lo, hi, count }'
   done
 done
-} | tee "$table"
+} | tee "$work/table"
+mv "$work/table" "$table"   # only a complete table replaces the committed one
 plot_dissipation
 echo "resolved_refinement: the study took $(( $(date +%s) - start )) s; wrote $table and $figure"

@@ -2,7 +2,7 @@
 !! directory): run the velocity-based stepper on a variant of a scene, keep the histories
 !! that the comparisons need (tip, sample points, energy, impact events) and compare a run
 !! with a finer one. The error measures are defined in self_convergence.f90's header.
-module convergence_runs
+module vibrobeam_convergence_runs
    use vibrobeam_kinds, only: dp, int64, error_unit, output_unit
    use vibrobeam_text, only: integer_text
    use vibrobeam_status, only: message_length
@@ -51,6 +51,7 @@ contains
       character(len=4096) :: program_path
       integer :: length
       call get_command_argument(0, program_path, length)
+      length = min(length, len(program_path))
       write (error_unit, '(a)') program_path(index(program_path(1:length), '/', back=.true.) + 1:length)//': '// &
          trim(message)
       stop 2, quiet=.true.
@@ -264,4 +265,4 @@ contains
       text = integer_text(value)
       text = repeat(' ', max(0, width - len(text)))//text
    end function padded
-end module convergence_runs
+end module vibrobeam_convergence_runs

@@ -39,7 +39,7 @@ program self_convergence
    use vibrobeam_status, only: message_length
    use vibrobeam_scene, only: scene_type, validate_scene
    use vibrobeam_input, only: read_scene
-   use convergence_runs, only: event_gap, run_history, run_errors, simulate, compare, tip_error, &
+   use vibrobeam_convergence_runs, only: event_gap, run_history, run_errors, simulate, compare, tip_error, &
                                field_size, move_alloc_history, fail, sci, fixed, padded
    implicit none
 

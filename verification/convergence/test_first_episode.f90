@@ -20,7 +20,7 @@ program test_first_episode
    use vibrobeam_text, only: integer_text
    use vibrobeam_scene, only: scene_type
    use vibrobeam_test_support, only: test_counter, read_test_scene
-   use convergence_runs, only: run_history, run_errors, simulate, compare, fail, sci, fixed
+   use vibrobeam_convergence_runs, only: run_history, run_errors, simulate, compare, fail, sci, fixed
    implicit none
 
    real(dp), parameter :: window_end = 4e-3_dp     !! after the first contact episode (s)
