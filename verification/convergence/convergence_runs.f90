@@ -15,9 +15,12 @@ module vibrobeam_convergence_runs
    private
    public :: event_gap, sample_points, run_history, run_errors
    public :: simulate, compare, tip_error, field_size, move_alloc_history, fail, sci, fixed, padded
+   public :: coarsest_dt, joint_dt, joint_elements, rate
 
    real(dp), parameter :: event_gap = 5e-4_dp        !! largest gap inside one impact event (s)
    integer, parameter :: sample_points = 11          !! x_p = p L/10, p = 0..10
+   real(dp), parameter :: coarsest_dt = 4e-5_dp      !! dt0 (s) of the joint path
+   integer, parameter :: coarsest_elements = 16      !! N0 of the joint path
 
    !> What a run leaves for the comparisons: histories at every time step.
    type :: run_history
@@ -210,6 +213,27 @@ contains
       end do
       field_size = sqrt(square_sum/(sample_points*t_end))
    end function field_size
+
+   !> Time step of level k of the joint path: dt0/2^k (each level halves dt).
+   pure real(dp) function joint_dt(k)
+      integer, intent(in) :: k
+      joint_dt = coarsest_dt/2**k
+   end function joint_dt
+
+   !> Elements of level k of the joint path: nint(N0 2^(k/2)) (h falls by sqrt 2 per level,
+   !! so that omega_max dt stays the same at every level).
+   pure integer function joint_elements(k)
+      integer, intent(in) :: k
+      joint_elements = nint(coarsest_elements*2.0_dp**(0.5_dp*k))
+   end function joint_elements
+
+   !> Observed order ln(e1/e2)/ln(s1/s2) for errors e at sizes s; 0 when undefined.
+   pure real(dp) function rate(e1, e2, s1, s2)
+      real(dp), intent(in) :: e1, e2   !! errors at the coarser and the finer size
+      real(dp), intent(in) :: s1, s2   !! sizes (dt or h), s1 > s2
+      rate = 0
+      if (e1 > 0 .and. e2 > 0 .and. s1 > s2) rate = log(e1/e2)/log(s1/s2)
+   end function rate
 
    !> previous <- current (the histories move, nothing is copied).
    subroutine move_alloc_history(current, previous)

@@ -40,12 +40,11 @@ program self_convergence
    use vibrobeam_scene, only: scene_type, validate_scene
    use vibrobeam_input, only: read_scene
    use vibrobeam_convergence_runs, only: event_gap, run_history, run_errors, simulate, compare, tip_error, &
-                               field_size, move_alloc_history, fail, sci, fixed, padded
+                               field_size, move_alloc_history, fail, sci, fixed, padded, rate, coarsest_dt, &
+                               level_dt => joint_dt, level_elements => joint_elements
    implicit none
 
    real(dp), parameter :: window_end = 0.025_dp      !! T (s): free flight after the 4th event
-   real(dp), parameter :: coarsest_dt = 4e-5_dp      !! dt0 (s)
-   integer, parameter :: coarsest_elements = 16      !! N0
    integer, parameter :: joint_levels = 4            !! levels 0..4; level 4 is the reference
    integer, parameter :: time_study_elements = 32    !! N of the dt-alone study
    integer, parameter :: time_study_levels = 6       !! rows dt0 .. dt0/2^6, reference dt0/2^8
@@ -95,8 +94,8 @@ program self_convergence
 
    ! the joint path: dt halves, N grows by sqrt(2), from (dt0, N0)
    do k = 0, cauchy_levels
-      joint_dt(k) = coarsest_dt/2**k
-      joint_elements(k) = nint(coarsest_elements*2.0_dp**(0.5_dp*k))
+      joint_dt(k) = level_dt(k)
+      joint_elements(k) = level_elements(k)
    end do
 
    ! 1. survey of the scene as given
@@ -191,14 +190,6 @@ contains
       write (text_unit, '(a)') line
       write (output_unit, '(a)') line
    end subroutine emit
-
-   !> Observed order ln(e1/e2)/ln(s1/s2) for errors e at sizes s; 0 when undefined.
-   pure real(dp) function rate(e1, e2, s1, s2)
-      real(dp), intent(in) :: e1, e2   !! errors at the coarser and the finer size
-      real(dp), intent(in) :: s1, s2   !! sizes (dt or h), s1 > s2
-      rate = 0
-      if (e1 > 0 .and. e2 > 0 .and. s1 > s2) rate = log(e1/e2)/log(s1/s2)
-   end function rate
 
    !> Rate of row k against row k - 1 as text, '-' for the first row.
    function rate_text(errors, sizes, k) result(text)

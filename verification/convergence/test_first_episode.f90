@@ -20,12 +20,11 @@ program test_first_episode
    use vibrobeam_text, only: integer_text
    use vibrobeam_scene, only: scene_type
    use vibrobeam_test_support, only: test_counter, read_test_scene
-   use vibrobeam_convergence_runs, only: run_history, run_errors, simulate, compare, fail, sci, fixed
+   use vibrobeam_convergence_runs, only: run_history, run_errors, simulate, compare, fail, sci, fixed, rate, &
+                                         joint_dt, joint_elements
    implicit none
 
    real(dp), parameter :: window_end = 4e-3_dp     !! after the first contact episode (s)
-   real(dp), parameter :: coarsest_dt = 4e-5_dp    !! dt0 (s)
-   integer, parameter :: coarsest_elements = 16    !! N0
    integer, parameter :: levels = 4                !! levels 0..3 against level 4
    real(dp), parameter :: least_order = 0.5_dp     !! observed order in dt, level 0 to 3
 
@@ -41,7 +40,7 @@ program test_first_episode
    call get_command_argument(1, argument, length)
    base = read_test_scene(argument(1:length))
    do k = 0, levels
-      call simulate(base, coarsest_dt/2**k, nint(coarsest_elements*2.0_dp**(0.5_dp*k)), window_end, runs(k))
+      call simulate(base, joint_dt(k), joint_elements(k), window_end, runs(k))
    end do
    write (output_unit, '(a)') 'errors against dt = '//sci(runs(levels)%dt)//' s, N = '// &
       integer_text(runs(levels)%elements)//' over [0, '//sci(window_end)//' s]', &
@@ -66,7 +65,7 @@ program test_first_episode
                              errors(k)%field < errors(k - 1)%field, &
                              sci(errors(k - 1)%field)//' -> '//sci(errors(k)%field))
    end do
-   order = log(errors(0)%tip/errors(levels - 1)%tip)/log(runs(0)%dt/runs(levels - 1)%dt)
+   order = rate(errors(0)%tip, errors(levels - 1)%tip, runs(0)%dt, runs(levels - 1)%dt)
    call report%check_true('observed order of the tip error in dt, level 0 to 3, at least '//fixed(least_order, 1), &
                           order >= least_order, fixed(order, 2))
    call report%finish('test_first_episode')
