@@ -108,8 +108,9 @@ tip_errors() {
 }
 
 # summarize RUN: sets run_events (impact events: impulses on one side less than 0.5 ms apart
-# count once), run_impulses (impulses) and run_energy (kinetic + elastic energy at the
-# last output time, J); stops the script if the run left no results
+# count once), run_impulses (impulses), run_energy (kinetic + elastic energy at the last
+# output time, J) and run_loss (1 - run_energy/E(0)); stops the script if the run left no
+# results
 summarize() {
   local impacts=$work/$1_impacts.dat energies=$work/$1_energy.dat
   if [ ! -f "$impacts" ] || [ ! -f "$energies" ]; then
@@ -123,6 +124,8 @@ summarize() {
     END { print n + 0 }' "$impacts")
   run_impulses=$(awk '!/^#/ && NF >= 5 { n++ } END { print n + 0 }' "$impacts")
   run_energy=$(awk '!/^#/ && NF > 2 { e = $2 + $3 } END { printf "%.6e", e }' "$energies")
+  run_loss=$(awk '!/^#/ && NF > 2 { e = $2 + $3; if (!started) { e0 = e; started = 1 } }
+                  END { printf "%.4f", 1 - e/e0 }' "$energies")
 }
 
 start=$(date +%s)
@@ -205,11 +208,6 @@ echo "# loss = 1 - E(T)/E(0), each run against its own E(0); with e = 0.8 up to 
 echo "# with v0 = 0.5 (1 + delta), delta = 0, 1e-6, 1e-5, 1e-4, 1e-3 (study E: the loss jumps"
 echo "# under such changes), and their mean, smallest and largest loss; otherwise delta = 0 only"
 printf "%4s %11s %5s %5s %9s %9s %9s %16s\n" N dt e runs "loss" smallest largest "impulses (d=0)"
-# loss_of RUN: 1 - E(T)/E(0)
-loss_of() {
-  awk '!/^#/ && NF > 2 { e = $2 + $3; if (!started) { e0 = e; started = 1 } } END { printf "%.4f", 1 - e/e0 }' \
-    "$work/$1_energy.dat"
-}
 for e in 0.8 0 1; do
   sizes="8 16 32 64"
   [ "$e" != 1 ] && sizes="$sizes 128"
@@ -220,8 +218,9 @@ for e in 0.8 0 1; do
     losses=""
     for delta in $deltas; do
       run c $elements $dt $e velocity "$(awk -v d=$delta 'BEGIN { printf "%.12f", 0.5*(1 + d) }')"
-      losses="$losses $(loss_of c)"
-      if [ "$delta" = 0 ]; then summarize c; count=$run_impulses; fi
+      summarize c
+      losses="$losses $run_loss"
+      if [ "$delta" = 0 ]; then count=$run_impulses; fi
     done
     echo "$losses" | awk -v n=$elements -v dt=$dt -v e=$e -v count=$count '{
       lo = $1; hi = $1; sum = 0
