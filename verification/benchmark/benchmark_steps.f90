@@ -447,18 +447,10 @@ contains
       write (unit, '(a)') '#'
       write (unit, '(a,i0,a,i0,a)') '# fitted exponent p of t ~ N^p (least squares on log-log): N = ', fit_from, &
          '..', maxval(rows%elements), ', all N'
-      write (unit, '(a,2f8.3)') '#   (a) tip obstacle, free flight            ', &
-         fitted_exponent(pack(rows%elements, large), pack(rows%tip%seconds, large)), &
-         fitted_exponent(rows%elements, rows%tip%seconds)
-      write (unit, '(a,2f8.3)') '#   (b) persistent contact, band regime      ', &
-         fitted_exponent(pack(rows%elements, large), pack(rows%longitudinal_band%seconds, large)), &
-         fitted_exponent(rows%elements, rows%longitudinal_band%seconds)
-      write (unit, '(a,2f8.3)') '#   (b) persistent contact, auto regime      ', &
-         fitted_exponent(pack(rows%elements, large), pack(rows%longitudinal%seconds, large)), &
-         fitted_exponent(rows%elements, rows%longitudinal%seconds)
-      write (unit, '(a,2f8.3)') '#   baseline solve + matvec                  ', &
-         fitted_exponent(pack(rows%elements, large), pack(rows%baseline%seconds, large)), &
-         fitted_exponent(rows%elements, rows%baseline%seconds)
+      call write_fit(unit, '#   (a) tip obstacle, free flight            ', large, rows%tip%seconds)
+      call write_fit(unit, '#   (b) persistent contact, band regime      ', large, rows%longitudinal_band%seconds)
+      call write_fit(unit, '#   (b) persistent contact, auto regime      ', large, rows%longitudinal%seconds)
+      call write_fit(unit, '#   baseline solve + matvec                  ', large, rows%baseline%seconds)
       write (unit, '(a,f6.2,a,f6.2)') '# ratio (a)/baseline (median of the paired ratios of the repetitions): ' // &
          'largest ', maxval(rows%ratio), ', smallest ', minval(rows%ratio)
       write (unit, '(a,i0)') '# most active contact points in a timed step of (a): ', maxval(rows%tip%active_max)
@@ -477,4 +469,15 @@ contains
          minval([rows%tip%cpu_fraction, rows%baseline%cpu_fraction, rows%longitudinal%cpu_fraction, &
                  rows%longitudinal_band%cpu_fraction, rows%longitudinal_delassus%cpu_fraction])
    end subroutine write_report
+
+   !> One line of the exponent fits of write_report: `label`, then p of t ~ N^p fitted over
+   !! the rows marked `large` (N >= fit_from) and over all rows.
+   subroutine write_fit(unit, label, large, seconds)
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: label
+      logical, intent(in) :: large(:)       !! rows of the large-N fit
+      real(dp), intent(in) :: seconds(:)    !! time per step of each row (s)
+      write (unit, '(a,2f8.3)') label, fitted_exponent(pack(rows%elements, large), pack(seconds, large)), &
+         fitted_exponent(rows%elements, seconds)
+   end subroutine write_fit
 end program benchmark_steps
