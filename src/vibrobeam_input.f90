@@ -6,7 +6,7 @@
 !! (which namelist input would silently skip) is an error too.
 module vibrobeam_input
    use vibrobeam_kinds, only: dp
-   use vibrobeam_scene, only: scene_type, max_obstacles, unset, is_unset
+   use vibrobeam_scene, only: scene_type, max_obstacles, max_points, unset, is_unset
    implicit none
    private
    public :: read_scene
@@ -28,7 +28,7 @@ contains
       character(len=256) :: iomsg
       stat = 0
       errmsg = ''
-      allocate (scene%obstacles(0))
+      allocate (scene%obstacles(0), scene%points(0))
       open (newunit=unit, file=filename, status='old', action='read', iostat=stat, iomsg=iomsg)
       if (stat /= 0) then
          stat = 1
@@ -362,14 +362,16 @@ contains
       character(len=64) :: displacement, velocity
       integer :: displacement_mode, velocity_mode
       real(dp) :: displacement_amplitude, velocity_amplitude
+      character(len=len(scene%from_file)) :: from_file
       namelist /initial/ displacement, displacement_mode, displacement_amplitude, &
-         velocity, velocity_mode, velocity_amplitude
+         velocity, velocity_mode, velocity_amplitude, from_file
       integer :: ios
       character(len=256) :: iomsg
       displacement = scene%displacement; displacement_mode = scene%displacement_mode
       displacement_amplitude = scene%displacement_amplitude
       velocity = scene%velocity; velocity_mode = scene%velocity_mode
       velocity_amplitude = scene%velocity_amplitude
+      from_file = scene%from_file
       rewind (unit)
       read (unit, nml=initial, iostat=ios, iomsg=iomsg)
       call read_status(unit, 'initial', ios, iomsg, stat, errmsg)
@@ -377,6 +379,7 @@ contains
       scene%displacement_amplitude = displacement_amplitude
       scene%velocity = lowercase(velocity); scene%velocity_mode = velocity_mode
       scene%velocity_amplitude = velocity_amplitude
+      scene%from_file = from_file
    end subroutine read_initial
 
    subroutine read_load(unit, scene, stat, errmsg)
@@ -428,16 +431,30 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       character(len=len(scene%file)) :: file
-      integer :: every
+      integer :: every, field_every
       logical :: text, progress
-      namelist /output/ file, every, text, progress
-      integer :: ios
+      real(dp) :: points(max_points), measure_from, checkpoint_seconds, episode_gap
+      namelist /output/ file, every, text, progress, field_every, points, measure_from, checkpoint_seconds, &
+         episode_gap
+      integer :: ios, count_points
       character(len=256) :: iomsg
       file = scene%file; every = scene%every; text = scene%text; progress = scene%progress
+      field_every = scene%field_every; measure_from = scene%measure_from
+      checkpoint_seconds = scene%checkpoint_seconds; episode_gap = scene%episode_gap
+      points = unset
       rewind (unit)
       read (unit, nml=output, iostat=ios, iomsg=iomsg)
       call read_status(unit, 'output', ios, iomsg, stat, errmsg)
       scene%file = file; scene%every = every; scene%text = text; scene%progress = progress
+      scene%field_every = field_every; scene%measure_from = measure_from
+      scene%checkpoint_seconds = checkpoint_seconds; scene%episode_gap = episode_gap
+      ! the points given are the leading ones of the list
+      count_points = 0
+      do while (count_points < max_points)
+         if (is_unset(points(count_points + 1))) exit
+         count_points = count_points + 1
+      end do
+      scene%points = points(1:count_points)
    end subroutine read_output
 
    !> ASCII lower case.

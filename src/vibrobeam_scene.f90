@@ -7,10 +7,11 @@ module vibrobeam_scene
    use vibrobeam_text, only: real_text, integer_text
    implicit none
    private
-   public :: scene_type, obstacle_type, scene_entry, max_obstacles, unset
+   public :: scene_type, obstacle_type, scene_entry, max_obstacles, max_points, unset
    public :: validate_scene, scene_entries, format_scene, rho_s_of, ei_of, is_unset
 
    integer, parameter :: max_obstacles = 32       !! most obstacles a scene may hold
+   integer, parameter :: max_points = 64          !! most observation points (&output points)
    real(dp), parameter :: unset = -huge(1.0_dp)   !! marks a real the user did not give
    integer, parameter :: name_length = 64, text_length = 256
 
@@ -54,6 +55,7 @@ module vibrobeam_scene
       character(len=16) :: velocity = 'zero'
       integer :: velocity_mode = 1
       real(dp) :: velocity_amplitude = 0
+      character(len=text_length) :: from_file = ''   !! continue from this results file ('' = no)
       ! &load
       real(dp) :: distributed = 0, distributed_frequency = 0, distributed_phase = 0
       real(dp) :: point_force = 0, point_position = unset, point_frequency = 0
@@ -63,9 +65,14 @@ module vibrobeam_scene
       integer :: contact_max_iterations = 0
       ! &output
       character(len=text_length) :: file = 'results/vibrobeam.h5'
-      integer :: every = 10
+      integer :: every = 10                   !! histories every `every` steps
+      integer :: field_every = 0              !! field snapshots every `field_every` steps (0: = every)
       logical :: text = .true.
       logical :: progress = .false.
+      real(dp), allocatable :: points(:)      !! observation points x (m), beside the tip
+      real(dp) :: measure_from = 0            !! start of the statistics window (s)
+      real(dp) :: checkpoint_seconds = 0      !! > 0: restartable checkpoint this often (wall s)
+      real(dp) :: episode_gap = unset         !! impacts closer than this form one episode (s); unset: default
    end type scene_type
 
    !> One resolved input value with its unit, for printing and for HDF5 attributes.
@@ -187,6 +194,17 @@ contains
       ! &output
       if (len_trim(scene%file) == 0) call fail('&output file is empty; give a file name such as ''results/run.h5''')
       call integer_in_range('output', 'every', scene%every, 1, huge(1))
+      call integer_in_range('output', 'field_every', scene%field_every, 0, huge(1))
+      if (allocated(scene%points)) then
+         do i = 1, size(scene%points)
+            write (index, '(i0)') i
+            call in_range('output', 'points('//trim(index)//')', scene%points(i), 0.0_dp, scene%length)
+         end do
+      end if
+      call in_range('output', 'measure_from', scene%measure_from, 0.0_dp, huge(1.0_dp))
+      call in_range('output', 'checkpoint_seconds', scene%checkpoint_seconds, 0.0_dp, huge(1.0_dp))
+      if (.not. is_unset(scene%episode_gap)) &
+         call in_range('output', 'episode_gap', scene%episode_gap, 0.0_dp, huge(1.0_dp))
 
    contains
 
@@ -306,6 +324,7 @@ contains
       call add_string('initial.velocity', scene%velocity)
       call add_integer('initial.velocity_mode', scene%velocity_mode)
       call add_real('initial.velocity_amplitude', scene%velocity_amplitude, 'm/s')
+      call add_string('initial.from_file', scene%from_file)
       call add_real('load.distributed', scene%distributed, 'N/m')
       call add_real('load.distributed_frequency', scene%distributed_frequency, 'rad/s')
       call add_real('load.distributed_phase', scene%distributed_phase, 'rad')
@@ -320,6 +339,16 @@ contains
       call add_integer('output.every', scene%every)
       call add_logical('output.text', scene%text)
       call add_logical('output.progress', scene%progress)
+      call add_integer('output.field_every', scene%field_every)
+      if (allocated(scene%points)) then
+         do i = 1, size(scene%points)
+            write (index, '(a,i0,a)') '(', i, ')'
+            call add_real('output.points'//trim(index), scene%points(i), 'm')
+         end do
+      end if
+      call add_real('output.measure_from', scene%measure_from, 's')
+      call add_real('output.checkpoint_seconds', scene%checkpoint_seconds, 's')
+      if (.not. is_unset(scene%episode_gap)) call add_real('output.episode_gap', scene%episode_gap, 's')
    contains
       pure subroutine add_real(name, value, unit)
          character(len=*), intent(in) :: name, unit

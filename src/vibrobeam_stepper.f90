@@ -33,11 +33,14 @@ module vibrobeam_stepper
       real(dp), allocatable :: velocity_before(:), velocity_after(:)   !! of each point (m/s)
       logical, allocatable :: approaching(:)       !! the point moved toward its obstacle
       integer :: iterations = 0                    !! contact solver iterations of the last step
+      integer :: linear_solves = 0                 !! linear solves the contact solver made in the last step
+      logical :: used_fallback = .false.           !! the contact solver needed its fall-back in the last step
       real(dp) :: impulse_time = 0                 !! when the last step's impulses act (s)
       ! running sums since t = 0 (each scheme says how it defines them)
       real(dp) :: work = 0                   !! work of the loads (J)
       real(dp) :: dissipated_impacts = 0     !! energy taken by impacts (J)
       real(dp) :: dissipated_damping = 0     !! energy taken by Rayleigh damping (J)
+      real(dp) :: dissipated_numerical = 0   !! energy taken by the theta-method itself, theta > 1/2 (J)
    contains
       procedure(step_interface), deferred :: step
       procedure :: kinetic_energy
