@@ -13,8 +13,9 @@ module vibrobeam_input
    use vibrobeam_text, only: integer_text
    use vibrobeam_scene, only: scene_type, max_obstacles, max_points, scene_variables, path_length, &
       keyword_length, unknowns_of
-   use vibrobeam_namelist_scan, only: scanned_file, namelist_variable, scan_namelist_file, &
-      lowercase, range_text, variable_index
+   use vibrobeam_namelist_tokens, only: lowercase
+   use vibrobeam_namelist_values, only: namelist_variable, range_text, variable_index
+   use vibrobeam_namelist_scan, only: scanned_file, scan_namelist_file
    implicit none
    private
    public :: read_scene, namelist_groups_text
@@ -58,15 +59,15 @@ contains
    !> '&beam &mesh ... &output': every group a file may hold.
    function namelist_groups_text() result(text)
       character(len=:), allocatable :: text
+      type(namelist_variable), allocatable :: table(:)
       integer :: k
+      allocate (table, source=scene_variables())
       text = ''
-      associate (table => scene_variables())
-         do k = 1, size(table)
-            if (index(text//' ', '&'//trim(table(k)%group)//' ') > 0) cycle
-            if (len(text) > 0) text = text//' '
-            text = text//'&'//trim(table(k)%group)
-         end do
-      end associate
+      do k = 1, size(table)
+         if (index(text//' ', '&'//trim(table(k)%group)//' ') > 0) cycle
+         if (len(text) > 0) text = text//' '
+         text = text//'&'//trim(table(k)%group)
+      end do
    end function namelist_groups_text
 
    !> A warning for each value given that the analysis does not use.

@@ -13,7 +13,7 @@ module vibrobeam_output_target
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type, path_length, step_count
-   use vibrobeam_namelist_scan, only: abbreviated
+   use vibrobeam_namelist_tokens, only: abbreviated
    implicit none
    private
    public :: check_output_target, estimate_result_size, result_size, max_result_bytes, path_margin

@@ -16,7 +16,7 @@ module vibrobeam_scene
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
-   use vibrobeam_namelist_scan, only: namelist_variable, variable_index, range_text, choices_text, &
+   use vibrobeam_namelist_values, only: namelist_variable, variable_index, range_text, choices_text, &
       kind_real, kind_integer, kind_logical, kind_string
    implicit none
    private

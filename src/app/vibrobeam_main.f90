@@ -122,7 +122,8 @@ contains
          '', &
          'usage:', &
          '  vibrobeam INPUT.nml            run the scene described by INPUT.nml', &
-         '  vibrobeam --check INPUT.nml    validate the input, print the resolved scene, run nothing', &
+         '  vibrobeam --check INPUT.nml    validate the input, print the resolved scene, its natural', &
+         '                                 frequencies, time-step and result-size checks; run nothing', &
          '  vibrobeam --help | --version', &
          '', &
          'namelist groups: '//namelist_groups_text(), &
