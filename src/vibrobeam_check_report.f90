@@ -26,8 +26,7 @@ module vibrobeam_check_report
    implicit none
    private
    public :: check_report, make_check_report, check_report_text, scene_warnings
-   public :: steps_per_period_wanted, listed_modes, velocity_scale
-   public :: youngs_modulus_least, density_range, area_range, inertia_ratio_range
+   public :: steps_per_period_wanted, velocity_scale
 
    !> Fewer steps than this per period of mode 1: the time step does not resolve it (a
    !! theta = 1/2 scheme then errs by about (omega dt)^2/12 = 8e-3 in phase per period).

@@ -1,4 +1,4 @@
-!> Reading a scene from a namelist file (INTERFACE.md, "Input: namelist groups").
+!> Reading a scene from a namelist file (docs/input.md).
 !!
 !! The file is first scanned whole against the table of every variable
 !! (`vibrobeam_namelist_scan` with `scene_variables`): anything outside a known group, an

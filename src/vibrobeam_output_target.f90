@@ -16,7 +16,7 @@ module vibrobeam_output_target
    use vibrobeam_namelist_tokens, only: abbreviated
    implicit none
    private
-   public :: check_output_target, estimate_result_size, result_size, max_result_bytes, path_margin
+   public :: check_output_target, estimate_result_size, result_size, max_result_bytes
 
    !> Largest result set a run may write (bytes): 2^40, one tebibyte.
    real(dp), parameter :: max_result_bytes = 1099511627776.0_dp

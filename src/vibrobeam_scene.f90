@@ -1,5 +1,5 @@
 !> The scene: every input value of a run, resolved (defaults filled in) and validated
-!! (INTERFACE.md, "Input"). Reading the namelist file is `vibrobeam_input`'s job; this
+!! (docs/input.md). Reading the namelist file is `vibrobeam_input`'s job; this
 !! module knows what values are allowed (`scene_variables`, the one table of every
 !! variable's kind, extent, longest string, hard range and choices, which both the file
 !! scanner and `validate_scene` use) and how to list them with their units.
@@ -33,7 +33,7 @@ module vibrobeam_scene
    !> Most time steps of a run: nint(t_end/dt) must fit a 64-bit count with room to spare.
    integer(int64), parameter :: max_steps = 1000000000000000000_int64
 
-   !> One obstacle of `&obstacles` (INTERFACE.md).
+   !> One obstacle of `&obstacles` (docs/input.md).
    type :: obstacle_type
       character(len=keyword_length) :: side = 'below'   !! 'below' (bounds u from below) | 'above'
       real(dp) :: x_from = 0, x_to = 0      !! extent along the beam (m)
