@@ -9,7 +9,9 @@ passed=0; failed=0
 while read -r group name kind extent rest; do
   section=$(awk -v header="## &$group" '$0 == header || index($0, header " ") == 1 {inside = 1; next}
                                          /^## / {inside = 0} inside' "$doc")
-  if printf '%s\n' "$section" | grep -q -E "^\| \`$name(\(i\))?\` \|"; then
+  # a here-string, not a pipe: grep -q stops at the first match, and with pipefail the
+  # writer's SIGPIPE would count as a failure
+  if grep -q -E "^\| \`$name(\(i\))?\` \|" <<< "$section"; then
     passed=$((passed + 1))
   else
     failed=$((failed + 1)); echo "FAIL docs/input.md: no row for &$group $name in section '## &$group'"
