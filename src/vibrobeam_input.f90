@@ -1,380 +1,352 @@
-!> Reading a scene from a namelist file (INTERFACE.md, "Input: namelist groups").
+!> Reading a scene from a namelist file (docs/input.md).
 !!
-!! Every group is optional. A group is read with Fortran namelist input, so an unknown
-!! variable or a malformed value is reported by the run-time library; we add the group's
-!! name. Before reading, the file is scanned for group names so that a misspelt group
-!! (which namelist input would silently skip) is an error too.
+!! The file is first scanned whole against the table of every variable
+!! (`vibrobeam_namelist_scan` with `scene_variables`): anything outside a known group, an
+!! unterminated or repeated group, a value too long, out of an array, not finite, or of a
+!! magnitude that would overflow or underflow in conversion is refused there, with the
+!! line, group and variable. Each assignment the scanner accepted is then read by Fortran
+!! namelist input from its own canonical record (an internal file), so a failure of the
+!! run-time library still names the assignment. Which variables were given comes from the
+!! scanner's tokens, never from comparing a value with a marker.
 module vibrobeam_input
    use vibrobeam_kinds, only: dp
-   use vibrobeam_scene, only: scene_type, max_obstacles, max_points, unset, is_unset
+   use vibrobeam_text, only: integer_text
+   use vibrobeam_scene, only: scene_type, max_obstacles, max_points, scene_variables, path_length, &
+      keyword_length, unknowns_of
+   use vibrobeam_namelist_tokens, only: lowercase
+   use vibrobeam_namelist_values, only: namelist_variable, range_text, variable_index
+   use vibrobeam_namelist_scan, only: scanned_file, scan_namelist_file
    implicit none
    private
-   public :: read_scene
+   public :: read_scene, namelist_groups_text
 
-   character(len=*), parameter :: known_groups(10) = [character(len=9) :: 'beam', 'mesh', &
-      'analysis', 'obstacles', 'impact', 'time', 'initial', 'load', 'solver', 'output']
+   !> Natural modes computed when `&analysis modes` is not given (fewer when J is smaller).
+   integer, parameter :: default_modes = 6
 
 contains
 
    !> Read `filename` into `scene` (defaults for everything not given). stat = 0 on
-   !! success, 1 with a message naming the group and variable otherwise. Validation of the
-   !! values is `validate_scene`'s job; this routine only checks what it must to read.
-   subroutine read_scene(filename, scene, stat, errmsg)
+   !! success, 1 with a message naming the line, group and variable otherwise. Validation
+   !! of the values against each other is `validate_scene`'s job. `warnings` (optional)
+   !! receives one line per given value the analysis ignores.
+   subroutine read_scene(filename, scene, stat, errmsg, warnings)
       character(len=*), intent(in) :: filename
       type(scene_type), intent(out) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer :: unit
-      character(len=256) :: iomsg
-      stat = 0
-      errmsg = ''
+      character(len=:), allocatable, intent(inout), optional :: warnings
+      type(scanned_file) :: scanned
       allocate (scene%obstacles(0), scene%points(0))
-      open (newunit=unit, file=filename, status='old', action='read', iostat=stat, iomsg=iomsg)
-      if (stat /= 0) then
-         stat = 1
-         errmsg = 'cannot open input file '''//trim(filename)//''': '//trim(iomsg)
-         return
-      end if
-      call check_group_names(unit, stat, errmsg)
-      if (stat == 0) call read_beam(unit, scene, stat, errmsg)
-      if (stat == 0) call read_mesh(unit, scene, stat, errmsg)
-      if (stat == 0) call read_analysis(unit, scene, stat, errmsg)
-      if (stat == 0) call read_obstacles(unit, scene, stat, errmsg)
-      if (stat == 0) call read_impact(unit, scene, stat, errmsg)
-      if (stat == 0) call read_time(unit, scene, stat, errmsg)
-      if (stat == 0) call read_initial(unit, scene, stat, errmsg)
-      if (stat == 0) call read_load(unit, scene, stat, errmsg)
-      if (stat == 0) call read_solver(unit, scene, stat, errmsg)
-      if (stat == 0) call read_output(unit, scene, stat, errmsg)
-      close (unit)
+      call scan_namelist_file(filename, scene_variables(), scanned, stat, errmsg)
+      if (stat /= 0) return
+      call read_beam(scanned, scene, stat, errmsg)
+      if (stat == 0) call read_mesh(scanned, scene, stat, errmsg)
+      if (stat == 0) call read_analysis(scanned, scene, stat, errmsg)
+      if (stat == 0) call read_obstacles(scanned, scene, stat, errmsg)
+      if (stat == 0) call read_impact(scanned, scene, stat, errmsg)
+      if (stat == 0) call read_time(scanned, scene, stat, errmsg)
+      if (stat == 0) call read_initial(scanned, scene, stat, errmsg)
+      if (stat == 0) call read_load(scanned, scene, stat, errmsg)
+      if (stat == 0) call read_solver(scanned, scene, stat, errmsg)
+      if (stat == 0) call read_output(scanned, scene, stat, errmsg)
+      if (stat /= 0) return
+      ! the default number of modes applies only to kind = 'modes', and never beyond J
+      if (scene%kind == 'modes' .and. .not. scanned%is_given('analysis', 'modes') .and. scene%elements >= 1) &
+         scene%modes = min(default_modes, unknowns_of(scene))
+      if (present(warnings)) call ignored_values(scanned, scene, warnings)
    end subroutine read_scene
 
-   !> Every line whose first non-blank character is '&' must open a known group, once.
-   subroutine check_group_names(unit, stat, errmsg)
-      integer, intent(in) :: unit
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      character(len=1024) :: line
-      character(len=64) :: name
-      logical :: seen(size(known_groups))
-      integer :: ios, line_number, k, last
-      seen = .false.
-      line_number = 0
-      stat = 0
-      errmsg = ''
-      rewind (unit)
-      do
-         read (unit, '(a)', iostat=ios) line
-         if (ios /= 0) exit
-         line_number = line_number + 1
-         line = adjustl(line)
-         if (line(1:1) /= '&') cycle
-         last = scan(line(2:), ' ,/!'//achar(9))
-         if (last == 0) last = len_trim(line)
-         name = lowercase(line(2:last))
-         if (len_trim(name) == 0 .or. trim(name) == 'end') cycle   ! '&end' closes a group in old style
-         k = findloc(known_groups, trim(name), dim=1)
-         if (k == 0) then
-            write (errmsg, '(a,i0,a)') 'line ', line_number, ': unknown namelist group &'//trim(name)// &
-               ' (known: &beam &mesh &analysis &obstacles &impact &time &initial &load &solver &output)'
-            stat = 1
-            return
-         end if
-         if (seen(k)) then
-            write (errmsg, '(a,i0,a)') 'line ', line_number, ': group &'//trim(name)//' appears twice'
-            stat = 1
-            return
-         end if
-         seen(k) = .true.
-      end do
-   end subroutine check_group_names
-
-   !> Turn a namelist read status into stat/errmsg: end of file means the group is absent.
-   !! The run-time library reports an unknown variable and a malformed value alike, as
-   !! "Cannot match namelist object name X"; we look X up in the group's text to say which:
-   !! X followed by '=' (or '(') is an unknown variable, otherwise X is part of the value of
-   !! the variable assigned just before it.
-   subroutine read_status(unit, group, ios, iomsg, stat, errmsg)
-      integer, intent(in) :: unit
-      character(len=*), intent(in) :: group, iomsg
-      integer, intent(in) :: ios
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      character(len=*), parameter :: marker = 'object name '
-      character(len=:), allocatable :: text, token
-      character(len=1) :: next
-      integer :: where_token, after, before, name_end, name_start
-      stat = 0
-      errmsg = ''
-      if (is_iostat_end(ios) .or. ios == 0) return
-      stat = 1
-      errmsg = '&'//group//': '//trim(iomsg)//' (unknown variable or malformed value)'
-      where_token = index(iomsg, marker)
-      if (where_token == 0) return
-      token = trim(lowercase(iomsg(where_token + len(marker):)))
-      if (len(token) == 0) return
-      text = lowercase(group_text(unit, group))
-      where_token = token_position(text, token)
-      if (where_token == 0) return
-      after = where_token + len(token) - 1 + verify(text(where_token + len(token):)//'x', ' ')
-      next = text(after:after)
-      if (next == '=' .or. next == '(') then
-         errmsg = '&'//group//': unknown variable '''//token//''''
-         return
-      end if
-      before = index(text(1:where_token - 1), '=', back=.true.)
-      if (before <= 1) return
-      name_end = len_trim(text(1:before - 1))
-      if (name_end == 0) return
-      if (text(name_end:name_end) == ')') name_end = index(text(1:name_end), '(', back=.true.) - 1
-      if (name_end <= 0) return
-      name_start = scan(text(1:name_end), ' ,&'//achar(9), back=.true.) + 1
-      errmsg = '&'//group//' '//text(name_start:name_end)//': malformed value near '''//token// &
-               ''' (a number, a quoted string or .true./.false. is expected)'
-   contains
-      !> Position of `word` in `line` as a whole token (not the end of a longer name), 0 if
-      !! absent.
-      pure integer function token_position(line, word)
-         character(len=*), intent(in) :: line, word
-         character(len=*), parameter :: name_characters = 'abcdefghijklmnopqrstuvwxyz0123456789_'
-         integer :: start, found
-         token_position = 0
-         start = 1
-         do
-            found = index(line(start:), word)
-            if (found == 0) return
-            found = start + found - 1
-            if (found == 1) then
-               token_position = found
-               return
-            end if
-            if (index(name_characters, line(found - 1:found - 1)) == 0 .or. word(1:1) == '.') then
-               token_position = found
-               return
-            end if
-            start = found + 1
-         end do
-      end function token_position
-   end subroutine read_status
-
-   !> The text of group &name in the file (its lines joined by blanks, up to and including
-   !! the '/' that closes it outside quotes, comments left out); '' if the group is absent.
-   function group_text(unit, name) result(text)
-      integer, intent(in) :: unit
-      character(len=*), intent(in) :: name
+   !> '&beam &mesh ... &output': every group a file may hold.
+   function namelist_groups_text() result(text)
       character(len=:), allocatable :: text
-      character(len=1024) :: line
-      character(len=1) :: quote
-      integer :: ios, i, first, last
-      logical :: inside
+      type(namelist_variable), allocatable :: table(:)
+      integer :: k
+      allocate (table, source=scene_variables())
       text = ''
-      inside = .false.
-      quote = ' '
-      rewind (unit)
-      do
-         read (unit, '(a)', iostat=ios) line
-         if (ios /= 0) return
-         if (.not. inside) then
-            first = index(lowercase(line), '&'//name)
-            if (first == 0) cycle
-            last = first + len(name) + 1
-            if (last <= len(line)) then
-               if (scan(line(last:last), ' ,/!'//achar(9)) == 0) cycle   ! a longer group name
-            end if
-            inside = .true.
-            line = line(last:)
-         end if
-         do i = 1, len_trim(line)
-            if (quote /= ' ') then
-               if (line(i:i) == quote) quote = ' '
-            else if (line(i:i) == achar(39) .or. line(i:i) == achar(34)) then
-               quote = line(i:i)
-            else if (line(i:i) == '!') then
-               exit
-            else if (line(i:i) == '/') then
-               text = text//' '//line(1:i)
-               return
-            end if
-         end do
-         text = text//' '//line(1:i - 1)
+      do k = 1, size(table)
+         if (index(text//' ', '&'//trim(table(k)%group)//' ') > 0) cycle
+         if (len(text) > 0) text = text//' '
+         text = text//'&'//trim(table(k)%group)
       end do
-   end function group_text
+   end function namelist_groups_text
 
-   subroutine read_beam(unit, scene, stat, errmsg)
-      integer, intent(in) :: unit
+   !> A warning for each value given that the analysis does not use.
+   subroutine ignored_values(scanned, scene, warnings)
+      type(scanned_file), intent(in) :: scanned
+      type(scene_type), intent(in) :: scene
+      character(len=:), allocatable, intent(inout) :: warnings
+      character(len=*), parameter :: unused_by_modes(6) = [character(len=9) :: 'obstacles', 'impact', 'time', &
+                                                            'initial', 'load', 'solver']
+      character(len=*), parameter :: unused_by_static(3) = [character(len=9) :: 'impact', 'time', 'initial']
+      integer :: k
+      if (scene%kind /= 'modes' .and. scanned%is_given('analysis', 'modes')) &
+         call add('&analysis modes = '//integer_text(scene%modes)//' is ignored: kind = '''//trim(scene%kind)// &
+                  ''' computes no natural modes')
+      if (scanned%is_given('beam', 'k2') .and. (scanned%is_given('beam', 'youngs_modulus') .or. &
+          scanned%is_given('beam', 'density') .or. scanned%is_given('beam', 'area') .or. &
+          scanned%is_given('beam', 'inertia'))) &
+         call add('&beam k2 is ignored: youngs_modulus, density, area and inertia are given (k2 = EI/(rho S))')
+      select case (scene%kind)
+      case ('modes')
+         do k = 1, size(unused_by_modes)
+            if (scanned%group_given(trim(unused_by_modes(k)))) &
+               call add('&'//trim(unused_by_modes(k))//' is ignored: kind = ''modes'' computes the modes of the '// &
+                        'free cantilever')
+         end do
+      case ('static')
+         do k = 1, size(unused_by_static)
+            if (scanned%group_given(trim(unused_by_static(k)))) &
+               call add('&'//trim(unused_by_static(k))//' is ignored: kind = ''static'' solves for the '// &
+                        'equilibrium under the loads at t = 0')
+         end do
+      end select
+   contains
+      subroutine add(line)
+         character(len=*), intent(in) :: line
+         warnings = warnings//line//new_line('a')
+      end subroutine add
+   end subroutine ignored_values
+
+   !> After a namelist read of one canonical record: false on success; otherwise true,
+   !! with a message naming the assignment (the scanner accepted it, so this is a
+   !! disagreement with the run-time library, reported rather than trusted).
+   logical function read_failed(ios, iomsg, label, stat, errmsg)
+      integer, intent(in) :: ios
+      character(len=*), intent(in) :: iomsg, label
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      read_failed = ios /= 0
+      stat = merge(1, 0, read_failed)
+      errmsg = ''
+      if (read_failed) errmsg = label//': the Fortran run-time library cannot read this value ('// &
+                                trim(iomsg)//'); write it as a plain number, quoted string or .true./.false.'
+   end function read_failed
+
+   subroutine read_beam(scanned, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp) :: length, k2, youngs_modulus, density, area, inertia, rayleigh_mass, rayleigh_stiffness
       namelist /beam/ length, k2, youngs_modulus, density, area, inertia, rayleigh_mass, rayleigh_stiffness
-      integer :: ios
+      character(len=:), allocatable :: record
+      integer :: ios, k
       character(len=256) :: iomsg
       length = scene%length; k2 = scene%k2
       youngs_modulus = scene%youngs_modulus; density = scene%density
       area = scene%area; inertia = scene%inertia
       rayleigh_mass = scene%rayleigh_mass; rayleigh_stiffness = scene%rayleigh_stiffness
-      rewind (unit)
-      read (unit, nml=beam, iostat=ios, iomsg=iomsg)
-      call read_status(unit, 'beam', ios, iomsg, stat, errmsg)
+      stat = 0
+      errmsg = ''
+      do k = 1, size(scanned%items)
+         if (.not. scanned%in_group(k, 'beam')) cycle
+         record = scanned%record(k)
+         read (record, nml=beam, iostat=ios, iomsg=iomsg)
+         if (read_failed(ios, iomsg, scanned%label(k), stat, errmsg)) return
+      end do
       scene%length = length; scene%k2 = k2
       scene%youngs_modulus = youngs_modulus; scene%density = density
       scene%area = area; scene%inertia = inertia
       scene%rayleigh_mass = rayleigh_mass; scene%rayleigh_stiffness = rayleigh_stiffness
    end subroutine read_beam
 
-   subroutine read_mesh(unit, scene, stat, errmsg)
-      integer, intent(in) :: unit
+   subroutine read_mesh(scanned, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: elements
-      character(len=64) :: basis
+      character(len=keyword_length) :: basis
       namelist /mesh/ elements, basis
-      integer :: ios
+      character(len=:), allocatable :: record
+      integer :: ios, k
       character(len=256) :: iomsg
       elements = scene%elements
       basis = scene%basis
-      rewind (unit)
-      read (unit, nml=mesh, iostat=ios, iomsg=iomsg)
-      call read_status(unit, 'mesh', ios, iomsg, stat, errmsg)
+      stat = 0
+      errmsg = ''
+      do k = 1, size(scanned%items)
+         if (.not. scanned%in_group(k, 'mesh')) cycle
+         record = scanned%record(k)
+         read (record, nml=mesh, iostat=ios, iomsg=iomsg)
+         if (read_failed(ios, iomsg, scanned%label(k), stat, errmsg)) return
+      end do
       scene%elements = elements
       scene%basis = lowercase(basis)
    end subroutine read_mesh
 
-   subroutine read_analysis(unit, scene, stat, errmsg)
-      integer, intent(in) :: unit
+   subroutine read_analysis(scanned, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      character(len=64) :: kind
+      character(len=keyword_length) :: kind
       integer :: modes
       namelist /analysis/ kind, modes
-      integer :: ios
+      character(len=:), allocatable :: record
+      integer :: ios, k
       character(len=256) :: iomsg
       kind = scene%kind
       modes = scene%modes
-      rewind (unit)
-      read (unit, nml=analysis, iostat=ios, iomsg=iomsg)
-      call read_status(unit, 'analysis', ios, iomsg, stat, errmsg)
+      stat = 0
+      errmsg = ''
+      do k = 1, size(scanned%items)
+         if (.not. scanned%in_group(k, 'analysis')) cycle
+         record = scanned%record(k)
+         read (record, nml=analysis, iostat=ios, iomsg=iomsg)
+         if (read_failed(ios, iomsg, scanned%label(k), stat, errmsg)) return
+      end do
       scene%kind = lowercase(kind)
       scene%modes = modes
    end subroutine read_analysis
 
-   subroutine read_obstacles(unit, scene, stat, errmsg)
-      integer, intent(in) :: unit
+   !> &obstacles: which elements were given comes from the scanner. An obstacle takes its
+   !! defaults (x_from = L, x_to = x_from, level_to = level_from) for what is not given;
+   !! side and level_from are required; nothing may be given beyond `count`.
+   subroutine read_obstacles(scanned, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: count
-      character(len=64) :: side(max_obstacles)
+      character(len=keyword_length) :: side(max_obstacles)
       real(dp), dimension(max_obstacles) :: x_from, x_to, level_from, level_to
       namelist /obstacles/ count, side, x_from, x_to, level_from, level_to
-      integer :: ios, i
+      character(len=:), allocatable :: record
+      type(namelist_variable), allocatable :: table(:)
+      integer :: ios, i, k
       character(len=256) :: iomsg
-      character(len=16) :: number
+      character(len=:), allocatable :: number
       count = 0
       side = ''
-      x_from = unset; x_to = unset; level_from = unset; level_to = unset
-      rewind (unit)
-      read (unit, nml=obstacles, iostat=ios, iomsg=iomsg)
-      call read_status(unit, 'obstacles', ios, iomsg, stat, errmsg)
-      if (stat /= 0) return
-      write (number, '(i0)') count
+      x_from = 0; x_to = 0; level_from = 0; level_to = 0
+      stat = 0
+      errmsg = ''
+      do k = 1, size(scanned%items)
+         if (.not. scanned%in_group(k, 'obstacles')) cycle
+         record = scanned%record(k)
+         read (record, nml=obstacles, iostat=ios, iomsg=iomsg)
+         if (read_failed(ios, iomsg, scanned%label(k), stat, errmsg)) return
+      end do
+      stat = 1
       if (count < 0 .or. count > max_obstacles) then
-         stat = 1
-         write (errmsg, '(a,i0,a)') '&obstacles count = '//trim(number)//' is outside [0, ', max_obstacles, ']'
+         table = scene_variables()
+         errmsg = '&obstacles count = '//integer_text(count)//' is outside '// &
+                  range_text(table(variable_index(table, 'obstacles', 'count')))
          return
       end if
       do i = count + 1, max_obstacles
-         if (side(i) /= '' .or. .not. is_unset(x_from(i)) .or. .not. is_unset(x_to(i)) .or. &
-             .not. is_unset(level_from(i)) .or. .not. is_unset(level_to(i))) then
-            stat = 1
-            write (errmsg, '(a,i0,a)') '&obstacles: obstacle ', i, ' is described but count = '// &
-               trim(number)//'; raise count or remove it'
+         if (given(i)) then
+            errmsg = '&obstacles: obstacle '//integer_text(i)//' is described but count = '//integer_text(count)// &
+                     '; raise count or remove it'
             return
          end if
       end do
       deallocate (scene%obstacles)
       allocate (scene%obstacles(count))
       do i = 1, count
-         write (number, '(i0)') i
-         if (side(i) == '') then
-            stat = 1
-            errmsg = '&obstacles side('//trim(number)//') is missing: give ''below'' or ''above'''
+         number = integer_text(i)
+         if (.not. scanned%is_given('obstacles', 'side', i)) then
+            errmsg = '&obstacles side('//number//') is missing: give ''below'' or ''above'''
             return
          end if
-         if (is_unset(level_from(i))) then
-            stat = 1
-            errmsg = '&obstacles level_from('//trim(number)//') is missing: give the height (m) of the obstacle surface'
+         if (.not. scanned%is_given('obstacles', 'level_from', i)) then
+            errmsg = '&obstacles level_from('//number//') is missing: give the height (m) of the obstacle surface'
             return
          end if
          scene%obstacles(i)%side = lowercase(side(i))
-         scene%obstacles(i)%x_from = merge(scene%length, x_from(i), is_unset(x_from(i)))
-         scene%obstacles(i)%x_to = merge(scene%obstacles(i)%x_from, x_to(i), is_unset(x_to(i)))
+         scene%obstacles(i)%x_from = merge(x_from(i), scene%length, scanned%is_given('obstacles', 'x_from', i))
+         scene%obstacles(i)%x_to = merge(x_to(i), scene%obstacles(i)%x_from, scanned%is_given('obstacles', 'x_to', i))
          scene%obstacles(i)%level_from = level_from(i)
-         scene%obstacles(i)%level_to = merge(level_from(i), level_to(i), is_unset(level_to(i)))
+         scene%obstacles(i)%level_to = merge(level_to(i), level_from(i), scanned%is_given('obstacles', 'level_to', i))
       end do
+      stat = 0
+   contains
+      logical function given(i)
+         integer, intent(in) :: i
+         given = scanned%is_given('obstacles', 'side', i) .or. scanned%is_given('obstacles', 'x_from', i) .or. &
+                 scanned%is_given('obstacles', 'x_to', i) .or. scanned%is_given('obstacles', 'level_from', i) .or. &
+                 scanned%is_given('obstacles', 'level_to', i)
+      end function given
    end subroutine read_obstacles
 
-   subroutine read_impact(unit, scene, stat, errmsg)
-      integer, intent(in) :: unit
+   subroutine read_impact(scanned, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp) :: restitution
-      character(len=64) :: separating_points
+      character(len=keyword_length) :: separating_points
       namelist /impact/ restitution, separating_points
-      integer :: ios
+      character(len=:), allocatable :: record
+      integer :: ios, k
       character(len=256) :: iomsg
       restitution = scene%restitution
       separating_points = scene%separating_points
-      rewind (unit)
-      read (unit, nml=impact, iostat=ios, iomsg=iomsg)
-      call read_status(unit, 'impact', ios, iomsg, stat, errmsg)
+      stat = 0
+      errmsg = ''
+      do k = 1, size(scanned%items)
+         if (.not. scanned%in_group(k, 'impact')) cycle
+         record = scanned%record(k)
+         read (record, nml=impact, iostat=ios, iomsg=iomsg)
+         if (read_failed(ios, iomsg, scanned%label(k), stat, errmsg)) return
+      end do
       scene%restitution = restitution
       scene%separating_points = lowercase(separating_points)
    end subroutine read_impact
 
-   subroutine read_time(unit, scene, stat, errmsg)
-      integer, intent(in) :: unit
+   subroutine read_time(scanned, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp) :: t_end, dt, theta, gamma
-      character(len=64) :: scheme
+      character(len=keyword_length) :: scheme
       namelist /time/ t_end, dt, scheme, theta, gamma
-      integer :: ios
+      character(len=:), allocatable :: record
+      integer :: ios, k
       character(len=256) :: iomsg
       t_end = scene%t_end; dt = scene%dt; scheme = scene%scheme
       theta = scene%theta; gamma = scene%gamma
-      rewind (unit)
-      read (unit, nml=time, iostat=ios, iomsg=iomsg)
-      call read_status(unit, 'time', ios, iomsg, stat, errmsg)
+      stat = 0
+      errmsg = ''
+      do k = 1, size(scanned%items)
+         if (.not. scanned%in_group(k, 'time')) cycle
+         record = scanned%record(k)
+         read (record, nml=time, iostat=ios, iomsg=iomsg)
+         if (read_failed(ios, iomsg, scanned%label(k), stat, errmsg)) return
+      end do
       scene%t_end = t_end; scene%dt = dt; scene%scheme = lowercase(scheme)
       scene%theta = theta; scene%gamma = gamma
    end subroutine read_time
 
-   subroutine read_initial(unit, scene, stat, errmsg)
-      integer, intent(in) :: unit
+   subroutine read_initial(scanned, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      character(len=64) :: displacement, velocity
+      character(len=keyword_length) :: displacement, velocity
       integer :: displacement_mode, velocity_mode
       real(dp) :: displacement_amplitude, velocity_amplitude
-      character(len=len(scene%from_file)) :: from_file
+      character(len=path_length) :: from_file
       namelist /initial/ displacement, displacement_mode, displacement_amplitude, &
          velocity, velocity_mode, velocity_amplitude, from_file
-      integer :: ios
+      character(len=:), allocatable :: record
+      integer :: ios, k
       character(len=256) :: iomsg
       displacement = scene%displacement; displacement_mode = scene%displacement_mode
       displacement_amplitude = scene%displacement_amplitude
       velocity = scene%velocity; velocity_mode = scene%velocity_mode
       velocity_amplitude = scene%velocity_amplitude
       from_file = scene%from_file
-      rewind (unit)
-      read (unit, nml=initial, iostat=ios, iomsg=iomsg)
-      call read_status(unit, 'initial', ios, iomsg, stat, errmsg)
+      stat = 0
+      errmsg = ''
+      do k = 1, size(scanned%items)
+         if (.not. scanned%in_group(k, 'initial')) cycle
+         record = scanned%record(k)
+         read (record, nml=initial, iostat=ios, iomsg=iomsg)
+         if (read_failed(ios, iomsg, scanned%label(k), stat, errmsg)) return
+      end do
       scene%displacement = lowercase(displacement); scene%displacement_mode = displacement_mode
       scene%displacement_amplitude = displacement_amplitude
       scene%velocity = lowercase(velocity); scene%velocity_mode = velocity_mode
@@ -382,8 +354,8 @@ contains
       scene%from_file = from_file
    end subroutine read_initial
 
-   subroutine read_load(unit, scene, stat, errmsg)
-      integer, intent(in) :: unit
+   subroutine read_load(scanned, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
@@ -391,81 +363,95 @@ contains
       real(dp) :: point_force, point_position, point_frequency, base_amplitude, base_frequency
       namelist /load/ distributed, distributed_frequency, distributed_phase, point_force, &
          point_position, point_frequency, base_amplitude, base_frequency
-      integer :: ios
+      character(len=:), allocatable :: record
+      integer :: ios, k
       character(len=256) :: iomsg
       distributed = scene%distributed; distributed_frequency = scene%distributed_frequency
       distributed_phase = scene%distributed_phase; point_force = scene%point_force
-      point_position = scene%length; point_frequency = scene%point_frequency
+      point_position = scene%length; point_frequency = scene%point_frequency   ! default: the tip
       base_amplitude = scene%base_amplitude; base_frequency = scene%base_frequency
-      rewind (unit)
-      read (unit, nml=load, iostat=ios, iomsg=iomsg)
-      call read_status(unit, 'load', ios, iomsg, stat, errmsg)
+      stat = 0
+      errmsg = ''
+      do k = 1, size(scanned%items)
+         if (.not. scanned%in_group(k, 'load')) cycle
+         record = scanned%record(k)
+         read (record, nml=load, iostat=ios, iomsg=iomsg)
+         if (read_failed(ios, iomsg, scanned%label(k), stat, errmsg)) return
+      end do
       scene%distributed = distributed; scene%distributed_frequency = distributed_frequency
       scene%distributed_phase = distributed_phase; scene%point_force = point_force
       scene%point_position = point_position; scene%point_frequency = point_frequency
       scene%base_amplitude = base_amplitude; scene%base_frequency = base_frequency
    end subroutine read_load
 
-   subroutine read_solver(unit, scene, stat, errmsg)
-      integer, intent(in) :: unit
+   subroutine read_solver(scanned, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      character(len=64) :: contact_solver
+      character(len=keyword_length) :: contact_solver
       integer :: contact_max_iterations
       namelist /solver/ contact_solver, contact_max_iterations
-      integer :: ios
+      character(len=:), allocatable :: record
+      integer :: ios, k
       character(len=256) :: iomsg
       contact_solver = scene%contact_solver
       contact_max_iterations = scene%contact_max_iterations
-      rewind (unit)
-      read (unit, nml=solver, iostat=ios, iomsg=iomsg)
-      call read_status(unit, 'solver', ios, iomsg, stat, errmsg)
+      stat = 0
+      errmsg = ''
+      do k = 1, size(scanned%items)
+         if (.not. scanned%in_group(k, 'solver')) cycle
+         record = scanned%record(k)
+         read (record, nml=solver, iostat=ios, iomsg=iomsg)
+         if (read_failed(ios, iomsg, scanned%label(k), stat, errmsg)) return
+      end do
       scene%contact_solver = lowercase(contact_solver)
       scene%contact_max_iterations = contact_max_iterations
    end subroutine read_solver
 
-   subroutine read_output(unit, scene, stat, errmsg)
-      integer, intent(in) :: unit
+   !> &output; `points` are the leading elements given (points(1), points(2), ...).
+   subroutine read_output(scanned, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      character(len=len(scene%file)) :: file
+      character(len=path_length) :: file
       integer :: every, field_every
       logical :: text, progress
       real(dp) :: points(max_points), measure_from, checkpoint_seconds, episode_gap
       namelist /output/ file, every, text, progress, field_every, points, measure_from, checkpoint_seconds, &
          episode_gap
-      integer :: ios, count_points
+      character(len=:), allocatable :: record
+      integer :: ios, k, count_points
       character(len=256) :: iomsg
       file = scene%file; every = scene%every; text = scene%text; progress = scene%progress
       field_every = scene%field_every; measure_from = scene%measure_from
       checkpoint_seconds = scene%checkpoint_seconds; episode_gap = scene%episode_gap
-      points = unset
-      rewind (unit)
-      read (unit, nml=output, iostat=ios, iomsg=iomsg)
-      call read_status(unit, 'output', ios, iomsg, stat, errmsg)
+      points = 0
+      stat = 0
+      errmsg = ''
+      do k = 1, size(scanned%items)
+         if (.not. scanned%in_group(k, 'output')) cycle
+         record = scanned%record(k)
+         read (record, nml=output, iostat=ios, iomsg=iomsg)
+         if (read_failed(ios, iomsg, scanned%label(k), stat, errmsg)) return
+      end do
       scene%file = file; scene%every = every; scene%text = text; scene%progress = progress
       scene%field_every = field_every; scene%measure_from = measure_from
       scene%checkpoint_seconds = checkpoint_seconds; scene%episode_gap = episode_gap
-      ! the points given are the leading ones of the list
       count_points = 0
       do while (count_points < max_points)
-         if (is_unset(points(count_points + 1))) exit
+         if (.not. scanned%is_given('output', 'points', count_points + 1)) exit
          count_points = count_points + 1
+      end do
+      do k = count_points + 1, max_points
+         if (scanned%is_given('output', 'points', k)) then
+            stat = 1
+            errmsg = '&output points('//integer_text(k)//') is given but points('//integer_text(count_points + 1)// &
+                     ') is not: list the observation points from points(1) on, without gaps'
+            return
+         end if
       end do
       scene%points = points(1:count_points)
    end subroutine read_output
-
-   !> ASCII lower case.
-   pure function lowercase(text) result(lower)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: lower
-      integer :: i, code
-      lower = text
-      do i = 1, len(text)
-         code = iachar(text(i:i))
-         if (code >= iachar('A') .and. code <= iachar('Z')) lower(i:i) = achar(code + 32)
-      end do
-   end function lowercase
 end module vibrobeam_input

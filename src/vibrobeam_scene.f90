@@ -1,23 +1,41 @@
 !> The scene: every input value of a run, resolved (defaults filled in) and validated
-!! (INTERFACE.md, "Input"). Reading the namelist file is `vibrobeam_input`'s job; this
-!! module knows what values are allowed and how to list them with their units.
+!! (docs/input.md). Reading the namelist file is `vibrobeam_input`'s job; this
+!! module knows what values are allowed (`scene_variables`, the one table of every
+!! variable's kind, extent, longest string, hard range and choices, which both the file
+!! scanner and `validate_scene` use) and how to list them with their units.
+!!
+!! The hard ranges bound every input so that the quantities the model derives from them
+!! stay finite and normal in double precision (docs/input.md, "Hard limits"): with
+!! 1e-9 <= L <= 1e6 m, N <= 1e6, 1 <= E <= 1e13 Pa, 1e-2 <= rho <= 1e6 kg/m^3,
+!! 1e-20 <= S <= 1e4 m^2, 1e-42 <= I <= 1e8 m^4 (or 1e-30 <= k2 <= 1e30), dt <= 1e12 s,
+!! the largest of k2 = EI/(rho S), EI/h^3, theta^2 dt^2 EI/h^3 (the stiffness part of
+!! W = M + theta^2 dt^2 K), rho S A Omega^2 and the discrete omega_max^2 stay below
+!! 1e110 and the smallest of rho S h^3 above 1e-70 (verification/unit/test_input_limits.f90
+!! evaluates them at the corners).
 module vibrobeam_scene
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
-   use vibrobeam_kinds, only: dp
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
+   use vibrobeam_namelist_values, only: namelist_variable, variable_index, range_text, choices_text, &
+      kind_real, kind_integer, kind_logical, kind_string
    implicit none
    private
    public :: scene_type, obstacle_type, scene_entry, max_obstacles, max_points, unset
    public :: validate_scene, scene_entries, format_scene, rho_s_of, ei_of, is_unset
+   public :: scene_variables, path_length, keyword_length, max_steps, step_count, unknowns_of
 
    integer, parameter :: max_obstacles = 32       !! most obstacles a scene may hold
    integer, parameter :: max_points = 64          !! most observation points (&output points)
    real(dp), parameter :: unset = -huge(1.0_dp)   !! marks a real the user did not give
-   integer, parameter :: name_length = 64, text_length = 256
+   integer, parameter :: name_length = 64
+   integer, parameter :: path_length = 4096       !! longest file name (&output file, &initial from_file)
+   integer, parameter :: keyword_length = 16      !! longest keyword ('hermite', 'dynamics', ...)
+   !> Most time steps of a run: nint(t_end/dt) must fit a 64-bit count with room to spare.
+   integer(int64), parameter :: max_steps = 1000000000000000000_int64
 
-   !> One obstacle of `&obstacles` (INTERFACE.md).
+   !> One obstacle of `&obstacles` (docs/input.md).
    type :: obstacle_type
-      character(len=16) :: side = 'below'   !! 'below' (bounds u from below) | 'above'
+      character(len=keyword_length) :: side = 'below'   !! 'below' (bounds u from below) | 'above'
       real(dp) :: x_from = 0, x_to = 0      !! extent along the beam (m)
       real(dp) :: level_from = 0, level_to = 0   !! surface height at x_from, x_to (m)
    end type obstacle_type
@@ -35,36 +53,36 @@ module vibrobeam_scene
       real(dp) :: rayleigh_stiffness = 0      !! b in C = a M + b K (s)
       ! &mesh
       integer :: elements = 32
-      character(len=16) :: basis = 'hermite'
+      character(len=keyword_length) :: basis = 'hermite'
       ! &analysis
-      character(len=16) :: kind = 'dynamics'
+      character(len=keyword_length) :: kind = 'dynamics'
       integer :: modes = 6
       ! &obstacles
       type(obstacle_type), allocatable :: obstacles(:)
       ! &impact
       real(dp) :: restitution = 1
-      character(len=16) :: separating_points = 'elastic'   !! restitution of active points moving away
+      character(len=keyword_length) :: separating_points = 'elastic'   !! restitution of active points moving away
       ! &time
       real(dp) :: t_end = 1, dt = 1e-4_dp
-      character(len=16) :: scheme = 'velocity'
+      character(len=keyword_length) :: scheme = 'velocity'
       real(dp) :: theta = 0.5_dp, gamma = 0.5_dp
       ! &initial
-      character(len=16) :: displacement = 'zero'
+      character(len=keyword_length) :: displacement = 'zero'
       integer :: displacement_mode = 1
       real(dp) :: displacement_amplitude = 0
-      character(len=16) :: velocity = 'zero'
+      character(len=keyword_length) :: velocity = 'zero'
       integer :: velocity_mode = 1
       real(dp) :: velocity_amplitude = 0
-      character(len=text_length) :: from_file = ''   !! continue from this results file ('' = no)
+      character(len=path_length) :: from_file = ''   !! continue from this results file ('' = no)
       ! &load
       real(dp) :: distributed = 0, distributed_frequency = 0, distributed_phase = 0
       real(dp) :: point_force = 0, point_position = unset, point_frequency = 0
       real(dp) :: base_amplitude = 0, base_frequency = 0
       ! &solver (vibrobeam extension)
-      character(len=16) :: contact_solver = 'auto'
+      character(len=keyword_length) :: contact_solver = 'auto'
       integer :: contact_max_iterations = 0
       ! &output
-      character(len=text_length) :: file = 'results/vibrobeam.h5'
+      character(len=path_length) :: file = 'results/vibrobeam.h5'
       integer :: every = 10                   !! histories every `every` steps
       integer :: field_every = 0              !! field snapshots every `field_every` steps (0: = every)
       logical :: text = .true.
@@ -82,21 +100,22 @@ module vibrobeam_scene
       character(len=8) :: kind = 'real'           !! 'real' | 'integer' | 'string' | 'logical'
       real(dp) :: real_value = 0
       integer :: integer_value = 0
-      character(len=text_length) :: string_value = ''
+      character(len=path_length) :: string_value = ''
       logical :: logical_value = .false.
       character(len=16) :: unit = ''              !! SI unit, '' when dimensionless
    end type scene_entry
 
 contains
 
-   !> True when `value` is the `unset` marker (a NaN is a given value, not unset). Uses no
-   !! ordered comparison on a NaN, which traps under -ffpe-trap=invalid.
+   !> True when `value` is the `unset` marker (a NaN or -Inf is a given value, not unset).
+   !! Uses no comparison on a NaN, which traps under -ffpe-trap=invalid. The reader decides
+   !! what was given from the file's tokens; the marker serves scenes built in code.
    elemental logical function is_unset(value)
       real(dp), intent(in) :: value
-      if (ieee_is_nan(value)) then
-         is_unset = .false.
+      if (ieee_is_finite(value)) then
+         is_unset = value <= unset   ! finite and <= -huge: the marker itself; -Inf is not unset
       else
-         is_unset = value <= unset
+         is_unset = .false.
       end if
    end function is_unset
 
@@ -120,93 +139,235 @@ contains
       if (physical(scene)) ei_of = scene%youngs_modulus*scene%inertia
    end function ei_of
 
-   !> Check every value against what is allowed. On the first violation stat = 1 and
-   !! errmsg reads like '&impact restitution = 1.5 is outside [0, 1]'.
+   !> Every input variable: group, name, kind, extent, longest string, hard range, allowed
+   !! keywords, unit. The file scanner refuses what this table does not allow before any
+   !! value is converted; `validate_scene` checks the converted values (and scenes built
+   !! in code) against the same table, then the relations between variables.
+   pure function scene_variables() result(table)
+      type(namelist_variable), allocatable :: table(:)
+      integer, parameter :: many = huge(1)
+      table = [ &
+         real_variable('beam', 'length', 1e-9_dp, 1e6_dp, 'm'), &
+         real_variable('beam', 'k2', 1e-30_dp, 1e30_dp, 'm^4/s^2'), &
+         real_variable('beam', 'youngs_modulus', 1.0_dp, 1e13_dp, 'Pa'), &
+         real_variable('beam', 'density', 1e-2_dp, 1e6_dp, 'kg/m^3'), &
+         real_variable('beam', 'area', 1e-20_dp, 1e4_dp, 'm^2'), &
+         real_variable('beam', 'inertia', 1e-42_dp, 1e8_dp, 'm^4'), &
+         real_variable('beam', 'rayleigh_mass', 0.0_dp, 1e12_dp, '1/s'), &
+         real_variable('beam', 'rayleigh_stiffness', 0.0_dp, 1e3_dp, 's'), &
+         integer_variable('mesh', 'elements', 1, 1000000), &
+         keyword_variable('mesh', 'basis', 'hermite|bspline'), &
+         keyword_variable('analysis', 'kind', 'modes|static|dynamics'), &
+         integer_variable('analysis', 'modes', 1, 2000000), &
+         integer_variable('obstacles', 'count', 0, max_obstacles), &
+         keyword_variable('obstacles', 'side', 'below|above', max_obstacles), &
+         real_variable('obstacles', 'x_from', 0.0_dp, 1e6_dp, 'm', max_obstacles), &
+         real_variable('obstacles', 'x_to', 0.0_dp, 1e6_dp, 'm', max_obstacles), &
+         real_variable('obstacles', 'level_from', -1e6_dp, 1e6_dp, 'm', max_obstacles), &
+         real_variable('obstacles', 'level_to', -1e6_dp, 1e6_dp, 'm', max_obstacles), &
+         real_variable('impact', 'restitution', 0.0_dp, 1.0_dp, ''), &
+         keyword_variable('impact', 'separating_points', 'elastic|restitution'), &
+         real_variable('time', 't_end', 1e-15_dp, 1e12_dp, 's'), &
+         real_variable('time', 'dt', 1e-18_dp, 1e12_dp, 's'), &
+         keyword_variable('time', 'scheme', 'velocity|position'), &
+         real_variable('time', 'theta', 0.5_dp, 1.0_dp, ''), &
+         real_variable('time', 'gamma', 0.0_dp, 1.0_dp, ''), &
+         keyword_variable('initial', 'displacement', 'zero|mode|static'), &
+         integer_variable('initial', 'displacement_mode', 1, 100), &
+         real_variable('initial', 'displacement_amplitude', -1e6_dp, 1e6_dp, 'm'), &
+         keyword_variable('initial', 'velocity', 'zero|mode|uniform'), &
+         integer_variable('initial', 'velocity_mode', 1, 100), &
+         real_variable('initial', 'velocity_amplitude', -1e8_dp, 1e8_dp, 'm/s'), &
+         path_variable('initial', 'from_file'), &
+         real_variable('load', 'distributed', -1e15_dp, 1e15_dp, 'N/m'), &
+         real_variable('load', 'distributed_frequency', 0.0_dp, 1e15_dp, 'rad/s'), &
+         real_variable('load', 'distributed_phase', -1e6_dp, 1e6_dp, 'rad'), &
+         real_variable('load', 'point_force', -1e15_dp, 1e15_dp, 'N'), &
+         real_variable('load', 'point_position', 0.0_dp, 1e6_dp, 'm'), &
+         real_variable('load', 'point_frequency', 0.0_dp, 1e15_dp, 'rad/s'), &
+         real_variable('load', 'base_amplitude', -1e6_dp, 1e6_dp, 'm'), &
+         real_variable('load', 'base_frequency', 0.0_dp, 1e15_dp, 'rad/s'), &
+         keyword_variable('solver', 'contact_solver', 'auto|delassus|band'), &
+         integer_variable('solver', 'contact_max_iterations', 0, many), &
+         path_variable('output', 'file'), &
+         integer_variable('output', 'every', 1, many), &
+         logical_variable('output', 'text'), &
+         logical_variable('output', 'progress'), &
+         integer_variable('output', 'field_every', 0, many), &
+         real_variable('output', 'points', 0.0_dp, 1e6_dp, 'm', max_points), &
+         real_variable('output', 'measure_from', 0.0_dp, 1e12_dp, 's'), &
+         real_variable('output', 'checkpoint_seconds', 0.0_dp, 1e9_dp, 's'), &
+         real_variable('output', 'episode_gap', 1e-18_dp, 1e12_dp, 's')]
+   contains
+      pure function real_variable(group, name, lowest, highest, unit, extent) result(variable)
+         character(len=*), intent(in) :: group, name, unit
+         real(dp), intent(in) :: lowest, highest
+         integer, intent(in), optional :: extent
+         type(namelist_variable) :: variable
+         variable = namelist_variable(group=group, name=name, kind=kind_real, lowest=lowest, highest=highest, unit=unit)
+         if (present(extent)) variable%extent = extent
+      end function real_variable
+      pure function integer_variable(group, name, lowest, highest) result(variable)
+         character(len=*), intent(in) :: group, name
+         integer, intent(in) :: lowest, highest
+         type(namelist_variable) :: variable
+         variable = namelist_variable(group=group, name=name, kind=kind_integer, lowest_integer=lowest, &
+                                      highest_integer=highest)
+      end function integer_variable
+      pure function keyword_variable(group, name, choices, extent) result(variable)
+         character(len=*), intent(in) :: group, name, choices
+         integer, intent(in), optional :: extent
+         type(namelist_variable) :: variable
+         variable = namelist_variable(group=group, name=name, kind=kind_string, max_length=keyword_length, &
+                                      choices=choices)
+         if (present(extent)) variable%extent = extent
+      end function keyword_variable
+      pure function path_variable(group, name) result(variable)
+         character(len=*), intent(in) :: group, name
+         type(namelist_variable) :: variable
+         variable = namelist_variable(group=group, name=name, kind=kind_string, max_length=path_length)
+      end function path_variable
+      pure function logical_variable(group, name) result(variable)
+         character(len=*), intent(in) :: group, name
+         type(namelist_variable) :: variable
+         variable = namelist_variable(group=group, name=name, kind=kind_logical)
+      end function logical_variable
+   end function scene_variables
+
+   !> Unknowns J of the mesh: 2N (Hermite) or N + 1 (B-splines).
+   pure integer function unknowns_of(scene)
+      type(scene_type), intent(in) :: scene
+      unknowns_of = merge(2*scene%elements, scene%elements + 1, scene%basis == 'hermite')
+   end function unknowns_of
+
+   !> Time steps of a dynamics run, nint(t_end/dt) (at least 1), as a 64-bit count; the
+   !! scene must be valid (validate_scene bounds t_end/dt by max_steps).
+   pure integer(int64) function step_count(scene)
+      type(scene_type), intent(in) :: scene
+      step_count = max(1_int64, nint(scene%t_end/scene%dt, int64))
+   end function step_count
+
+   !> Check every value against what is allowed: first each against its hard range and
+   !! keywords (`scene_variables`), then the relations that matter for the analysis asked
+   !! for. On the first violation stat = 1 and errmsg reads like
+   !! '&impact restitution = 1.5 is outside [0, 1]'.
    subroutine validate_scene(scene, stat, errmsg)
       type(scene_type), intent(in) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      type(namelist_variable), allocatable :: table(:)
       integer :: i
-      character(len=8) :: index
+      character(len=:), allocatable :: item
       stat = 0
       errmsg = ''
+      table = scene_variables()
       ! &beam
-      call positive('beam', 'length', scene%length)
-      call positive('beam', 'k2', scene%k2)
+      call check_real('beam', 'length', scene%length)
+      call check_real('beam', 'k2', scene%k2)
       if (physical(scene)) then
-         call given_positive('youngs_modulus', scene%youngs_modulus)
-         call given_positive('density', scene%density)
-         call given_positive('area', scene%area)
-         call given_positive('inertia', scene%inertia)
+         call check_given('youngs_modulus', scene%youngs_modulus)
+         call check_given('density', scene%density)
+         call check_given('area', scene%area)
+         call check_given('inertia', scene%inertia)
       end if
-      call in_range('beam', 'rayleigh_mass', scene%rayleigh_mass, 0.0_dp, huge(1.0_dp))
-      call in_range('beam', 'rayleigh_stiffness', scene%rayleigh_stiffness, 0.0_dp, huge(1.0_dp))
+      call check_real('beam', 'rayleigh_mass', scene%rayleigh_mass)
+      call check_real('beam', 'rayleigh_stiffness', scene%rayleigh_stiffness)
       ! &mesh
-      call integer_in_range('mesh', 'elements', scene%elements, 1, 1000000)
-      call one_of('mesh', 'basis', scene%basis, [character(len=16) :: 'hermite', 'bspline'])
-      ! &analysis
-      call one_of('analysis', 'kind', scene%kind, [character(len=16) :: 'modes', 'static', 'dynamics'])
+      call check_integer('mesh', 'elements', scene%elements)
+      call check_keyword('mesh', 'basis', scene%basis)
+      ! &analysis: `modes` is bounded by the mesh only when modes are computed
+      call check_keyword('analysis', 'kind', scene%kind)
+      call check_integer('analysis', 'modes', scene%modes)
       if (stat /= 0) return
-      call integer_in_range('analysis', 'modes', scene%modes, 1, &
-                            merge(2*scene%elements, scene%elements + 1, scene%basis == 'hermite'))
+      if (scene%kind == 'modes') call integer_in_range('analysis', 'modes', scene%modes, 1, unknowns_of(scene), &
+                                                       ', the unknowns J of the mesh')
       ! &obstacles
+      if (size(scene%obstacles) > max_obstacles) &
+         call fail('&obstacles count = '//integer_text(size(scene%obstacles))//' is outside [0, '// &
+                   integer_text(max_obstacles)//']')
       do i = 1, size(scene%obstacles)
-         write (index, '(i0)') i
+         item = '('//integer_text(i)//')'
          associate (o => scene%obstacles(i))
-            call one_of('obstacles', 'side('//trim(index)//')', o%side, [character(len=16) :: 'below', 'above'])
-            call in_range('obstacles', 'x_from('//trim(index)//')', o%x_from, 0.0_dp, scene%length)
+            call check_keyword('obstacles', 'side', o%side, item)
+            call check_real('obstacles', 'x_from', o%x_from, item)
+            call check_real('obstacles', 'x_to', o%x_to, item)
+            call check_real('obstacles', 'level_from', o%level_from, item)
+            call check_real('obstacles', 'level_to', o%level_to, item)
             if (stat /= 0) return
-            call in_range('obstacles', 'x_to('//trim(index)//')', o%x_to, o%x_from, scene%length)
-            call finite('obstacles', 'level_from('//trim(index)//')', o%level_from)
-            call finite('obstacles', 'level_to('//trim(index)//')', o%level_to)
+            call in_range('obstacles', 'x_from'//item, o%x_from, 0.0_dp, scene%length, ' m, [0, length]')
+            call in_range('obstacles', 'x_to'//item, o%x_to, o%x_from, scene%length, ' m, [x_from'//item//', length]')
          end associate
       end do
       ! &impact
-      call in_range('impact', 'restitution', scene%restitution, 0.0_dp, 1.0_dp)
-      call one_of('impact', 'separating_points', scene%separating_points, [character(len=16) :: 'elastic', 'restitution'])
-      ! &time
-      call positive('time', 't_end', scene%t_end)
-      call positive('time', 'dt', scene%dt)
+      call check_real('impact', 'restitution', scene%restitution)
+      call check_keyword('impact', 'separating_points', scene%separating_points)
+      ! &time: the step count matters only when time is stepped
+      call check_real('time', 't_end', scene%t_end)
+      call check_real('time', 'dt', scene%dt)
+      call check_keyword('time', 'scheme', scene%scheme)
+      call check_real('time', 'theta', scene%theta)
+      call check_real('time', 'gamma', scene%gamma)
       if (stat /= 0) return
-      call in_range('time', 'dt', scene%dt, tiny(1.0_dp), scene%t_end)
-      call one_of('time', 'scheme', scene%scheme, [character(len=16) :: 'velocity', 'position'])
-      call in_range('time', 'theta', scene%theta, 0.5_dp, 1.0_dp)
-      call in_range('time', 'gamma', scene%gamma, 0.0_dp, 1.0_dp)
+      if (scene%kind == 'dynamics') then
+         call in_range('time', 'dt', scene%dt, 0.0_dp, scene%t_end, ' s, (0, t_end]')
+         ! t_end/dt <= 1e30 by the hard ranges: finite, compared before any integer conversion
+         if (stat == 0 .and. scene%t_end/scene%dt > real(max_steps, dp)) &
+            call fail('&time dt = '//real_text(scene%dt)//' with t_end = '//real_text(scene%t_end)//' makes '// &
+                      rounded(scene%t_end/scene%dt)//' steps: at most '//rounded(real(max_steps, dp))// &
+                      ' steps; raise dt or lower t_end')
+      end if
       ! &initial
-      call one_of('initial', 'displacement', scene%displacement, [character(len=16) :: 'zero', 'mode', 'static'])
-      call integer_in_range('initial', 'displacement_mode', scene%displacement_mode, 1, 100)
-      call finite('initial', 'displacement_amplitude', scene%displacement_amplitude)
-      call one_of('initial', 'velocity', scene%velocity, [character(len=16) :: 'zero', 'mode', 'uniform'])
-      call integer_in_range('initial', 'velocity_mode', scene%velocity_mode, 1, 100)
-      call finite('initial', 'velocity_amplitude', scene%velocity_amplitude)
+      call check_keyword('initial', 'displacement', scene%displacement)
+      call check_integer('initial', 'displacement_mode', scene%displacement_mode)
+      call check_real('initial', 'displacement_amplitude', scene%displacement_amplitude)
+      call check_keyword('initial', 'velocity', scene%velocity)
+      call check_integer('initial', 'velocity_mode', scene%velocity_mode)
+      call check_real('initial', 'velocity_amplitude', scene%velocity_amplitude)
       ! &load
-      call finite('load', 'distributed', scene%distributed)
-      call in_range('load', 'distributed_frequency', scene%distributed_frequency, 0.0_dp, huge(1.0_dp))
-      call finite('load', 'distributed_phase', scene%distributed_phase)
-      call finite('load', 'point_force', scene%point_force)
-      call in_range('load', 'point_position', scene%point_position, 0.0_dp, scene%length)
-      call in_range('load', 'point_frequency', scene%point_frequency, 0.0_dp, huge(1.0_dp))
-      call finite('load', 'base_amplitude', scene%base_amplitude)
-      call in_range('load', 'base_frequency', scene%base_frequency, 0.0_dp, huge(1.0_dp))
+      call check_real('load', 'distributed', scene%distributed)
+      call check_real('load', 'distributed_frequency', scene%distributed_frequency)
+      call check_real('load', 'distributed_phase', scene%distributed_phase)
+      call check_real('load', 'point_force', scene%point_force)
+      call check_real('load', 'point_position', scene%point_position)
+      if (stat /= 0) return
+      call in_range('load', 'point_position', scene%point_position, 0.0_dp, scene%length, ' m, [0, length]')
+      call check_real('load', 'point_frequency', scene%point_frequency)
+      call check_real('load', 'base_amplitude', scene%base_amplitude)
+      call check_real('load', 'base_frequency', scene%base_frequency)
       ! &solver
-      call one_of('solver', 'contact_solver', scene%contact_solver, [character(len=16) :: 'auto', 'delassus', 'band'])
-      call integer_in_range('solver', 'contact_max_iterations', scene%contact_max_iterations, 0, huge(1))
+      call check_keyword('solver', 'contact_solver', scene%contact_solver)
+      call check_integer('solver', 'contact_max_iterations', scene%contact_max_iterations)
       ! &output
-      if (len_trim(scene%file) == 0) call fail('&output file is empty; give a file name such as ''results/run.h5''')
-      call integer_in_range('output', 'every', scene%every, 1, huge(1))
-      call integer_in_range('output', 'field_every', scene%field_every, 0, huge(1))
+      if (len_trim(scene%file) == 0) call fail('&output file = '''' is empty: give a file name such as ''results/run.h5''')
+      call check_integer('output', 'every', scene%every)
+      call check_integer('output', 'field_every', scene%field_every)
       if (allocated(scene%points)) then
+         if (size(scene%points) > max_points) &
+            call fail('&output points: '//integer_text(size(scene%points))//' points; at most '//integer_text(max_points))
          do i = 1, size(scene%points)
-            write (index, '(i0)') i
-            call in_range('output', 'points('//trim(index)//')', scene%points(i), 0.0_dp, scene%length)
+            item = '('//integer_text(i)//')'
+            call check_real('output', 'points', scene%points(i), item)
+            if (stat /= 0) return
+            call in_range('output', 'points'//item, scene%points(i), 0.0_dp, scene%length, ' m, [0, length]')
          end do
       end if
-      call in_range('output', 'measure_from', scene%measure_from, 0.0_dp, huge(1.0_dp))
-      call in_range('output', 'checkpoint_seconds', scene%checkpoint_seconds, 0.0_dp, huge(1.0_dp))
-      if (.not. is_unset(scene%episode_gap)) &
-         call in_range('output', 'episode_gap', scene%episode_gap, 0.0_dp, huge(1.0_dp))
+      call check_real('output', 'measure_from', scene%measure_from)
+      call check_real('output', 'checkpoint_seconds', scene%checkpoint_seconds)
+      if (.not. is_unset(scene%episode_gap)) call check_real('output', 'episode_gap', scene%episode_gap)
 
    contains
+
+      !> A large count to 3 digits: '1.00e30'.
+      function rounded(value) result(text)
+         real(dp), intent(in) :: value
+         character(len=:), allocatable :: text
+         character(len=16) :: buffer
+         integer :: e, exponent
+         write (buffer, '(es10.2e3)') value
+         e = index(buffer, 'E')
+         read (buffer(e + 1:), *) exponent
+         text = trim(adjustl(buffer(1:e - 1)))//'e'//integer_text(exponent)
+      end function rounded
 
       subroutine fail(message)
          character(len=*), intent(in) :: message
@@ -215,67 +376,84 @@ contains
          errmsg = message
       end subroutine fail
 
-      subroutine finite(group, name, value)
+      !> The schema entry of group.name (every name used here is in the table).
+      function entry_of(group, name) result(variable)
+         character(len=*), intent(in) :: group, name
+         type(namelist_variable) :: variable
+         variable = table(variable_index(table, group, name))
+      end function entry_of
+
+      !> A real against its hard range: finite, inside [lowest, highest], and 0 or at least
+      !! `smallest_nonzero` in magnitude. `item` is '(i)' for array elements.
+      subroutine check_real(group, name, value, item)
          character(len=*), intent(in) :: group, name
          real(dp), intent(in) :: value
-         if (.not. ieee_is_finite(value)) &
-            call fail('&'//group//' '//name//' = '//real_text(value)//' is not a finite number')
-      end subroutine finite
-
-      subroutine in_range(group, name, value, low, high)
-         character(len=*), intent(in) :: group, name
-         real(dp), intent(in) :: value, low, high
-         call finite(group, name, value)
+         character(len=*), intent(in), optional :: item
+         type(namelist_variable) :: variable
+         character(len=:), allocatable :: label
          if (stat /= 0) return
-         if (value < low .or. value > high) call fail('&'//group//' '//name//' = '//real_text(value)// &
-                                                      ' is outside ['//real_text(low)//', '//real_text(high)//']')
-      end subroutine in_range
+         variable = entry_of(group, name)
+         label = '&'//group//' '//name
+         if (present(item)) label = label//item
+         if (.not. ieee_is_finite(value)) then
+            call fail(label//' = '//real_text(value)//' is not a finite number: allowed '//range_text(variable))
+         else if (value < variable%lowest .or. value > variable%highest) then
+            call fail(label//' = '//real_text(value)//' is outside '//range_text(variable))
+         else if (abs(value) > 0 .and. abs(value) < variable%smallest_nonzero) then
+            call fail(label//' = '//real_text(value)//' is too small in magnitude: write 0 or a magnitude of at least '// &
+                      real_text(variable%smallest_nonzero)//'; allowed '//range_text(variable))
+         end if
+      end subroutine check_real
 
-      subroutine positive(group, name, value)
+      subroutine check_integer(group, name, value)
          character(len=*), intent(in) :: group, name
-         real(dp), intent(in) :: value
-         call finite(group, name, value)
-         if (stat /= 0) return
-         if (value <= 0) call fail('&'//group//' '//name//' = '//real_text(value)//' must be > 0')
-      end subroutine positive
+         integer, intent(in) :: value
+         type(namelist_variable) :: variable
+         variable = entry_of(group, name)
+         call integer_in_range(group, name, value, variable%lowest_integer, variable%highest_integer, '')
+      end subroutine check_integer
 
-      subroutine given_positive(name, value)
+      subroutine check_keyword(group, name, value, item)
+         character(len=*), intent(in) :: group, name, value
+         character(len=*), intent(in), optional :: item
+         type(namelist_variable) :: variable
+         character(len=:), allocatable :: label
+         if (stat /= 0) return
+         variable = entry_of(group, name)
+         if (index('|'//trim(variable%choices)//'|', '|'//trim(value)//'|') > 0 .and. len_trim(value) > 0) return
+         label = '&'//group//' '//name
+         if (present(item)) label = label//item
+         call fail(label//' = '''//trim(value)//''' is not one of '//choices_text(variable))
+      end subroutine check_keyword
+
+      !> One of the four physical data, which go together.
+      subroutine check_given(name, value)
          character(len=*), intent(in) :: name
          real(dp), intent(in) :: value
          if (is_unset(value)) then
             call fail('&beam '//name//' is missing: youngs_modulus, density, area and inertia '// &
                       'go together (or give k2 alone)')
          else
-            call positive('beam', name, value)
+            call check_real('beam', name, value)
          end if
-      end subroutine given_positive
+      end subroutine check_given
 
-      subroutine integer_in_range(group, name, value, low, high)
-         character(len=*), intent(in) :: group, name
+      !> A range that depends on other values; `why` names it (', the unknowns J of the mesh').
+      subroutine in_range(group, name, value, low, high, why)
+         character(len=*), intent(in) :: group, name, why
+         real(dp), intent(in) :: value, low, high
+         if (stat /= 0) return
+         if (value < low .or. value > high) call fail('&'//group//' '//name//' = '//real_text(value)// &
+                                                      ' is outside ['//real_text(low)//', '//real_text(high)//']'//why)
+      end subroutine in_range
+
+      subroutine integer_in_range(group, name, value, low, high, why)
+         character(len=*), intent(in) :: group, name, why
          integer, intent(in) :: value, low, high
-         character(len=24) :: text(3)
-         if (value < low .or. value > high) then
-            write (text(1), '(i0)') value
-            write (text(2), '(i0)') low
-            write (text(3), '(i0)') high
-            call fail('&'//group//' '//name//' = '//trim(text(1))//' is outside ['//trim(text(2))// &
-                      ', '//trim(text(3))//']')
-         end if
+         if (value < low .or. value > high) &
+            call fail('&'//group//' '//name//' = '//integer_text(value)//' is outside ['//integer_text(low)// &
+                      ', '//integer_text(high)//']'//why)
       end subroutine integer_in_range
-
-      subroutine one_of(group, name, value, allowed)
-         character(len=*), intent(in) :: group, name, value
-         character(len=*), intent(in) :: allowed(:)
-         character(len=:), allocatable :: list
-         integer :: k
-         if (any(allowed == value)) return
-         list = ''
-         do k = 1, size(allowed)
-            list = list//''''//trim(allowed(k))//''''
-            if (k < size(allowed)) list = list//' | '
-         end do
-         call fail('&'//group//' '//name//' = '''//trim(value)//''' is not one of '//list)
-      end subroutine one_of
    end subroutine validate_scene
 
 

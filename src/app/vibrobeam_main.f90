@@ -9,7 +9,9 @@ program vibrobeam_main
                                message_length
    use vibrobeam_version, only: version_string
    use vibrobeam_scene, only: scene_type, validate_scene, format_scene
-   use vibrobeam_input, only: read_scene
+   use vibrobeam_input, only: read_scene, namelist_groups_text
+   use vibrobeam_output_target, only: check_output_target
+   use vibrobeam_check_report, only: check_report, make_check_report, check_report_text, scene_warnings
    use vibrobeam_model, only: nodal_displacement
    use vibrobeam_modes, only: compute_modes
    use vibrobeam_static, only: solve_static
@@ -26,13 +28,16 @@ program vibrobeam_main
    integer :: stat
 
    call parse_command_line(input_file, check_only)
-   call read_scene(input_file, scene, stat, errmsg)
+   warnings = ''
+   call read_scene(input_file, scene, stat, errmsg, warnings)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    call validate_scene(scene, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
-   warnings = ''
+   call check_output_target(scene, input_file, stat, errmsg)
+   if (stat /= 0) call fail(exit_invalid_input, errmsg)
    call prepare_scene(scene, prepared, warnings, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
+   warnings = warnings//scene_warnings(scene)
    if (len(warnings) > 0) write (error_unit, '(a)', advance='no') prefixed(warnings, 'vibrobeam: warning: ')
 
    if (check_only) then
@@ -117,10 +122,11 @@ contains
          '', &
          'usage:', &
          '  vibrobeam INPUT.nml            run the scene described by INPUT.nml', &
-         '  vibrobeam --check INPUT.nml    validate the input, print the resolved scene, run nothing', &
+         '  vibrobeam --check INPUT.nml    validate the input, print the resolved scene, its natural', &
+         '                                 frequencies, time-step and result-size checks; run nothing', &
          '  vibrobeam --help | --version', &
          '', &
-         'namelist groups: &beam &mesh &analysis &obstacles &impact &time &initial &load &output', &
+         'namelist groups: '//namelist_groups_text(), &
          '(every variable is optional; see docs/input.md for units, defaults and ranges).', &
          '', &
          'exit status: 0 success, 2 invalid input (nothing written), 3 numerical failure', &
@@ -128,6 +134,7 @@ contains
    end subroutine print_help
 
    subroutine print_resolved_scene()
+      type(check_report) :: report
       associate (model => prepared%model, contacts => prepared%contacts)
       write (output_unit, '(a)') 'vibrobeam '//version_string//': input '''//input_file//''' is valid', &
          'resolved scene:'
@@ -135,6 +142,9 @@ contains
       write (output_unit, '(a,i0,a,i0,a)') 'discrete model: ', model%elements, ' '//trim(model%basis)// &
          ' elements, ', model%unknowns, ' unknowns'
       write (output_unit, '(a,i0)') 'contact points: ', contacts%count
+      call make_check_report(scene, model, report, stat, errmsg)
+      if (stat /= 0) call fail(exit_numerical_failure, errmsg)
+      write (output_unit, '(a)', advance='no') check_report_text(scene, report)
       end associate
    end subroutine print_resolved_scene
 

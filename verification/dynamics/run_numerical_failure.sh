@@ -2,7 +2,7 @@
 # A numerical failure (INTERFACE.md): exit status 3, a message naming the step, and a
 # complete HDF5 file whose /run status is 'failed' and whose histories stop before t_end.
 # usage: run_numerical_failure.sh VIBROBEAM INPUT.nml
-# (Release builds only: a Debug build traps the overflow itself, -ffpe-trap=overflow.)
+# (The failure is a contact solver without convergence, so Debug builds run it too.)
 set -uo pipefail
 vibrobeam=$1; input=$2
 work=$(mktemp -d)

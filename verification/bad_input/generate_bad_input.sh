@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Writes the input file NAME of a bad-input case that is not a plain text file in git:
+# bytes no editor would keep, files too long to read, links and directories. Every byte
+# is computed here, deterministically (no /dev/urandom), so a failure reproduces.
+# usage: generate_bad_input.sh CASE NAME   (in the directory of the case)
+set -euo pipefail
+case_name=$1; name=$2
+
+# n bytes of a fixed pseudo-random sequence (a linear congruential generator, the
+# constants of Numerical Recipes), every byte value 0..255 possible
+pseudo_random_bytes() {
+  local n=$1 state=12345 i
+  for ((i = 0; i < n; i++)); do
+    state=$(( (1664525 * state + 1013904223) % 4294967296 ))
+    printf -v hex %02x $(( (state >> 16) & 255 ))
+    printf "\\x$hex"
+  done
+}
+
+# a string of n characters 'a'
+letters() { head -c "$1" /dev/zero | tr '\0' 'a'; }
+
+case "$case_name" in
+  random_bytes) pseudo_random_bytes 2048 > "$name" ;;
+  nul_byte) printf '&mesh elements = 4\0 /\n' > "$name" ;;
+  control_character) printf '&mesh elements = 4 \a/\n' > "$name" ;;
+  lone_carriage_return) printf '&mesh elements = 4 /\r&time dt = 1e-3 /\n' > "$name" ;;
+  non_ascii_outside_comment) printf '&beam length = 1.0 \xcf\x81 /\n' > "$name" ;;
+  malformed_utf8_in_comment) printf '! a comment with a stray byte \xff\n&mesh elements = 4 /\n' > "$name" ;;
+  malformed_utf8_in_string) printf "&output file = 'out/r\\xc3.h5' /\\n" > "$name" ;;
+  overlong_output_path) printf "&output file = '%s.h5' /\n" "$(letters 5000)" > "$name" ;;
+  overlong_from_file) printf "&initial from_file = '%s.h5' /\n" "$(letters 4100)" > "$name" ;;
+  output_path_too_long_for_suffixes) printf "&output file = 'o/%s%s.h5' /\n" "$(for i in $(seq 1 20); do printf '%s/' "$(letters 200)"; done)" "$(letters 60)" > "$name" ;;
+  output_name_too_long) printf "&output file = 'out/%s.h5' /\n" "$(letters 250)" > "$name" ;;
+  output_directory_name_too_long) printf "&output file = 'out/%s/r.h5' /\n" "$(letters 300)" > "$name" ;;
+  overlong_keyword) printf "&mesh basis = '%s' /\n" "hermite$(letters 100)" > "$name" ;;
+  input_too_large) { echo '&mesh elements = 4 /'; for i in $(seq 1 40000); do echo '! padding padding padding padding padding'; done; } > "$name" ;;
+  input_is_directory) mkdir "$name" ;;
+  output_is_link_to_input)
+    printf "&mesh elements = 4 /\n&time t_end = 1e-3, dt = 1e-4 /\n&output file = 'link.h5' /\n" > "$name"
+    ln -s "$name" link.h5 ;;
+  output_is_existing_directory)
+    printf "&time t_end = 1e-3, dt = 1e-4 /\n&output file = 'earlier' /\n" > "$name"
+    mkdir earlier ;;
+  windows_line_end_inside_string) printf "&output file = 'a\r\nb.h5' /\r\n" > "$name" ;;
+  *) echo "generate_bad_input.sh: unknown case $case_name" >&2; exit 1 ;;
+esac
