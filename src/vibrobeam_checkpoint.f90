@@ -227,7 +227,9 @@ contains
       allocate (list, source=scene_entries(scene))
       compare: block
          do k = 1, size(matching)
-            i = findloc(list%name, matching(k), dim=1)
+            do i = size(list), 1, -1
+               if (list(i)%name == matching(k)) exit
+            end do
             if (i == 0) cycle
             associate (item => list(i))
                select case (item%kind)

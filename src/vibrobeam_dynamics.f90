@@ -40,6 +40,7 @@ module vibrobeam_dynamics
       real(dp) :: wall_seconds = 0
       real(dp) :: max_penetration = 0
       character(len=512) :: failure = ''
+      character(len=64) :: run_id = ''         !! /run run_id of the published result
    end type run_outcome
 
 contains
@@ -61,13 +62,16 @@ contains
       type(progress_meter) :: meter
       type(run_summary) :: summary
       integer(int64) :: last, n, start, now, rate, last_flush, last_checkpoint
+      real(dp) :: flush_interval
       integer :: step_stat
       character(len=512) :: step_message
 
       call meter%init(scene%progress)
       call system_clock(start, rate)
       last = last_step_of(scene)
-      if (.not. prepared%resuming .and. abs(last*scene%dt - scene%t_end) > 1e-9_dp*scene%dt) &
+      ! (n dt rounds to the nearest double of t_end: allow a few of its ulps)
+      if (.not. prepared%resuming .and. abs(last*scene%dt - scene%t_end) > &
+          max(1e-9_dp*scene%dt, 4*epsilon(1.0_dp)*scene%t_end)) &
          write (error_unit, '(a)') 'vibrobeam: warning: t_end is not a whole number of steps; the run ends at '// &
          real_text(last*scene%dt)//' s'
       call start_time_stepper(scene, prepared, stepper, stat, errmsg)
@@ -84,6 +88,7 @@ contains
 
       ! every dataset exists before the file enters SWMR mode
       call files%open(scene, prepared%model, stat, errmsg)
+      outcome%run_id = files%run_id
       if (stat /= 0) then
          call files%discard()
          return
@@ -109,6 +114,8 @@ contains
          if (stat /= 0) exit run
          call system_clock(last_flush)
          last_checkpoint = last_flush
+         flush_interval = flush_seconds
+         if (scene%checkpoint_seconds > 0) flush_interval = min(flush_seconds, scene%checkpoint_seconds)
 
          do n = stepper%steps + 1, last
             call stepper%step(step_stat, step_message)
@@ -126,7 +133,7 @@ contains
                exit
             end if
             call system_clock(now)
-            if (now - last_flush >= flush_seconds*rate) then
+            if (now - last_flush >= flush_interval*rate) then
                call flush_all()
                if (stat /= 0) exit run
                last_flush = now

@@ -21,17 +21,24 @@
 !! unsigned integer, as on Linux.
 module vibrobeam_filesystem
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_long, c_int64_t, c_null_char, c_ptr, &
-      c_size_t, c_associated, c_f_pointer
+      c_null_ptr, c_size_t, c_double, c_associated, c_f_pointer
    implicit none
    private
    public :: make_parent_directories, rename_file, remove_file, file_exists
    public :: unique_temporary_name, temporary_suffix, directory_of, is_directory, same_file
    public :: sync_file, sync_directory_of, directory_lock, error_text, last_error_text
-   public :: open_text_for_atomic_write, finish_text_file, discard_text_file
+   public :: text_file, open_text_for_atomic_write, write_text_line, write_text_row, finish_text_file, &
+      discard_text_file
    public :: process_id, utc_stamp, random_hex
 
    !> Suffix of every temporary file name (`unique_temporary_name`).
    character(len=*), parameter :: temporary_suffix = '.tmp'
+
+   !> A text file written through src/vibrobeam_posix.c (every write checked: libgfortran
+   !! does not report a failed write of its buffer to a formatted WRITE with iostat).
+   type :: text_file
+      type(c_ptr) :: handle = c_null_ptr
+   end type text_file
 
    !> An exclusive flock(2) on a directory, held from `acquire` to `release` (or until the
    !! process ends: the kernel releases it with the descriptor).
@@ -151,6 +158,47 @@ module vibrobeam_filesystem
          integer(c_int), value, intent(in) :: length
          integer(c_int) :: error
       end function c_utc_stamp
+
+      !> void *vb_text_open(const char *path, int *error);
+      function c_text_open(path, error) result(handle) bind(C, name='vb_text_open')
+         import :: c_char, c_int, c_ptr
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int), intent(out) :: error
+         type(c_ptr) :: handle
+      end function c_text_open
+
+      !> int vb_text_write(void *handle, const char *data, size_t length);
+      function c_text_write(handle, data, length) result(error) bind(C, name='vb_text_write')
+         import :: c_char, c_int, c_ptr, c_size_t
+         type(c_ptr), value, intent(in) :: handle
+         character(kind=c_char), intent(in) :: data(*)
+         integer(c_size_t), value, intent(in) :: length
+         integer(c_int) :: error
+      end function c_text_write
+
+      !> int vb_text_write_row(void *handle, const double *values, int count, int width, int digits,
+      !!                       int integers);
+      function c_text_write_row(handle, values, count, width, digits, integers) result(error) &
+         bind(C, name='vb_text_write_row')
+         import :: c_int, c_ptr, c_double
+         type(c_ptr), value, intent(in) :: handle
+         real(c_double), intent(in) :: values(*)
+         integer(c_int), value, intent(in) :: count, width, digits, integers
+         integer(c_int) :: error
+      end function c_text_write_row
+
+      !> int vb_text_close(void *handle);
+      function c_text_close(handle) result(error) bind(C, name='vb_text_close')
+         import :: c_int, c_ptr
+         type(c_ptr), value, intent(in) :: handle
+         integer(c_int) :: error
+      end function c_text_close
+
+      !> void vb_text_abandon(void *handle);
+      subroutine c_text_abandon(handle) bind(C, name='vb_text_abandon')
+         import :: c_ptr
+         type(c_ptr), value, intent(in) :: handle
+      end subroutine c_text_abandon
 
       !> size_t strlen(const char *s);
       function c_strlen(s) result(length) bind(C, name='strlen')
@@ -366,64 +414,93 @@ contains
       self%descriptor = -1
    end subroutine lock_release
 
-   !> Open a fresh temporary file for `final_name` (`unique_temporary_name`) for formatted
-   !! sequential writing, after creating the parent directories of `final_name`. Finish
-   !! with `finish_text_file` (then rename `temporary` onto `final_name`) or
+   !> Create a fresh temporary file for `final_name` (`unique_temporary_name`), after
+   !! creating the parent directories of `final_name`. Write lines with `write_text_line`;
+   !! finish with `finish_text_file` (then rename `temporary` onto `final_name`) or
    !! `discard_text_file`.
-   subroutine open_text_for_atomic_write(final_name, unit, temporary, stat, errmsg)
+   subroutine open_text_for_atomic_write(final_name, file, temporary, stat, errmsg)
       character(len=*), intent(in) :: final_name  !! name of the complete text file
-      integer, intent(out) :: unit                !! unit opened on the temporary file (newunit)
+      type(text_file), intent(out) :: file        !! the open temporary file
       character(len=:), allocatable, intent(out) :: temporary   !! its name
       integer, intent(out) :: stat                !! 0 on success
       character(len=*), intent(out) :: errmsg     !! reason of the failure, blank on success
-      character(len=512) :: io_message
+      integer(c_int) :: error_number
 
-      unit = -1
       temporary = unique_temporary_name(final_name)
       call make_parent_directories(final_name, stat, errmsg)
       if (stat /= 0) return
-      io_message = ''
-      open (newunit=unit, file=temporary, status='new', action='write', form='formatted', &
-         access='sequential', iostat=stat, iomsg=io_message)
-      if (stat /= 0) then
-         unit = -1
-         errmsg = 'cannot open ''' // temporary // ''' for writing: ' // trim(io_message)
+      file%handle = c_text_open(c_string(temporary), error_number)
+      if (.not. c_associated(file%handle)) then
+         stat = 1
+         errmsg = 'cannot create ''' // temporary // ''': ' // error_text(error_number)
       end if
    end subroutine open_text_for_atomic_write
 
-   !> Close `unit` (opened by `open_text_for_atomic_write`) and sync its file `temporary`
-   !! to disk: a failure of a buffered write shows here at the latest.
-   subroutine finish_text_file(unit, temporary, stat, errmsg)
-      integer, intent(in) :: unit                 !! unit of the temporary file
+   !> Append `line` and a newline to `file` (named `temporary` in messages).
+   subroutine write_text_line(file, line, temporary, stat, errmsg)
+      type(text_file), intent(inout) :: file
+      character(len=*), intent(in) :: line, temporary
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(c_int) :: error_number
+      stat = 0
+      errmsg = ''
+      error_number = c_text_write(file%handle, line // new_line('a'), int(len(line) + 1, c_size_t))
+      if (error_number /= 0) then
+         stat = 1
+         errmsg = 'cannot write ''' // trim(temporary) // ''': ' // error_text(error_number)
+      end if
+   end subroutine write_text_line
+
+   !> Append one line of numbers to `file`: each right-aligned in `width` characters, in
+   !! scientific notation with `digits` digits after the point (C's %E), the last
+   !! `integers` of them as integers.
+   subroutine write_text_row(file, values, width, digits, integers, temporary, stat, errmsg)
+      type(text_file), intent(inout) :: file
+      real(c_double), intent(in) :: values(:)
+      integer, intent(in) :: width, digits, integers
+      character(len=*), intent(in) :: temporary
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(c_int) :: error_number
+      stat = 0
+      errmsg = ''
+      error_number = c_text_write_row(file%handle, values, int(size(values), c_int), int(width, c_int), &
+                                      int(digits, c_int), int(integers, c_int))
+      if (error_number /= 0) then
+         stat = 1
+         errmsg = 'cannot write ''' // trim(temporary) // ''': ' // error_text(error_number)
+      end if
+   end subroutine write_text_row
+
+   !> Write out what is buffered, sync the file `temporary` to disk and close it.
+   subroutine finish_text_file(file, temporary, stat, errmsg)
+      type(text_file), intent(inout) :: file      !! the temporary file
       character(len=*), intent(in) :: temporary   !! its name
       integer, intent(out) :: stat                !! 0 on success
       character(len=*), intent(out) :: errmsg     !! reason of the failure, blank on success
-      character(len=512) :: io_message
+      integer(c_int) :: error_number
 
+      stat = 0
       errmsg = ''
-      io_message = ''
-      flush (unit, iostat=stat, iomsg=io_message)
-      if (stat == 0) close (unit, status='keep', iostat=stat, iomsg=io_message)
-      if (stat /= 0) then
-         errmsg = 'cannot write ''' // trim(temporary) // ''': ' // trim(io_message)
-         return
+      error_number = c_text_close(file%handle)
+      file%handle = c_null_ptr
+      if (error_number /= 0) then
+         stat = 1
+         errmsg = 'cannot write ''' // trim(temporary) // ''': ' // error_text(error_number)
       end if
-      call sync_file(temporary, stat, errmsg)
    end subroutine finish_text_file
 
-   !> Close `unit` (if open) and delete the temporary file `temporary`. Never fails:
+   !> Close `file` (if open) and delete the temporary file `temporary`. Never fails:
    !! errors are ignored (there is nothing left to do about them).
-   subroutine discard_text_file(unit, temporary)
-      integer, intent(in) :: unit                 !! unit of the temporary file, or -1
+   subroutine discard_text_file(file, temporary)
+      type(text_file), intent(inout) :: file      !! the temporary file (may be closed)
       character(len=*), intent(in) :: temporary  !! its name
-      integer :: close_status, remove_status
+      integer :: remove_status
       character(len=256) :: remove_message
-      logical :: opened
 
-      opened = .false.
-      if (unit /= -1) inquire (unit=unit, opened=opened)
-      if (opened) close (unit, status='delete', iostat=close_status)
-      ! Deleting on close can fail silently (e.g. unit already closed): make sure.
+      if (c_associated(file%handle)) call c_text_abandon(file%handle)
+      file%handle = c_null_ptr
       call remove_file(temporary, remove_status, remove_message)
    end subroutine discard_text_file
 

@@ -45,7 +45,7 @@ module vibrobeam_hdf5
    use vibrobeam_filesystem, only: make_parent_directories, rename_file, remove_file, &
       unique_temporary_name, sync_file, sync_directory_of
    use vibrobeam_hdf5_base, only: no_id, buffer_length, initialize_library, fail, describe, &
-      valid_path, link_exists, attribute_outcome, put_real_attribute, put_int_attribute, &
+      valid_path, link_exists, h5_reason, attribute_outcome, put_real_attribute, put_int_attribute, &
       put_int64_attribute, put_string_attribute, rewrite_string_attribute, &
       rewrite_int64_attribute, rewrite_real_attribute, close_dataspace, close_property_list
    use vibrobeam_hdf5_reader, only: read_real_1d, read_real_2d, read_int_1d, read_real_scalar, &
@@ -54,6 +54,7 @@ module vibrobeam_hdf5
       h5fcreate_f, h5fclose_f, h5fflush_f, H5F_ACC_TRUNC_F, H5F_SCOPE_GLOBAL_F, &
       H5F_CLOSE_STRONG_F, H5F_LIBVER_LATEST_F, &
       h5pcreate_f, h5pset_fclose_degree_f, h5pset_create_inter_group_f, h5pset_libver_bounds_f, &
+      h5pset_cache_f, size_t, &
       H5P_FILE_ACCESS_F, H5P_LINK_CREATE_F, &
       h5gcreate_f, h5gclose_f, h5oopen_f, h5oclose_f, &
       h5screate_f, h5screate_simple_f, H5S_SCALAR_F, &
@@ -166,6 +167,11 @@ contains
       if (hdferr >= 0) then
          if (c_h5_disable_evictions(int(file_access_list, c_int64_t)) /= 0) hdferr = -1
       end if
+      ! No raw-data chunk cache: series write whole chunks from their own buffers, memory
+      ! must not grow with the datasets' cached chunks (1 MiB each by default), and a
+      ! failed write (full disk) must fail the call that makes it. (In SWMR mode HDF5
+      ! 1.10 takes the file's setting, not a dataset access list's.)
+      if (hdferr >= 0) call h5pset_cache_f(file_access_list, 0, 0_size_t, 0_size_t, 1.0, hdferr)
       if (hdferr >= 0) then
          call h5fcreate_f(self%temporary_name, H5F_ACC_TRUNC_F, self%file_id, hdferr, &
             access_prp=file_access_list)
@@ -636,12 +642,11 @@ contains
       end if
       call h5dcreate_f(self%file_id, trim(path), type_id, space_id, dataset_id, hdferr, &
          lcpl_id=self%link_creation_list)
-      call close_dataspace(space_id)
       if (hdferr < 0) then
          dataset_id = no_id
-         call fail(stat, errmsg, 'cannot create dataset ' // describe(path, self%temporary_name) &
-            // ' (is a parent a dataset?)')
+         call fail(stat, errmsg, 'cannot create dataset ' // describe(path, self%temporary_name))
       end if
+      call close_dataspace(space_id)
    end subroutine create_dataset
 
    !> After the h5dwrite_f of a new dataset (its error code `write_error`): add the
@@ -654,19 +659,21 @@ contains
       character(len=*), intent(in), optional :: unit
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      character(len=:), allocatable :: failed_step
+      character(len=:), allocatable :: failed_step, reason
       integer :: close_error
 
       stat = 0
       errmsg = ''
       failed_step = ''
+      reason = ''
+      if (write_error < 0) reason = h5_reason()
       if (present(unit) .and. write_error >= 0) then
          call put_string_attribute(dataset_id, 'unit', unit, failed_step)
       end if
       call h5dclose_f(dataset_id, close_error)
       if (write_error < 0) then
          call fail(stat, errmsg, 'cannot write the values of dataset ' // &
-            describe(path, self%temporary_name))
+            describe(path, self%temporary_name), reason)
       else if (len(failed_step) > 0) then
          call fail(stat, errmsg, 'cannot write attribute ''unit'' of dataset ' // &
             describe(path, self%temporary_name) // ' (' // failed_step // ')')

@@ -108,16 +108,23 @@ contains
    end subroutine initialize_library
 
    !> Set stat = 1 and errmsg = message, followed by the reason HDF5 recorded for its last
-   !! failure (`h5_reason`) when there is one.
-   subroutine fail(stat, errmsg, message)
+   !! failure (`h5_reason`), or by `reason` when given: every HDF5 call clears the error
+   !! stack, so a caller that closes identifiers after a failed call takes the reason
+   !! (`h5_reason()`) right after that call.
+   subroutine fail(stat, errmsg, message, reason)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       character(len=*), intent(in) :: message
-      character(len=:), allocatable :: reason
+      character(len=*), intent(in), optional :: reason
+      character(len=:), allocatable :: why
       stat = 1
-      reason = h5_reason()
-      if (len(reason) > 0) then
-         errmsg = message // ': ' // reason
+      if (present(reason)) then
+         why = reason
+      else
+         why = h5_reason()
+      end if
+      if (len(why) > 0) then
+         errmsg = message // ': ' // why
       else
          errmsg = message
       end if

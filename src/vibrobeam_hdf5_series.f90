@@ -15,9 +15,10 @@ module vibrobeam_hdf5_series
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_hdf5_base, only: no_id, fail, describe, link_exists, put_string_attribute, &
-      close_dataspace, close_property_list
-   use hdf5, only: hid_t, hsize_t, h5kind_to_type, H5_REAL_KIND, H5_INTEGER_KIND, &
-      h5pcreate_f, h5pset_chunk_f, h5pset_alloc_time_f, H5P_DATASET_CREATE_F, H5D_ALLOC_TIME_EARLY_F, &
+      close_dataspace, close_property_list, h5_reason
+   use hdf5, only: hid_t, hsize_t, size_t, h5kind_to_type, H5_REAL_KIND, H5_INTEGER_KIND, &
+      h5pcreate_f, h5pset_chunk_f, h5pset_alloc_time_f, h5pset_chunk_cache_f, H5P_DATASET_CREATE_F, &
+      H5P_DATASET_ACCESS_F, H5D_ALLOC_TIME_EARLY_F, &
       H5S_UNLIMITED_F, &
       h5screate_simple_f, h5sselect_hyperslab_f, H5S_SELECT_SET_F, &
       h5dcreate_f, h5dclose_f, h5dwrite_f, h5dget_space_f, h5dset_extent_f
@@ -83,7 +84,7 @@ contains
       character(len=*), intent(out) :: errmsg
       logical, intent(in), optional :: integers   !! store 64-bit integers (default: reals)
       logical, intent(in), optional :: matrix     !! 2-d even with one column (default: columns > 1)
-      integer(hid_t) :: space_id, properties
+      integer(hid_t) :: space_id, properties, access
       integer(hsize_t) :: dims(2), max_dims(2), chunk(2)
       character(len=:), allocatable :: failed_step
       integer :: hdferr, rank, capacity, allocation_stat
@@ -122,14 +123,20 @@ contains
          chunk = int(capacity, hsize_t)
       end if
       properties = no_id
+      access = no_id
       space_id = no_id
+      ! no chunk cache (also set for the whole file, `vibrobeam_hdf5`): rows are written a
+      ! whole chunk (the buffer) at a time
       call h5screate_simple_f(rank, dims(1:rank), space_id, hdferr, max_dims(1:rank))
       if (hdferr >= 0) call h5pcreate_f(H5P_DATASET_CREATE_F, properties, hdferr)
       if (hdferr >= 0) call h5pset_chunk_f(properties, rank, chunk(1:rank), hdferr)
+      if (hdferr >= 0) call h5pcreate_f(H5P_DATASET_ACCESS_F, access, hdferr)
+      if (hdferr >= 0) call h5pset_chunk_cache_f(access, 0_size_t, 0_size_t, 1.0, hdferr)
       if (hdferr >= 0) call h5dcreate_f(writer%id(), trim(path), value_type(self%integers), space_id, &
-                                        self%dataset, hdferr, properties, writer%link_properties())
+                                        self%dataset, hdferr, properties, writer%link_properties(), access)
       call close_dataspace(space_id)
       call close_property_list(properties)
+      call close_property_list(access)
       if (hdferr < 0) then
          self%dataset = no_id
          call fail(stat, errmsg, 'cannot create dataset ' // describe(path, self%file))
@@ -164,6 +171,7 @@ contains
       integer(hid_t) :: file_space, memory_space
       integer(hsize_t) :: offset(2), count(2), extent(2)
       integer(int64), allocatable :: counts(:, :)
+      character(len=:), allocatable :: reason
       integer :: hdferr, rank
       stat = 0
       errmsg = ''
@@ -201,10 +209,12 @@ contains
             call write_section(self%buffer(:, 1:self%buffered))
          end if
       end if
+      reason = ''
+      if (hdferr < 0) reason = h5_reason()
       call close_dataspace(memory_space)
       call close_dataspace(file_space)
       if (hdferr < 0) then
-         call fail(stat, errmsg, 'cannot write ' // describe(self%path, self%file))
+         call fail(stat, errmsg, 'cannot write ' // describe(self%path, self%file), reason)
          return
       end if
       self%written = self%written + self%buffered

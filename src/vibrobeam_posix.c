@@ -12,6 +12,7 @@
 #include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/file.h>
 #include <sys/random.h>
@@ -157,6 +158,118 @@ long vb_peak_rss_kb(void)
     struct rusage usage;
     if (getrusage(RUSAGE_SELF, &usage) != 0) return -1;
     return usage.ru_maxrss;
+}
+
+/* ---------------------------------------------------------------------------------
+ * Text files. libgfortran (12) does not report a failed write of its buffer (a full
+ * disk, `ulimit -f`) to a formatted WRITE, FLUSH or CLOSE with iostat: the file is
+ * silently truncated. Text results are therefore written here, every write(2) checked;
+ * Fortran formats each line into a string first. */
+
+struct text_file {
+    int fd;
+    size_t used;
+    char buffer[1 << 16];
+};
+
+/* Write out the buffer; 0 or errno. */
+static int text_drain(struct text_file *file)
+{
+    size_t done = 0;
+    while (done < file->used) {
+        ssize_t written = write(file->fd, file->buffer + done, file->used - done);
+        if (written < 0) {
+            if (errno == EINTR) continue;
+            return errno;
+        }
+        done += (size_t)written;
+    }
+    file->used = 0;
+    return 0;
+}
+
+/* Create `path` (it must not exist) for writing; NULL with *error = errno on failure. */
+void *vb_text_open(const char *path, int *error)
+{
+    struct text_file *file = malloc(sizeof *file);
+    *error = 0;
+    if (file == NULL) {
+        *error = ENOMEM;
+        return NULL;
+    }
+    file->fd = open(path, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (file->fd < 0) {
+        *error = errno;
+        free(file);
+        return NULL;
+    }
+    file->used = 0;
+    return file;
+}
+
+/* Append `length` bytes; 0 or errno. */
+int vb_text_write(void *handle, const char *data, size_t length)
+{
+    struct text_file *file = handle;
+    while (length > 0) {
+        size_t room = sizeof file->buffer - file->used, part = length < room ? length : room;
+        memcpy(file->buffer + file->used, data, part);
+        file->used += part;
+        data += part;
+        length -= part;
+        if (file->used == sizeof file->buffer) {
+            int error = text_drain(file);
+            if (error != 0) return error;
+        }
+    }
+    return 0;
+}
+
+/* Append one line of `count` numbers, each right-aligned in `width` characters: in
+ * scientific notation with `digits` digits after the point (C's %E: a 3-digit exponent
+ * keeps its E, which Fortran's ES edit drops), the last `integers` of them as integers
+ * (counts, flags); then a newline. 0 or errno. */
+int vb_text_write_row(void *handle, const double *values, int count, int width, int digits, int integers)
+{
+    char field[64];
+    int k;
+    for (k = 0; k < count; ++k) {
+        int length = k < count - integers
+                         ? snprintf(field, sizeof field, "%*.*E", width, digits, values[k])
+                         : snprintf(field, sizeof field, "%*lld", width, (long long)values[k]);
+        int error = vb_text_write(handle, field, (size_t)length);
+        if (error != 0) return error;
+    }
+    return vb_text_write(handle, "\n", 1);
+}
+
+/* Write out, fsync and close; frees the handle; 0 or the first errno. */
+int vb_text_close(void *handle)
+{
+    struct text_file *file = handle;
+    int error = text_drain(file);
+    if (error == 0 && fsync(file->fd) != 0) error = errno;
+    if (close(file->fd) != 0 && error == 0) error = errno;
+    free(file);
+    return error;
+}
+
+/* Close without writing out what is buffered; frees the handle. */
+void vb_text_abandon(void *handle)
+{
+    struct text_file *file = handle;
+    if (file == NULL) return;
+    close(file->fd);
+    free(file);
+}
+
+/* End the process with `status` at once: stdio flushed, no atexit handlers. HDF5's own
+ * exit handler would try again to write a file whose every write fails (a full disk)
+ * and can crash doing so; by then every result file has been closed or discarded. */
+void vb_exit(int status)
+{
+    fflush(NULL);
+    _exit(status);
 }
 
 /* ---------------------------------------------------------------------------------

@@ -83,8 +83,10 @@ contains
       integer(int64) :: steps
       logical :: same_bounds
       real(dp) :: value
+      character(len=:), allocatable :: file
       integer :: c
-      associate (contacts => prepared%contacts, file => trim(scene%from_file))
+      file = trim(scene%from_file)
+      associate (contacts => prepared%contacts)
          call check_compatible(file, scene, contacts%x, contacts%lower, contacts%upper, same_bounds, stat, errmsg)
          if (stat /= 0) return
          call read_checkpoint(file, prepared%resume, prepared%resume_time, stat, errmsg)
@@ -107,8 +109,8 @@ contains
             return
          end if
          prepared%resuming = .true.
-         if (same_bounds) return
          do c = 1, contacts%count
+            if (same_bounds) exit
             value = contact_value(contacts, c, prepared%u0)
             if (value + 1e-12_dp*(abs(value) + prepared%model%length) < contacts%lower(c) .or. &
                 value - 1e-12_dp*(abs(value) + prepared%model%length) > contacts%upper(c)) then

@@ -13,7 +13,8 @@ module vibrobeam_text_output
    use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_text, only: integer_text
    use vibrobeam_hdf5_reader, only: h5_reader
-   use vibrobeam_filesystem, only: open_text_for_atomic_write, finish_text_file, discard_text_file
+   use vibrobeam_filesystem, only: text_file, open_text_for_atomic_write, write_text_line, write_text_row, &
+      finish_text_file, discard_text_file
    use vibrobeam_progress, only: progress_meter
    use vibrobeam_signals, only: interrupt_requested
    implicit none
@@ -37,7 +38,7 @@ module vibrobeam_text_output
 
    !> One .dat file being written.
    type :: text_sink
-      integer :: unit = -1
+      type(text_file) :: file
       character(len=:), allocatable :: temporary, final
    end type text_sink
 
@@ -59,16 +60,18 @@ contains
    subroutine discard_derived(files)
       type(derived_file), intent(in) :: files(:)
       integer :: k
+      type(text_file) :: closed
       do k = 1, size(files)
-         call discard_text_file(-1, trim(files(k)%temporary))
+         call discard_text_file(closed, trim(files(k)%temporary))
       end do
    end subroutine discard_derived
 
    !> Derive every .dat file of the HDF5 file `source` (the temporary file of a run, or a
    !! published file), named after `final_h5`. On return `files` lists them, complete and
-   !! synced under temporary names. When SIGINT/SIGTERM arrives meanwhile the derivation
-   !! stops: `interrupted` is set, nothing is left and `files` is empty. On failure nothing
-   !! is left either.
+   !! synced under temporary names. When SIGINT/SIGTERM arrives meanwhile (not before: the
+   !! result of a run stopped by a signal gets its text files; a second signal ends the
+   !! process) the derivation stops: `interrupted` is set, nothing is left and `files` is
+   !! empty. On failure nothing is left either.
    subroutine derive_text_files(source, final_h5, meter, files, interrupted, stat, errmsg)
       character(len=*), intent(in) :: source, final_h5
       type(progress_meter), intent(inout) :: meter
@@ -79,9 +82,11 @@ contains
       type(h5_reader) :: file
       character(len=:), allocatable :: run_id, header
       integer :: slash
+      logical :: signalled_before
 
       allocate (files(0))
       interrupted = .false.
+      signalled_before = interrupt_requested()
       call file%open(source, stat, errmsg)
       if (stat /= 0) return
       call file%attr_string('/run', 'run_id', run_id, stat, errmsg)
@@ -116,7 +121,7 @@ contains
          type(text_sink), intent(out) :: sink
          character(len=*), intent(in) :: suffix, columns
          sink%final = text_file_name(final_h5, suffix)
-         call open_text_for_atomic_write(sink%final, sink%unit, sink%temporary, stat, errmsg)
+         call open_text_for_atomic_write(sink%final, sink%file, sink%temporary, stat, errmsg)
          if (stat /= 0) return
          call put_line(sink, header)
          call put_line(sink, '# '//columns)
@@ -127,30 +132,35 @@ contains
       subroutine put_line(sink, line)
          type(text_sink), intent(inout) :: sink
          character(len=*), intent(in) :: line
-         character(len=256) :: message
          if (stat /= 0) return
-         write (sink%unit, '(a)', iostat=stat, iomsg=message) line
-         if (stat /= 0) errmsg = 'cannot write '''//sink%temporary//''': '//trim(message)
+         call write_text_line(sink%file, line, sink%temporary, stat, errmsg)
       end subroutine put_line
 
-      !> Write one row of reals in `form`, checked.
-      subroutine put_row(sink, form, values)
+      !> Write one row of numbers (`layout`: 'wide' es24.15-like, 'narrow' es16.7-like;
+      !! the last `integers` values as integers), checked.
+      subroutine put_row(sink, layout, values, integers)
          type(text_sink), intent(inout) :: sink
-         character(len=*), intent(in) :: form
+         character(len=*), intent(in) :: layout
          real(dp), intent(in) :: values(:)
-         character(len=256) :: message
+         integer, intent(in), optional :: integers
+         integer :: tail
          if (stat /= 0) return
-         write (sink%unit, form, iostat=stat, iomsg=message) values
-         if (stat /= 0) errmsg = 'cannot write '''//sink%temporary//''': '//trim(message)
+         tail = 0
+         if (present(integers)) tail = integers
+         if (layout == 'narrow') then
+            call write_text_row(sink%file, values, 16, 7, tail, sink%temporary, stat, errmsg)
+         else
+            call write_text_row(sink%file, values, 24, 15, tail, sink%temporary, stat, errmsg)
+         end if
       end subroutine put_row
 
       !> Close and sync `sink` and add it to `files`; on failure delete it.
       subroutine close_sink(sink)
          type(text_sink), intent(inout) :: sink
          type(derived_file) :: done
-         if (stat == 0) call finish_text_file(sink%unit, sink%temporary, stat, errmsg)
+         if (stat == 0) call finish_text_file(sink%file, sink%temporary, stat, errmsg)
          if (stat /= 0) then
-            call discard_text_file(sink%unit, sink%temporary)
+            call discard_text_file(sink%file, sink%temporary)
             return
          end if
          done%temporary = sink%temporary
@@ -161,12 +171,13 @@ contains
       !> Rows of the datasets `paths` (each 1-d of `rows` values, or 2-d of
       !! widths(k) columns) side by side, `form` per row, a block of rows at a time;
       !! `field` writes the gnuplot blocks of the displacement field instead.
-      subroutine stream_rows(sink, paths, widths, rows, form)
+      subroutine stream_rows(sink, paths, widths, rows, form, integers)
          type(text_sink), intent(inout) :: sink
          character(len=*), intent(in) :: paths(:)
          integer, intent(in) :: widths(:)
          integer(int64), intent(in) :: rows
-         character(len=*), intent(in) :: form
+         character(len=*), intent(in) :: form      !! layout of `put_row`
+         integer, intent(in), optional :: integers
          real(dp), allocatable :: block(:, :), part(:, :)
          integer(int64) :: first
          integer :: count, k, column, i
@@ -185,10 +196,10 @@ contains
                deallocate (part)
             end do
             do i = 1, count
-               call put_row(sink, form, block(:, i))
+               call put_row(sink, form, block(:, i), integers)
             end do
             first = first + count
-            if (interrupt_requested()) then
+            if (interrupt_requested() .and. .not. signalled_before) then
                interrupted = .true.
                return
             end if
@@ -210,7 +221,7 @@ contains
       subroutine modes_files()
          type(text_sink) :: sink
          real(dp), allocatable :: omega(:), x(:), shapes(:)
-         character(len=256) :: message
+         character(len=64) :: line
          integer :: k, i, nodes
          call file%read_reals('/modes/frequency', omega, stat, errmsg)
          if (stat == 0) call file%read_reals('/mesh/x', x, stat, errmsg)
@@ -218,15 +229,15 @@ contains
          if (stat /= 0) return
          call open_sink(sink, 'modes', 'mode  omega (rad/s)  frequency (Hz)')
          do k = 1, size(omega)
-            if (stat == 0) write (sink%unit, '(i6, 2es24.15)', iostat=stat, iomsg=message) k, omega(k), omega(k)/(2*pi)
+            write (line, '(i6, 2es24.15)') k, omega(k), omega(k)/(2*pi)
+            call put_line(sink, trim(line))
          end do
-         if (stat /= 0) errmsg = 'cannot write '''//sink%temporary//''': '//trim(message)
          call close_sink(sink)
          if (stat /= 0) return
          call open_sink(sink, 'shapes', 'x (m)  then the shape of mode 1, 2, ... (tip value 1)')
          nodes = size(x)
          do i = 1, nodes
-            call put_row(sink, '(*(es24.15))', [x(i), (shapes(i + (k - 1)*nodes), k=1, size(omega))])
+            call put_row(sink, 'wide', [x(i), (shapes(i + (k - 1)*nodes), k=1, size(omega))])
          end do
          call close_sink(sink)
       end subroutine modes_files
@@ -242,13 +253,13 @@ contains
          if (stat /= 0) return
          call open_sink(sink, 'static', 'x (m)  u (m)')
          do i = 1, size(x)
-            call put_row(sink, '(*(es24.15))', [x(i), u(i)])
+            call put_row(sink, 'wide', [x(i), u(i)])
          end do
          call close_sink(sink)
          if (stat /= 0) return
          call open_sink(sink, 'reactions', 'x (m)  reaction (N, positive upwards)')
          do i = 1, size(contact_x)
-            call put_row(sink, '(*(es24.15))', [contact_x(i), reaction(i)])
+            call put_row(sink, 'wide', [contact_x(i), reaction(i)])
          end do
          call close_sink(sink)
       end subroutine static_files
@@ -268,7 +279,7 @@ contains
          call open_sink(sink, 'tip', 't (s)  u_tip (m)  v_tip (m/s)  mean tip contact force over the output '// &
                         'interval = tip impulse/interval (N)  tip impulse over the interval (N s)')
          call stream_rows(sink, [character(len=40) :: '/time', '/tip/displacement', '/tip/velocity', '/tip/reaction', &
-                                 '/tip/impulse'], [1, 1, 1, 1, 1], outputs, '(*(es24.15))')
+                                 '/tip/impulse'], [1, 1, 1, 1, 1], outputs, 'wide')
          call close_sink(sink)
          if (stat /= 0 .or. interrupted) return
          call open_sink(sink, 'energy', 't (s)  kinetic  elastic  work of loads  dissipated (impacts + damping + '// &
@@ -277,20 +288,20 @@ contains
          call stream_rows(sink, [character(len=40) :: '/time', '/energy/kinetic', '/energy/elastic', '/energy/work', &
                                  '/energy/dissipated', '/energy/dissipated_impacts', '/energy/dissipated_damping', &
                                  '/energy/total', '/energy/balance', '/contact/penetration', &
-                                 '/energy/dissipated_numerical'], [(1, k=1, 11)], outputs, '(*(es24.15))')
+                                 '/energy/dissipated_numerical'], [(1, k=1, 11)], outputs, 'wide')
          call close_sink(sink)
          if (stat /= 0 .or. interrupted) return
          call open_sink(sink, 'impacts', 't (s)  x (m)  impulse (N s)  velocity before (m/s)  velocity after (m/s)')
          call stream_rows(sink, [character(len=40) :: '/impacts/time', '/impacts/x', '/impacts/impulse', &
                                  '/impacts/velocity_before', '/impacts/velocity_after'], [1, 1, 1, 1, 1], impacts, &
-                          '(*(es24.15))')
+                          'wide')
          call close_sink(sink)
          if (stat /= 0 .or. interrupted) return
          call open_sink(sink, 'episodes', 'x (m)  start (s)  end (s)  total impulse (N s)  largest approach '// &
                         'speed (m/s)  impacts  open at the end of the run (1)')
          call stream_rows(sink, [character(len=40) :: '/episodes/x', '/episodes/start', '/episodes/end', &
                                  '/episodes/impulse', '/episodes/approach_speed', '/episodes/impacts', &
-                                 '/episodes/open_at_end'], [(1, k=1, 7)], episodes, '(5es24.15, 2f4.0)')
+                                 '/episodes/open_at_end'], [(1, k=1, 7)], episodes, 'wide', integers=2)
          call close_sink(sink)
          if (stat /= 0 .or. interrupted) return
          if (file%exists('/points/x')) then
@@ -300,7 +311,7 @@ contains
             call open_sink(sink, 'points', 't (s)  then u (m) at each observation point x = '// &
                            points_text(x)//' m, then v (m/s) at each')
             call stream_rows(sink, [character(len=40) :: '/time', '/points/displacement', '/points/velocity'], &
-                             [1, points, points], outputs, '(*(es24.15))')
+                             [1, points, points], outputs, 'wide')
             call close_sink(sink)
             if (stat /= 0 .or. interrupted) return
          end if
@@ -319,13 +330,13 @@ contains
             if (stat /= 0) return
             do k = 1, int(count)
                do i = 1, nodes
-                  call put_row(sink, '(*(es16.7))', [x(i), times(1, k), field(i, k)])
+                  call put_row(sink, 'narrow', [x(i), times(1, k), field(i, k)])
                end do
                call put_line(sink, '')
             end do
             deallocate (times, field)
             first = first + count
-            if (interrupt_requested()) then
+            if (interrupt_requested() .and. .not. signalled_before) then
                interrupted = .true.
                return
             end if
@@ -335,7 +346,7 @@ contains
          call open_sink(sink, 'spectrum', 'frequency (Hz)  amplitude of the tip displacement (m): single-sided, '// &
                         'mean removed, Hann window, Welch average over segments of 2^16 samples when longer')
          call stream_rows(sink, [character(len=40) :: '/spectrum/frequency', '/spectrum/tip_amplitude'], [1, 1], &
-                          bins, '(*(es24.15))')
+                          bins, 'wide')
          call close_sink(sink)
          if (stat /= 0 .or. interrupted) return
          call file%read_reals('/contact/x', x, stat, errmsg)
@@ -346,13 +357,13 @@ contains
          call open_sink(sink, 'obstacles', 'x (m)  lower bound g1 (m)  upper bound g2 (m) at each contact point '// &
                         '(+-1e30: no obstacle on that side)')
          do k = 1, size(x)
-            call put_row(sink, '(*(es24.15))', [x(k), max(-1e30_dp, lower(k)), min(1e30_dp, upper(k))])
+            call put_row(sink, 'wide', [x(k), max(-1e30_dp, lower(k)), min(1e30_dp, upper(k))])
          end do
          call close_sink(sink)
          if (stat /= 0) return
          call open_sink(sink, 'contact', 'x (m)  fraction of the run in contact (1)')
          do k = 1, size(x)
-            call put_row(sink, '(*(es24.15))', [x(k), fraction(k)])
+            call put_row(sink, 'wide', [x(k), fraction(k)])
          end do
          call close_sink(sink)
       end subroutine dynamics_files

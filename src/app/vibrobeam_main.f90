@@ -5,6 +5,7 @@
 !! is the only place where an error becomes a message on stderr and an exit status
 !! (docs/output.md, "Exit status").
 program vibrobeam_main
+   use, intrinsic :: iso_c_binding, only: c_int
    use vibrobeam_kinds, only: dp, error_unit, output_unit
    use vibrobeam_status, only: exit_ok, exit_other_error, exit_invalid_input, exit_numerical_failure, &
                                exit_interrupted, message_length
@@ -80,13 +81,20 @@ contains
       call finish(code)
    end subroutine fail
 
-   !> Close HDF5, flush stdout and stderr, and stop with `code`.
+   !> Close HDF5, flush stdout and stderr, and end with `code` at once (`vb_exit`:
+   !! HDF5's exit handler would retry writing a file that a full disk refuses).
    subroutine finish(code)
       integer, intent(in) :: code
+      interface
+         subroutine c_exit(status) bind(C, name='vb_exit')
+            import :: c_int
+            integer(c_int), value :: status
+         end subroutine c_exit
+      end interface
       call close_library()
       flush (output_unit)
       flush (error_unit)
-      stop code, quiet=.true.
+      call c_exit(int(code, c_int))
    end subroutine finish
 
    !> Every line of `text` with `prefix` in front.
@@ -252,7 +260,7 @@ contains
       end select
       write (output_unit, '(a,i0,a,i0,a,es10.3,a,f0.2,a)') 'vibrobeam: ', outcome%steps, ' steps, ', outcome%impacts, &
          ' impacts, largest penetration ', outcome%max_penetration, ' m, ', outcome%wall_seconds, ' s; written to '// &
-         trim(scene%file)
+         trim(scene%file)//' (run '//trim(outcome%run_id)//')'
       call stop_if_interrupted(outcome%text_skipped)
       call finish(exit_ok)
    end subroutine run_dynamics_scene

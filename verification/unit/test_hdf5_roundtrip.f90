@@ -15,8 +15,8 @@
 program test_hdf5_roundtrip
    use vibrobeam_kinds, only: dp, int64, error_unit
    use vibrobeam_text, only: integer_text, real_text
-   use vibrobeam_filesystem, only: file_exists, remove_file, rename_file, &
-      open_text_for_atomic_write, finish_text_file, discard_text_file
+   use vibrobeam_filesystem, only: file_exists, remove_file, rename_file, text_file_handle => text_file, &
+      open_text_for_atomic_write, write_text_line, finish_text_file, discard_text_file
    use vibrobeam_hdf5, only: h5_writer, read_real_1d, read_real_2d, read_int_1d, &
       read_real_scalar, read_attr_real, read_attr_int, read_attr_string, h5_path_exists
    implicit none
@@ -336,14 +336,16 @@ contains
       integer :: unit, io_status
       character(len=64) :: line
       character(len=:), allocatable :: text_temporary
+      type(text_file_handle) :: file
 
-      call open_text_for_atomic_write(text_file, unit, text_temporary, stat, errmsg)
+      call open_text_for_atomic_write(text_file, file, text_temporary, stat, errmsg)
       call check_ok('open_text_for_atomic_write ' // text_file, stat, errmsg)
       if (stat /= 0) return
-      write (unit, '(a)') '# t (s)  u (m)'
+      call write_text_line(file, '# t (s)  u (m)', text_temporary, stat, errmsg)
+      call check_ok('write_text_line', stat, errmsg)
       call check_true('text: temporary file exists before commit', file_exists(text_temporary))
       call check_true('text: final file absent before commit', .not. file_exists(text_file))
-      call finish_text_file(unit, text_temporary, stat, errmsg)
+      call finish_text_file(file, text_temporary, stat, errmsg)
       call check_ok('finish_text_file', stat, errmsg)
       call rename_file(text_temporary, text_file, stat, errmsg)
       call check_ok('rename the text file', stat, errmsg)
@@ -358,11 +360,11 @@ contains
       end if
       call check_string('text: committed header line', trim(line), '# t (s)  u (m)')
 
-      call open_text_for_atomic_write(discarded_text_file, unit, text_temporary, stat, errmsg)
+      call open_text_for_atomic_write(discarded_text_file, file, text_temporary, stat, errmsg)
       call check_ok('open_text_for_atomic_write ' // discarded_text_file, stat, errmsg)
       if (stat /= 0) return
-      write (unit, '(a)') 'partial'
-      call discard_text_file(unit, text_temporary)
+      call write_text_line(file, 'partial', text_temporary, stat, errmsg)
+      call discard_text_file(file, text_temporary)
       call check_true('text: no temporary file after discard', .not. file_exists(text_temporary))
       call check_true('text: no final file after discard', .not. file_exists(discarded_text_file))
    end subroutine check_text_files
