@@ -15,6 +15,7 @@
 !! target untouched. Each .dat file's first line names the run id that /run holds, so a
 !! reader can tell a .dat file of another run.
 module vibrobeam_results
+   use, intrinsic :: iso_c_binding, only: c_long
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_version, only: version_string
    use vibrobeam_scene, only: scene_type, scene_entry, scene_entries, format_scene
@@ -59,7 +60,21 @@ module vibrobeam_results
       procedure :: write_static
    end type result_files
 
+   interface
+      !> long vb_peak_rss_kb(void);  (src/vibrobeam_posix.c)
+      function c_peak_rss_kb() result(kb) bind(C, name='vb_peak_rss_kb')
+         import :: c_long
+         integer(c_long) :: kb
+      end function c_peak_rss_kb
+   end interface
+
 contains
+
+   !> Peak resident set size of the process so far (kB; getrusage).
+   function peak_memory_kb() result(kb)
+      integer(int64) :: kb
+      kb = int(c_peak_rss_kb(), int64)
+   end function peak_memory_kb
 
    !> A run id: the UTC time, the process id and 32 random bits ('20240101T120000Z-1234-89abcdef').
    function new_run_id() result(id)
@@ -152,6 +167,7 @@ contains
       call zero('contact_linear_solves')
       call zero('contact_linear_solves_max_per_step')
       call zero('contact_fallback_steps')
+      call zero('peak_memory_kb')
       call zero('flushed_step')
       call zero('flushed_outputs')
       call zero('flushed_field_outputs')
@@ -179,6 +195,7 @@ contains
       call put('contact_linear_solves', summary%linear_solves_total)
       call put('contact_linear_solves_max_per_step', summary%linear_solves_max)
       call put('contact_fallback_steps', summary%fallback_steps)
+      call put('peak_memory_kb', peak_memory_kb())
    contains
       subroutine put(name, value)
          character(len=*), intent(in) :: name
