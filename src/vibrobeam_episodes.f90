@@ -42,6 +42,7 @@ module vibrobeam_episodes
       procedure :: finish
       procedure :: save_state
       procedure :: restore_state
+      procedure :: rows
    end type episode_tracker
 
    character(len=*), parameter :: names(episode_columns) = [character(len=32) :: 'x', 'start', 'end', &
@@ -185,6 +186,13 @@ contains
       end do
       if (stat == 0) call writer%rewrite_attr_int64('/episodes', 'closed', self%written, stat, errmsg)
    end subroutine finish
+
+   !> Rows of /episodes so far (closed episodes, and at the end the open ones).
+   function rows(self) result(count)
+      class(episode_tracker), intent(in) :: self
+      integer(int64) :: count
+      count = self%series(1)%rows()
+   end function rows
 
    subroutine save_state(self, record)
       class(episode_tracker), intent(in) :: self

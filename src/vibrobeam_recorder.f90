@@ -385,12 +385,12 @@ contains
       if (stat == 0) call self%episodes%write_buffers(stat, errmsg)
    end subroutine write_buffers
 
-   !> Rows so far: [outputs, field snapshots, impacts, closed episodes].
+   !> Rows so far: [outputs, field snapshots, impacts, episodes].
    function rows(self) result(counts)
       class(dynamics_recorder), intent(in) :: self
       integer(int64) :: counts(4)
       counts = [self%histories(1)%rows(), self%field_time%rows(), self%impact_columns(1)%rows(), &
-                self%episodes%written]
+                self%episodes%rows()]
    end function rows
 
    !> End of the run: the spectrum, the contact fractions and largest penetration, the
