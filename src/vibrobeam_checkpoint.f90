@@ -101,9 +101,9 @@ contains
          if (stat /= 0) return
       end do
       call writer%flush(stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr_int64('/checkpoint', 'current', int(slot, int64), stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr_int64('/checkpoint', 'step', step, stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr_real('/checkpoint', 'time', time, stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/checkpoint', 'current', int(slot, int64), stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/checkpoint', 'step', step, stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/checkpoint', 'time', time, stat, errmsg)
       if (stat == 0) call writer%flush(stat, errmsg)
       if (stat == 0) self%current = slot
    end subroutine slots_write

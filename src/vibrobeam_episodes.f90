@@ -184,7 +184,7 @@ contains
       do k = 1, episode_columns
          call self%series(k)%close()
       end do
-      if (stat == 0) call writer%rewrite_attr_int64('/episodes', 'closed', self%written, stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/episodes', 'closed', self%written, stat, errmsg)
    end subroutine finish
 
    !> Rows of /episodes so far (closed episodes, and at the end the open ones).

@@ -17,7 +17,7 @@
 !! file. A process killed at any moment thus leaves a temporary file that opens (as a SWMR
 !! reader, or after `h5clear -s`) and holds every dataset as of a flush. In SWMR mode no
 !! object or attribute can be created; existing attributes can be rewritten in place
-!! (`rewrite_attr_string`, `rewrite_attr_int64`).
+!! (`rewrite_attr`).
 !!
 !! Conventions
 !! - Paths are absolute HDF5 paths ('/modes/frequency'); a leading '/' may be omitted.
@@ -46,8 +46,7 @@ module vibrobeam_hdf5
       unique_temporary_name, sync_file, sync_directory_of
    use vibrobeam_hdf5_base, only: no_id, buffer_length, initialize_library, fail, describe, &
       valid_path, link_exists, h5_reason, attribute_outcome, put_real_attribute, put_int_attribute, &
-      put_int64_attribute, put_string_attribute, rewrite_string_attribute, &
-      rewrite_int64_attribute, rewrite_real_attribute, close_dataspace, close_property_list
+      put_int64_attribute, put_string_attribute, rewrite_attribute, close_dataspace, close_property_list
    use vibrobeam_hdf5_reader, only: read_real_1d, read_real_2d, read_int_1d, read_real_scalar, &
       read_attr_real, read_attr_int, read_attr_string, h5_path_exists
    use hdf5, only: hid_t, hsize_t, h5kind_to_type, H5_REAL_KIND, H5_INTEGER_KIND, &
@@ -116,9 +115,7 @@ module vibrobeam_hdf5
       procedure :: attr_int => writer_attr_int
       procedure :: attr_int64 => writer_attr_int64
       procedure :: attr_string => writer_attr_string
-      procedure :: rewrite_attr_string => writer_rewrite_attr_string
-      procedure :: rewrite_attr_int64 => writer_rewrite_attr_int64
-      procedure :: rewrite_attr_real => writer_rewrite_attr_real
+      procedure :: rewrite_attr => writer_rewrite_attr
    end type h5_writer
 
 contains
@@ -447,7 +444,7 @@ contains
    !> Set the fixed-length string attribute `name` of the object `object_path` (see
    !! `attr_real`). The stored length is `len(value)` (trailing blanks are kept; pass
    !! `trim(value)` to drop them); with `capacity`, a NUL-terminated string of `capacity`
-   !! bytes that `rewrite_attr_string` can change later.
+   !! bytes that `rewrite_attr` can change later.
    subroutine writer_attr_string(self, object_path, name, value, stat, errmsg, capacity)
       class(h5_writer), intent(inout) :: self       !! open writer
       character(len=*), intent(in) :: object_path   !! '/', a group or a dataset
@@ -468,58 +465,25 @@ contains
    end subroutine writer_attr_string
 
 
-   !> Change the string attribute `name` of `object_path`, created with `attr_string`
-   !! and this `capacity`, in place (allowed in SWMR mode).
-   subroutine writer_rewrite_attr_string(self, object_path, name, value, capacity, stat, errmsg)
-      class(h5_writer), intent(inout) :: self
-      character(len=*), intent(in) :: object_path, name, value
-      integer, intent(in) :: capacity
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      integer(hid_t) :: object_id
-      character(len=:), allocatable :: failed_step
-      integer :: close_error
-      call open_existing_object(self, object_path, object_id, stat, errmsg)
-      if (stat /= 0) return
-      call rewrite_string_attribute(object_id, name, value, capacity, failed_step)
-      call h5oclose_f(object_id, close_error)
-      call attribute_outcome(self%temporary_name, object_path, name, failed_step, stat, errmsg)
-   end subroutine writer_rewrite_attr_string
-
-   !> Change the 64-bit integer attribute `name` of `object_path` in place (allowed in
-   !! SWMR mode).
-   subroutine writer_rewrite_attr_int64(self, object_path, name, value, stat, errmsg)
+   !> Change the attribute `name` of `object_path` in place (allowed in SWMR mode): a
+   !! real(dp) or integer(int64) made by `attr_real`/`attr_int64`, or a string made by
+   !! `attr_string` with this `capacity`.
+   subroutine writer_rewrite_attr(self, object_path, name, value, stat, errmsg, capacity)
       class(h5_writer), intent(inout) :: self
       character(len=*), intent(in) :: object_path, name
-      integer(int64), intent(in) :: value
+      class(*), intent(in) :: value
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      integer, intent(in), optional :: capacity
       integer(hid_t) :: object_id
       character(len=:), allocatable :: failed_step
       integer :: close_error
       call open_existing_object(self, object_path, object_id, stat, errmsg)
       if (stat /= 0) return
-      call rewrite_int64_attribute(object_id, name, value, failed_step)
+      call rewrite_attribute(object_id, name, value, failed_step, capacity)
       call h5oclose_f(object_id, close_error)
       call attribute_outcome(self%temporary_name, object_path, name, failed_step, stat, errmsg)
-   end subroutine writer_rewrite_attr_int64
-
-   !> Change the real attribute `name` of `object_path` in place (allowed in SWMR mode).
-   subroutine writer_rewrite_attr_real(self, object_path, name, value, stat, errmsg)
-      class(h5_writer), intent(inout) :: self
-      character(len=*), intent(in) :: object_path, name
-      real(dp), intent(in) :: value
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      integer(hid_t) :: object_id
-      character(len=:), allocatable :: failed_step
-      integer :: close_error
-      call open_existing_object(self, object_path, object_id, stat, errmsg)
-      if (stat /= 0) return
-      call rewrite_real_attribute(object_id, name, value, failed_step)
-      call h5oclose_f(object_id, close_error)
-      call attribute_outcome(self%temporary_name, object_path, name, failed_step, stat, errmsg)
-   end subroutine writer_rewrite_attr_real
+   end subroutine writer_rewrite_attr
 
    !> Flush and close the temporary file and sync it to disk (fsync). The file keeps its
    !! temporary name (`temporary_file`); the caller publishes it by a rename, or discards

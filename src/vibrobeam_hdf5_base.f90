@@ -24,7 +24,7 @@ module vibrobeam_hdf5_base
    public :: no_id, buffer_length, initialize_library, close_library, h5_reason
    public :: fail, describe, valid_path, link_exists
    public :: attribute_outcome, put_real_attribute, put_int_attribute, put_int64_attribute, &
-      put_string_attribute, rewrite_string_attribute, rewrite_int64_attribute, rewrite_real_attribute
+      put_string_attribute, rewrite_attribute
    public :: open_file_for_reading
    public :: close_dataspace, close_datatype, close_property_list
 
@@ -292,7 +292,7 @@ contains
 
    !> Write the fixed-length string attribute `name` = `value` on the open object
    !! `object_id`: NUL-padded and of length len(value) by default; with `capacity`, a
-   !! NUL-terminated string of `capacity` bytes, which `rewrite_string_attribute` can later
+   !! NUL-terminated string of `capacity` bytes, which `rewrite_attribute` can later
    !! change in place (while the file is in SWMR mode, where attributes cannot be created).
    !! HDF5 string types need a size of at least 1, so '' is stored as one NUL byte (read
    !! back as '').
@@ -316,68 +316,41 @@ contains
       call close_datatype(string_type)
    end subroutine put_string_attribute
 
-   !> Change the value of the existing string attribute `name` of `object_id`, created
-   !! by `put_string_attribute` with this `capacity` (len(value) <= capacity - 1).
-   subroutine rewrite_string_attribute(object_id, name, value, capacity, failed_step)
+   !> Change the value of the existing scalar attribute `name` of `object_id` in place
+   !! (allowed in SWMR mode): a real(dp), an integer(int64), or a string attribute made by
+   !! `put_string_attribute` with this `capacity` (len(value) <= capacity - 1).
+   subroutine rewrite_attribute(object_id, name, value, failed_step, capacity)
       integer(hid_t), intent(in) :: object_id
-      character(len=*), intent(in) :: name, value
-      integer, intent(in) :: capacity
+      character(len=*), intent(in) :: name
+      class(*), intent(in) :: value
       character(len=:), allocatable, intent(out) :: failed_step
+      integer, intent(in), optional :: capacity
       integer(hid_t) :: attribute_id, string_type
       integer :: hdferr
 
-      call string_type_for(value, capacity, string_type, failed_step)
-      if (len(failed_step) > 0) return
-      call h5aopen_f(object_id, trim(name), attribute_id, hdferr)
-      if (hdferr < 0) then
-         failed_step = 'H5Aopen'
-      else
-         call h5awrite_f(attribute_id, string_type, padded(value, capacity), [1_hsize_t], hdferr)
-         if (hdferr < 0) failed_step = 'H5Awrite'
-         call h5aclose_f(attribute_id, hdferr)
-      end if
-      call close_datatype(string_type)
-   end subroutine rewrite_string_attribute
-
-   !> Change the value of the existing 64-bit integer attribute `name` of `object_id`.
-   subroutine rewrite_int64_attribute(object_id, name, value, failed_step)
-      integer(hid_t), intent(in) :: object_id
-      character(len=*), intent(in) :: name
-      integer(int64), intent(in) :: value
-      character(len=:), allocatable, intent(out) :: failed_step
-      integer(hid_t) :: attribute_id
-      integer :: hdferr
-
       failed_step = ''
       call h5aopen_f(object_id, trim(name), attribute_id, hdferr)
       if (hdferr < 0) then
          failed_step = 'H5Aopen'
          return
       end if
-      call h5awrite_f(attribute_id, h5kind_to_type(int64, H5_INTEGER_KIND), value, [1_hsize_t], hdferr)
+      select type (value)
+      type is (real(dp))
+         call h5awrite_f(attribute_id, h5kind_to_type(dp, H5_REAL_KIND), value, [1_hsize_t], hdferr)
+      type is (integer(int64))
+         call h5awrite_f(attribute_id, h5kind_to_type(int64, H5_INTEGER_KIND), value, [1_hsize_t], hdferr)
+      type is (character(len=*))
+         call string_type_for(value, capacity, string_type, failed_step)
+         if (len(failed_step) == 0) then
+            call h5awrite_f(attribute_id, string_type, padded(value, capacity), [1_hsize_t], hdferr)
+            call close_datatype(string_type)
+         end if
+      class default
+         failed_step = 'unsupported attribute type'
+      end select
       if (hdferr < 0) failed_step = 'H5Awrite'
       call h5aclose_f(attribute_id, hdferr)
-   end subroutine rewrite_int64_attribute
-
-   !> Change the value of the existing real attribute `name` of `object_id`.
-   subroutine rewrite_real_attribute(object_id, name, value, failed_step)
-      integer(hid_t), intent(in) :: object_id
-      character(len=*), intent(in) :: name
-      real(dp), intent(in) :: value
-      character(len=:), allocatable, intent(out) :: failed_step
-      integer(hid_t) :: attribute_id
-      integer :: hdferr
-
-      failed_step = ''
-      call h5aopen_f(object_id, trim(name), attribute_id, hdferr)
-      if (hdferr < 0) then
-         failed_step = 'H5Aopen'
-         return
-      end if
-      call h5awrite_f(attribute_id, h5kind_to_type(dp, H5_REAL_KIND), value, [1_hsize_t], hdferr)
-      if (hdferr < 0) failed_step = 'H5Awrite'
-      call h5aclose_f(attribute_id, hdferr)
-   end subroutine rewrite_real_attribute
+   end subroutine rewrite_attribute
 
    !> The string type of a `put_string_attribute` (see there).
    subroutine string_type_for(value, capacity, string_type, failed_step)

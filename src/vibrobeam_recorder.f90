@@ -409,19 +409,19 @@ contains
       if (stat == 0) call self%write_buffers(stat, errmsg)
       if (stat /= 0) return
       call self%fraction%write_reals(self%contact_time/max(stepper%t, tiny(1.0_dp)), stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr_real('/contact', 'max_penetration', self%max_penetration, stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr_real('/contact', 'max_penetration_time', self%max_penetration_time, &
+      if (stat == 0) call writer%rewrite_attr('/contact', 'max_penetration', self%max_penetration, stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/contact', 'max_penetration_time', self%max_penetration_time, &
                                                    stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr_int64('/impacts', 'count', self%impacts, stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/impacts', 'count', self%impacts, stat, errmsg)
       if (stat /= 0) return
       call self%spectrum%spectrum(frequency, amplitude, segments, width, stat, errmsg)
       if (stat /= 0) then
          errmsg = 'tip spectrum: '//trim(errmsg)
          return
       end if
-      call writer%rewrite_attr_real('/spectrum', 'bin_width', width, stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr_int64('/spectrum', 'segments', segments, stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr_int64('/spectrum', 'samples', self%spectrum%samples, stat, errmsg)
+      call writer%rewrite_attr('/spectrum', 'bin_width', width, stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/spectrum', 'segments', segments, stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/spectrum', 'samples', self%spectrum%samples, stat, errmsg)
       if (stat /= 0) return
       ! the spectrum's datasets were created empty with the others (SWMR: no new objects)
       do k = 1, size(frequency)

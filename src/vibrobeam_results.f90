@@ -186,10 +186,10 @@ contains
       type(run_summary), intent(in) :: summary
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      call self%h5%rewrite_attr_string('/run', 'status', trim(summary%status), status_capacity, stat, errmsg)
+      call self%h5%rewrite_attr('/run', 'status', trim(summary%status), stat, errmsg, capacity=status_capacity)
       call put('steps', summary%steps)
       call put('start_step', summary%start_step)
-      if (stat == 0) call self%h5%rewrite_attr_real('/run', 'wall_seconds', summary%wall_seconds, stat, errmsg)
+      if (stat == 0) call self%h5%rewrite_attr('/run', 'wall_seconds', summary%wall_seconds, stat, errmsg)
       call put('contact_solver_iterations', summary%iterations_total)
       call put('contact_solver_iterations_max_per_step', summary%iterations_max)
       call put('contact_linear_solves', summary%linear_solves_total)
@@ -200,7 +200,7 @@ contains
       subroutine put(name, value)
          character(len=*), intent(in) :: name
          integer(int64), intent(in) :: value
-         if (stat == 0) call self%h5%rewrite_attr_int64('/run', name, value, stat, errmsg)
+         if (stat == 0) call self%h5%rewrite_attr('/run', name, value, stat, errmsg)
       end subroutine put
    end subroutine set_run
 
@@ -211,11 +211,11 @@ contains
       integer(int64), intent(in) :: step, rows(4)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      call self%h5%rewrite_attr_int64('/run', 'flushed_step', step, stat, errmsg)
-      if (stat == 0) call self%h5%rewrite_attr_int64('/run', 'flushed_outputs', rows(1), stat, errmsg)
-      if (stat == 0) call self%h5%rewrite_attr_int64('/run', 'flushed_field_outputs', rows(2), stat, errmsg)
-      if (stat == 0) call self%h5%rewrite_attr_int64('/run', 'flushed_impacts', rows(3), stat, errmsg)
-      if (stat == 0) call self%h5%rewrite_attr_int64('/run', 'flushed_episodes', rows(4), stat, errmsg)
+      call self%h5%rewrite_attr('/run', 'flushed_step', step, stat, errmsg)
+      if (stat == 0) call self%h5%rewrite_attr('/run', 'flushed_outputs', rows(1), stat, errmsg)
+      if (stat == 0) call self%h5%rewrite_attr('/run', 'flushed_field_outputs', rows(2), stat, errmsg)
+      if (stat == 0) call self%h5%rewrite_attr('/run', 'flushed_impacts', rows(3), stat, errmsg)
+      if (stat == 0) call self%h5%rewrite_attr('/run', 'flushed_episodes', rows(4), stat, errmsg)
    end subroutine set_flushed
 
    !> Publish the result (module documentation). `text_skipped` is true when a signal
