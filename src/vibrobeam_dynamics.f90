@@ -170,7 +170,7 @@ contains
          call files%set_flushed(stepper%steps, recorder%rows(), stat, errmsg)
          if (stat == 0) call files%set_run(summary, stat, errmsg)
          if (stat /= 0) exit run
-         call files%publish(meter, outcome%text_skipped, stat, errmsg)
+         call files%publish(meter, outcome%status /= 'interrupted', outcome%text_skipped, stat, errmsg)
          if (stat /= 0) exit run
          outcome%wall_seconds = meter%elapsed()
          call meter%end_line()

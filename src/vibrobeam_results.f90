@@ -218,12 +218,14 @@ contains
       if (stat == 0) call self%h5%rewrite_attr('/run', 'flushed_episodes', rows(4), stat, errmsg)
    end subroutine set_flushed
 
-   !> Publish the result (module documentation). `text_skipped` is true when a signal
-   !! arrived while the .dat files were derived: the HDF5 file is then published alone
-   !! (its stale .dat files removed) and `vibrobeam --text` derives them later.
-   subroutine publish(self, meter, text_skipped, stat, errmsg)
+   !> Publish the result (module documentation). With `stop_on_signal`, a signal that
+   !! arrives while the .dat files are derived stops that (`text_skipped`): the HDF5 file
+   !! is then published alone (its stale .dat files removed) and `vibrobeam --text`
+   !! derives them later.
+   subroutine publish(self, meter, stop_on_signal, text_skipped, stat, errmsg)
       class(result_files), intent(inout) :: self
       type(progress_meter), intent(inout) :: meter
+      logical, intent(in) :: stop_on_signal
       logical, intent(out) :: text_skipped
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
@@ -237,7 +239,7 @@ contains
       if (stat /= 0) return
       allocate (files(0))
       if (self%text) then
-         call derive_text_files(temporary, final_name, meter, files, text_skipped, stat, errmsg)
+         call derive_text_files(temporary, final_name, meter, stop_on_signal, files, text_skipped, stat, errmsg)
          if (stat /= 0) return
       end if
       call publish_files(temporary, final_name, files, stat, errmsg)

@@ -68,13 +68,14 @@ contains
 
    !> Derive every .dat file of the HDF5 file `source` (the temporary file of a run, or a
    !! published file), named after `final_h5`. On return `files` lists them, complete and
-   !! synced under temporary names. When SIGINT/SIGTERM arrives meanwhile (not before: the
-   !! result of a run stopped by a signal gets its text files; a second signal ends the
-   !! process) the derivation stops: `interrupted` is set, nothing is left and `files` is
-   !! empty. On failure nothing is left either.
-   subroutine derive_text_files(source, final_h5, meter, files, interrupted, stat, errmsg)
+   !! synced under temporary names. With `stop_on_signal`, SIGINT/SIGTERM stops the
+   !! derivation (a run already stopped by a signal passes .false.: its result gets its
+   !! text files, and a second signal ends the process): `interrupted` is set, nothing is
+   !! left and `files` is empty. On failure nothing is left either.
+   subroutine derive_text_files(source, final_h5, meter, stop_on_signal, files, interrupted, stat, errmsg)
       character(len=*), intent(in) :: source, final_h5
       type(progress_meter), intent(inout) :: meter
+      logical, intent(in) :: stop_on_signal
       type(derived_file), allocatable, intent(out) :: files(:)
       logical, intent(out) :: interrupted
       integer, intent(out) :: stat
@@ -82,11 +83,9 @@ contains
       type(h5_reader) :: file
       character(len=:), allocatable :: run_id, header
       integer :: slash
-      logical :: signalled_before
 
       allocate (files(0))
       interrupted = .false.
-      signalled_before = interrupt_requested()
       call file%open(source, stat, errmsg)
       if (stat /= 0) return
       call file%attr_string('/run', 'run_id', run_id, stat, errmsg)
@@ -125,7 +124,7 @@ contains
          if (stat /= 0) return
          call put_line(sink, header)
          call put_line(sink, '# '//columns)
-         call meter%report('deriving '//sink%final)
+         if (meter%due()) call meter%report('deriving '//sink%final)
       end subroutine open_sink
 
       !> Write one line, checked.
@@ -199,7 +198,7 @@ contains
                call put_row(sink, form, block(:, i), integers)
             end do
             first = first + count
-            if (interrupt_requested() .and. .not. signalled_before) then
+            if (stop_on_signal .and. interrupt_requested()) then
                interrupted = .true.
                return
             end if
@@ -336,7 +335,7 @@ contains
             end do
             deallocate (times, field)
             first = first + count
-            if (interrupt_requested() .and. .not. signalled_before) then
+            if (stop_on_signal .and. interrupt_requested()) then
                interrupted = .true.
                return
             end if

@@ -199,7 +199,7 @@ contains
       summary%wall_seconds = meter%elapsed()
       if (interrupt_requested()) summary%status = 'interrupted'
       if (stat == 0) call files%set_run(summary, stat, errmsg)
-      if (stat == 0) call files%publish(meter, text_skipped, stat, errmsg)
+      if (stat == 0) call files%publish(meter, summary%status /= 'interrupted', text_skipped, stat, errmsg)
       if (stat /= 0) then
          call files%discard()
          call fail(exit_other_error, errmsg)
@@ -230,7 +230,7 @@ contains
       summary%iterations_max = iterations
       if (interrupt_requested()) summary%status = 'interrupted'
       if (stat == 0) call files%set_run(summary, stat, errmsg)
-      if (stat == 0) call files%publish(meter, text_skipped, stat, errmsg)
+      if (stat == 0) call files%publish(meter, summary%status /= 'interrupted', text_skipped, stat, errmsg)
       if (stat /= 0) then
          call files%discard()
          call fail(exit_other_error, errmsg)
@@ -285,7 +285,7 @@ contains
       call watch_signals(stat, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
       call meter%init(.false.)
-      call derive_text_files(file, file, meter, files, interrupted, stat, errmsg)
+      call derive_text_files(file, file, meter, .true., files, interrupted, stat, errmsg)
       call meter%end_line()
       if (stat /= 0) call fail(exit_other_error, errmsg)
       if (interrupted) then

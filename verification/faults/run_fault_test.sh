@@ -178,7 +178,7 @@ full_disk)
     check "$moment: no temporary file left" no_temporary disk
     case $moment in
       stepping) check "$moment: the failure came while stepping" not_says run.err "publishing" ;;
-      publishing) check "$moment: the failure came while deriving the text" says run.err "deriving" ;;
+      publishing) check "$moment: the failure came while deriving the text" says run.err ".dat." ;;
     esac
   done
   ;;
@@ -256,12 +256,13 @@ sigint_publishing | sigkill_publishing)
   earlier out/run.h5
   scene out/run.h5 run 0.4
   sed -i 's/every = 3, field_every = 20/every = 1, field_every = 1/' run.nml
-  start_until run 'deriving' 60 || exit 1
+  start_until run 'publishing' 60 || exit 1
   if [ $case_name = sigint_publishing ]; then
     kill -INT $pid
     wait $pid
     check 'exit status 4' status_is $? 4
     check 'message says the text files were skipped' says run.err 'published without them'
+    check 'the message came while deriving' says run.err 'while deriving the text files'
     check 'the new result is published, complete, status ok' \
       "$python" "$here/check_result.py" complete out/run.h5 ok --no-text
     check 'no .dat file of the earlier run is left beside it' test -z "$(ls out/*.dat 2> /dev/null)"
