@@ -84,11 +84,14 @@ contains
 
    !> Refuse an output path that would destroy what the run needs or cannot be a file:
    !! the input file itself (also through another name of the same file, or as one of the
-   !! derived .dat names) and an existing directory. stat = 1 with a message naming
-   !! &output file (the program exits with status 2 before anything runs).
-   subroutine check_output_target(output, input, stat, errmsg)
-      character(len=*), intent(in) :: output   !! &output file
-      character(len=*), intent(in) :: input    !! the input file
+   !! derived .dat names), the result file a run continues (&initial from_file: the new
+   !! result holds only what follows its checkpoint), and an existing directory. stat = 1
+   !! with a message naming &output file (the program exits with status 2 before anything
+   !! runs).
+   subroutine check_output_target(output, input, from_file, stat, errmsg)
+      character(len=*), intent(in) :: output     !! &output file
+      character(len=*), intent(in) :: input      !! the input file
+      character(len=*), intent(in) :: from_file  !! &initial from_file ('' when none)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: k, last
@@ -108,6 +111,14 @@ contains
          stat = 1
          errmsg = '&output file = '''//trim(output)//''' is the input file itself; the result would replace it'
          return
+      end if
+      if (len_trim(from_file) > 0) then
+         if (trim(output) == trim(from_file) .or. same_file(output, from_file)) then
+            stat = 1
+            errmsg = '&output file = '''//trim(output)//''' is the file that &initial from_file continues; '// &
+                     'the continued result holds only what follows its checkpoint: give it another name'
+            return
+         end if
       end if
       do k = 1, size(text_suffixes)
          if (trim(text_file_name(output, trim(text_suffixes(k)))) == trim(input) .or. &

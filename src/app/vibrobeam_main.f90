@@ -37,7 +37,7 @@ program vibrobeam_main
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    call validate_scene(scene, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
-   call check_output_target(scene%file, input_file, stat, errmsg)
+   call check_output_target(scene%file, input_file, scene%from_file, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    warnings = ''
    call prepare_scene(scene, prepared, warnings, stat, errmsg)
