@@ -145,7 +145,7 @@ contains
          case ('static')
             allocate (reaction(contacts%count))
             call solve_static(model%stiffness, contacts, prepared%loads%at(0.0_dp), scene%contact_solver, &
-                              prepared%u0, reaction, iterations, stat, errmsg)
+                              prepared%u0, reaction, iterations, stat, errmsg, scene%contact_max_iterations)
             if (stat /= 0) then
                errmsg = '&initial displacement = ''static'': '//trim(errmsg)
                stat = setup_numerical_failure
