@@ -45,8 +45,8 @@ module vibrobeam_hdf5
    use vibrobeam_filesystem, only: make_parent_directories, rename_file, remove_file, &
       unique_temporary_name, sync_file, sync_directory_of
    use vibrobeam_hdf5_base, only: no_id, buffer_length, initialize_library, fail, describe, &
-      valid_path, link_exists, h5_reason, attribute_outcome, put_real_attribute, put_int_attribute, &
-      put_int64_attribute, put_string_attribute, rewrite_attribute, close_dataspace, close_property_list
+      valid_path, link_exists, h5_reason, attribute_outcome, put_scalar_attribute, &
+      put_string_attribute, rewrite_attribute, close_dataspace, close_property_list
    use vibrobeam_hdf5_reader, only: read_real_1d, read_real_2d, read_int_1d, read_real_scalar, &
       read_attr_real, read_attr_int, read_attr_string, h5_path_exists
    use hdf5, only: hid_t, hsize_t, h5kind_to_type, H5_REAL_KIND, H5_INTEGER_KIND, &
@@ -392,15 +392,7 @@ contains
       real(dp), intent(in) :: value                 !! attribute value
       integer, intent(out) :: stat                  !! 0 on success
       character(len=*), intent(out) :: errmsg       !! reason of the failure, blank on success
-      integer(hid_t) :: object_id
-      character(len=:), allocatable :: failed_step
-      integer :: close_error
-
-      call open_or_create_object(self, object_path, object_id, stat, errmsg)
-      if (stat /= 0) return
-      call put_real_attribute(object_id, name, value, failed_step)
-      call h5oclose_f(object_id, close_error)
-      call attribute_outcome(self%temporary_name, object_path, name, failed_step, stat, errmsg)
+      call put_attribute(self, object_path, name, value, stat, errmsg)
    end subroutine writer_attr_real
 
    !> Set the integer attribute `name` of the object `object_path` (see `attr_real`).
@@ -411,15 +403,7 @@ contains
       integer, intent(in) :: value                  !! attribute value
       integer, intent(out) :: stat                  !! 0 on success
       character(len=*), intent(out) :: errmsg       !! reason of the failure, blank on success
-      integer(hid_t) :: object_id
-      character(len=:), allocatable :: failed_step
-      integer :: close_error
-
-      call open_or_create_object(self, object_path, object_id, stat, errmsg)
-      if (stat /= 0) return
-      call put_int_attribute(object_id, name, value, failed_step)
-      call h5oclose_f(object_id, close_error)
-      call attribute_outcome(self%temporary_name, object_path, name, failed_step, stat, errmsg)
+      call put_attribute(self, object_path, name, value, stat, errmsg)
    end subroutine writer_attr_int
 
    !> Set the 64-bit integer attribute `name` of the object `object_path` (see `attr_real`).
@@ -430,16 +414,26 @@ contains
       integer(int64), intent(in) :: value           !! attribute value
       integer, intent(out) :: stat                  !! 0 on success
       character(len=*), intent(out) :: errmsg       !! reason of the failure, blank on success
+      call put_attribute(self, object_path, name, value, stat, errmsg)
+   end subroutine writer_attr_int64
+
+   !> The scalar attribute of `attr_real`, `attr_int`, `attr_int64`.
+   subroutine put_attribute(self, object_path, name, value, stat, errmsg)
+      class(h5_writer), intent(inout) :: self
+      character(len=*), intent(in) :: object_path, name
+      class(*), intent(in) :: value
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
       integer(hid_t) :: object_id
       character(len=:), allocatable :: failed_step
       integer :: close_error
 
       call open_or_create_object(self, object_path, object_id, stat, errmsg)
       if (stat /= 0) return
-      call put_int64_attribute(object_id, name, value, failed_step)
+      call put_scalar_attribute(object_id, name, value, failed_step)
       call h5oclose_f(object_id, close_error)
       call attribute_outcome(self%temporary_name, object_path, name, failed_step, stat, errmsg)
-   end subroutine writer_attr_int64
+   end subroutine put_attribute
 
    !> Set the fixed-length string attribute `name` of the object `object_path` (see
    !! `attr_real`). The stored length is `len(value)` (trailing blanks are kept; pass

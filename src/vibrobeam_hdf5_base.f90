@@ -23,7 +23,7 @@ module vibrobeam_hdf5_base
    private
    public :: no_id, buffer_length, initialize_library, close_library, h5_reason
    public :: fail, describe, valid_path, link_exists
-   public :: attribute_outcome, put_real_attribute, put_int_attribute, put_int64_attribute, &
+   public :: attribute_outcome, put_scalar_attribute, &
       put_string_attribute, rewrite_attribute
    public :: open_file_for_reading
    public :: close_dataspace, close_datatype, close_property_list
@@ -238,57 +238,40 @@ contains
       end if
    end subroutine new_scalar_attribute
 
-   !> Write the real attribute `name` = `value` on the open object `object_id`.
-   subroutine put_real_attribute(object_id, name, value, failed_step)
+   !> Write the scalar attribute `name` = `value` (a real(dp), a default integer or an
+   !! integer(int64), stored in its native type) on the open object `object_id`.
+   subroutine put_scalar_attribute(object_id, name, value, failed_step)
       integer(hid_t), intent(in) :: object_id
       character(len=*), intent(in) :: name
-      real(dp), intent(in) :: value
+      class(*), intent(in) :: value
       character(len=:), allocatable, intent(out) :: failed_step
-      integer(hid_t) :: attribute_id
+      integer(hid_t) :: attribute_id, type_id
       integer :: hdferr
 
-      call new_scalar_attribute(object_id, name, h5kind_to_type(dp, H5_REAL_KIND), &
-         attribute_id, failed_step)
+      select type (value)
+      type is (real(dp))
+         type_id = h5kind_to_type(dp, H5_REAL_KIND)
+      type is (integer)
+         type_id = h5kind_to_type(kind(value), H5_INTEGER_KIND)
+      type is (integer(int64))
+         type_id = h5kind_to_type(int64, H5_INTEGER_KIND)
+      class default
+         failed_step = 'unsupported attribute type'
+         return
+      end select
+      call new_scalar_attribute(object_id, name, type_id, attribute_id, failed_step)
       if (len(failed_step) > 0) return
-      call h5awrite_f(attribute_id, h5kind_to_type(dp, H5_REAL_KIND), value, [1_hsize_t], hdferr)
+      select type (value)
+      type is (real(dp))
+         call h5awrite_f(attribute_id, type_id, value, [1_hsize_t], hdferr)
+      type is (integer)
+         call h5awrite_f(attribute_id, type_id, value, [1_hsize_t], hdferr)
+      type is (integer(int64))
+         call h5awrite_f(attribute_id, type_id, value, [1_hsize_t], hdferr)
+      end select
       if (hdferr < 0) failed_step = 'H5Awrite'
       call h5aclose_f(attribute_id, hdferr)
-   end subroutine put_real_attribute
-
-   !> Write the integer attribute `name` = `value` on the open object `object_id`.
-   subroutine put_int_attribute(object_id, name, value, failed_step)
-      integer(hid_t), intent(in) :: object_id
-      character(len=*), intent(in) :: name
-      integer, intent(in) :: value
-      character(len=:), allocatable, intent(out) :: failed_step
-      integer(hid_t) :: attribute_id
-      integer :: hdferr
-
-      call new_scalar_attribute(object_id, name, h5kind_to_type(kind(value), H5_INTEGER_KIND), &
-         attribute_id, failed_step)
-      if (len(failed_step) > 0) return
-      call h5awrite_f(attribute_id, h5kind_to_type(kind(value), H5_INTEGER_KIND), value, &
-         [1_hsize_t], hdferr)
-      if (hdferr < 0) failed_step = 'H5Awrite'
-      call h5aclose_f(attribute_id, hdferr)
-   end subroutine put_int_attribute
-
-   !> Write the 64-bit integer attribute `name` = `value` on the open object `object_id`.
-   subroutine put_int64_attribute(object_id, name, value, failed_step)
-      integer(hid_t), intent(in) :: object_id
-      character(len=*), intent(in) :: name
-      integer(int64), intent(in) :: value
-      character(len=:), allocatable, intent(out) :: failed_step
-      integer(hid_t) :: attribute_id
-      integer :: hdferr
-
-      call new_scalar_attribute(object_id, name, h5kind_to_type(int64, H5_INTEGER_KIND), &
-         attribute_id, failed_step)
-      if (len(failed_step) > 0) return
-      call h5awrite_f(attribute_id, h5kind_to_type(int64, H5_INTEGER_KIND), value, [1_hsize_t], hdferr)
-      if (hdferr < 0) failed_step = 'H5Awrite'
-      call h5aclose_f(attribute_id, hdferr)
-   end subroutine put_int64_attribute
+   end subroutine put_scalar_attribute
 
    !> Write the fixed-length string attribute `name` = `value` on the open object
    !! `object_id`: NUL-padded and of length len(value) by default; with `capacity`, a

@@ -157,19 +157,7 @@ contains
       real(dp), allocatable, intent(out) :: values(:)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer(hid_t) :: dataset_id
-      integer :: hdferr, close_error
-      call whole_dataset_size(self, path, dataset_id, values_count=hdferr, stat=stat, errmsg=errmsg)
-      if (stat /= 0) then
-         allocate (values(0))
-         return
-      end if
-      allocate (values(hdferr))
-      hdferr = 0
-      if (size(values) > 0) call h5dread_f(dataset_id, h5kind_to_type(dp, H5_REAL_KIND), values, &
-                                           [int(size(values), hsize_t)], hdferr)
-      call h5dclose_f(dataset_id, close_error)
-      if (hdferr < 0) call fail(stat, errmsg, 'cannot read dataset ' // describe(path, self%name))
+      call read_whole(self, path, stat, errmsg, reals=values)
    end subroutine reader_read_reals
 
    !> The whole integer dataset `path` as 64-bit integers (any rank, in storage order).
@@ -179,20 +167,35 @@ contains
       integer(int64), allocatable, intent(out) :: values(:)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      call read_whole(self, path, stat, errmsg, int64s=values)
+   end subroutine reader_read_int64s
+
+   !> The whole dataset `path` into `reals` or `int64s` (the one present), converted by
+   !! HDF5; empty on failure.
+   subroutine read_whole(self, path, stat, errmsg, reals, int64s)
+      class(h5_reader), intent(in) :: self
+      character(len=*), intent(in) :: path
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp), allocatable, intent(out), optional :: reals(:)
+      integer(int64), allocatable, intent(out), optional :: int64s(:)
       integer(hid_t) :: dataset_id
-      integer :: hdferr, close_error
-      call whole_dataset_size(self, path, dataset_id, values_count=hdferr, stat=stat, errmsg=errmsg)
-      if (stat /= 0) then
-         allocate (values(0))
-         return
-      end if
-      allocate (values(hdferr))
+      integer :: count, hdferr, close_error
+      call whole_dataset_size(self, path, dataset_id, count, stat, errmsg)
+      if (stat /= 0) count = 0
+      if (present(reals)) allocate (reals(count))
+      if (present(int64s)) allocate (int64s(count))
+      if (stat /= 0) return
       hdferr = 0
-      if (size(values) > 0) call h5dread_f(dataset_id, h5kind_to_type(int64, H5_INTEGER_KIND), values, &
-                                           [int(size(values), hsize_t)], hdferr)
+      if (count > 0) then
+         if (present(reals)) call h5dread_f(dataset_id, h5kind_to_type(dp, H5_REAL_KIND), reals, &
+                                            [int(count, hsize_t)], hdferr)
+         if (present(int64s)) call h5dread_f(dataset_id, h5kind_to_type(int64, H5_INTEGER_KIND), int64s, &
+                                             [int(count, hsize_t)], hdferr)
+      end if
       call h5dclose_f(dataset_id, close_error)
       if (hdferr < 0) call fail(stat, errmsg, 'cannot read dataset ' // describe(path, self%name))
-   end subroutine reader_read_int64s
+   end subroutine read_whole
 
    !> The string attribute `name` of `object_path` (trailing NULs removed).
    subroutine reader_attr_string(self, object_path, name, value, stat, errmsg)
