@@ -173,13 +173,14 @@ contains
          call h5fcreate_f(self%temporary_name, H5F_ACC_TRUNC_F, self%file_id, hdferr, &
             access_prp=file_access_list)
       end if
-      call close_property_list(file_access_list)
       if (hdferr < 0) then
          self%file_id = no_id
          call fail(stat, errmsg, 'cannot create HDF5 file ''' // self%temporary_name // '''')
+         call close_property_list(file_access_list)
          call remove_file(self%temporary_name, hdferr, fs_message)
          return
       end if
+      call close_property_list(file_access_list)
 
       call h5pcreate_f(H5P_LINK_CREATE_F, self%link_creation_list, hdferr)
       if (hdferr >= 0) call h5pset_create_inter_group_f(self%link_creation_list, 1, hdferr)

@@ -86,7 +86,7 @@ contains
       logical, intent(in), optional :: matrix     !! 2-d even with one column (default: columns > 1)
       integer(hid_t) :: space_id, properties, access
       integer(hsize_t) :: dims(2), max_dims(2), chunk(2)
-      character(len=:), allocatable :: failed_step
+      character(len=:), allocatable :: failed_step, reason
       integer :: hdferr, rank, capacity, allocation_stat
       stat = 0
       errmsg = ''
@@ -134,12 +134,14 @@ contains
       if (hdferr >= 0) call h5pset_chunk_cache_f(access, 0_size_t, 0_size_t, 1.0, hdferr)
       if (hdferr >= 0) call h5dcreate_f(writer%id(), trim(path), value_type(self%integers), space_id, &
                                         self%dataset, hdferr, properties, writer%link_properties(), access)
+      reason = ''
+      if (hdferr < 0) reason = h5_reason()
       call close_dataspace(space_id)
       call close_property_list(properties)
       call close_property_list(access)
       if (hdferr < 0) then
          self%dataset = no_id
-         call fail(stat, errmsg, 'cannot create dataset ' // describe(path, self%file))
+         call fail(stat, errmsg, 'cannot create dataset ' // describe(path, self%file), reason)
          return
       end if
       call put_string_attribute(self%dataset, 'unit', unit, failed_step)
@@ -255,6 +257,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer(hid_t) :: space_id, properties
+      character(len=:), allocatable :: reason
       integer :: hdferr
       stat = 0
       errmsg = ''
@@ -270,11 +273,13 @@ contains
       if (hdferr >= 0) call h5pset_alloc_time_f(properties, H5D_ALLOC_TIME_EARLY_F, hdferr)
       if (hdferr >= 0) call h5dcreate_f(writer%id(), trim(path), value_type(integers), space_id, &
                                         self%dataset, hdferr, properties, writer%link_properties())
+      reason = ''
+      if (hdferr < 0) reason = h5_reason()
       call close_dataspace(space_id)
       call close_property_list(properties)
       if (hdferr < 0) then
          self%dataset = no_id
-         call fail(stat, errmsg, 'cannot create dataset ' // describe(path, self%file))
+         call fail(stat, errmsg, 'cannot create dataset ' // describe(path, self%file), reason)
       end if
    end subroutine array_create
 
