@@ -216,7 +216,7 @@ sigkill_stepping)
   # must open and hold the start of the uninterrupted run; a run continued from the last
   # one's checkpoint must end like the uninterrupted run.
   earlier out/run.h5
-  for kill_after in 0.$((RANDOM % 4 + 3)) 0.$((RANDOM % 3 + 7)) 1.$((RANDOM % 5)); do
+  for kill_after in 0.$((RANDOM % 2 + 3)) 0.$((RANDOM % 3 + 5)) 0.$((RANDOM % 2 + 8)); do
     rm -f out/*.tmp
     scene out/run.h5 run 100 0.8 .true. 0.1
     "$vibrobeam" run.nml > run.out 2> run.err &
