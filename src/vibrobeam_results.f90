@@ -29,7 +29,7 @@ module vibrobeam_results
    use vibrobeam_progress, only: progress_meter
    implicit none
    private
-   public :: result_files, run_summary, new_run_id, publish_files, check_output_target
+   public :: result_files, run_summary, new_run_id, publish_files, check_result_path
 
    !> Bytes reserved for the /run status attribute ('running', 'ok', 'failed', 'interrupted').
    integer, parameter :: status_capacity = 16
@@ -88,7 +88,7 @@ contains
    !! result holds only what follows its checkpoint), and an existing directory. stat = 1
    !! with a message naming &output file (the program exits with status 2 before anything
    !! runs).
-   subroutine check_output_target(output, input, from_file, stat, errmsg)
+   subroutine check_result_path(output, input, from_file, stat, errmsg)
       character(len=*), intent(in) :: output     !! &output file
       character(len=*), intent(in) :: input      !! the input file
       character(len=*), intent(in) :: from_file  !! &initial from_file ('' when none)
@@ -129,7 +129,7 @@ contains
             return
          end if
       end do
-   end subroutine check_output_target
+   end subroutine check_result_path
 
    !> Create the HDF5 file (temporary name) with the root attributes (version, every
    !! resolved input value with its unit, the resolved scene as text), /mesh/x and the

@@ -17,7 +17,7 @@ program vibrobeam_main
    use vibrobeam_static, only: solve_static
    use vibrobeam_setup, only: prepared_scene, prepare_scene, setup_numerical_failure
    use vibrobeam_dynamics, only: run_dynamics, run_outcome
-   use vibrobeam_results, only: result_files, run_summary, publish_files, check_output_target
+   use vibrobeam_results, only: result_files, run_summary, publish_files, check_result_path
    use vibrobeam_text_output, only: derived_file, derive_text_files
    use vibrobeam_hdf5_base, only: close_library
    use vibrobeam_progress, only: progress_meter
@@ -37,7 +37,7 @@ program vibrobeam_main
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    call validate_scene(scene, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
-   call check_output_target(scene%file, input_file, scene%from_file, stat, errmsg)
+   call check_result_path(scene%file, input_file, scene%from_file, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    warnings = ''
    call prepare_scene(scene, prepared, warnings, stat, errmsg)
