@@ -106,7 +106,7 @@ output_is_input)
   cp out/input.nml before.nml
   "$vibrobeam" out/input.nml > run.out 2> run.err
   check 'exit status 2' status_is $? 2
-  check 'message names &output file and the input' says run.err "&output file = 'out/input.nml' is the input file itself"
+  check 'message names &output file and the input' says run.err "&output file = 'out/input.nml' is the input file"
   check 'the input is unchanged' cmp -s out/input.nml before.nml
   check 'nothing else written' test "$(ls out)" = input.nml
   ;;
@@ -121,41 +121,46 @@ output_is_directory)
   check 'earlier results intact' intact out/run.h5
   ;;
 full_disk)
-  # A small tmpfs holding earlier results; where mounting is not allowed, a file-size
-  # limit (ulimit -f) instead. Three moments: the temporary file cannot grow at all, the
-  # disk fills while stepping, and while the .dat files are derived.
-  scene probe/run.h5 probe 1.0 0.8 .true. 0.2   # the run below, on a disk with room
+  # Three moments: the temporary file cannot grow at all (a file-size limit, `ulimit -f`),
+  # the disk fills while stepping, and while the result is published. The disk is a tmpfs
+  # holding earlier results, filled up (fallocate) once the run is at that moment, so that
+  # a check of the free space before the run cannot see it coming; where mounting is not
+  # allowed, a file-size limit below the HDF5 file (stepping) or below a .dat file
+  # (publishing) instead.
+  scene probe/run.h5 probe 1.0 0.8 .true. 0.2   # the ulimit run below, on a disk with room
   "$vibrobeam" probe.nml > /dev/null 2>&1 || { echo "FAIL probe run"; exit 1; }
   h5_kb=$(( $(stat -c %s probe/run.h5) / 1024 + 1 ))
-  dat_kb=$(( $(cat probe/run_*.dat | wc -c) / 1024 ))
   largest_dat_kb=$(( $(ls -S probe/run_*.dat | head -1 | xargs stat -c %s) / 1024 ))
   mkdir disk
   # (FULL_DISK_METHOD=ulimit tries the fall-back where mounting works)
-  if [ "${FULL_DISK_METHOD:-tmpfs}" = tmpfs ] && mount -t tmpfs -o size=64m tmpfs disk 2> /dev/null; then
+  if [ "${FULL_DISK_METHOD:-tmpfs}" = tmpfs ] && mount -t tmpfs -o size=256m tmpfs disk 2> /dev/null; then
     mounted=$work/disk
     method=tmpfs
   else
     method=ulimit
   fi
-  echo "full disk by $method: result $h5_kb kB + text $dat_kb kB"
+  echo "full disk by $method"
   for moment in start stepping publishing; do
     rm -rf snapshot
-    if [ $method = tmpfs ]; then
-      umount disk; mount -t tmpfs -o size=64m tmpfs disk
-      earlier disk/run.h5
-      used_kb=$(du -sk disk | cut -f1)
-      case $moment in
-        start) room=$((used_kb + 8)) ;;
-        stepping) room=$((used_kb + h5_kb / 2)) ;;
-        publishing) room=$((used_kb + h5_kb + dat_kb / 3)) ;;
-      esac
-      mount -o remount,size=${room}k disk
-      scene disk/run.h5 run 1.0 0.8 .true. 0.2   # checkpoints, so flushes, every 0.2 s
-      "$vibrobeam" run.nml > run.out 2> run.err
+    [ $method = tmpfs ] && { umount disk; mount -t tmpfs -o size=256m tmpfs disk; }
+    earlier disk/run.h5
+    if [ $method = tmpfs ] && [ $moment != start ]; then
+      if [ $moment = stepping ]; then   # a long run with few outputs: still stepping after 1 s
+        scene disk/run.h5 run 40 0.8 .true. 0.2
+        sed -i 's/every = 3, field_every = 20/every = 300, field_every = 3000/' run.nml
+        start_until run '%  t =' 60 || exit 1
+      else                              # many outputs: the text takes seconds to derive
+        scene disk/run.h5 run 1.0 0.8 .true. 0.2
+        sed -i 's/every = 3, field_every = 20/every = 1, field_every = 1/' run.nml
+        start_until run 'publishing' 60 || exit 1
+      fi
+      fallocate -l "$(df -k --output=avail disk | tail -1)k" disk/filler 2> /dev/null ||
+        dd if=/dev/zero of=disk/filler bs=64k 2> /dev/null
+      wait $pid
       code=$?
+      rm -f disk/filler
       reason='No space left on device'
     else
-      earlier disk/run.h5
       case $moment in
         start) limit=1 ;;
         stepping) limit=$((h5_kb / 2)) ;;
@@ -178,7 +183,7 @@ full_disk)
     check "$moment: no temporary file left" no_temporary disk
     case $moment in
       stepping) check "$moment: the failure came while stepping" not_says run.err "publishing" ;;
-      publishing) check "$moment: the failure came while deriving the text" says run.err ".dat." ;;
+      publishing) check "$moment: the failure came while publishing" says run.err "publishing" ;;
     esac
   done
   ;;
