@@ -1,10 +1,39 @@
 #!/usr/bin/env bash
-# Draw every plot that the .dat files of a result set allow, as PNG beside them.
-# usage: plot_results.sh RESULT.h5   (needs the .dat files: &output text = .true., the default)
+# Draw every plot that a result allows, as PNG beside it.
+# usage: plot_results.sh RESULT.h5
+# The .dat files are derived from RESULT.h5: when one is missing or names another run
+# than RESULT.h5's /run run_id (an earlier run's, or none with &output text = .false.),
+# they are derived again with `vibrobeam --text RESULT.h5` (vibrobeam from $VIBROBEAM,
+# the PATH, or build/ of this repository).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 result=${1:?usage: plot_results.sh RESULT.h5}
 stem=${result%.h5}
+[ -f "$result" ] || { echo "plot_results: no result file $result" >&2; exit 1; }
+
+run_id=$(h5dump -a /run/run_id "$result" 2> /dev/null | sed -n 's/.*(0): *"\([^"]*\)".*/\1/p')
+stale=0
+needed=$(ls "$here"/plot_*.gp | xargs sed -n 's/^# needs: *//p' | sort -u)
+for kind in $needed shapes static; do
+  [ -n "$run_id" ] || break
+  file="${stem}_${kind}.dat"
+  [ -f "$file" ] || continue
+  head -1 "$file" | grep -q -F "# vibrobeam run $run_id " || stale=2
+done
+if [ -n "$run_id" ]; then
+  # a result holds some of these; its .dat files must exist for what it holds
+  h5dump -n "$result" 2> /dev/null | grep -q ' /time$' && [ ! -f "${stem}_tip.dat" ] && stale=2
+  h5dump -n "$result" 2> /dev/null | grep -q ' /modes/shape$' && [ ! -f "${stem}_shapes.dat" ] && stale=2
+  h5dump -n "$result" 2> /dev/null | grep -q ' /static/displacement$' && [ ! -f "${stem}_static.dat" ] && stale=2
+fi
+if [ "$stale" = 2 ]; then
+  vibrobeam=${VIBROBEAM:-$(command -v vibrobeam || echo "$here/../build/vibrobeam")}
+  [ -x "$vibrobeam" ] || { echo "plot_results: the .dat files of $result are missing or stale and no vibrobeam" \
+                                "program was found to derive them (set VIBROBEAM)" >&2; exit 1; }
+  echo "plot_results: deriving the text files of $result"
+  "$vibrobeam" --text "$result"
+fi
+
 drawn=0
 plot() {  # plot SCRIPT REQUIRED_DAT
   if [ -f "${stem}_$2.dat" ]; then
@@ -19,4 +48,8 @@ for gp in "$here"/plot_dynamics_*.gp; do
   name=$(basename "$gp" .gp)
   plot "$name.gp" "$(sed -n 's/^# needs: *//p' "$gp")"
 done
+if [ "$drawn" -eq 0 ]; then
+  echo "plot_results: nothing to draw for $result" >&2
+  exit 1
+fi
 echo "plot_results: $drawn plot script(s) run; PNG files are beside ${stem}.h5"

@@ -1,44 +1,53 @@
-!> A dynamics run from start to result files (&analysis kind = 'dynamics'): the time loop
-!! around the scheme's stepper, output sampling, progress reports and failure handling.
+!> A dynamics run from start to published result (&analysis kind = 'dynamics'): the time
+!! loop around the scheme's stepper, streaming output, flushes and checkpoints, progress
+!! reports, interruption and failure handling (docs/output.md).
 !!
-!! The run takes n = nint(t_end/dt) steps (t_end is rounded to a whole number of steps;
-!! a warning says so when that changes it by more than 1e-9 dt). On a numerical failure
-!! (contact solver without convergence, non-finite state) the histories up to the last
-!! good step are written, complete, with /run status = 'failed'.
+!! The run ends at step nint(t_end/dt) (t_end is rounded to a whole number of steps; a
+!! warning says so when that changes it by more than 1e-9 dt); step numbers are global
+!! 64-bit counts and t = n dt. It starts at step 0, or at the checkpoint of &initial
+!! from_file. Every `flush_seconds` of wall time the buffered rows go to the temporary
+!! file and it is flushed (a run killed then leaves a consistent file up to that flush);
+!! with &output checkpoint_seconds > 0 a checkpoint is also written at the first flush
+!! after each such interval. On a numerical failure (contact solver without convergence,
+!! non-finite state) the histories up to the last good step are published, complete,
+!! with /run status = 'failed'; on SIGINT/SIGTERM the current step is finished and the
+!! result is published with /run status = 'interrupted'.
 module vibrobeam_dynamics
-   use, intrinsic :: iso_c_binding, only: c_int
    use vibrobeam_kinds, only: dp, int64, error_unit
-   use vibrobeam_scene, only: scene_type
+   use vibrobeam_text, only: real_text
+   use vibrobeam_scene, only: scene_type, step_count
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
    use vibrobeam_stepper, only: time_stepper
    use vibrobeam_recorder, only: dynamics_recorder
-   use vibrobeam_results, only: result_files
+   use vibrobeam_results, only: result_files, run_summary
+   use vibrobeam_checkpoint, only: checkpoint_slots
+   use vibrobeam_state_record, only: state_record
+   use vibrobeam_progress, only: progress_meter
+   use vibrobeam_signals, only: interrupt_requested
    implicit none
    private
-   public :: run_dynamics, run_outcome
+   public :: run_dynamics, run_outcome, flush_seconds
+
+   !> Wall time between two flushes of the temporary file (s).
+   real(dp), parameter :: flush_seconds = 2
 
    !> What a run reports back to the program.
    type :: run_outcome
-      logical :: failed = .false.        !! numerical failure (results written, marked failed)
-      integer :: steps = 0
-      integer :: impacts = 0
+      character(len=16) :: status = 'ok'       !! 'ok' | 'failed' | 'interrupted' (/run status)
+      logical :: text_skipped = .false.        !! a signal stopped the text derivation
+      integer(int64) :: steps = 0              !! global step number at the end
+      integer(int64) :: impacts = 0
       real(dp) :: wall_seconds = 0
       real(dp) :: max_penetration = 0
       character(len=512) :: failure = ''
+      character(len=64) :: run_id = ''         !! /run run_id of the published result
    end type run_outcome
-
-   interface
-      function c_isatty(fd) result(flag) bind(C, name='isatty')
-         import :: c_int
-         integer(c_int), value :: fd
-         integer(c_int) :: flag
-      end function c_isatty
-   end interface
 
 contains
 
-   !> Run the scene and write its results. stat /= 0 (with errmsg) only for failures that
-   !! prevented writing results (I/O); a numerical failure is reported in `outcome`.
+   !> Run the scene and publish its result. stat /= 0 (with errmsg) for failures that
+   !! prevented a result (I/O: nothing is published, earlier results are untouched); a
+   !! numerical failure or an interruption is reported in `outcome`.
    subroutine run_dynamics(scene, prepared, outcome, stat, errmsg)
       type(scene_type), intent(in) :: scene
       type(prepared_scene), intent(in) :: prepared
@@ -48,61 +57,157 @@ contains
       class(time_stepper), allocatable :: stepper
       type(dynamics_recorder) :: recorder
       type(result_files) :: files
-      integer :: steps, n, step_stat
-      integer(int64) :: start, now, rate, last_report
-      logical :: report
+      type(checkpoint_slots) :: slots
+      type(state_record) :: record
+      type(progress_meter) :: meter
+      type(run_summary) :: summary
+      integer(int64) :: last, n, start, now, rate, last_flush, last_checkpoint
+      real(dp) :: flush_interval
+      integer :: step_stat
       character(len=512) :: step_message
+
+      call meter%init(scene%progress)
       call system_clock(start, rate)
-      steps = max(1, nint(scene%t_end/scene%dt))
-      if (abs(steps*scene%dt - scene%t_end) > 1e-9_dp*scene%dt) write (error_unit, '(a,es14.7,a)') &
-         'vibrobeam: warning: t_end is not a whole number of steps; the run ends at ', steps*scene%dt, ' s'
+      last = step_count(scene)
+      ! (n dt rounds to the nearest double of t_end: allow a few of its ulps)
+      if (.not. prepared%resuming .and. abs(last*scene%dt - scene%t_end) > &
+          max(1e-9_dp*scene%dt, 4*epsilon(1.0_dp)*scene%t_end)) &
+         write (error_unit, '(a)') 'vibrobeam: warning: t_end is not a whole number of steps; the run ends at '// &
+         real_text(last*scene%dt)//' s'
       call start_time_stepper(scene, prepared, stepper, stat, errmsg)
       if (stat /= 0) return
-      call recorder%init(stepper, prepared%model)
-      call recorder%sample(stepper, prepared%model)
-      report = scene%progress .or. c_isatty(2_c_int) == 1
-      last_report = start
-      do n = 1, steps
-         call stepper%step(step_stat, step_message)
-         if (step_stat /= 0) then
-            outcome%failed = .true.
-            write (outcome%failure, '(a,i0,a,es14.7,a)') 'step ', n, ' (t = ', stepper%t + stepper%dt, &
-               ' s): '//trim(step_message)
-            exit
+      summary%start_step = stepper%steps
+      call recorder%init(scene, stepper, prepared%model, prepared%v0, last)
+      if (prepared%resuming) then
+         call recorder%restore_state(prepared%resume, stat, errmsg)
+         if (stat /= 0) then
+            errmsg = '&initial from_file = '''//trim(scene%from_file)//''': '//trim(errmsg)
+            return
          end if
-         call recorder%after_step(stepper)
-         if (mod(n, scene%every) == 0 .or. n == steps) call recorder%sample(stepper, prepared%model)
-         if (report) then
-            call system_clock(now)
-            if (now - last_report >= rate) then
-               call progress_line(n, steps, stepper%t, real(now - start, dp)/rate)
-               last_report = now
-            end if
-         end if
-      end do
-      ! a failed run still ends with a sample of the last good state
-      if (outcome%failed .and. recorder%last_output_time < stepper%t) call recorder%sample(stepper, prepared%model)
-      if (report) write (error_unit, '(a)') ''
-      outcome%steps = stepper%steps
-      outcome%impacts = recorder%impacts%rows
-      outcome%max_penetration = recorder%max_penetration
-      call files%open(scene, prepared%model, stat, errmsg)
-      if (stat == 0) call recorder%write(files, prepared%model, stepper, stat, errmsg)
-      call system_clock(now)
-      outcome%wall_seconds = real(now - start, dp)/rate
-      if (stat == 0) call files%commit(trim(merge('failed', 'ok    ', outcome%failed)), stepper%steps, &
-                                       outcome%wall_seconds, recorder%iterations_total, recorder%iterations_max, &
-                                       stat, errmsg)
-      if (stat /= 0) call files%discard()
-   end subroutine run_dynamics
+      end if
 
-   subroutine progress_line(n, steps, t, elapsed)
-      integer, intent(in) :: n, steps
-      real(dp), intent(in) :: t, elapsed
-      real(dp) :: left
-      left = elapsed*(steps - n)/max(n, 1)
-      write (error_unit, '(a,f6.2,a,es11.4,a,f9.1,a,f9.1,a)', advance='no') achar(13)//'vibrobeam: ', &
-         100.0_dp*n/steps, ' %  t = ', t, ' s  wall ', elapsed, ' s  left ~', left, ' s'
-      flush (error_unit)
-   end subroutine progress_line
+      ! every dataset exists before the file enters SWMR mode
+      call files%open(scene, prepared%model, stat, errmsg)
+      outcome%run_id = files%run_id
+      if (stat /= 0) then
+         call files%discard()
+         return
+      end if
+      run: block
+         call recorder%create_datasets(files%h5, stepper, prepared%model, stat, errmsg)
+         if (stat /= 0) exit run
+         call save_state()
+         call slots%create(files%h5, record, merge(2, 1, scene%checkpoint_seconds > 0), stat, errmsg)
+         if (stat /= 0) exit run
+         if (len_trim(scene%from_file) > 0) then
+            call files%h5%attr_string('/run', 'continued_from', trim(scene%from_file), stat, errmsg)
+            if (stat /= 0) exit run
+         end if
+         call files%h5%start_swmr(stat, errmsg)
+         if (stat /= 0) exit run
+         if (.not. prepared%resuming) then
+            call recorder%sample(stepper, prepared%model, stat, errmsg)
+            if (stat == 0) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
+            if (stat /= 0) exit run
+         end if
+         call flush_all()
+         if (stat /= 0) exit run
+         call system_clock(last_flush)
+         last_checkpoint = last_flush
+         flush_interval = flush_seconds
+         if (scene%checkpoint_seconds > 0) flush_interval = min(flush_seconds, scene%checkpoint_seconds)
+
+         do n = stepper%steps + 1, last
+            call stepper%step(step_stat, step_message)
+            if (step_stat /= 0) then
+               outcome%status = 'failed'
+               write (outcome%failure, '(a,i0,a,es14.7,a)') 'step ', n, ' (t = ', n*scene%dt, ' s): '//trim(step_message)
+               exit
+            end if
+            call recorder%after_step(stepper, stat, errmsg)
+            if (stat == 0 .and. recorder%output_due(n)) call recorder%sample(stepper, prepared%model, stat, errmsg)
+            if (stat == 0 .and. recorder%field_due(n)) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
+            if (stat /= 0) exit run
+            if (interrupt_requested()) then
+               outcome%status = 'interrupted'
+               exit
+            end if
+            call system_clock(now)
+            if (now - last_flush >= flush_interval*rate) then
+               call flush_all()
+               if (stat /= 0) exit run
+               last_flush = now
+               if (scene%checkpoint_seconds > 0 .and. now - last_checkpoint >= scene%checkpoint_seconds*rate) then
+                  call save_state()
+                  call slots%write(files%h5, record, stepper%steps, stepper%t, stat, errmsg)
+                  if (stat /= 0) exit run
+                  last_checkpoint = now
+               end if
+            end if
+            if (meter%due()) call meter%report(progress_text(n))
+         end do
+
+         ! the result ends with a sample of the last (good) state
+         call recorder%sample(stepper, prepared%model, stat, errmsg)
+         if (stat == 0) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
+         if (stat /= 0) exit run
+         call save_state()
+         call recorder%finish(files%h5, stepper, stat, errmsg)
+         if (stat == 0) call slots%write(files%h5, record, stepper%steps, stepper%t, stat, errmsg)
+         if (stat /= 0) exit run
+         call slots%close()
+         outcome%steps = stepper%steps
+         outcome%impacts = recorder%impacts
+         outcome%max_penetration = recorder%max_penetration
+         summary%status = outcome%status
+         summary%steps = stepper%steps
+         summary%wall_seconds = meter%elapsed()
+         summary%iterations_total = recorder%iterations_total
+         summary%iterations_max = recorder%iterations_max
+         summary%linear_solves_total = recorder%linear_solves_total
+         summary%linear_solves_max = recorder%linear_solves_max
+         summary%fallback_steps = recorder%fallback_steps
+         call files%set_flushed(stepper%steps, recorder%rows(), stat, errmsg)
+         if (stat == 0) call files%set_run(summary, stat, errmsg)
+         if (stat /= 0) exit run
+         call files%publish(meter, outcome%status /= 'interrupted', outcome%text_skipped, stat, errmsg)
+         if (stat /= 0) exit run
+         outcome%wall_seconds = meter%elapsed()
+         call meter%end_line()
+         return
+      end block run
+      ! an I/O failure: nothing is published
+      call meter%end_line()
+      call files%discard()
+      if (stat == 0) stat = 1
+
+   contains
+
+      !> The state of stepper and recorder, as a checkpoint holds it.
+      subroutine save_state()
+         call record%clear()
+         call stepper%save_state(record)
+         call recorder%save_state(record)
+      end subroutine save_state
+
+      !> Buffered rows to the file, what it holds into /run, then H5Fflush.
+      subroutine flush_all()
+         call recorder%write_buffers(stat, errmsg)
+         if (stat == 0) call files%h5%flush(stat, errmsg)
+         if (stat == 0) call files%set_flushed(stepper%steps, recorder%rows(), stat, errmsg)
+         if (stat == 0) call files%h5%flush(stat, errmsg)
+      end subroutine flush_all
+
+      function progress_text(step) result(text)
+         integer(int64), intent(in) :: step
+         character(len=:), allocatable :: text
+         character(len=160) :: buffer
+         real(dp) :: elapsed, fraction
+         elapsed = meter%elapsed()
+         fraction = real(step - summary%start_step, dp)/max(1_int64, last - summary%start_step)
+         write (buffer, '(f6.2,a,es11.4,a,f9.1,a,f9.1,a)') 100.0_dp*step/last, ' %  t = ', step*scene%dt, &
+            ' s  wall ', elapsed, ' s  left ~', elapsed*(1 - fraction)/max(fraction, 1e-12_dp), ' s'
+         text = trim(buffer)
+      end function progress_text
+   end subroutine run_dynamics
 end module vibrobeam_dynamics

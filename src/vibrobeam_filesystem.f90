@@ -1,30 +1,53 @@
-!> Small POSIX file-system helpers (mkdir -p, rename, remove, existence) and atomic text
-!! output, through `bind(C)` interfaces to the C library.
+!> Small POSIX file-system helpers (mkdir -p, rename, remove, existence, fsync, a lock on a
+!! directory, unique temporary names) and atomic text output, through `bind(C)`
+!! interfaces to the C library and to src/vibrobeam_posix.c.
 !!
 !! Every procedure returns `stat` (0 = success) and `errmsg` (blank on success, otherwise a
 !! message naming the path(s) and the C library's reason) and never stops. Trailing blanks
 !! of path arguments are ignored, as in a Fortran `open(file=...)`.
 !!
-!! Atomic output (INTERFACE.md, "Output: ... written atomically"): a result is written to
-!! `temporary_name(final_name)` and renamed onto `final_name` once complete. The temporary
-!! file lives in the same directory as the final one, so both are on the same file system
-!! and POSIX rename(2) replaces the final name atomically: a reader sees either the old
-!! complete file or the new complete file, never a partial one.
+!! Atomic output (docs/output.md, "How a result is published"): a result is written to
+!! `unique_temporary_name(final_name)` = `<final_name>.<pid>-<token>.tmp`, synced to disk
+!! (`sync_file`) and renamed onto `final_name` once complete; the directory is then synced
+!! too (`sync_directory_of`), so the rename itself survives a crash. The temporary file
+!! lives in the same directory as the final one, so both are on the same file system and
+!! POSIX rename(2) replaces the final name atomically: a reader sees either the old
+!! complete file or the new complete file, never a partial one. The process id and a
+!! random token make the name unique, so concurrent runs writing one result never share a
+!! temporary file.
 !!
 !! Portability: the C error number is read through glibc/musl's `__errno_location` (the
 !! function behind the `errno` macro on Linux); `mode_t` is taken to be a C `int`-sized
 !! unsigned integer, as on Linux.
 module vibrobeam_filesystem
-   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char, c_ptr, c_size_t, &
-      c_associated, c_f_pointer
+   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_long, c_int64_t, c_null_char, c_ptr, &
+      c_null_ptr, c_size_t, c_double, c_associated, c_f_pointer
    implicit none
    private
    public :: make_parent_directories, rename_file, remove_file, file_exists
-   public :: temporary_name
-   public :: open_text_for_atomic_write, commit_text_file, discard_text_file
+   public :: unique_temporary_name, temporary_suffix, directory_of
+   public :: sync_file, sync_directory_of, directory_lock, error_text, last_error_text
+   public :: text_file, open_text_for_atomic_write, write_text_line, write_text_row, finish_text_file, &
+      discard_text_file
+   public :: process_id, utc_stamp, random_hex
 
-   !> Suffix appended to a final file name to form its temporary name.
+   !> Suffix of every temporary file name (`unique_temporary_name`).
    character(len=*), parameter :: temporary_suffix = '.tmp'
+
+   !> A text file written through src/vibrobeam_posix.c (every write checked: libgfortran
+   !! does not report a failed write of its buffer to a formatted WRITE with iostat).
+   type :: text_file
+      type(c_ptr) :: handle = c_null_ptr
+   end type text_file
+
+   !> An exclusive flock(2) on a directory, held from `acquire` to `release` (or until the
+   !! process ends: the kernel releases it with the descriptor).
+   type :: directory_lock
+      integer(c_int) :: descriptor = -1
+   contains
+      procedure :: acquire => lock_acquire
+      procedure :: release => lock_release
+   end type directory_lock
 
    !> Permission bits for new directories (octal 0777, reduced by the process umask as
    !! `mkdir -p` does).
@@ -79,6 +102,89 @@ module vibrobeam_filesystem
          integer(c_int), value, intent(in) :: errnum
          type(c_ptr) :: message
       end function c_strerror
+
+      !> int vb_fsync_path(const char *path);  (0 or errno)
+      function c_fsync_path(path) result(error) bind(C, name='vb_fsync_path')
+         import :: c_char, c_int
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int) :: error
+      end function c_fsync_path
+
+      !> int vb_lock(const char *path, int *fd);  (0 or errno)
+      function c_lock(path, fd) result(error) bind(C, name='vb_lock')
+         import :: c_char, c_int
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int), intent(out) :: fd
+         integer(c_int) :: error
+      end function c_lock
+
+      !> int vb_unlock(int fd);
+      function c_unlock(fd) result(error) bind(C, name='vb_unlock')
+         import :: c_int
+         integer(c_int), value, intent(in) :: fd
+         integer(c_int) :: error
+      end function c_unlock
+
+      !> long vb_process_id(void);
+      function c_process_id() result(pid) bind(C, name='vb_process_id')
+         import :: c_long
+         integer(c_long) :: pid
+      end function c_process_id
+
+      !> uint64_t vb_random_token(void);
+      function c_random_token() result(token) bind(C, name='vb_random_token')
+         import :: c_int64_t
+         integer(c_int64_t) :: token
+      end function c_random_token
+
+      !> int vb_utc_stamp(char *buffer, int length);
+      function c_utc_stamp(buffer, length) result(error) bind(C, name='vb_utc_stamp')
+         import :: c_char, c_int
+         character(kind=c_char), intent(out) :: buffer(*)
+         integer(c_int), value, intent(in) :: length
+         integer(c_int) :: error
+      end function c_utc_stamp
+
+      !> void *vb_text_open(const char *path, int *error);
+      function c_text_open(path, error) result(handle) bind(C, name='vb_text_open')
+         import :: c_char, c_int, c_ptr
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int), intent(out) :: error
+         type(c_ptr) :: handle
+      end function c_text_open
+
+      !> int vb_text_write(void *handle, const char *data, size_t length);
+      function c_text_write(handle, data, length) result(error) bind(C, name='vb_text_write')
+         import :: c_char, c_int, c_ptr, c_size_t
+         type(c_ptr), value, intent(in) :: handle
+         character(kind=c_char), intent(in) :: data(*)
+         integer(c_size_t), value, intent(in) :: length
+         integer(c_int) :: error
+      end function c_text_write
+
+      !> int vb_text_write_row(void *handle, const double *values, int count, int width, int digits,
+      !!                       int integers);
+      function c_text_write_row(handle, values, count, width, digits, integers) result(error) &
+         bind(C, name='vb_text_write_row')
+         import :: c_int, c_ptr, c_double
+         type(c_ptr), value, intent(in) :: handle
+         real(c_double), intent(in) :: values(*)
+         integer(c_int), value, intent(in) :: count, width, digits, integers
+         integer(c_int) :: error
+      end function c_text_write_row
+
+      !> int vb_text_close(void *handle);
+      function c_text_close(handle) result(error) bind(C, name='vb_text_close')
+         import :: c_int, c_ptr
+         type(c_ptr), value, intent(in) :: handle
+         integer(c_int) :: error
+      end function c_text_close
+
+      !> void vb_text_abandon(void *handle);
+      subroutine c_text_abandon(handle) bind(C, name='vb_text_abandon')
+         import :: c_ptr
+         type(c_ptr), value, intent(in) :: handle
+      end subroutine c_text_abandon
 
       !> size_t strlen(const char *s);
       function c_strlen(s) result(length) bind(C, name='strlen')
@@ -170,70 +276,218 @@ contains
       exists = c_access(c_string(path), f_ok) == 0
    end function file_exists
 
-   !> Name of the temporary file used while writing `final_name`: `final_name // '.tmp'`.
-   !! It is in the same directory as `final_name`, so renaming it onto `final_name` stays
-   !! on one file system and is atomic.
-   pure function temporary_name(final_name) result(name)
+   !> A fresh temporary name for writing `final_name`: `<final_name>.<pid>-<token>.tmp`,
+   !! the process id and 32 random bits in hexadecimal. It is in the same directory as
+   !! `final_name`, so renaming it onto `final_name` stays on one file system and is atomic,
+   !! and no other run (another process id) nor another file of this run (another token)
+   !! uses it.
+   function unique_temporary_name(final_name) result(name)
       character(len=*), intent(in) :: final_name  !! name the file will have when complete
-      character(len=:), allocatable :: name       !! trim(final_name) // '.tmp'
-      name = trim(final_name) // temporary_suffix
-   end function temporary_name
+      character(len=:), allocatable :: name
+      character(len=32) :: pid
+      write (pid, '(i0)') process_id()
+      name = trim(final_name) // '.' // trim(pid) // '-' // random_hex(8) // temporary_suffix
+   end function unique_temporary_name
 
-   !> Open `temporary_name(final_name)` for formatted sequential writing (replacing any
-   !! previous temporary file), after creating the parent directories of `final_name`.
-   !! Finish with `commit_text_file` (or `discard_text_file` on error).
-   subroutine open_text_for_atomic_write(final_name, unit, stat, errmsg)
+   !> The process id.
+   function process_id() result(pid)
+      integer :: pid
+      pid = int(c_process_id())
+   end function process_id
+
+   !> `digits` (1..16) random hexadecimal digits.
+   function random_hex(digits) result(text)
+      integer, intent(in) :: digits
+      character(len=digits) :: text
+      character(len=16), parameter :: hex = '0123456789abcdef'
+      integer(c_int64_t) :: token
+      integer :: i, nibble
+      token = c_random_token()
+      do i = 1, digits
+         nibble = int(iand(token, 15_c_int64_t)) + 1
+         text(i:i) = hex(nibble:nibble)
+         token = shiftr(token, 4)
+      end do
+   end function random_hex
+
+   !> The current UTC time as 'YYYYMMDDTHHMMSSZ'.
+   function utc_stamp() result(stamp)
+      character(len=16) :: stamp
+      character(kind=c_char) :: buffer(17)
+      integer :: i
+      stamp = '00000000T000000Z'
+      if (c_utc_stamp(buffer, 17_c_int) /= 0) return
+      do i = 1, 16
+         stamp(i:i) = buffer(i)
+      end do
+   end function utc_stamp
+
+   !> The directory part of `path` ('.' when it has none, '/' for a file in the root).
+   pure function directory_of(path) result(directory)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: directory
+      integer :: slash
+      slash = index(trim(path), '/', back=.true.)
+      if (slash == 0) then
+         directory = '.'
+      else if (slash == 1) then
+         directory = '/'
+      else
+         directory = path(1:slash - 1)
+      end if
+   end function directory_of
+
+   !> Wait until the data of the file `path` are on disk (fsync(2)).
+   subroutine sync_file(path, stat, errmsg)
+      character(len=*), intent(in) :: path     !! existing file
+      integer, intent(out) :: stat             !! 0 on success
+      character(len=*), intent(out) :: errmsg  !! reason of the failure, blank on success
+      integer(c_int) :: error_number
+      stat = 0
+      errmsg = ''
+      error_number = c_fsync_path(c_string(path))
+      if (error_number /= 0) then
+         stat = 1
+         errmsg = 'cannot sync ''' // trim(path) // ''' to disk: ' // error_text(error_number)
+      end if
+   end subroutine sync_file
+
+   !> Wait until the directory holding `path` is on disk (fsync(2) of the directory), so
+   !! that a rename into it survives a crash.
+   subroutine sync_directory_of(path, stat, errmsg)
+      character(len=*), intent(in) :: path     !! a file in the directory
+      integer, intent(out) :: stat             !! 0 on success
+      character(len=*), intent(out) :: errmsg  !! reason of the failure, blank on success
+      call sync_file(directory_of(path), stat, errmsg)
+   end subroutine sync_directory_of
+
+   !> Take an exclusive lock on the directory `directory`, waiting while another process
+   !! holds it.
+   subroutine lock_acquire(self, directory, stat, errmsg)
+      class(directory_lock), intent(inout) :: self
+      character(len=*), intent(in) :: directory
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(c_int) :: error_number
+      stat = 0
+      errmsg = ''
+      error_number = c_lock(c_string(directory), self%descriptor)
+      if (error_number /= 0) then
+         stat = 1
+         errmsg = 'cannot lock directory ''' // trim(directory) // ''': ' // error_text(error_number)
+      end if
+   end subroutine lock_acquire
+
+   !> Release the lock (a no-op when none is held).
+   subroutine lock_release(self)
+      class(directory_lock), intent(inout) :: self
+      integer(c_int) :: error_number
+      error_number = c_unlock(self%descriptor)
+      self%descriptor = -1
+   end subroutine lock_release
+
+   !> Create a fresh temporary file for `final_name` (`unique_temporary_name`), after
+   !! creating the parent directories of `final_name`. Write lines with `write_text_line`;
+   !! finish with `finish_text_file` (then rename `temporary` onto `final_name`) or
+   !! `discard_text_file`.
+   subroutine open_text_for_atomic_write(final_name, file, temporary, stat, errmsg)
       character(len=*), intent(in) :: final_name  !! name of the complete text file
-      integer, intent(out) :: unit                !! unit opened on the temporary file (newunit)
+      type(text_file), intent(out) :: file        !! the open temporary file
+      character(len=:), allocatable, intent(out) :: temporary   !! its name
       integer, intent(out) :: stat                !! 0 on success
       character(len=*), intent(out) :: errmsg     !! reason of the failure, blank on success
-      character(len=512) :: io_message
+      integer(c_int) :: error_number
 
-      unit = -1
+      temporary = unique_temporary_name(final_name)
       call make_parent_directories(final_name, stat, errmsg)
       if (stat /= 0) return
-      io_message = ''
-      open (newunit=unit, file=temporary_name(final_name), status='replace', &
-         action='write', form='formatted', access='sequential', iostat=stat, &
-         iomsg=io_message)
-      if (stat /= 0) then
-         unit = -1
-         errmsg = 'cannot open ''' // temporary_name(final_name) // ''' for writing: ' // &
-            trim(io_message)
+      file%handle = c_text_open(c_string(temporary), error_number)
+      if (.not. c_associated(file%handle)) then
+         stat = 1
+         errmsg = 'cannot create ''' // temporary // ''': ' // error_text(error_number)
       end if
    end subroutine open_text_for_atomic_write
 
-   !> Close `unit` (opened by `open_text_for_atomic_write(final_name, ...)`) and rename
-   !! its temporary file onto `final_name`. On failure the temporary file is left in place.
-   subroutine commit_text_file(unit, final_name, stat, errmsg)
-      integer, intent(in) :: unit                 !! unit of the temporary file
-      character(len=*), intent(in) :: final_name  !! name of the complete text file
+   !> Append `line` and a newline to `file` (named `temporary` in messages).
+   subroutine write_text_line(file, line, temporary, stat, errmsg)
+      type(text_file), intent(inout) :: file
+      character(len=*), intent(in) :: line, temporary
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(c_int) :: error_number
+      stat = 0
+      errmsg = ''
+      error_number = c_text_write(file%handle, line // new_line('a'), int(len(line) + 1, c_size_t))
+      if (error_number /= 0) then
+         stat = 1
+         errmsg = 'cannot write ''' // trim(temporary) // ''': ' // error_text(error_number)
+      end if
+   end subroutine write_text_line
+
+   !> Append one line of numbers to `file`: each right-aligned in `width` characters, in
+   !! scientific notation with `digits` digits after the point (C's %E), the last
+   !! `integers` of them as integers.
+   subroutine write_text_row(file, values, width, digits, integers, temporary, stat, errmsg)
+      type(text_file), intent(inout) :: file
+      real(c_double), intent(in) :: values(:)
+      integer, intent(in) :: width, digits, integers
+      character(len=*), intent(in) :: temporary
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(c_int) :: error_number
+      stat = 0
+      errmsg = ''
+      error_number = c_text_write_row(file%handle, values, int(size(values), c_int), int(width, c_int), &
+                                      int(digits, c_int), int(integers, c_int))
+      if (error_number /= 0) then
+         stat = 1
+         errmsg = 'cannot write ''' // trim(temporary) // ''': ' // error_text(error_number)
+      end if
+   end subroutine write_text_row
+
+   !> Write out what is buffered, sync the file `temporary` to disk and close it.
+   subroutine finish_text_file(file, temporary, stat, errmsg)
+      type(text_file), intent(inout) :: file      !! the temporary file
+      character(len=*), intent(in) :: temporary   !! its name
       integer, intent(out) :: stat                !! 0 on success
       character(len=*), intent(out) :: errmsg     !! reason of the failure, blank on success
-      character(len=512) :: io_message
+      integer(c_int) :: error_number
 
+      stat = 0
       errmsg = ''
-      io_message = ''
-      close (unit, status='keep', iostat=stat, iomsg=io_message)
-      if (stat /= 0) then
-         errmsg = 'cannot close ''' // temporary_name(final_name) // ''': ' // trim(io_message)
-         return
+      error_number = c_text_close(file%handle)
+      file%handle = c_null_ptr
+      if (error_number /= 0) then
+         stat = 1
+         errmsg = 'cannot write ''' // trim(temporary) // ''': ' // error_text(error_number)
       end if
-      call rename_file(temporary_name(final_name), final_name, stat, errmsg)
-   end subroutine commit_text_file
+   end subroutine finish_text_file
 
-   !> Close `unit` and delete the temporary file of `final_name`; `final_name` itself is
-   !! untouched. Never fails: errors are ignored (there is nothing left to do about them).
-   subroutine discard_text_file(unit, final_name)
-      integer, intent(in) :: unit                 !! unit of the temporary file
-      character(len=*), intent(in) :: final_name  !! name the text file would have had
-      integer :: close_status, remove_status
+   !> Close `file` (if open) and delete the temporary file `temporary`. Never fails:
+   !! errors are ignored (there is nothing left to do about them).
+   subroutine discard_text_file(file, temporary)
+      type(text_file), intent(inout) :: file      !! the temporary file (may be closed)
+      character(len=*), intent(in) :: temporary  !! its name
+      integer :: remove_status
       character(len=256) :: remove_message
 
-      close (unit, status='delete', iostat=close_status)
-      ! Deleting on close can fail silently (e.g. unit already closed): make sure.
-      call remove_file(temporary_name(final_name), remove_status, remove_message)
+      if (c_associated(file%handle)) call c_text_abandon(file%handle)
+      file%handle = c_null_ptr
+      call remove_file(temporary, remove_status, remove_message)
    end subroutine discard_text_file
+
+   !> strerror(error_number) as a Fortran string.
+   function error_text(error_number) result(message)
+      integer(c_int), intent(in) :: error_number
+      character(len=:), allocatable :: message
+      message = c_error_message(error_number)
+   end function error_text
+
+   !> strerror(errno): the C library's reason of the last failed call.
+   function last_error_text() result(message)
+      character(len=:), allocatable :: message
+      message = c_error_message(c_errno())
+   end function last_error_text
 
    ! ---------------------------------------------------------------------------------
    ! private helpers

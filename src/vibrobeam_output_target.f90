@@ -146,6 +146,14 @@ contains
                      ''' is not an existing file: give the results file of an earlier run'
             return
          end if
+         ! the continued result holds only what follows the checkpoint: writing it over the
+         ! file it continues would lose the earlier part
+         if (c_same_file(c_string(file), c_string(trim(scene%from_file))) == 1 .or. &
+             join(resolved, name) == real_path(trim(scene%from_file))) then
+            errmsg = shown//' is the file that &initial from_file continues; the continued result holds '// &
+                     'only what follows its checkpoint: give it another name'
+            return
+         end if
       end if
       if (scene%kind == 'dynamics') then
          estimate = estimate_result_size(scene)

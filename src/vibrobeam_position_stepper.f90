@@ -25,7 +25,8 @@ module vibrobeam_position_stepper
    use vibrobeam_model, only: beam_model
    use vibrobeam_contact_points, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_stepper, only: time_stepper, save_stepper_state, restore_stepper_state
+   use vibrobeam_state_record, only: state_record
    implicit none
    private
    public :: position_stepper
@@ -38,6 +39,8 @@ module vibrobeam_position_stepper
       procedure :: step
       procedure :: kinetic_energy => half_step_kinetic_energy
       procedure :: elastic_energy => half_step_elastic_energy
+      procedure :: save_state
+      procedure :: restore_state
    end type position_stepper
 
 contains
@@ -126,6 +129,24 @@ contains
          self%t = self%steps*dt
       end associate
    end subroutine step
+
+   !> The base type's state and U^{n-1}.
+   subroutine save_state(self, record)
+      class(position_stepper), intent(in) :: self
+      type(state_record), intent(inout) :: record
+      call save_stepper_state(self, record)
+      call record%put_reals('stepper.u_previous', self%u_previous)
+   end subroutine save_state
+
+   !> Take back what `save_state` put into `record`.
+   subroutine restore_state(self, record, stat, errmsg)
+      class(position_stepper), intent(inout) :: self
+      type(state_record), intent(in) :: record
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      call restore_stepper_state(self, record, stat, errmsg)
+      if (stat == 0) call record%get_reals('stepper.u_previous', self%u_previous, stat, errmsg)
+   end subroutine restore_state
 
    !> 1/2 v^T (M + (theta - 1/4) dt^2 K) v at t_{n-1/2} (the scheme's kinetic part).
    function half_step_kinetic_energy(self) result(energy)

@@ -1,81 +1,200 @@
-!> Histories of a dynamics run and their output (INTERFACE.md "Output", SPEC §5).
+!> Histories of a dynamics run, streamed into the result file while the run goes on
+!! (docs/output.md, "HDF5 layout" and "Streaming"; docs/method.md, "Impacts and contact
+!! statistics").
 !!
-!! Recorded at every output time (t = 0, every `every` steps, and the last step): time,
-!! tip displacement, velocity and mean contact force at the tip over the output interval,
-!! energies, largest penetration, and the displacement field. Recorded at every step: new
-!! impacts (a contact point approaching its obstacle that receives an impulse after a step
-!! without one; an impulse on a point already moving away holds it, it is not an impact),
-!! the time each contact point spends in contact, and the largest penetration of the run.
+!! The time loop calls, for step n (global step number, t = n dt):
+!! - `after_step` after every step: impacts (streamed to /impacts), contact episodes
+!!   (`vibrobeam_episodes`, an observer), the time each contact point spends in contact,
+!!   the tip impulse since the last output, the largest penetration, contact-solver counts;
+!! - `sample` when `output_due(n)`: one row of every history (/time, /tip, /energy,
+!!   /contact/penetration, /points) at t = 0, every `every` steps and the last step;
+!! - `sample_field` when `field_due(n)`: one snapshot (/field/time, /field/displacement)
+!!   at t = 0, every `field_every` steps and the last step;
+!! - `write_buffers` at every flush, `finish` at the end.
+!! Memory is bounded: rows wait in fixed-size buffers (`vibrobeam_hdf5_series`), the
+!! spectrum is a streaming Welch estimate (`vibrobeam_welch`), per-point state is one
+!! value per contact or observation point.
+!!
+!! Everything a continued run needs to go on as if uninterrupted goes into a checkpoint
+!! (`save_state`/`restore_state`). Accumulators that observe every step (episodes now,
+!! statistics later) extend `step_observer` and are called from here, so the time loop
+!! does not change when one is added.
 module vibrobeam_recorder
-   use vibrobeam_kinds, only: dp
-   use vibrobeam_model, only: beam_model, nodal_displacement
+   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_scene, only: scene_type, is_unset
+   use vibrobeam_model, only: beam_model, nodal_displacement, point_row
    use vibrobeam_contact_points, only: contact_value
+   use vibrobeam_cantilever_exact, only: cantilever_frequency
    use vibrobeam_stepper, only: time_stepper
-   use vibrobeam_results, only: result_files
-   use vibrobeam_spectrum, only: amplitude_spectrum, bin_width
+   use vibrobeam_hdf5, only: h5_writer
+   use vibrobeam_hdf5_series, only: h5_series, h5_array
+   use vibrobeam_state_record, only: state_record
+   use vibrobeam_step_observer, only: step_events
+   use vibrobeam_episodes, only: episode_tracker
+   use vibrobeam_welch, only: welch_estimator
    implicit none
    private
-   public :: dynamics_recorder
+   public :: dynamics_recorder, default_episode_gap, history_paths
 
-   type :: growing_table
-      integer :: rows = 0
-      real(dp), allocatable :: values(:,:)   !! (columns, capacity)
-   end type growing_table
+   !> The histories sampled at every output time, in the order of a sample row.
+   integer, parameter :: history_count = 15
+   integer, parameter :: h_time = 1, h_tip_u = 2, h_tip_v = 3, h_tip_reaction = 4, h_tip_impulse = 5, &
+                         h_kinetic = 6, h_elastic = 7, h_total = 8, h_work = 9, h_dissipated = 10, &
+                         h_impacts = 11, h_damping = 12, h_numerical = 13, h_balance = 14, h_penetration = 15
+   character(len=*), parameter :: history_paths(history_count) = [character(len=40) :: '/time', &
+      '/tip/displacement', '/tip/velocity', '/tip/reaction', '/tip/impulse', '/energy/kinetic', &
+      '/energy/elastic', '/energy/total', '/energy/work', '/energy/dissipated', '/energy/dissipated_impacts', &
+      '/energy/dissipated_damping', '/energy/dissipated_numerical', '/energy/balance', '/contact/penetration']
+   character(len=*), parameter :: history_units(history_count) = [character(len=8) :: 's', 'm', 'm/s', 'N', &
+      'N s', 'J', 'J', 'J', 'J', 'J', 'J', 'J', 'J', 'J', 'm']
+   !> Columns of /impacts.
+   character(len=*), parameter :: impact_paths(5) = [character(len=32) :: '/impacts/time', '/impacts/x', &
+      '/impacts/impulse', '/impacts/velocity_before', '/impacts/velocity_after']
+   character(len=*), parameter :: impact_units(5) = [character(len=8) :: 's', 'm', 'N s', 'm/s', 'm/s']
 
    type :: dynamics_recorder
-      integer :: tip_contact = 0                    !! contact point at the tip, 0 if none
-      real(dp) :: tip_impulse = 0                   !! tip impulse since the last output (N s)
-      real(dp) :: last_output_time = 0
-      real(dp) :: max_penetration = 0               !! over every step (m)
+      integer(int64) :: every = 1, field_every = 1   !! output intervals (steps)
+      integer(int64) :: last_step = 0                !! the run's last step
+      integer(int64) :: last_output_step = -1        !! step of the last history row
+      integer(int64) :: last_field_step = -1         !! step of the last field snapshot
+      real(dp) :: last_output_time = 0               !! its time (s)
+      integer :: tip_contact = 0                     !! contact point at the tip, 0 if none
+      real(dp) :: tip_impulse = 0                    !! tip impulse since the last output (N s)
+      logical, allocatable :: in_contact(:)          !! contact point had an impulse last step
+      real(dp), allocatable :: contact_time(:)       !! time spent in contact per point (s)
+      real(dp) :: max_penetration = 0                !! over every step (m)
       real(dp) :: max_penetration_time = 0
-      integer :: iterations_total = 0, iterations_max = 0
-      type(growing_table) :: series                 !! one row per output time
-      type(growing_table) :: field                  !! (N+1) per output time
-      type(growing_table) :: impacts                !! time, x, impulse, v before, v after
-      logical, allocatable :: in_contact(:)         !! contact point had an impulse last step
-      real(dp), allocatable :: contact_time(:)      !! time spent in contact per point (s)
+      integer(int64) :: impacts = 0                  !! impacts since t = 0
+      ! contact-solver work of this process (not carried over by a restart)
+      integer(int64) :: iterations_total = 0, linear_solves_total = 0, fallback_steps = 0
+      integer :: iterations_max = 0, linear_solves_max = 0
+      ! observation points (&output points): rows of the shape functions
+      real(dp), allocatable :: point_x(:)
+      integer, allocatable :: point_dofs(:, :)       !! (4, points)
+      real(dp), allocatable :: point_weights(:, :)   !! (4, points)
+      real(dp) :: length = 0
+      type(welch_estimator) :: spectrum
+      type(episode_tracker) :: episodes
+      type(step_events) :: events
+      ! streamed datasets
+      type(h5_series) :: histories(history_count), point_u, point_v, field_time, field, impact_columns(5)
+      type(h5_series) :: spectrum_frequency, spectrum_amplitude
+      type(h5_array) :: fraction
    contains
       procedure :: init => recorder_init
+      procedure :: create_datasets
       procedure :: after_step
+      procedure :: output_due
+      procedure :: field_due
       procedure :: sample
-      procedure :: write => recorder_write
+      procedure :: sample_field
+      procedure :: write_buffers
+      procedure :: rows
+      procedure :: finish
+      procedure :: save_state
+      procedure :: restore_state
    end type dynamics_recorder
-
-   integer, parameter :: series_columns = 12
-   ! columns of `series`
-   integer, parameter :: c_time = 1, c_tip_u = 2, c_tip_v = 3, c_tip_force = 4, c_kinetic = 5, &
-                         c_elastic = 6, c_work = 7, c_dissipated = 8, c_impacts = 9, c_damping = 10, &
-                         c_total = 11, c_penetration = 12
 
 contains
 
-   subroutine append(table, row)
-      type(growing_table), intent(inout) :: table
-      real(dp), intent(in) :: row(:)
-      real(dp), allocatable :: bigger(:,:)
-      if (.not. allocated(table%values)) allocate (table%values(size(row), 64))
-      if (table%rows == size(table%values, 2)) then
-         allocate (bigger(size(row), 2*table%rows))
-         bigger(:, 1:table%rows) = table%values(:, 1:table%rows)
-         call move_alloc(bigger, table%values)
-      end if
-      table%rows = table%rows + 1
-      table%values(:, table%rows) = row
-   end subroutine append
+   !> The default of &output episode_gap: 0.05 of the period 2 pi/omega_1 of the first mode
+   !! of the clamped-free beam (closed form, `cantilever_frequency`) (s).
+   function default_episode_gap(length, k2) result(gap)
+      real(dp), intent(in) :: length, k2
+      real(dp) :: gap
+      gap = 0.05_dp*2*acos(-1.0_dp)/cantilever_frequency(1, length, k2)
+   end function default_episode_gap
 
-   subroutine recorder_init(self, stepper, model)
+   !> Set up for a run that ends at step `last_step`. `v0` is the initial velocity of the
+   !! scene: a contact point that starts on its obstacle (within the activation tolerance
+   !! 1e-12 L) without moving into it is in persistent contact from t = 0, so its first
+   !! impulse is not an impact.
+   subroutine recorder_init(self, scene, stepper, model, v0, last_step)
       class(dynamics_recorder), intent(inout) :: self
+      type(scene_type), intent(in) :: scene
       class(time_stepper), intent(in) :: stepper
       type(beam_model), intent(in) :: model
-      integer :: c
-      allocate (self%in_contact(stepper%contacts%count), source=.false.)
-      allocate (self%contact_time(stepper%contacts%count), source=0.0_dp)
+      real(dp), intent(in) :: v0(:)
+      integer(int64), intent(in) :: last_step
+      real(dp) :: value, speed, tolerance, gap
+      integer :: c, p, contacts
+      contacts = stepper%contacts%count
+      self%every = scene%every
+      self%field_every = scene%every
+      if (scene%field_every > 0) self%field_every = scene%field_every
+      self%last_step = last_step
+      self%length = model%length
+      allocate (self%in_contact(contacts), source=.false.)
+      allocate (self%contact_time(contacts), source=0.0_dp)
+      allocate (self%events%impact(contacts), source=.false.)
+      tolerance = 1e-12_dp*model%length
       self%tip_contact = 0
-      do c = 1, stepper%contacts%count
+      do c = 1, contacts
          if (stepper%contacts%node(c) == model%elements) self%tip_contact = c
+         value = contact_value(stepper%contacts, c, stepper%u)
+         speed = contact_value(stepper%contacts, c, v0)
+         if ((value <= stepper%contacts%lower(c) + tolerance .and. speed >= 0) .or. &
+             (value >= stepper%contacts%upper(c) - tolerance .and. speed <= 0)) self%in_contact(c) = .true.
       end do
       self%max_penetration = penetration(stepper)
+      self%max_penetration_time = stepper%t
+      self%point_x = scene%points
+      allocate (self%point_dofs(4, size(self%point_x)), self%point_weights(4, size(self%point_x)))
+      do p = 1, size(self%point_x)
+         call point_row(model, self%point_x(p), self%point_dofs(:, p), self%point_weights(:, p))
+      end do
+      call self%spectrum%init(self%every*scene%dt, last_step/self%every + 1)
+      gap = scene%episode_gap
+      if (is_unset(gap)) gap = default_episode_gap(model%length, model%ei/model%rho_s)
+      call self%episodes%init(stepper%contacts%x, gap)
    end subroutine recorder_init
+
+   !> Create every dataset of the run (before the file enters SWMR mode) and write what is
+   !! known from the start: /contact/x, /contact/lower, /contact/upper, /points/x.
+   subroutine create_datasets(self, writer, stepper, model, stat, errmsg)
+      class(dynamics_recorder), intent(inout) :: self
+      type(h5_writer), intent(inout) :: writer
+      class(time_stepper), intent(in) :: stepper
+      type(beam_model), intent(in) :: model
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: k
+      do k = 1, history_count
+         call self%histories(k)%create(writer, trim(history_paths(k)), 1, trim(history_units(k)), stat, errmsg)
+         if (stat /= 0) return
+      end do
+      do k = 1, 5
+         call self%impact_columns(k)%create(writer, trim(impact_paths(k)), 1, trim(impact_units(k)), stat, errmsg)
+         if (stat /= 0) return
+      end do
+      call self%field_time%create(writer, '/field/time', 1, 's', stat, errmsg)
+      if (stat == 0) call self%field%create(writer, '/field/displacement', model%elements + 1, 'm', stat, errmsg, &
+                                            matrix=.true.)
+      if (stat == 0 .and. size(self%point_x) > 0) then
+         call writer%write_real_1d('/points/x', self%point_x, 'm', stat, errmsg)
+         if (stat == 0) call self%point_u%create(writer, '/points/displacement', size(self%point_x), 'm', &
+                                                 stat, errmsg, matrix=.true.)
+         if (stat == 0) call self%point_v%create(writer, '/points/velocity', size(self%point_x), 'm/s', &
+                                                 stat, errmsg, matrix=.true.)
+      end if
+      if (stat == 0) call writer%write_real_1d('/contact/x', stepper%contacts%x, 'm', stat, errmsg)
+      if (stat == 0) call writer%write_real_1d('/contact/lower', stepper%contacts%lower, 'm', stat, errmsg)
+      if (stat == 0) call writer%write_real_1d('/contact/upper', stepper%contacts%upper, 'm', stat, errmsg)
+      if (stat == 0) call self%fraction%create(writer, '/contact/fraction', stepper%contacts%count, .false., &
+                                               stat, errmsg)
+      if (stat == 0) call writer%attr_string('/contact/fraction', 'unit', '1', stat, errmsg)
+      if (stat == 0) call writer%attr_real('/contact', 'max_penetration', 0.0_dp, stat, errmsg)
+      if (stat == 0) call writer%attr_real('/contact', 'max_penetration_time', 0.0_dp, stat, errmsg)
+      if (stat == 0) call writer%attr_int64('/impacts', 'count', 0_int64, stat, errmsg)
+      if (stat == 0) call writer%attr_real('/spectrum', 'sampling_interval', self%spectrum%dt, stat, errmsg)
+      if (stat == 0) call writer%attr_real('/spectrum', 'bin_width', 0.0_dp, stat, errmsg)
+      if (stat == 0) call writer%attr_int64('/spectrum', 'segments', 0_int64, stat, errmsg)
+      if (stat == 0) call writer%attr_int64('/spectrum', 'samples', 0_int64, stat, errmsg)
+      if (stat == 0) call writer%attr_string('/spectrum', 'window', 'hann', stat, errmsg)
+      if (stat == 0) call self%spectrum_frequency%create(writer, '/spectrum/frequency', 1, 'Hz', stat, errmsg)
+      if (stat == 0) call self%spectrum_amplitude%create(writer, '/spectrum/tip_amplitude', 1, 'm', stat, errmsg)
+      if (stat == 0) call self%episodes%create_datasets(writer, stat, errmsg)
+   end subroutine create_datasets
 
    !> Largest penetration of the current positions into an obstacle (m, >= 0).
    pure function penetration(stepper) result(depth)
@@ -89,21 +208,32 @@ contains
       end do
    end function penetration
 
-   !> Bookkeeping after every step: impacts, contact time, penetration, iterations.
-   subroutine after_step(self, stepper)
+   !> Bookkeeping after every step (module documentation). An impact is an impulse at a
+   !! contact point that received none in the previous step (nor rested on its obstacle
+   !! at t = 0) and approached its obstacle (docs/method.md).
+   subroutine after_step(self, stepper, stat, errmsg)
       class(dynamics_recorder), intent(inout) :: self
       class(time_stepper), intent(in) :: stepper
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
       logical :: now(size(self%in_contact))
       real(dp) :: depth
       integer :: k, c
+      stat = 0
+      errmsg = ''
       now = .false.
       do k = 1, stepper%active_count
          c = stepper%active(k)
+         self%events%impact(k) = .false.
          if (abs(stepper%impulse(k)) <= 0) cycle
          now(c) = .true.
-         if (.not. self%in_contact(c) .and. stepper%approaching(k)) call append(self%impacts, &
-                                                   [stepper%impulse_time, stepper%contacts%x(c), &
-                                                   stepper%impulse(k), stepper%velocity_before(k), stepper%velocity_after(k)])
+         if (.not. self%in_contact(c) .and. stepper%approaching(k)) then
+            self%events%impact(k) = .true.
+            self%impacts = self%impacts + 1
+            call append_impact([stepper%impulse_time, stepper%contacts%x(c), stepper%impulse(k), &
+                                stepper%velocity_before(k), stepper%velocity_after(k)])
+            if (stat /= 0) return
+         end if
          if (c == self%tip_contact) self%tip_impulse = self%tip_impulse + stepper%impulse(k)
       end do
       where (now) self%contact_time = self%contact_time + stepper%dt
@@ -115,151 +245,241 @@ contains
       end if
       self%iterations_total = self%iterations_total + stepper%iterations
       self%iterations_max = max(self%iterations_max, stepper%iterations)
+      self%linear_solves_total = self%linear_solves_total + stepper%linear_solves
+      self%linear_solves_max = max(self%linear_solves_max, stepper%linear_solves)
+      if (stepper%used_fallback) self%fallback_steps = self%fallback_steps + 1
+      call self%episodes%observe_step(stepper, self%events, stat, errmsg)
+   contains
+      subroutine append_impact(row)
+         real(dp), intent(in) :: row(5)
+         integer :: column
+         do column = 1, 5
+            call self%impact_columns(column)%append(row(column:column), stat, errmsg)
+            if (stat /= 0) return
+         end do
+      end subroutine append_impact
    end subroutine after_step
 
-   !> Record the state at an output time.
-   subroutine sample(self, stepper, model)
+   !> True when step n is an output time of the histories.
+   pure logical function output_due(self, n)
+      class(dynamics_recorder), intent(in) :: self
+      integer(int64), intent(in) :: n
+      output_due = mod(n, self%every) == 0 .or. n == self%last_step
+   end function output_due
+
+   !> True when step n is an output time of the field.
+   pure logical function field_due(self, n)
+      class(dynamics_recorder), intent(in) :: self
+      integer(int64), intent(in) :: n
+      field_due = mod(n, self%field_every) == 0 .or. n == self%last_step
+   end function field_due
+
+   !> One row of every history at the stepper's present time (a no-op when this step was
+   !! sampled already).
+   subroutine sample(self, stepper, model, stat, errmsg)
       class(dynamics_recorder), intent(inout) :: self
       class(time_stepper), intent(in) :: stepper
       type(beam_model), intent(in) :: model
-      real(dp) :: row(series_columns), nodes(model%elements + 1), nodal_velocity(model%elements + 1)
-      real(dp) :: interval
-      nodes = nodal_displacement(model, stepper%u)
-      nodal_velocity = nodal_displacement(model, stepper%v)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp) :: row(history_count), interval
+      real(dp) :: values(size(self%point_x)), speeds(size(self%point_x))
+      integer :: k
+      stat = 0
+      errmsg = ''
+      if (stepper%steps == self%last_output_step) return
       interval = stepper%t - self%last_output_time
-      row(c_time) = stepper%t
-      row(c_tip_u) = nodes(model%elements + 1)
-      row(c_tip_v) = nodal_velocity(model%elements + 1)
-      row(c_tip_force) = 0
-      if (interval > 0) row(c_tip_force) = self%tip_impulse/interval
-      row(c_kinetic) = stepper%kinetic_energy()
-      row(c_elastic) = stepper%elastic_energy()
-      row(c_work) = stepper%work
-      row(c_impacts) = stepper%dissipated_impacts
-      row(c_damping) = stepper%dissipated_damping
-      row(c_dissipated) = stepper%dissipated_impacts + stepper%dissipated_damping
-      row(c_total) = row(c_kinetic) + row(c_elastic)
-      row(c_penetration) = penetration(stepper)
-      call append(self%series, row)
-      call append(self%field, nodes)
+      row(h_time) = stepper%t
+      row(h_tip_u) = tip_value(stepper%u)
+      row(h_tip_v) = tip_value(stepper%v)
+      row(h_tip_impulse) = self%tip_impulse
+      row(h_tip_reaction) = 0
+      if (interval > 0) row(h_tip_reaction) = self%tip_impulse/interval
+      row(h_kinetic) = stepper%kinetic_energy()
+      row(h_elastic) = stepper%elastic_energy()
+      row(h_total) = row(h_kinetic) + row(h_elastic)
+      row(h_work) = stepper%work
+      row(h_impacts) = stepper%dissipated_impacts
+      row(h_damping) = stepper%dissipated_damping
+      row(h_numerical) = stepper%dissipated_numerical
+      row(h_dissipated) = row(h_impacts) + row(h_damping) + row(h_numerical)
+      row(h_balance) = row(h_total) - row(h_work) + row(h_dissipated)
+      row(h_penetration) = penetration(stepper)
+      do k = 1, history_count
+         call self%histories(k)%append(row(k:k), stat, errmsg)
+         if (stat /= 0) return
+      end do
+      if (size(self%point_x) > 0) then
+         do k = 1, size(self%point_x)
+            values(k) = point_value(k, stepper%u)
+            speeds(k) = point_value(k, stepper%v)
+         end do
+         call self%point_u%append(values, stat, errmsg)
+         if (stat == 0) call self%point_v%append(speeds, stat, errmsg)
+         if (stat /= 0) return
+      end if
+      ! the spectrum takes the uniformly spaced rows only (not a last row off the grid)
+      if (mod(stepper%steps, self%every) == 0) call self%spectrum%add(row(h_tip_u), stat, errmsg)
+      if (stat /= 0) return
       self%tip_impulse = 0
+      self%last_output_step = stepper%steps
       self%last_output_time = stepper%t
+   contains
+      !> u_h(L) (the tip is a node: exact for both bases).
+      real(dp) function tip_value(unknowns)
+         real(dp), intent(in) :: unknowns(:)
+         real(dp) :: nodes(model%elements + 1)
+         if (model%basis == 'hermite') then
+            tip_value = unknowns(model%unknowns - 1)
+         else
+            nodes = nodal_displacement(model, unknowns)
+            tip_value = nodes(model%elements + 1)
+         end if
+      end function tip_value
+      !> u_h(x_p) from the shape functions of the element holding observation point p.
+      real(dp) function point_value(p, unknowns)
+         integer, intent(in) :: p
+         real(dp), intent(in) :: unknowns(:)
+         integer :: a
+         point_value = 0
+         do a = 1, 4
+            if (self%point_dofs(a, p) /= 0) point_value = point_value + self%point_weights(a, p)* &
+                                                          unknowns(self%point_dofs(a, p))
+         end do
+      end function point_value
    end subroutine sample
 
-   !> Write every history into the result files (HDF5 datasets and .dat files).
-   subroutine recorder_write(self, files, model, stepper, stat, errmsg)
-      class(dynamics_recorder), intent(in) :: self
-      type(result_files), intent(inout) :: files
+   !> One field snapshot at the stepper's present time (a no-op when taken already).
+   subroutine sample_field(self, stepper, model, stat, errmsg)
+      class(dynamics_recorder), intent(inout) :: self
+      class(time_stepper), intent(in) :: stepper
       type(beam_model), intent(in) :: model
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      stat = 0
+      errmsg = ''
+      if (stepper%steps == self%last_field_step) return
+      call self%field_time%append([stepper%t], stat, errmsg)
+      if (stat == 0) call self%field%append(nodal_displacement(model, stepper%u), stat, errmsg)
+      self%last_field_step = stepper%steps
+   end subroutine sample_field
+
+   !> Write every buffered row to the file (at a flush).
+   subroutine write_buffers(self, stat, errmsg)
+      class(dynamics_recorder), intent(inout) :: self
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: k
+      do k = 1, history_count
+         call self%histories(k)%write(stat, errmsg)
+         if (stat /= 0) return
+      end do
+      do k = 1, 5
+         call self%impact_columns(k)%write(stat, errmsg)
+         if (stat /= 0) return
+      end do
+      call self%field_time%write(stat, errmsg)
+      if (stat == 0) call self%field%write(stat, errmsg)
+      if (stat == 0 .and. size(self%point_x) > 0) call self%point_u%write(stat, errmsg)
+      if (stat == 0 .and. size(self%point_x) > 0) call self%point_v%write(stat, errmsg)
+      if (stat == 0) call self%episodes%write_buffers(stat, errmsg)
+   end subroutine write_buffers
+
+   !> Rows so far: [outputs, field snapshots, impacts, episodes].
+   function rows(self) result(counts)
+      class(dynamics_recorder), intent(in) :: self
+      integer(int64) :: counts(4)
+      counts = [self%histories(1)%rows(), self%field_time%rows(), self%impact_columns(1)%rows(), &
+                self%episodes%rows()]
+   end function rows
+
+   !> End of the run: the spectrum, the contact fractions and largest penetration, the
+   !! open episodes, and every buffered row; the datasets are closed.
+   subroutine finish(self, writer, stepper, stat, errmsg)
+      class(dynamics_recorder), intent(inout) :: self
+      type(h5_writer), intent(inout) :: writer
       class(time_stepper), intent(in) :: stepper
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer :: n, unit, i, k
-      real(dp), allocatable :: s(:,:), impacts(:,:)
-      real(dp), allocatable :: frequency(:), tip_amplitude(:)
-      integer :: uniform, spectrum_stat
-      real(dp) :: interval
-      character(len=256) :: spectrum_message
-      n = self%series%rows
-      allocate (s, source=self%series%values(:, 1:n))
-      allocate (impacts(5, self%impacts%rows))
-      if (self%impacts%rows > 0) impacts(:, :) = self%impacts%values(:, 1:self%impacts%rows)
-      call files%h5%write_real_1d('/time', s(c_time, :), 's', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/tip/displacement', s(c_tip_u, :), 'm', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/tip/velocity', s(c_tip_v, :), 'm/s', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/tip/reaction', s(c_tip_force, :), 'N', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_2d('/field/displacement', self%field%values(:, 1:n), 'm', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/energy/kinetic', s(c_kinetic, :), 'J', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/energy/elastic', s(c_elastic, :), 'J', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/energy/work', s(c_work, :), 'J', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/energy/dissipated', s(c_dissipated, :), 'J', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/energy/dissipated_impacts', s(c_impacts, :), 'J', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/energy/dissipated_damping', s(c_damping, :), 'J', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/energy/total', s(c_total, :), 'J', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/energy/balance', s(c_total, :) - s(c_work, :) + s(c_dissipated, :), &
-                                                 'J', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/impacts/time', impacts(1, :), 's', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/impacts/x', impacts(2, :), 'm', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/impacts/impulse', impacts(3, :), 'N s', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/impacts/velocity_before', impacts(4, :), 'm/s', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/impacts/velocity_after', impacts(5, :), 'm/s', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/contact/penetration', s(c_penetration, :), 'm', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/contact/x', stepper%contacts%x, 'm', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/contact/fraction', self%contact_time/max(stepper%t, tiny(1.0_dp)), &
-                                                 '1', stat, errmsg)
-      if (stat == 0) call files%h5%attr_real('/contact', 'max_penetration', self%max_penetration, stat, errmsg)
-      if (stat == 0) call files%h5%attr_real('/contact', 'max_penetration_time', self%max_penetration_time, stat, errmsg)
+      real(dp), allocatable :: frequency(:), amplitude(:)
+      integer(int64) :: segments
+      real(dp) :: width
+      integer :: k
+      call self%episodes%finish(writer, stat, errmsg)
+      if (stat == 0) call self%write_buffers(stat, errmsg)
       if (stat /= 0) return
-      ! Spectrum of the tip displacement (SPEC §5) over the uniformly spaced output times
-      ! t = 0, every*dt, ...: the last row (end of run / last good state) is dropped when its
-      ! interval differs from the others. Fewer than 2 samples: an empty spectrum.
-      uniform = n
-      interval = 0
-      if (n >= 2) interval = s(c_time, 2) - s(c_time, 1)
-      if (n >= 3) then
-         if (abs((s(c_time, n) - s(c_time, n - 1)) - interval) > 1e-9_dp*interval) uniform = n - 1
+      call self%fraction%write_reals(self%contact_time/max(stepper%t, tiny(1.0_dp)), stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/contact', 'max_penetration', self%max_penetration, stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/contact', 'max_penetration_time', self%max_penetration_time, &
+                                                   stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/impacts', 'count', self%impacts, stat, errmsg)
+      if (stat /= 0) return
+      call self%spectrum%spectrum(frequency, amplitude, segments, width, stat, errmsg)
+      if (stat /= 0) then
+         errmsg = 'tip spectrum: '//trim(errmsg)
+         return
       end if
-      call amplitude_spectrum(s(c_tip_u, 1:uniform), interval, frequency, tip_amplitude, spectrum_stat, &
-                              spectrum_message, window='hann')
-      call files%h5%write_real_1d('/spectrum/frequency', frequency, 'Hz', stat, errmsg)
-      if (stat == 0) call files%h5%write_real_1d('/spectrum/tip_amplitude', tip_amplitude, 'm', stat, errmsg)
-      if (stat == 0 .and. uniform >= 2) &
-         call files%h5%attr_real('/spectrum', 'bin_width', bin_width(uniform, interval), stat, errmsg)
-      if (stat == 0) call files%h5%attr_real('/spectrum', 'sampling_interval', interval, stat, errmsg)
-      if (stat == 0) call files%h5%attr_string('/spectrum', 'window', 'hann', stat, errmsg)
+      call writer%rewrite_attr('/spectrum', 'bin_width', width, stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/spectrum', 'segments', segments, stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/spectrum', 'samples', self%spectrum%samples, stat, errmsg)
       if (stat /= 0) return
-      call files%open_text('spectrum', 'frequency (Hz)  amplitude of the tip displacement (m): single-sided, '// &
-                           'mean removed, Hann window', unit, stat, errmsg)
-      if (stat /= 0) return
-      if (unit /= -1) then
-         do i = 1, size(frequency)
-            write (unit, '(*(es24.15))') frequency(i), tip_amplitude(i)
-         end do
-      end if
-      call files%open_text('tip', 't (s)  u_tip (m)  v_tip (m/s)  mean tip contact force over the output interval (N)', &
-                           unit, stat, errmsg)
-      if (stat /= 0) return
-      if (unit /= -1) then
-         do i = 1, n
-            write (unit, '(*(es24.15))') s([c_time, c_tip_u, c_tip_v, c_tip_force], i)
-         end do
-      end if
-      call files%open_text('energy', 't (s)  kinetic  elastic  work of loads  dissipated (impacts + damping)  '// &
-                           'dissipated by impacts  by damping  total = kinetic + elastic  balance = total - work + '// &
-                           'dissipated (J)  penetration (m)', unit, stat, errmsg)
-      if (stat /= 0) return
-      if (unit /= -1) then
-         do i = 1, n
-            write (unit, '(*(es24.15))') s([c_time, c_kinetic, c_elastic, c_work, c_dissipated, c_impacts, c_damping, &
-                                            c_total], i), s(c_total, i) - s(c_work, i) + s(c_dissipated, i), &
-               s(c_penetration, i)
-         end do
-      end if
-      call files%open_text('impacts', 't (s)  x (m)  impulse (N s)  velocity before (m/s)  velocity after (m/s)', &
-                           unit, stat, errmsg)
-      if (stat /= 0) return
-      if (unit /= -1) then
-         do i = 1, size(impacts, 2)
-            write (unit, '(*(es24.15))') impacts(:, i)
-         end do
-      end if
-      call files%open_text('field', 'x (m)  t (s)  u (m); one block per output time (gnuplot splot/pm3d)', &
-                           unit, stat, errmsg)
-      if (stat /= 0) return
-      if (unit /= -1) then
-         do i = 1, n
-            do k = 1, model%elements + 1
-               write (unit, '(*(es16.7))') model%x(k), s(c_time, i), self%field%values(k, i)
-            end do
-            write (unit, '(a)') ''
-         end do
-      end if
-      call files%open_text('obstacles', 'x (m)  lower bound g1 (m)  upper bound g2 (m) at each contact point '// &
-                           '(+-1e30: no obstacle on that side)', unit, stat, errmsg)
-      if (stat /= 0 .or. unit == -1) return
-      do k = 1, stepper%contacts%count
-         write (unit, '(*(es24.15))') stepper%contacts%x(k), max(-1e30_dp, stepper%contacts%lower(k)), &
-            min(1e30_dp, stepper%contacts%upper(k))
+      ! the spectrum's datasets were created empty with the others (SWMR: no new objects)
+      do k = 1, size(frequency)
+         call self%spectrum_frequency%append(frequency(k:k), stat, errmsg)
+         if (stat == 0) call self%spectrum_amplitude%append(amplitude(k:k), stat, errmsg)
+         if (stat /= 0) return
       end do
-   end subroutine recorder_write
+      call self%spectrum_frequency%write(stat, errmsg)
+      if (stat == 0) call self%spectrum_amplitude%write(stat, errmsg)
+      do k = 1, history_count
+         call self%histories(k)%close()
+      end do
+      do k = 1, 5
+         call self%impact_columns(k)%close()
+      end do
+      call self%field_time%close()
+      call self%field%close()
+      call self%point_u%close()
+      call self%point_v%close()
+      call self%fraction%close()
+      call self%spectrum_frequency%close()
+      call self%spectrum_amplitude%close()
+   end subroutine finish
+
+   !> Everything a continued run needs (module documentation).
+   subroutine save_state(self, record)
+      class(dynamics_recorder), intent(in) :: self
+      type(state_record), intent(inout) :: record
+      call record%put_int64s('recorder.steps', [self%last_output_step, self%last_field_step, self%impacts])
+      call record%put_reals('recorder.values', [self%last_output_time, self%tip_impulse, self%max_penetration, &
+                                                self%max_penetration_time])
+      call record%put_logicals('recorder.in_contact', self%in_contact)
+      call record%put_reals('recorder.contact_time', self%contact_time)
+      call self%spectrum%save_state(record)
+      call self%episodes%save_state(record)
+   end subroutine save_state
+
+   !> Take back what `save_state` put into `record`.
+   subroutine restore_state(self, record, stat, errmsg)
+      class(dynamics_recorder), intent(inout) :: self
+      type(state_record), intent(in) :: record
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(int64) :: counts(3)
+      real(dp) :: values(4)
+      call record%get_int64s('recorder.steps', counts, stat, errmsg)
+      if (stat == 0) call record%get_reals('recorder.values', values, stat, errmsg)
+      if (stat == 0) call record%get_logicals('recorder.in_contact', self%in_contact, stat, errmsg)
+      if (stat == 0) call record%get_reals('recorder.contact_time', self%contact_time, stat, errmsg)
+      if (stat == 0) call self%spectrum%restore_state(record, stat, errmsg)
+      if (stat == 0) call self%episodes%restore_state(record, stat, errmsg)
+      if (stat /= 0) return
+      self%last_output_step = counts(1)
+      self%last_field_step = counts(2)
+      self%impacts = counts(3)
+      self%last_output_time = values(1)
+      self%tip_impulse = values(2)
+      self%max_penetration = values(3)
+      self%max_penetration_time = values(4)
+   end subroutine restore_state
 end module vibrobeam_recorder

@@ -1,56 +1,90 @@
-!> The result file set of a run (INTERFACE.md, "Output"): one HDF5 file plus gnuplot-ready
-!! .dat files beside it, all written under temporary names and renamed at the end, so a
-!! reader never sees a half-written result.
+!> The result of a run (docs/output.md): one HDF5 file, THE result, written under a
+!! temporary name and published atomically, and the gnuplot-ready .dat files derived from
+!! it (`vibrobeam_text_output`).
 !!
-!! Text files are named after the HDF5 file: results/run.h5 gives results/run_modes.dat,
-!! results/run_shapes.dat, ...; each starts with a '#' header naming columns and units.
+!! Publication (`publish`), after the HDF5 file is complete:
+!!  1. the file is flushed, closed and synced to disk (fsync) under its temporary name;
+!!  2. with `&output text = .true.`, every .dat file is derived from it, each under its
+!!     own temporary name, and synced;
+!!  3. under an exclusive lock on the target directory (flock), the HDF5 file and then
+!!     every .dat file are renamed onto their final names, the .dat files of the same
+!!     stem that this result does not produce (left by an earlier run) are removed, and
+!!     the directory is synced. Concurrent runs with one output path thus publish one
+!!     after the other, and the last publisher's set is what remains.
+!! Any failure before the renames deletes every temporary file and leaves what was at the
+!! target untouched. Each .dat file's first line names the run id that /run holds, so a
+!! reader can tell a .dat file of another run.
 module vibrobeam_results
-   use vibrobeam_kinds, only: dp
+   use, intrinsic :: iso_c_binding, only: c_long
+   use vibrobeam_kinds, only: dp, int64
    use vibrobeam_version, only: version_string
    use vibrobeam_scene, only: scene_type, scene_entry, scene_entries, format_scene
    use vibrobeam_model, only: beam_model
    use vibrobeam_hdf5, only: h5_writer
-   use vibrobeam_filesystem, only: open_text_for_atomic_write, commit_text_file, discard_text_file
-   use vibrobeam_kinds, only: pi
+   use vibrobeam_filesystem, only: rename_file, remove_file, file_exists, sync_directory_of, &
+      directory_of, directory_lock, utc_stamp, process_id, random_hex
+   use vibrobeam_text, only: integer_text
+   use vibrobeam_text_output, only: derived_file, derive_text_files, discard_derived, text_file_name, &
+      text_suffixes
+   use vibrobeam_progress, only: progress_meter
    implicit none
    private
-   public :: result_files, text_file_name
+   public :: result_files, run_summary, new_run_id, publish_files
 
-   integer, parameter :: max_text_files = 16
+   !> Bytes reserved for the /run status attribute ('running', 'ok', 'failed', 'interrupted').
+   integer, parameter :: status_capacity = 16
 
-   !> An open set of result files.
+   !> What /run records about a run (docs/output.md).
+   type :: run_summary
+      character(len=16) :: status = 'ok'             !! 'ok' | 'failed' | 'interrupted'
+      integer(int64) :: steps = 0                    !! global step number at the end
+      integer(int64) :: start_step = 0               !! global step number at the start
+      real(dp) :: wall_seconds = 0
+      integer(int64) :: iterations_total = 0, iterations_max = 0
+      integer(int64) :: linear_solves_total = 0, linear_solves_max = 0
+      integer(int64) :: fallback_steps = 0
+   end type run_summary
+
+   !> An open result.
    type :: result_files
       type(h5_writer) :: h5
-      logical :: text = .true.                  !! also write .dat files
-      character(len=:), allocatable :: stem     !! HDF5 file name without '.h5'
-      integer :: text_count = 0
-      integer :: text_units(max_text_files) = -1
-      character(len=512) :: text_names(max_text_files) = ''
+      logical :: text = .true.                  !! also derive .dat files
+      character(len=:), allocatable :: run_id
    contains
       procedure :: open => open_results
-      procedure :: open_text => open_text_file
-      procedure :: commit => commit_results
+      procedure :: set_run
+      procedure :: set_flushed
+      procedure :: publish
       procedure :: discard => discard_results
       procedure :: write_modes
       procedure :: write_static
    end type result_files
 
+   interface
+      !> long vb_peak_rss_kb(void);  (src/vibrobeam_posix.c)
+      function c_peak_rss_kb() result(kb) bind(C, name='vb_peak_rss_kb')
+         import :: c_long
+         integer(c_long) :: kb
+      end function c_peak_rss_kb
+   end interface
+
 contains
 
-   !> '<stem>_<suffix>.dat' for a result file 'stem.h5'.
-   pure function text_file_name(h5_name, suffix) result(name)
-      character(len=*), intent(in) :: h5_name, suffix
-      character(len=:), allocatable :: name
-      integer :: n
-      n = len_trim(h5_name)
-      if (n > 3) then
-         if (h5_name(n - 2:n) == '.h5') n = n - 3
-      end if
-      name = h5_name(1:n)//'_'//suffix//'.dat'
-   end function text_file_name
+   !> Peak resident set size of the process so far (kB; getrusage).
+   function peak_memory_kb() result(kb)
+      integer(int64) :: kb
+      kb = int(c_peak_rss_kb(), int64)
+   end function peak_memory_kb
+
+   !> A run id: the UTC time, the process id and 32 random bits ('20240101T120000Z-1234-89abcdef').
+   function new_run_id() result(id)
+      character(len=:), allocatable :: id
+      id = utc_stamp() // '-' // integer_text(process_id()) // '-' // random_hex(8)
+   end function new_run_id
 
    !> Create the HDF5 file (temporary name) with the root attributes (version, every
-   !! resolved input value with its unit, the resolved scene as text) and /mesh/x.
+   !! resolved input value with its unit, the resolved scene as text), /mesh/x and the
+   !! /run attributes (status 'running', run_id; the others 0 until `set_run`).
    subroutine open_results(self, scene, model, stat, errmsg)
       class(result_files), intent(inout) :: self
       type(scene_type), intent(in) :: scene
@@ -60,7 +94,7 @@ contains
       type(scene_entry), allocatable :: list(:)
       integer :: i
       self%text = scene%text
-      self%stem = trim(scene%file)
+      self%run_id = new_run_id()
       call self%h5%create(trim(scene%file), stat, errmsg)
       if (stat /= 0) return
       call self%h5%attr_string('/', 'program', 'vibrobeam', stat, errmsg)
@@ -85,118 +119,151 @@ contains
          end associate
       end do
       if (stat == 0) call self%h5%write_real_1d('/mesh/x', model%x, 'm', stat, errmsg)
+      if (stat == 0) call self%h5%attr_string('/run', 'run_id', self%run_id, stat, errmsg)
+      if (stat == 0) call self%h5%attr_string('/run', 'status', 'running', stat, errmsg, capacity=status_capacity)
+      call zero('steps')
+      call zero('start_step')
+      if (stat == 0) call self%h5%attr_real('/run', 'wall_seconds', 0.0_dp, stat, errmsg)
+      call zero('contact_solver_iterations')
+      call zero('contact_solver_iterations_max_per_step')
+      call zero('contact_linear_solves')
+      call zero('contact_linear_solves_max_per_step')
+      call zero('contact_fallback_steps')
+      call zero('peak_memory_kb')
+      call zero('flushed_step')
+      call zero('flushed_outputs')
+      call zero('flushed_field_outputs')
+      call zero('flushed_impacts')
+      call zero('flushed_episodes')
+   contains
+      subroutine zero(name)
+         character(len=*), intent(in) :: name
+         if (stat == 0) call self%h5%attr_int64('/run', name, 0_int64, stat, errmsg)
+      end subroutine zero
    end subroutine open_results
 
-   !> Open '<stem>_<suffix>.dat' under a temporary name, with `header` as its first line;
-   !! returns the unit (or -1 when text output is off).
-   subroutine open_text_file(self, suffix, header, unit, stat, errmsg)
+   !> Write the /run attributes of `summary` (in place: allowed in SWMR mode).
+   subroutine set_run(self, summary, stat, errmsg)
       class(result_files), intent(inout) :: self
-      character(len=*), intent(in) :: suffix, header
-      integer, intent(out) :: unit, stat
-      character(len=*), intent(out) :: errmsg
-      unit = -1
-      stat = 0
-      errmsg = ''
-      if (.not. self%text) return
-      if (self%text_count == max_text_files) then
-         stat = 1
-         errmsg = 'too many text result files'
-         return
-      end if
-      call open_text_for_atomic_write(text_file_name(self%stem, suffix), unit, stat, errmsg)
-      if (stat /= 0) return
-      self%text_count = self%text_count + 1
-      self%text_units(self%text_count) = unit
-      self%text_names(self%text_count) = text_file_name(self%stem, suffix)
-      write (unit, '(a)') '# '//header
-   end subroutine open_text_file
-
-   !> Write the /run attributes, then rename every temporary file to its final name. On
-   !! failure the caller discards the set (`discard`), as after any other failure.
-   subroutine commit_results(self, status, steps, wall_seconds, iterations_total, iterations_max, stat, errmsg)
-      class(result_files), intent(inout) :: self
-      character(len=*), intent(in) :: status   !! 'ok' | 'failed'
-      integer, intent(in) :: steps, iterations_total, iterations_max
-      real(dp), intent(in) :: wall_seconds
+      type(run_summary), intent(in) :: summary
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer :: i
-      call self%h5%attr_string('/run', 'status', status, stat, errmsg)
-      if (stat == 0) call self%h5%attr_int('/run', 'steps', steps, stat, errmsg)
-      if (stat == 0) call self%h5%attr_real('/run', 'wall_seconds', wall_seconds, stat, errmsg)
-      if (stat == 0) call self%h5%attr_int('/run', 'contact_solver_iterations', iterations_total, stat, errmsg)
-      if (stat == 0) call self%h5%attr_int('/run', 'contact_solver_iterations_max_per_step', iterations_max, stat, errmsg)
-      do i = 1, self%text_count
-         if (stat /= 0) exit
-         call commit_text_file(self%text_units(i), trim(self%text_names(i)), stat, errmsg)
-      end do
-      if (stat == 0) call self%h5%commit(stat, errmsg)
-      if (stat == 0) self%text_count = 0
-   end subroutine commit_results
+      call self%h5%rewrite_attr('/run', 'status', trim(summary%status), stat, errmsg, capacity=status_capacity)
+      call put('steps', summary%steps)
+      call put('start_step', summary%start_step)
+      if (stat == 0) call self%h5%rewrite_attr('/run', 'wall_seconds', summary%wall_seconds, stat, errmsg)
+      call put('contact_solver_iterations', summary%iterations_total)
+      call put('contact_solver_iterations_max_per_step', summary%iterations_max)
+      call put('contact_linear_solves', summary%linear_solves_total)
+      call put('contact_linear_solves_max_per_step', summary%linear_solves_max)
+      call put('contact_fallback_steps', summary%fallback_steps)
+      call put('peak_memory_kb', peak_memory_kb())
+   contains
+      subroutine put(name, value)
+         character(len=*), intent(in) :: name
+         integer(int64), intent(in) :: value
+         if (stat == 0) call self%h5%rewrite_attr('/run', name, value, stat, errmsg)
+      end subroutine put
+   end subroutine set_run
 
-   !> Remove every temporary file of the set.
+   !> Record what the file holds at a flush: the step and the rows of each kind
+   !! [outputs, field snapshots, impacts, closed episodes] (docs/output.md, "After a kill").
+   subroutine set_flushed(self, step, rows, stat, errmsg)
+      class(result_files), intent(inout) :: self
+      integer(int64), intent(in) :: step, rows(4)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      call self%h5%rewrite_attr('/run', 'flushed_step', step, stat, errmsg)
+      if (stat == 0) call self%h5%rewrite_attr('/run', 'flushed_outputs', rows(1), stat, errmsg)
+      if (stat == 0) call self%h5%rewrite_attr('/run', 'flushed_field_outputs', rows(2), stat, errmsg)
+      if (stat == 0) call self%h5%rewrite_attr('/run', 'flushed_impacts', rows(3), stat, errmsg)
+      if (stat == 0) call self%h5%rewrite_attr('/run', 'flushed_episodes', rows(4), stat, errmsg)
+   end subroutine set_flushed
+
+   !> Publish the result (module documentation). With `stop_on_signal`, a signal that
+   !! arrives while the .dat files are derived stops that (`text_skipped`): the HDF5 file
+   !! is then published alone (its stale .dat files removed) and `vibrobeam --text`
+   !! derives them later.
+   subroutine publish(self, meter, stop_on_signal, text_skipped, stat, errmsg)
+      class(result_files), intent(inout) :: self
+      type(progress_meter), intent(inout) :: meter
+      logical, intent(in) :: stop_on_signal
+      logical, intent(out) :: text_skipped
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(derived_file), allocatable :: files(:)
+      character(len=:), allocatable :: final_name, temporary
+      text_skipped = .false.
+      final_name = self%h5%final_file()
+      temporary = self%h5%temporary_file()
+      call meter%report('publishing '//final_name)
+      call self%h5%finish(stat, errmsg)
+      if (stat /= 0) return
+      allocate (files(0))
+      if (self%text) then
+         call derive_text_files(temporary, final_name, meter, stop_on_signal, files, text_skipped, stat, errmsg)
+         if (stat /= 0) return
+      end if
+      call publish_files(temporary, final_name, files, stat, errmsg)
+      if (stat /= 0) call discard_derived(files)
+   end subroutine publish
+
+   !> Rename `temporary` (if not '') onto `final_name` and each derived file onto its final
+   !! name, remove the stem's .dat files not among them, sync the directory; all under an
+   !! exclusive lock on the directory.
+   subroutine publish_files(temporary, final_name, files, stat, errmsg)
+      character(len=*), intent(in) :: temporary, final_name
+      type(derived_file), intent(in) :: files(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(directory_lock) :: lock
+      character(len=512) :: message
+      integer :: k, ignored
+      call lock%acquire(directory_of(final_name), stat, errmsg)
+      if (stat /= 0) return
+      if (len(temporary) > 0) call rename_file(temporary, final_name, stat, errmsg)
+      do k = 1, size(files)
+         if (stat /= 0) exit
+         call rename_file(files(k)%temporary, files(k)%final, stat, errmsg)
+      end do
+      if (stat == 0) then
+         do k = 1, size(text_suffixes)
+            if (any(files%final == text_file_name(final_name, trim(text_suffixes(k))))) cycle
+            if (file_exists(text_file_name(final_name, trim(text_suffixes(k))))) &
+               call remove_file(text_file_name(final_name, trim(text_suffixes(k))), ignored, message)
+         end do
+         call sync_directory_of(final_name, stat, errmsg)
+      end if
+      call lock%release()
+   end subroutine publish_files
+
+   !> Remove the temporary file; `final_name` is untouched.
    subroutine discard_results(self)
       class(result_files), intent(inout) :: self
-      integer :: i
-      do i = 1, self%text_count
-         call discard_text_file(self%text_units(i), trim(self%text_names(i)))
-      end do
-      self%text_count = 0
       call self%h5%discard()
    end subroutine discard_results
 
-   !> /modes/frequency, /modes/shape and the files _modes.dat, _shapes.dat.
-   subroutine write_modes(self, model, omega, shapes, stat, errmsg)
+   !> /modes/frequency and /modes/shape.
+   subroutine write_modes(self, omega, shapes, stat, errmsg)
       class(result_files), intent(inout) :: self
-      type(beam_model), intent(in) :: model
       real(dp), intent(in) :: omega(:)       !! angular frequencies (rad/s)
       real(dp), intent(in) :: shapes(:,:)    !! (N+1, modes), tip value 1
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer :: unit, k, i
       call self%h5%write_real_1d('/modes/frequency', omega, 'rad/s', stat, errmsg)
       if (stat == 0) call self%h5%write_real_2d('/modes/shape', shapes, '1 (tip value 1)', stat, errmsg)
-      if (stat /= 0) return
-      call self%open_text('modes', 'mode  omega (rad/s)  frequency (Hz)', unit, stat, errmsg)
-      if (stat /= 0) return
-      if (unit /= -1) then
-         do k = 1, size(omega)
-            write (unit, '(i6, 2es24.15)') k, omega(k), omega(k)/(2*pi)
-         end do
-      end if
-      call self%open_text('shapes', 'x (m)  then the shape of mode 1, 2, ... (tip value 1)', unit, stat, errmsg)
-      if (stat /= 0 .or. unit == -1) return
-      do i = 1, size(model%x)
-         write (unit, '(*(es24.15))') model%x(i), shapes(i, :)
-      end do
    end subroutine write_modes
 
-   !> /static/displacement, /static/reaction (+ /static/contact_x) and _static.dat,
-   !! _reactions.dat.
-   subroutine write_static(self, model, displacement, contact_x, reaction, stat, errmsg)
+   !> /static/displacement, /static/reaction and /static/contact_x.
+   subroutine write_static(self, displacement, contact_x, reaction, stat, errmsg)
       class(result_files), intent(inout) :: self
-      type(beam_model), intent(in) :: model
       real(dp), intent(in) :: displacement(:)   !! at the N+1 nodes (m)
       real(dp), intent(in) :: contact_x(:)      !! contact point positions (m)
       real(dp), intent(in) :: reaction(:)       !! reaction at each contact point (N)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer :: unit, i
       call self%h5%write_real_1d('/static/displacement', displacement, 'm', stat, errmsg)
       if (stat == 0) call self%h5%write_real_1d('/static/reaction', reaction, 'N', stat, errmsg)
       if (stat == 0) call self%h5%write_real_1d('/static/contact_x', contact_x, 'm', stat, errmsg)
-      if (stat /= 0) return
-      call self%open_text('static', 'x (m)  u (m)', unit, stat, errmsg)
-      if (stat /= 0) return
-      if (unit /= -1) then
-         do i = 1, size(model%x)
-            write (unit, '(*(es24.15))') model%x(i), displacement(i)
-         end do
-      end if
-      call self%open_text('reactions', 'x (m)  reaction (N, positive upwards)', unit, stat, errmsg)
-      if (stat /= 0 .or. unit == -1) return
-      do i = 1, size(contact_x)
-         write (unit, '(*(es24.15))') contact_x(i), reaction(i)
-      end do
    end subroutine write_static
 end module vibrobeam_results

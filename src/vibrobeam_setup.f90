@@ -2,8 +2,9 @@
 !! discrete model): the beam model, its contact points, its loads and its initial state.
 !! Used by the program and by the verification drivers, so both run the same set-up.
 module vibrobeam_setup
-   use vibrobeam_kinds, only: dp
-   use vibrobeam_scene, only: scene_type, rho_s_of, ei_of
+   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_text, only: real_text
+   use vibrobeam_scene, only: scene_type, rho_s_of, ei_of, step_count
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_contact_points, only: contact_set, build_contact_points, contact_value
    use vibrobeam_loads, only: load_set, build_loads
@@ -12,9 +13,15 @@ module vibrobeam_setup
    use vibrobeam_stepper, only: time_stepper
    use vibrobeam_velocity_stepper, only: velocity_stepper
    use vibrobeam_position_stepper, only: position_stepper
+   use vibrobeam_state_record, only: state_record
+   use vibrobeam_checkpoint, only: read_checkpoint, check_compatible
    implicit none
    private
    public :: prepared_scene, prepare_scene, start_stepper, start_time_stepper
+   public :: setup_invalid, setup_numerical_failure
+
+   integer, parameter :: setup_invalid = 1             !! stat of an inconsistent scene
+   integer, parameter :: setup_numerical_failure = 3   !! stat of a failed static solve
 
    type :: prepared_scene
       type(beam_model) :: model
@@ -22,14 +29,19 @@ module vibrobeam_setup
       type(load_set) :: loads
       real(dp), allocatable :: u0(:)   !! initial displacement unknowns (dynamics)
       real(dp), allocatable :: v0(:)   !! initial velocity unknowns (dynamics)
+      logical :: resuming = .false.    !! continues the checkpoint of &initial from_file
+      type(state_record) :: resume     !! that checkpoint
+      real(dp) :: resume_time = 0      !! its time (s)
    end type prepared_scene
 
 contains
 
    !> Build model, contact points, loads and initial state of `scene` (already validated).
-   !! stat = 1 with a message naming the input when the scene is inconsistent (obstacles
-   !! that contradict each other, an initial displacement outside the obstacles);
-   !! `warnings` collects one line per warning.
+   !! stat = `setup_invalid` with a message naming the input when the scene is
+   !! inconsistent (obstacles that contradict each other, an initial displacement outside
+   !! the obstacles, a checkpoint of &initial from_file that does not match);
+   !! `setup_numerical_failure` when the static solve of `&initial displacement = 'static'`
+   !! fails; `warnings` collects one line per warning.
    subroutine prepare_scene(scene, prepared, warnings, stat, errmsg)
       type(scene_type), intent(in) :: scene
       type(prepared_scene), intent(out) :: prepared
@@ -42,10 +54,67 @@ contains
       call build_contact_points(scene, prepared%model, prepared%contacts, warnings, stat, errmsg)
       if (stat /= 0) return
       call build_loads(scene, prepared%model, rho_s_of(scene), prepared%loads)
+      if (scene%kind == 'dynamics' .and. len_trim(scene%from_file) > 0) then
+         call resume_from_file(scene, prepared, stat, errmsg)
+         return
+      end if
       call initial_displacement(scene, prepared, stat, errmsg)
       if (stat /= 0) return
       prepared%v0 = initial_velocity(scene, prepared%model)
    end subroutine prepare_scene
+
+   !> The initial state of a run that continues the checkpoint of &initial from_file
+   !! (docs/output.md, "Checkpoint and restart"): the file must match the scene; t_end
+   !! must lie after the checkpoint; when the obstacle bounds changed, the state must
+   !! satisfy the new ones.
+   subroutine resume_from_file(scene, prepared, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(prepared_scene), intent(inout) :: prepared
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(int64) :: steps
+      logical :: same_bounds
+      real(dp) :: value
+      character(len=:), allocatable :: file
+      integer :: c
+      file = trim(scene%from_file)
+      associate (contacts => prepared%contacts)
+         call check_compatible(file, scene, contacts%x, contacts%lower, contacts%upper, same_bounds, stat, errmsg)
+         if (stat /= 0) return
+         call read_checkpoint(file, prepared%resume, prepared%resume_time, stat, errmsg)
+         if (stat /= 0) then
+            errmsg = '&initial from_file = '''//file//''': '//trim(errmsg)
+            return
+         end if
+         allocate (prepared%u0(prepared%model%unknowns), prepared%v0(prepared%model%unknowns))
+         call prepared%resume%get_reals('stepper.u', prepared%u0, stat, errmsg)
+         if (stat == 0) call prepared%resume%get_reals('stepper.v', prepared%v0, stat, errmsg)
+         if (stat == 0) call prepared%resume%get_int64('stepper.steps', steps, stat, errmsg)
+         if (stat /= 0) then
+            errmsg = '&initial from_file = '''//file//''': '//trim(errmsg)
+            return
+         end if
+         if (step_count(scene) <= steps) then
+            stat = setup_invalid
+            errmsg = '&time t_end = '//real_text(scene%t_end)//' s is not after the checkpoint of '''//file// &
+                     ''' at t = '//real_text(steps*scene%dt)//' s (t_end is the end time of the continued run)'
+            return
+         end if
+         prepared%resuming = .true.
+         do c = 1, contacts%count
+            if (same_bounds) exit
+            value = contact_value(contacts, c, prepared%u0)
+            if (value + 1e-12_dp*(abs(value) + prepared%model%length) < contacts%lower(c) .or. &
+                value - 1e-12_dp*(abs(value) + prepared%model%length) > contacts%upper(c)) then
+               stat = setup_invalid
+               errmsg = '&initial from_file = '''//file//''': the beam is at u = '//real_text(value)//' m at x = '// &
+                        real_text(contacts%x(c))//' m, outside the changed obstacles there ['// &
+                        real_text(contacts%lower(c))//', '//real_text(contacts%upper(c))//'] m'
+               return
+            end if
+         end do
+      end associate
+   end subroutine resume_from_file
 
    !> The initial displacement of a dynamics run (zero, a mode, or the static equilibrium
    !! under the loads at t = 0); it must satisfy every obstacle (SPEC §1: u0 in K).
@@ -68,9 +137,10 @@ contains
          case ('static')
             allocate (reaction(contacts%count))
             call solve_static(model%stiffness, contacts, prepared%loads%at(0.0_dp), scene%contact_solver, &
-                              prepared%u0, reaction, iterations, stat, errmsg)
+                              prepared%u0, reaction, iterations, stat, errmsg, scene%contact_max_iterations)
             if (stat /= 0) then
                errmsg = '&initial displacement = ''static'': '//trim(errmsg)
+               stat = setup_numerical_failure
                return
             end if
          end select
@@ -105,7 +175,8 @@ contains
       if (scene%separating_points == 'restitution') stepper%separating_restitution = scene%restitution
    end subroutine start_stepper
 
-   !> The stepper of the scene's scheme (&time scheme: 'velocity' or 'position') at t = 0.
+   !> The stepper of the scene's scheme (&time scheme: 'velocity' or 'position') at t = 0,
+   !! or at the checkpoint that the prepared scene continues.
    subroutine start_time_stepper(scene, prepared, stepper, stat, errmsg)
       type(scene_type), intent(in) :: scene
       type(prepared_scene), intent(in) :: prepared
@@ -126,5 +197,6 @@ contains
          call start_stepper(scene, prepared, velocity, stat, errmsg)
          call move_alloc(velocity, stepper)
       end if
+      if (stat == 0 .and. prepared%resuming) call stepper%restore_state(prepared%resume, stat, errmsg)
    end subroutine start_time_stepper
 end module vibrobeam_setup

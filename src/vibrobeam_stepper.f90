@@ -3,15 +3,16 @@
 !! scheme (SPEC §3, `vibrobeam_velocity_stepper`) and the position-based one (SPEC §4,
 !! `vibrobeam_position_stepper`) extend it; the recorder and the run loop see only this.
 module vibrobeam_stepper
-   use vibrobeam_kinds, only: dp
+   use vibrobeam_kinds, only: dp, int64
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_matvec, band_combination, band_factor
    use vibrobeam_model, only: beam_model
    use vibrobeam_contact_points, only: contact_set
    use vibrobeam_contact_solver, only: contact_projector
    use vibrobeam_loads, only: load_set
+   use vibrobeam_state_record, only: state_record
    implicit none
    private
-   public :: time_stepper
+   public :: time_stepper, save_stepper_state, restore_stepper_state
 
    type, abstract :: time_stepper
       real(dp) :: dt = 0, theta = 0.5_dp, restitution = 1
@@ -25,7 +26,7 @@ module vibrobeam_stepper
       real(dp), allocatable :: u(:)               !! displacement unknowns at t (m)
       real(dp), allocatable :: v(:)               !! velocity unknowns (m/s), see each scheme
       real(dp) :: t = 0                            !! time of u (s)
-      integer :: steps = 0                         !! steps taken
+      integer(int64) :: steps = 0                  !! steps taken since t = 0 (t = steps dt)
       ! what the last step did
       integer :: active_count = 0
       integer, allocatable :: active(:)            !! contact points with a constraint (first active_count)
@@ -47,6 +48,8 @@ module vibrobeam_stepper
       procedure :: elastic_energy
       procedure :: set_up_system
       procedure :: damping_times
+      procedure :: save_state => save_stepper_state
+      procedure :: restore_state => restore_stepper_state
    end type time_stepper
 
    abstract interface
@@ -113,6 +116,39 @@ contains
       if (stat /= 0) return
       call self%projector%setup(self%iteration_matrix, self%iteration_factor, contacts, contact_regime)
    end subroutine set_up_system
+
+   !> Put everything a continued run needs to go on bitwise into `record` (docs/output.md,
+   !! "Checkpoint and restart"): the step number, U and V, and the running energy sums.
+   !! A scheme with more state extends this (the position scheme adds U^{n-1}); the contact
+   !! solver's state between steps (a warm start), when it has one, belongs here too.
+   subroutine save_stepper_state(self, record)
+      class(time_stepper), intent(in) :: self
+      type(state_record), intent(inout) :: record
+      call record%put_int64('stepper.steps', self%steps)
+      call record%put_reals('stepper.u', self%u)
+      call record%put_reals('stepper.v', self%v)
+      call record%put_reals('stepper.energy_sums', [self%work, self%dissipated_impacts, self%dissipated_damping, &
+                                                    self%dissipated_numerical])
+   end subroutine save_stepper_state
+
+   !> Take back what `save_state` put into `record` (same sizes); t = steps dt.
+   subroutine restore_stepper_state(self, record, stat, errmsg)
+      class(time_stepper), intent(inout) :: self
+      type(state_record), intent(in) :: record
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp) :: sums(4)
+      call record%get_int64('stepper.steps', self%steps, stat, errmsg)
+      if (stat == 0) call record%get_reals('stepper.u', self%u, stat, errmsg)
+      if (stat == 0) call record%get_reals('stepper.v', self%v, stat, errmsg)
+      if (stat == 0) call record%get_reals('stepper.energy_sums', sums, stat, errmsg)
+      if (stat /= 0) return
+      self%work = sums(1)
+      self%dissipated_impacts = sums(2)
+      self%dissipated_damping = sums(3)
+      self%dissipated_numerical = sums(4)
+      self%t = self%steps*self%dt
+   end subroutine restore_stepper_state
 
    !> C x = a M x + b K x (Rayleigh damping).
    function damping_times(self, x) result(y)

@@ -21,7 +21,8 @@ module vibrobeam_velocity_stepper
    use vibrobeam_model, only: beam_model
    use vibrobeam_contact_points, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_stepper, only: time_stepper, save_stepper_state, restore_stepper_state
+   use vibrobeam_state_record, only: state_record
    implicit none
    private
    public :: velocity_stepper
@@ -38,6 +39,7 @@ module vibrobeam_velocity_stepper
    contains
       procedure :: init
       procedure :: step
+      procedure :: restore_state
    end type velocity_stepper
 
 contains
@@ -66,6 +68,16 @@ contains
       self%force = loads%at(0.0_dp)
    end subroutine init
 
+   !> The base type's restore, then F(t_n) from the loads (which a continued run may change).
+   subroutine restore_state(self, record, stat, errmsg)
+      class(velocity_stepper), intent(inout) :: self
+      type(state_record), intent(in) :: record
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      call restore_stepper_state(self, record, stat, errmsg)
+      self%force = self%loads%at(self%steps*self%dt)
+   end subroutine restore_state
+
    !> Advance from t_n to t_{n+1}. stat: 0 ok; 1..3 contact solver failure (errmsg says);
    !! 4 the state is no longer finite.
    subroutine step(self, stat, errmsg)
@@ -78,7 +90,7 @@ contains
       integer :: c, m, k
       associate (dt => self%dt, theta => self%theta)
          ! 1. free velocity
-         force_new = self%loads%at(self%t + dt)
+         force_new = self%loads%at((self%steps + 1)*dt)   ! t_{n+1} from the global step number
          force_theta = theta*force_new + (1 - theta)*self%force
          call band_matvec(self%stiffness, self%u + theta*dt*self%v, work_vector)
          rhs = force_theta - work_vector

@@ -1,12 +1,14 @@
 !> vibrobeam: dynamics of a clamped-free Euler-Bernoulli beam between rigid obstacles.
 !!
 !! Command line (INTERFACE.md): `vibrobeam INPUT.nml`, `vibrobeam --check INPUT.nml`,
-!! `vibrobeam --help`, `vibrobeam --version`. This program is the only place where an
-!! error becomes a message on stderr and an exit status.
+!! `vibrobeam --text RESULT.h5`, `vibrobeam --help`, `vibrobeam --version`. This program
+!! is the only place where an error becomes a message on stderr and an exit status
+!! (docs/output.md, "Exit status").
 program vibrobeam_main
+   use, intrinsic :: iso_c_binding, only: c_int
    use vibrobeam_kinds, only: dp, error_unit, output_unit
    use vibrobeam_status, only: exit_ok, exit_other_error, exit_invalid_input, exit_numerical_failure, &
-                               message_length
+                               exit_interrupted, message_length
    use vibrobeam_version, only: version_string
    use vibrobeam_scene, only: scene_type, validate_scene, format_scene
    use vibrobeam_input, only: read_scene, namelist_groups_text
@@ -15,19 +17,24 @@ program vibrobeam_main
    use vibrobeam_model, only: nodal_displacement
    use vibrobeam_modes, only: compute_modes
    use vibrobeam_static, only: solve_static
-   use vibrobeam_setup, only: prepared_scene, prepare_scene
+   use vibrobeam_setup, only: prepared_scene, prepare_scene, setup_numerical_failure
    use vibrobeam_dynamics, only: run_dynamics, run_outcome
-   use vibrobeam_results, only: result_files
+   use vibrobeam_results, only: result_files, run_summary, publish_files
+   use vibrobeam_text_output, only: derived_file, derive_text_files
+   use vibrobeam_hdf5_base, only: close_library
+   use vibrobeam_progress, only: progress_meter
+   use vibrobeam_signals, only: watch_signals, interrupt_requested, interrupt_name
    implicit none
 
    type(scene_type) :: scene
    type(prepared_scene) :: prepared
    character(len=message_length) :: errmsg
    character(len=:), allocatable :: input_file, warnings
-   logical :: check_only
+   logical :: check_only, text_only
    integer :: stat
 
-   call parse_command_line(input_file, check_only)
+   call parse_command_line(input_file, check_only, text_only)
+   if (text_only) call run_text(input_file)
    warnings = ''
    call read_scene(input_file, scene, stat, errmsg, warnings)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
@@ -36,6 +43,7 @@ program vibrobeam_main
    call check_output_target(scene, input_file, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    call prepare_scene(scene, prepared, warnings, stat, errmsg)
+   if (stat == setup_numerical_failure) call fail(exit_numerical_failure, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    warnings = warnings//scene_warnings(scene)
    if (len(warnings) > 0) write (error_unit, '(a)', advance='no') prefixed(warnings, 'vibrobeam: warning: ')
@@ -45,6 +53,9 @@ program vibrobeam_main
       stop exit_ok, quiet=.true.
    end if
 
+   ! from here on files are written: a signal finishes the work in progress (docs/output.md)
+   call watch_signals(stat, errmsg)
+   if (stat /= 0) call fail(exit_other_error, errmsg)
    select case (scene%kind)
    case ('modes')
       call run_modes()
@@ -56,14 +67,38 @@ program vibrobeam_main
 
 contains
 
-   !> Print `message` on stderr as 'vibrobeam: message' and stop with `code`.
+   !> Print `message` on stderr as 'vibrobeam: message' and stop with `code`. HDF5 is
+   !! closed first (every file is closed or discarded by then), so its exit handler has
+   !! nothing left to do; stderr is flushed.
    subroutine fail(code, message)
       integer, intent(in) :: code
       character(len=*), intent(in) :: message
       write (error_unit, '(a)') 'vibrobeam: '//trim(message)
-      if (code == exit_invalid_input) write (error_unit, '(a)') 'vibrobeam: invalid input, nothing written'
-      stop code, quiet=.true.
+      select case (code)
+      case (exit_invalid_input)
+         write (error_unit, '(a)') 'vibrobeam: invalid input, nothing written'
+      case (exit_other_error)
+         if (.not. text_only) write (error_unit, '(a)') &
+            'vibrobeam: nothing published; what was at '''//trim(scene%file)//''' is untouched'
+      end select
+      call finish(code)
    end subroutine fail
+
+   !> Close HDF5, flush stdout and stderr, and end with `code` at once (`vb_exit`:
+   !! HDF5's exit handler would retry writing a file that a full disk refuses).
+   subroutine finish(code)
+      integer, intent(in) :: code
+      interface
+         subroutine c_exit(status) bind(C, name='vb_exit')
+            import :: c_int
+            integer(c_int), value :: status
+         end subroutine c_exit
+      end interface
+      call close_library()
+      flush (output_unit)
+      flush (error_unit)
+      call c_exit(int(code, c_int))
+   end subroutine finish
 
    !> Every line of `text` with `prefix` in front.
    pure function prefixed(text, prefix) result(out)
@@ -80,13 +115,14 @@ contains
       end do
    end function prefixed
 
-   subroutine parse_command_line(file, check)
+   subroutine parse_command_line(file, check, text)
       character(len=:), allocatable, intent(out) :: file
-      logical, intent(out) :: check
+      logical, intent(out) :: check, text
       character(len=4096) :: argument
       integer :: count, length
       count = command_argument_count()
       check = .false.
+      text = .false.
       if (count == 0) call usage_error('no input file given')
       call get_command_argument(1, argument, length)
       select case (trim(argument))
@@ -100,6 +136,10 @@ contains
          if (count /= 2) call usage_error('--check takes exactly one input file')
          check = .true.
          call get_command_argument(2, argument, length)
+      case ('--text')
+         if (count /= 2) call usage_error('--text takes exactly one result file')
+         text = .true.
+         call get_command_argument(2, argument, length)
       case default
          if (argument(1:1) == '-') call usage_error('unknown option '''//trim(argument)//'''')
          if (count /= 1) call usage_error('give exactly one input file')
@@ -111,7 +151,8 @@ contains
    subroutine usage_error(message)
       character(len=*), intent(in) :: message
       write (error_unit, '(a)') 'vibrobeam: '//message
-      write (error_unit, '(a)') 'usage: vibrobeam INPUT.nml | vibrobeam --check INPUT.nml | vibrobeam --help | --version'
+      write (error_unit, '(a)') 'usage: vibrobeam INPUT.nml | vibrobeam --check INPUT.nml | vibrobeam --text RESULT.h5 | '// &
+         'vibrobeam --help | --version'
       stop exit_other_error, quiet=.true.
    end subroutine usage_error
 
@@ -124,13 +165,16 @@ contains
          '  vibrobeam INPUT.nml            run the scene described by INPUT.nml', &
          '  vibrobeam --check INPUT.nml    validate the input, print the resolved scene, its natural', &
          '                                 frequencies, time-step and result-size checks; run nothing', &
+         '  vibrobeam --text RESULT.h5     (re)derive the .dat text files of a result file', &
          '  vibrobeam --help | --version', &
          '', &
          'namelist groups: '//namelist_groups_text(), &
          '(every variable is optional; see docs/input.md for units, defaults and ranges).', &
          '', &
          'exit status: 0 success, 2 invalid input (nothing written), 3 numerical failure', &
-         '(results up to the failure kept, marked failed), 1 anything else.'
+         '(results up to the failure published, marked failed), 4 interrupted by SIGINT/SIGTERM', &
+         '(results up to the interruption published, marked interrupted), 1 I/O or other error', &
+         '(nothing published, earlier results untouched).'
    end subroutine print_help
 
    subroutine print_resolved_scene()
@@ -151,59 +195,114 @@ contains
    subroutine run_modes()
       real(dp), allocatable :: omega(:), shapes(:,:), vectors(:,:)
       type(result_files) :: files
-      integer(kind=8) :: start, finish, rate
+      type(progress_meter) :: meter
+      type(run_summary) :: summary
+      logical :: text_skipped
       associate (model => prepared%model)
-      call system_clock(start, rate)
+      call meter%init(scene%progress)
       call compute_modes(model, scene%modes, omega, shapes, vectors, stat, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
       call files%open(scene, model, stat, errmsg)
-      if (stat == 0) call files%write_modes(model, omega, shapes, stat, errmsg)
-      call system_clock(finish)
-      if (stat == 0) call files%commit('ok', 0, real(finish - start, dp)/rate, 0, 0, stat, errmsg)
+      if (stat == 0) call files%write_modes(omega, shapes, stat, errmsg)
+      summary%wall_seconds = meter%elapsed()
+      if (interrupt_requested()) summary%status = 'interrupted'
+      if (stat == 0) call files%set_run(summary, stat, errmsg)
+      if (stat == 0) call files%publish(meter, summary%status /= 'interrupted', text_skipped, stat, errmsg)
       if (stat /= 0) then
          call files%discard()
          call fail(exit_other_error, errmsg)
       end if
       write (output_unit, '(a,i0,a)') 'vibrobeam: ', size(omega), ' natural modes written to '//trim(scene%file)
+      call stop_if_interrupted(text_skipped)
       end associate
+      call finish(exit_ok)
    end subroutine run_modes
 
    subroutine run_static()
       real(dp), allocatable :: u(:), reaction(:)
       type(result_files) :: files
-      integer(kind=8) :: start, finish, rate
+      type(progress_meter) :: meter
+      type(run_summary) :: summary
       integer :: iterations
+      logical :: text_skipped
       associate (model => prepared%model, contacts => prepared%contacts, loads => prepared%loads)
-      call system_clock(start, rate)
+      call meter%init(scene%progress)
       allocate (u(model%unknowns), reaction(contacts%count))
       call solve_static(model%stiffness, contacts, loads%at(0.0_dp), scene%contact_solver, u, reaction, &
-                        iterations, stat, errmsg)
+                        iterations, stat, errmsg, scene%contact_max_iterations)
       if (stat /= 0) call fail(exit_numerical_failure, errmsg)
       call files%open(scene, model, stat, errmsg)
-      if (stat == 0) call files%write_static(model, nodal_displacement(model, u), contacts%x, reaction, stat, errmsg)
-      call system_clock(finish)
-      if (stat == 0) call files%commit('ok', 0, real(finish - start, dp)/rate, iterations, iterations, stat, errmsg)
+      if (stat == 0) call files%write_static(nodal_displacement(model, u), contacts%x, reaction, stat, errmsg)
+      summary%wall_seconds = meter%elapsed()
+      summary%iterations_total = iterations
+      summary%iterations_max = iterations
+      if (interrupt_requested()) summary%status = 'interrupted'
+      if (stat == 0) call files%set_run(summary, stat, errmsg)
+      if (stat == 0) call files%publish(meter, summary%status /= 'interrupted', text_skipped, stat, errmsg)
       if (stat /= 0) then
          call files%discard()
          call fail(exit_other_error, errmsg)
       end if
       write (output_unit, '(a,i0,a)') 'vibrobeam: static equilibrium with ', count(abs(reaction) > 0), &
          ' contact points in contact written to '//trim(scene%file)
+      call stop_if_interrupted(text_skipped)
       end associate
+      call finish(exit_ok)
    end subroutine run_static
 
    subroutine run_dynamics_scene()
       type(run_outcome) :: outcome
       call run_dynamics(scene, prepared, outcome, stat, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
-      if (outcome%failed) then
+      select case (outcome%status)
+      case ('failed')
          write (error_unit, '(a)') 'vibrobeam: numerical failure at '//trim(outcome%failure)
          write (error_unit, '(a)') 'vibrobeam: results up to the failure written to '//trim(scene%file)// &
             ' (/run status = ''failed'')'
-         stop exit_numerical_failure, quiet=.true.
-      end if
+         call finish(exit_numerical_failure)
+      case ('interrupted')
+         write (error_unit, '(a,i0,a)') 'vibrobeam: interrupted by '//interrupt_name()//' after step ', &
+            outcome%steps, '; results up to it written to '//trim(scene%file)//' (/run status = ''interrupted'')'
+         call stop_if_interrupted(outcome%text_skipped)
+         call finish(exit_interrupted)
+      end select
       write (output_unit, '(a,i0,a,i0,a,es10.3,a,f0.2,a)') 'vibrobeam: ', outcome%steps, ' steps, ', outcome%impacts, &
          ' impacts, largest penetration ', outcome%max_penetration, ' m, ', outcome%wall_seconds, ' s; written to '// &
-         trim(scene%file)
+         trim(scene%file)//' (run '//trim(outcome%run_id)//')'
+      call stop_if_interrupted(outcome%text_skipped)
+      call finish(exit_ok)
    end subroutine run_dynamics_scene
+
+   !> After publication: a signal that arrived meanwhile ends the program with status 4
+   !! (the published result is complete; the text files are missing when `text_skipped`).
+   subroutine stop_if_interrupted(text_skipped)
+      logical, intent(in) :: text_skipped
+      if (text_skipped) write (error_unit, '(a)') 'vibrobeam: '//interrupt_name()// &
+         ' while deriving the text files: published without them; derive them with vibrobeam --text '// &
+         trim(scene%file)
+      if (interrupt_requested()) call finish(exit_interrupted)
+   end subroutine stop_if_interrupted
+
+   !> vibrobeam --text RESULT.h5: derive the .dat files of a result file and publish them
+   !! beside it (the .dat files of the same stem that it does not produce are removed).
+   subroutine run_text(file)
+      character(len=*), intent(in) :: file
+      type(derived_file), allocatable :: files(:)
+      type(progress_meter) :: meter
+      logical :: interrupted
+      call watch_signals(stat, errmsg)
+      if (stat /= 0) call fail(exit_other_error, errmsg)
+      call meter%init(.false.)
+      call derive_text_files(file, file, meter, .true., files, interrupted, stat, errmsg)
+      call meter%end_line()
+      if (stat /= 0) call fail(exit_other_error, errmsg)
+      if (interrupted) then
+         write (error_unit, '(a)') 'vibrobeam: interrupted by '//interrupt_name()//'; no text file changed'
+         call finish(exit_interrupted)
+      end if
+      call publish_files('', file, files, stat, errmsg)
+      if (stat /= 0) call fail(exit_other_error, errmsg)
+      write (output_unit, '(a,i0,a)') 'vibrobeam: ', size(files), ' text files derived from '//file
+      call finish(exit_ok)
+   end subroutine run_text
 end program vibrobeam_main

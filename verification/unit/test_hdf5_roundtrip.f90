@@ -2,9 +2,9 @@
 !!
 !! Writes a result file through `h5_writer` (1-d, non-square 2-d, integer, scalar and
 !! empty datasets, nested group paths, attributes of every kind on '/', on a dataset and
-!! on a group created on the fly), checks the atomic-write protocol (only `<final>.tmp`
-!! exists before `commit`, only `<final>` after; `discard` leaves nothing and never
-!! touches an existing `<final>`), reads everything back with the module's readers and
+!! on a group created on the fly), checks the atomic-write protocol (only the temporary
+!! file `<final>.<pid>-<token>.tmp` exists before `commit`, only `<final>` after; `discard`
+!! leaves nothing and never touches an existing `<final>`), reads everything back with the module's readers and
 !! compares bit for bit (the reference is the written data itself: HDF5 must store the
 !! native double/integer types without conversion). When `h5dump` is on the PATH, it is
 !! used as an independent reader to check the dimension order: a Fortran (n1, n2) array
@@ -15,8 +15,8 @@
 program test_hdf5_roundtrip
    use vibrobeam_kinds, only: dp, int64, error_unit
    use vibrobeam_text, only: integer_text, real_text
-   use vibrobeam_filesystem, only: file_exists, remove_file, temporary_name, &
-      open_text_for_atomic_write, commit_text_file, discard_text_file
+   use vibrobeam_filesystem, only: file_exists, remove_file, rename_file, text_file_handle => text_file, &
+      open_text_for_atomic_write, write_text_line, finish_text_file, discard_text_file
    use vibrobeam_hdf5, only: h5_writer, read_real_1d, read_real_2d, read_int_1d, &
       read_real_scalar, read_attr_real, read_attr_int, read_attr_string, h5_path_exists
    implicit none
@@ -26,7 +26,7 @@ program test_hdf5_roundtrip
    integer :: failed = 0
 
    character(len=:), allocatable :: base_dir, nested_dir, deeper_dir, result_file
-   character(len=:), allocatable :: discarded_file, text_file, discarded_text_file
+   character(len=:), allocatable :: discarded_file, text_file, discarded_text_file, temporary
    type(h5_writer) :: writer
    integer :: stat, i, j
    character(len=message_length) :: errmsg
@@ -76,7 +76,10 @@ program test_hdf5_roundtrip
 
    call writer%create(result_file, stat, errmsg)
    call check_ok('create ' // result_file, stat, errmsg)
-   call check_true('temporary file exists before commit', file_exists(temporary_name(result_file)))
+   temporary = writer%temporary_file()
+   call check_true('temporary name is <final>.<pid>-<token>.tmp', index(temporary, result_file // '.') == 1 &
+      .and. index(temporary, '.tmp', back=.true.) == len(temporary) - 3)
+   call check_true('temporary file exists before commit', file_exists(temporary))
    call check_true('final file absent before commit', .not. file_exists(result_file))
 
    call writer%create(result_file, stat, errmsg)
@@ -133,12 +136,12 @@ program test_hdf5_roundtrip
    call check_fails('attr_real with an empty name', stat, errmsg, '/mesh/x')
 
    call check_true('temporary file exists before commit (after writes)', &
-      file_exists(temporary_name(result_file)))
+      file_exists(temporary))
    call check_true('final file absent before commit (after writes)', .not. file_exists(result_file))
    call writer%commit(stat, errmsg)
    call check_ok('commit', stat, errmsg)
    call check_true('final file exists after commit', file_exists(result_file))
-   call check_true('temporary file gone after commit', .not. file_exists(temporary_name(result_file)))
+   call check_true('temporary file gone after commit', .not. file_exists(temporary))
    call writer%commit(stat, errmsg)
    call check_fails('second commit', stat, errmsg)
 
@@ -247,20 +250,22 @@ program test_hdf5_roundtrip
    ! discard: nothing is left, and an existing final file is untouched
    call writer%create(discarded_file, stat, errmsg)
    call check_ok('create ' // discarded_file, stat, errmsg)
+   temporary = writer%temporary_file()
    call writer%write_real_1d('/mesh/x', mesh_x, 'm', stat, errmsg)
    call check_ok('write /mesh/x before discard', stat, errmsg)
    call writer%discard()
-   call check_true('no temporary file after discard', .not. file_exists(temporary_name(discarded_file)))
+   call check_true('no temporary file after discard', .not. file_exists(temporary))
    call check_true('no final file after discard', .not. file_exists(discarded_file))
    call writer%discard()   ! a second discard is a no-op
 
    call writer%create(result_file, stat, errmsg)
    call check_ok('create over an existing final file', stat, errmsg)
+   temporary = writer%temporary_file()
    call writer%write_real_1d('/other', nested_values, stat=stat, errmsg=errmsg)
    call check_ok('write /other before discard', stat, errmsg)
    call writer%discard()
    call check_true('discard keeps the existing final file', file_exists(result_file))
-   call check_true('discard removes the temporary file', .not. file_exists(temporary_name(result_file)))
+   call check_true('discard removes the temporary file', .not. file_exists(temporary))
    call check_true('discarded content not in the final file', &
       .not. h5_path_exists(result_file, '/other'))
    call read_real_2d(result_file, '/modes/shape', real_2d, stat, errmsg)
@@ -326,23 +331,27 @@ contains
          command_status == 0 .and. exit_status == 0)
    end subroutine check_with_h5dump
 
-   !> open_text_for_atomic_write / commit_text_file / discard_text_file.
+   !> open_text_for_atomic_write / finish_text_file (+ rename) / discard_text_file.
    subroutine check_text_files()
       integer :: unit, io_status
       character(len=64) :: line
+      character(len=:), allocatable :: text_temporary
+      type(text_file_handle) :: file
 
-      call open_text_for_atomic_write(text_file, unit, stat, errmsg)
+      call open_text_for_atomic_write(text_file, file, text_temporary, stat, errmsg)
       call check_ok('open_text_for_atomic_write ' // text_file, stat, errmsg)
       if (stat /= 0) return
-      write (unit, '(a)') '# t (s)  u (m)'
-      call check_true('text: temporary file exists before commit', &
-         file_exists(temporary_name(text_file)))
+      call write_text_line(file, '# t (s)  u (m)', text_temporary, stat, errmsg)
+      call check_ok('write_text_line', stat, errmsg)
+      call check_true('text: temporary file exists before commit', file_exists(text_temporary))
       call check_true('text: final file absent before commit', .not. file_exists(text_file))
-      call commit_text_file(unit, text_file, stat, errmsg)
-      call check_ok('commit_text_file', stat, errmsg)
+      call finish_text_file(file, text_temporary, stat, errmsg)
+      call check_ok('finish_text_file', stat, errmsg)
+      call rename_file(text_temporary, text_file, stat, errmsg)
+      call check_ok('rename the text file', stat, errmsg)
       call check_true('text: final file exists after commit', file_exists(text_file))
       call check_true('text: temporary file gone after commit', &
-         .not. file_exists(temporary_name(text_file)))
+         .not. file_exists(text_temporary))
       open (newunit=unit, file=text_file, status='old', action='read', iostat=io_status)
       line = ''
       if (io_status == 0) then
@@ -351,13 +360,12 @@ contains
       end if
       call check_string('text: committed header line', trim(line), '# t (s)  u (m)')
 
-      call open_text_for_atomic_write(discarded_text_file, unit, stat, errmsg)
+      call open_text_for_atomic_write(discarded_text_file, file, text_temporary, stat, errmsg)
       call check_ok('open_text_for_atomic_write ' // discarded_text_file, stat, errmsg)
       if (stat /= 0) return
-      write (unit, '(a)') 'partial'
-      call discard_text_file(unit, discarded_text_file)
-      call check_true('text: no temporary file after discard', &
-         .not. file_exists(temporary_name(discarded_text_file)))
+      call write_text_line(file, 'partial', text_temporary, stat, errmsg)
+      call discard_text_file(file, text_temporary)
+      call check_true('text: no temporary file after discard', .not. file_exists(text_temporary))
       call check_true('text: no final file after discard', .not. file_exists(discarded_text_file))
    end subroutine check_text_files
 

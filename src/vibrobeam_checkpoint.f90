@@ -1,0 +1,290 @@
+!> Checkpoints in the result file and restart from them (docs/output.md, "Checkpoint and
+!! restart").
+!!
+!! Layout: /checkpoint/state_1/<item> and, when checkpoints are also written during the
+!! run (&output checkpoint_seconds > 0), /checkpoint/state_2/<item>: one 1-d dataset per
+!! item of a `state_record` (reals as doubles, integers as 64-bit integers). The
+!! attributes of /checkpoint say which slot holds the latest complete state: `current`
+!! (0: none yet, 1 or 2), its `step` and `time` (s), and `items` (the item names, each
+!! followed by ':r' or ':i', separated by blanks). A new checkpoint goes into the slot
+!! that is not current; only after its data are flushed does `current` change (and is
+!! flushed), so a run killed at any moment leaves `current` pointing at a complete state.
+!! The datasets are created once, before the file enters SWMR mode, and rewritten in place.
+!!
+!! Restart (`read_checkpoint`, `check_compatible`): `&initial from_file` names a result
+!! file (published, or the temporary file of a killed run); the scene must match it in
+!! basis, elements, length, beam data, scheme, dt, theta, gamma and contact points (count
+!! and x); loads, restitution, obstacle levels and outputs may change.
+module vibrobeam_checkpoint
+   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_text, only: integer_text, real_text
+   use vibrobeam_scene, only: scene_type, scene_entry, scene_entries
+   use vibrobeam_hdf5, only: h5_writer
+   use vibrobeam_hdf5_series, only: h5_array
+   use vibrobeam_hdf5_reader, only: h5_reader
+   use vibrobeam_state_record, only: state_record, state_item
+   implicit none
+   private
+   public :: checkpoint_slots, read_checkpoint, check_compatible
+
+   !> The checkpoint datasets of an open result file.
+   type :: checkpoint_slots
+      integer :: slots = 0                           !! 1 or 2
+      integer :: current = 0                         !! slot of the latest complete state
+      type(h5_array), allocatable :: arrays(:, :)    !! (items, slots)
+   contains
+      procedure :: create => slots_create
+      procedure :: write => slots_write
+      procedure :: close => slots_close
+   end type checkpoint_slots
+
+   !> Root attributes (resolved input) that must match between a checkpoint and the scene
+   !! that continues it.
+   character(len=*), parameter :: matching(11) = [character(len=32) :: 'mesh.basis', 'mesh.elements', &
+      'beam.length', 'beam.mass_per_length', 'beam.bending_stiffness', 'beam.rayleigh_mass', &
+      'beam.rayleigh_stiffness', 'time.scheme', 'time.dt', 'time.theta', 'time.gamma']
+
+contains
+
+   !> Create `slots` slots (1 or 2) for records shaped like `record`.
+   subroutine slots_create(self, writer, record, slots, stat, errmsg)
+      class(checkpoint_slots), intent(inout) :: self
+      type(h5_writer), intent(inout) :: writer
+      type(state_record), intent(in) :: record
+      integer, intent(in) :: slots
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=:), allocatable :: items
+      integer :: k, s
+      self%slots = slots
+      self%current = 0
+      allocate (self%arrays(record%count, slots))
+      items = ''
+      stat = 0
+      do k = 1, record%count
+         associate (item => record%items(k))
+            items = items//trim(item%name)//merge(':i', ':r', item%integers)//' '
+            do s = 1, slots
+               call self%arrays(k, s)%create(writer, slot_path(s)//'/'//trim(item%name), item_size(item), &
+                                             item%integers, stat, errmsg)
+               if (stat /= 0) return
+            end do
+         end associate
+      end do
+      call writer%attr_string('/checkpoint', 'items', trim(items), stat, errmsg)
+      if (stat == 0) call writer%attr_int64('/checkpoint', 'current', 0_int64, stat, errmsg)
+      if (stat == 0) call writer%attr_int64('/checkpoint', 'step', 0_int64, stat, errmsg)
+      if (stat == 0) call writer%attr_real('/checkpoint', 'time', 0.0_dp, stat, errmsg)
+   end subroutine slots_create
+
+   !> Write `record` (shaped as at `create`) of step `step`, time `time` into the slot that
+   !! is not current, flush, then make it current and flush again.
+   subroutine slots_write(self, writer, record, step, time, stat, errmsg)
+      class(checkpoint_slots), intent(inout) :: self
+      type(h5_writer), intent(inout) :: writer
+      type(state_record), intent(in) :: record
+      integer(int64), intent(in) :: step
+      real(dp), intent(in) :: time
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: k, slot
+      slot = 1
+      if (self%slots == 2 .and. self%current == 1) slot = 2
+      do k = 1, record%count
+         associate (item => record%items(k))
+            if (item%integers) then
+               call self%arrays(k, slot)%write_int64s(item%int64s, stat, errmsg)
+            else
+               call self%arrays(k, slot)%write_reals(item%reals, stat, errmsg)
+            end if
+         end associate
+         if (stat /= 0) return
+      end do
+      call writer%flush(stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/checkpoint', 'current', int(slot, int64), stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/checkpoint', 'step', step, stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/checkpoint', 'time', time, stat, errmsg)
+      if (stat == 0) call writer%flush(stat, errmsg)
+      if (stat == 0) self%current = slot
+   end subroutine slots_write
+
+   !> Close the datasets.
+   subroutine slots_close(self)
+      class(checkpoint_slots), intent(inout) :: self
+      integer :: k, s
+      if (.not. allocated(self%arrays)) return
+      do s = 1, size(self%arrays, 2)
+         do k = 1, size(self%arrays, 1)
+            call self%arrays(k, s)%close()
+         end do
+      end do
+   end subroutine slots_close
+
+   !> True when a and b have the same bits (the file stores every value exactly).
+   elemental logical function same_bits(a, b)
+      real(dp), intent(in) :: a, b
+      same_bits = transfer(a, 1_int64) == transfer(b, 1_int64)
+   end function same_bits
+
+   pure function slot_path(slot) result(path)
+      integer, intent(in) :: slot
+      character(len=:), allocatable :: path
+      path = '/checkpoint/state_'//integer_text(slot)
+   end function slot_path
+
+   pure integer function item_size(item)
+      type(state_item), intent(in) :: item
+      if (item%integers) then
+         item_size = size(item%int64s)
+      else
+         item_size = size(item%reals)
+      end if
+   end function item_size
+
+   !> Read the latest complete checkpoint of `filename` into `record`; `time` is its time.
+   subroutine read_checkpoint(filename, record, time, stat, errmsg)
+      character(len=*), intent(in) :: filename
+      type(state_record), intent(out) :: record
+      real(dp), intent(out) :: time
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(h5_reader) :: file
+      character(len=:), allocatable :: items, name
+      integer(int64) :: current
+      integer :: start, finish
+      time = 0
+      call file%open(filename, stat, errmsg)
+      if (stat /= 0) return
+      read_items: block
+         if (.not. file%exists('/checkpoint')) then
+            stat = 1
+            errmsg = '''' // trim(filename) // ''' holds no checkpoint (not a dynamics result of vibrobeam 0.2 or later)'
+            exit read_items
+         end if
+         call file%attr_int64('/checkpoint', 'current', current, stat, errmsg)
+         if (stat == 0) call file%attr_string('/checkpoint', 'items', items, stat, errmsg)
+         if (stat == 0) call file%attr_real('/checkpoint', 'time', time, stat, errmsg)
+         if (stat /= 0) exit read_items
+         if (current < 1 .or. current > 2) then
+            stat = 1
+            errmsg = '''' // trim(filename) // ''' holds no complete checkpoint yet'
+            exit read_items
+         end if
+         start = 1
+         do while (start <= len(items))
+            finish = index(items(start:), ' ')
+            if (finish == 0) finish = len(items) - start + 2
+            name = items(start:start + finish - 2)
+            start = start + finish
+            if (len(name) < 3) cycle
+            call read_item(name(1:len(name) - 2), name(len(name):len(name)) == 'i')
+            if (stat /= 0) exit read_items
+         end do
+      end block read_items
+      call file%close()
+   contains
+      subroutine read_item(item_name, integers)
+         character(len=*), intent(in) :: item_name
+         logical, intent(in) :: integers
+         real(dp), allocatable :: reals(:)
+         integer(int64), allocatable :: int64s(:)
+         character(len=:), allocatable :: path
+         path = slot_path(int(current))//'/'//item_name
+         if (integers) then
+            call file%read_int64s(path, int64s, stat, errmsg)
+            if (stat == 0) call record%put_int64s(item_name, int64s)
+         else
+            call file%read_reals(path, reals, stat, errmsg)
+            if (stat == 0) call record%put_reals(item_name, reals)
+         end if
+      end subroutine read_item
+   end subroutine read_checkpoint
+
+   !> Check that `filename`'s run matches `scene` (module documentation) and has the
+   !! contact points `contact_x`. stat = 1 with a message naming the first mismatch.
+   !! `same_bounds`: the obstacle bounds at the contact points are those of the file.
+   subroutine check_compatible(filename, scene, contact_x, lower, upper, same_bounds, stat, errmsg)
+      character(len=*), intent(in) :: filename
+      type(scene_type), intent(in) :: scene
+      real(dp), intent(in) :: contact_x(:), lower(:), upper(:)
+      logical, intent(out) :: same_bounds
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(h5_reader) :: file
+      type(scene_entry), allocatable :: list(:)
+      character(len=:), allocatable :: text, prefix
+      real(dp), allocatable :: x(:), file_lower(:), file_upper(:)
+      real(dp) :: value
+      integer(int64) :: number
+      integer :: i, k
+      same_bounds = .false.
+      prefix = '&initial from_file = '''//trim(filename)//''': '
+      call file%open(filename, stat, errmsg)
+      if (stat /= 0) then
+         errmsg = prefix//trim(errmsg)
+         return
+      end if
+      allocate (list, source=scene_entries(scene))
+      compare: block
+         do k = 1, size(matching)
+            do i = size(list), 1, -1
+               if (list(i)%name == matching(k)) exit
+            end do
+            if (i == 0) cycle
+            associate (item => list(i))
+               select case (item%kind)
+               case ('real')
+                  call file%attr_real('/', trim(item%name), value, stat, errmsg)
+                  if (stat == 0 .and. .not. same_bits(value, item%real_value)) then
+                     call mismatch(trim(item%name), real_text(value), real_text(item%real_value))
+                     exit compare
+                  end if
+               case ('integer')
+                  call file%attr_int64('/', trim(item%name), number, stat, errmsg)
+                  if (stat == 0 .and. number /= item%integer_value) then
+                     call mismatch(trim(item%name), integer_text(int(number)), integer_text(item%integer_value))
+                     exit compare
+                  end if
+               case default
+                  call file%attr_string('/', trim(item%name), text, stat, errmsg)
+                  if (stat == 0 .and. text /= trim(item%string_value)) then
+                     call mismatch(trim(item%name), ''''//text//'''', ''''//trim(item%string_value)//'''')
+                     exit compare
+                  end if
+               end select
+            end associate
+            if (stat /= 0) then
+               errmsg = prefix//trim(errmsg)
+               exit compare
+            end if
+         end do
+         call file%read_reals('/contact/x', x, stat, errmsg)
+         if (stat /= 0) then
+            errmsg = prefix//trim(errmsg)
+            exit compare
+         end if
+         if (size(x) /= size(contact_x)) then
+            call mismatch('contact points', integer_text(size(x)), integer_text(size(contact_x)))
+         else if (.not. all(same_bits(x, contact_x))) then
+            k = findloc(same_bits(x, contact_x), .false., dim=1)
+            call mismatch('contact point '//integer_text(k)//' x', real_text(x(k)), real_text(contact_x(k)))
+         end if
+         if (stat /= 0) exit compare
+         call file%read_reals('/contact/lower', file_lower, stat, errmsg)
+         if (stat == 0) call file%read_reals('/contact/upper', file_upper, stat, errmsg)
+         if (stat /= 0) then
+            errmsg = prefix//trim(errmsg)
+            exit compare
+         end if
+         same_bounds = all(same_bits(file_lower, lower)) .and. all(same_bits(file_upper, upper))
+      end block compare
+      call file%close()
+   contains
+      subroutine mismatch(name, in_file, in_scene)
+         character(len=*), intent(in) :: name, in_file, in_scene
+         stat = 1
+         errmsg = prefix//name//' is '//in_file//' in the file and '//in_scene//' in this scene; basis, '// &
+                  'elements, length, beam data, scheme, dt, theta, gamma and contact points must match'
+      end subroutine mismatch
+   end subroutine check_compatible
+end module vibrobeam_checkpoint

@@ -1,0 +1,344 @@
+!> Datasets written while a run goes on (docs/output.md, "Streaming"):
+!! - `h5_series`: an extendible, chunked dataset that grows by rows (one row per output
+!!   time, per impact, per episode, ...). Rows are collected in a bounded buffer and
+!!   written as one hyperslab (H5Dset_extent + a selection) when the buffer is full or
+!!   when the caller flushes, so memory does not grow with the number of rows.
+!! - `h5_array`: a fixed-size 1-d dataset created once and rewritten in place (the
+!!   checkpoint slots), which SWMR mode allows.
+!!
+!! A series of one column is a 1-d dataset (rows); of c columns, a 2-d dataset that h5py
+!! sees as (rows, c) (the Fortran array (c, rows), `vibrobeam_hdf5` conventions). Values
+!! are stored as native doubles, or as 64-bit integers for `integers = .true.` (counts).
+!! Every dataset gets its string attribute 'unit'. Create every dataset before the file
+!! enters SWMR mode (`h5_writer%start_swmr`).
+module vibrobeam_hdf5_series
+   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_hdf5, only: h5_writer
+   use vibrobeam_hdf5_base, only: no_id, fail, describe, link_exists, put_string_attribute, &
+      close_dataspace, close_property_list, h5_reason
+   use hdf5, only: hid_t, hsize_t, size_t, h5kind_to_type, H5_REAL_KIND, H5_INTEGER_KIND, &
+      h5pcreate_f, h5pset_chunk_f, h5pset_alloc_time_f, h5pset_chunk_cache_f, H5P_DATASET_CREATE_F, &
+      H5P_DATASET_ACCESS_F, H5D_ALLOC_TIME_EARLY_F, &
+      H5S_UNLIMITED_F, &
+      h5screate_simple_f, h5sselect_hyperslab_f, H5S_SELECT_SET_F, &
+      h5dcreate_f, h5dclose_f, h5dwrite_f, h5dget_space_f, h5dset_extent_f
+   implicit none
+   private
+   public :: h5_series, h5_array, series_buffer_rows
+
+   !> Largest buffer (and chunk) of a series in bytes: 1 MiB, HDF5's default chunk cache.
+   integer, parameter :: buffer_bytes = 2**20
+   !> Most rows buffered by a series (a chunk of a 1-d series is then 32 KiB).
+   integer, parameter :: most_buffer_rows = 4096
+
+   !> An extendible dataset of rows.
+   type :: h5_series
+      private
+      integer(hid_t) :: dataset = no_id
+      integer :: columns = 1
+      logical :: matrix = .false.            !! 2-d dataset (also for one column)
+      logical :: integers = .false.          !! stored as 64-bit integers
+      integer(int64) :: written = 0          !! rows in the file
+      integer :: buffered = 0                !! rows waiting in the buffer
+      real(dp), allocatable :: buffer(:, :)  !! (columns, capacity)
+      character(len=:), allocatable :: path, file
+   contains
+      procedure :: create => series_create
+      procedure :: append => series_append
+      procedure :: write => series_write
+      procedure :: rows => series_rows
+      procedure :: close => series_close
+   end type h5_series
+
+   !> A fixed-size 1-d dataset rewritten in place.
+   type :: h5_array
+      private
+      integer(hid_t) :: dataset = no_id
+      integer :: length = 0
+      logical :: integers = .false.
+      character(len=:), allocatable :: path, file
+   contains
+      procedure :: create => array_create
+      procedure :: write_reals => array_write_reals
+      procedure :: write_int64s => array_write_int64s
+      procedure :: close => array_close
+   end type h5_array
+
+contains
+
+   !> Rows a series of `columns` columns buffers: at most `most_buffer_rows`, at most
+   !! `buffer_bytes` of values, at least 1.
+   pure integer function series_buffer_rows(columns)
+      integer, intent(in) :: columns
+      series_buffer_rows = max(1, min(most_buffer_rows, buffer_bytes/(8*max(columns, 1))))
+   end function series_buffer_rows
+
+   !> Create the empty extendible dataset `path` with `columns` values per row, chunks of
+   !! `series_buffer_rows(columns)` rows, and its 'unit' attribute.
+   subroutine series_create(self, writer, path, columns, unit, stat, errmsg, integers, matrix)
+      class(h5_series), intent(inout) :: self
+      type(h5_writer), intent(in) :: writer
+      character(len=*), intent(in) :: path, unit
+      integer, intent(in) :: columns
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      logical, intent(in), optional :: integers   !! store 64-bit integers (default: reals)
+      logical, intent(in), optional :: matrix     !! 2-d even with one column (default: columns > 1)
+      integer(hid_t) :: space_id, properties, access
+      integer(hsize_t) :: dims(2), max_dims(2), chunk(2)
+      character(len=:), allocatable :: failed_step, reason
+      integer :: hdferr, rank, capacity, allocation_stat
+      stat = 0
+      errmsg = ''
+      self%columns = columns
+      self%integers = .false.
+      if (present(integers)) self%integers = integers
+      self%matrix = columns > 1
+      if (present(matrix)) self%matrix = matrix .or. columns > 1
+      self%path = trim(path)
+      self%file = writer%temporary_file()
+      self%written = 0
+      self%buffered = 0
+      capacity = series_buffer_rows(columns)
+      allocate (self%buffer(columns, capacity), stat=allocation_stat)
+      if (allocation_stat /= 0) then
+         stat = 1
+         errmsg = 'cannot allocate the output buffer of ' // describe(path, self%file)
+         return
+      end if
+      if (link_exists(writer%id(), path)) then
+         call fail(stat, errmsg, 'cannot create dataset ' // describe(path, self%file) // &
+            ': the path already exists')
+         return
+      end if
+      if (self%matrix) then
+         rank = 2
+         dims = [int(columns, hsize_t), 0_hsize_t]
+         max_dims = [int(columns, hsize_t), H5S_UNLIMITED_F]
+         chunk = [int(columns, hsize_t), int(capacity, hsize_t)]
+      else
+         rank = 1
+         dims = 0
+         max_dims = H5S_UNLIMITED_F
+         chunk = int(capacity, hsize_t)
+      end if
+      properties = no_id
+      access = no_id
+      space_id = no_id
+      ! no chunk cache (also set for the whole file, `vibrobeam_hdf5`): rows are written a
+      ! whole chunk (the buffer) at a time
+      call h5screate_simple_f(rank, dims(1:rank), space_id, hdferr, max_dims(1:rank))
+      if (hdferr >= 0) call h5pcreate_f(H5P_DATASET_CREATE_F, properties, hdferr)
+      if (hdferr >= 0) call h5pset_chunk_f(properties, rank, chunk(1:rank), hdferr)
+      if (hdferr >= 0) call h5pcreate_f(H5P_DATASET_ACCESS_F, access, hdferr)
+      if (hdferr >= 0) call h5pset_chunk_cache_f(access, 0_size_t, 0_size_t, 1.0, hdferr)
+      if (hdferr >= 0) call h5dcreate_f(writer%id(), trim(path), value_type(self%integers), space_id, &
+                                        self%dataset, hdferr, properties, writer%link_properties(), access)
+      reason = ''
+      if (hdferr < 0) reason = h5_reason()
+      call close_dataspace(space_id)
+      call close_property_list(properties)
+      call close_property_list(access)
+      if (hdferr < 0) then
+         self%dataset = no_id
+         call fail(stat, errmsg, 'cannot create dataset ' // describe(path, self%file), reason)
+         return
+      end if
+      call put_string_attribute(self%dataset, 'unit', unit, failed_step)
+      if (len(failed_step) > 0) call fail(stat, errmsg, 'cannot write attribute ''unit'' of ' // &
+                                          describe(path, self%file) // ' (' // failed_step // ')')
+   end subroutine series_create
+
+   !> Add one row (size(row) = columns); writes the buffer when it is full.
+   subroutine series_append(self, row, stat, errmsg)
+      class(h5_series), intent(inout) :: self
+      real(dp), intent(in) :: row(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      stat = 0
+      errmsg = ''
+      if (self%buffered == size(self%buffer, 2)) then
+         call self%write(stat, errmsg)
+         if (stat /= 0) return
+      end if
+      self%buffered = self%buffered + 1
+      self%buffer(:, self%buffered) = row
+   end subroutine series_append
+
+   !> Write the buffered rows to the file (extend the dataset, write one hyperslab).
+   subroutine series_write(self, stat, errmsg)
+      class(h5_series), intent(inout) :: self
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(hid_t) :: file_space, memory_space
+      integer(hsize_t) :: offset(2), count(2), extent(2)
+      integer(int64), allocatable :: counts(:, :)
+      character(len=:), allocatable :: reason
+      integer :: hdferr, rank
+      stat = 0
+      errmsg = ''
+      if (self%buffered == 0) return
+      if (self%dataset == no_id) then
+         call fail(stat, errmsg, 'cannot write ' // describe(self%path, self%file) // ': the dataset is not open')
+         return
+      end if
+      if (self%matrix) then
+         rank = 2
+         extent = [int(self%columns, hsize_t), int(self%written + self%buffered, hsize_t)]
+         offset = [0_hsize_t, int(self%written, hsize_t)]
+         count = [int(self%columns, hsize_t), int(self%buffered, hsize_t)]
+      else
+         rank = 1
+         extent(1) = int(self%written + self%buffered, hsize_t)
+         offset(1) = int(self%written, hsize_t)
+         count(1) = int(self%buffered, hsize_t)
+      end if
+      file_space = no_id
+      memory_space = no_id
+      call h5dset_extent_f(self%dataset, extent(1:rank), hdferr)
+      if (hdferr >= 0) call h5dget_space_f(self%dataset, file_space, hdferr)
+      if (hdferr >= 0) call h5sselect_hyperslab_f(file_space, H5S_SELECT_SET_F, offset(1:rank), count(1:rank), hdferr)
+      if (hdferr >= 0) call h5screate_simple_f(rank, count(1:rank), memory_space, hdferr)
+      if (hdferr >= 0) then
+         if (self%integers) then
+            allocate (counts, source=nint(self%buffer(:, 1:self%buffered), int64))
+            call h5dwrite_f(self%dataset, value_type(.true.), counts, count(1:rank), hdferr, &
+                            mem_space_id=memory_space, file_space_id=file_space)
+         else if (self%buffered == size(self%buffer, 2)) then
+            call h5dwrite_f(self%dataset, value_type(.false.), self%buffer, count(1:rank), hdferr, &
+                            mem_space_id=memory_space, file_space_id=file_space)
+         else
+            call write_section(self%buffer(:, 1:self%buffered))
+         end if
+      end if
+      reason = ''
+      if (hdferr < 0) reason = h5_reason()
+      call close_dataspace(memory_space)
+      call close_dataspace(file_space)
+      if (hdferr < 0) then
+         call fail(stat, errmsg, 'cannot write ' // describe(self%path, self%file), reason)
+         return
+      end if
+      self%written = self%written + self%buffered
+      self%buffered = 0
+   contains
+      !> h5dwrite_f of a contiguous copy of the filled part of the buffer.
+      subroutine write_section(values)
+         real(dp), intent(in) :: values(:, :)
+         real(dp), allocatable :: contiguous_values(:, :)
+         allocate (contiguous_values, source=values)
+         call h5dwrite_f(self%dataset, value_type(.false.), contiguous_values, count(1:rank), hdferr, &
+                         mem_space_id=memory_space, file_space_id=file_space)
+      end subroutine write_section
+   end subroutine series_write
+
+   !> Rows appended so far (written or buffered).
+   pure function series_rows(self) result(rows)
+      class(h5_series), intent(in) :: self
+      integer(int64) :: rows
+      rows = self%written + self%buffered
+   end function series_rows
+
+   !> Close the dataset (buffered rows not written are lost: `write` first).
+   subroutine series_close(self)
+      class(h5_series), intent(inout) :: self
+      integer :: hdferr
+      if (self%dataset /= no_id) call h5dclose_f(self%dataset, hdferr)
+      self%dataset = no_id
+   end subroutine series_close
+
+   !> Create the 1-d dataset `path` of `length` values (reals, or 64-bit integers).
+   subroutine array_create(self, writer, path, length, integers, stat, errmsg)
+      class(h5_array), intent(inout) :: self
+      type(h5_writer), intent(in) :: writer
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: length
+      logical, intent(in) :: integers
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(hid_t) :: space_id, properties
+      character(len=:), allocatable :: reason
+      integer :: hdferr
+      stat = 0
+      errmsg = ''
+      self%length = length
+      self%integers = integers
+      self%path = trim(path)
+      self%file = writer%temporary_file()
+      space_id = no_id
+      properties = no_id
+      ! storage allocated now: writing it later (in SWMR mode) changes no metadata
+      call h5screate_simple_f(1, [int(length, hsize_t)], space_id, hdferr)
+      if (hdferr >= 0) call h5pcreate_f(H5P_DATASET_CREATE_F, properties, hdferr)
+      if (hdferr >= 0) call h5pset_alloc_time_f(properties, H5D_ALLOC_TIME_EARLY_F, hdferr)
+      if (hdferr >= 0) call h5dcreate_f(writer%id(), trim(path), value_type(integers), space_id, &
+                                        self%dataset, hdferr, properties, writer%link_properties())
+      reason = ''
+      if (hdferr < 0) reason = h5_reason()
+      call close_dataspace(space_id)
+      call close_property_list(properties)
+      if (hdferr < 0) then
+         self%dataset = no_id
+         call fail(stat, errmsg, 'cannot create dataset ' // describe(path, self%file), reason)
+      end if
+   end subroutine array_create
+
+   !> Write all values of a real array dataset.
+   subroutine array_write_reals(self, values, stat, errmsg)
+      class(h5_array), intent(inout) :: self
+      real(dp), intent(in) :: values(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp), allocatable :: contiguous_values(:)
+      integer :: hdferr
+      stat = 0
+      errmsg = ''
+      if (size(values) /= self%length .or. self%integers) then
+         call fail(stat, errmsg, 'cannot write ' // describe(self%path, self%file) // ': wrong size or type')
+         return
+      end if
+      if (self%length == 0) return
+      allocate (contiguous_values, source=values)
+      call h5dwrite_f(self%dataset, value_type(.false.), contiguous_values, [int(self%length, hsize_t)], hdferr)
+      if (hdferr < 0) call fail(stat, errmsg, 'cannot write ' // describe(self%path, self%file))
+   end subroutine array_write_reals
+
+   !> Write all values of an integer array dataset.
+   subroutine array_write_int64s(self, values, stat, errmsg)
+      class(h5_array), intent(inout) :: self
+      integer(int64), intent(in) :: values(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(int64), allocatable :: contiguous_values(:)
+      integer :: hdferr
+      stat = 0
+      errmsg = ''
+      if (size(values) /= self%length .or. .not. self%integers) then
+         call fail(stat, errmsg, 'cannot write ' // describe(self%path, self%file) // ': wrong size or type')
+         return
+      end if
+      if (self%length == 0) return
+      allocate (contiguous_values, source=values)
+      call h5dwrite_f(self%dataset, value_type(.true.), contiguous_values, [int(self%length, hsize_t)], hdferr)
+      if (hdferr < 0) call fail(stat, errmsg, 'cannot write ' // describe(self%path, self%file))
+   end subroutine array_write_int64s
+
+   !> Close the dataset.
+   subroutine array_close(self)
+      class(h5_array), intent(inout) :: self
+      integer :: hdferr
+      if (self%dataset /= no_id) call h5dclose_f(self%dataset, hdferr)
+      self%dataset = no_id
+   end subroutine array_close
+
+   !> HDF5 type of the stored values.
+   function value_type(integers) result(type_id)
+      logical, intent(in) :: integers
+      integer(hid_t) :: type_id
+      if (integers) then
+         type_id = h5kind_to_type(int64, H5_INTEGER_KIND)
+      else
+         type_id = h5kind_to_type(dp, H5_REAL_KIND)
+      end if
+   end function value_type
+end module vibrobeam_hdf5_series

@@ -1,0 +1,126 @@
+!> Restart check: a run continued from a checkpoint (&initial from_file) must go on
+!! exactly as the run that was never stopped. Compares, bit for bit,
+!! - every history of CONTINUED.h5 (one row per output time, field snapshot, impact,
+!!   episode) with the last rows of the same history in FULL.h5 (the continued run writes
+!!   only what follows its checkpoint);
+!! - the tip spectrum and the contact fractions, which cover the whole run in both;
+!! - the final states (every item of the final checkpoint) and the step counts.
+!! The reference is the uninterrupted run itself: no tolerance, equality of bit patterns.
+!! usage: compare_continued FULL.h5 CONTINUED.h5
+program compare_continued
+   use vibrobeam_kinds, only: dp, int64, output_unit
+   use vibrobeam_text, only: integer_text
+   use vibrobeam_hdf5_reader, only: h5_reader
+   use vibrobeam_state_record, only: state_record
+   use vibrobeam_checkpoint, only: read_checkpoint
+   use vibrobeam_test_support, only: test_counter
+   implicit none
+   character(len=*), parameter :: histories(*) = [character(len=40) :: '/time', '/tip/displacement', &
+      '/tip/velocity', '/tip/reaction', '/tip/impulse', '/energy/kinetic', '/energy/elastic', '/energy/total', &
+      '/energy/work', '/energy/dissipated', '/energy/dissipated_impacts', '/energy/dissipated_damping', &
+      '/energy/dissipated_numerical', '/energy/balance', '/contact/penetration', '/points/displacement', &
+      '/points/velocity', '/field/time', '/field/displacement', '/impacts/time', '/impacts/x', &
+      '/impacts/impulse', '/impacts/velocity_before', '/impacts/velocity_after', '/episodes/x', &
+      '/episodes/start', '/episodes/end', '/episodes/impulse', '/episodes/approach_speed', '/episodes/impacts', &
+      '/episodes/open_at_end']
+   character(len=*), parameter :: wholes(*) = [character(len=40) :: '/spectrum/frequency', &
+      '/spectrum/tip_amplitude', '/contact/fraction']
+   type(test_counter) :: t
+   type(h5_reader) :: full, continued
+   type(state_record) :: full_state, continued_state
+   character(len=512) :: full_name, continued_name, errmsg
+   real(dp), allocatable :: a(:), b(:)
+   real(dp) :: time
+   integer(int64) :: full_steps, continued_steps, rows_compared
+   integer :: k, stat
+
+   call get_command_argument(1, full_name)
+   call get_command_argument(2, continued_name)
+   call full%open(trim(full_name), stat, errmsg)
+   if (stat == 0) call continued%open(trim(continued_name), stat, errmsg)
+   call t%check_true('open both files', stat == 0, errmsg)
+   if (stat /= 0) call t%finish('compare_continued')
+
+   rows_compared = 0
+   do k = 1, size(histories)
+      call compare_tail(trim(histories(k)))
+   end do
+   do k = 1, size(wholes)
+      call full%read_reals(trim(wholes(k)), a, stat, errmsg)
+      if (stat == 0) call continued%read_reals(trim(wholes(k)), b, stat, errmsg)
+      call t%check_true('read '//trim(wholes(k)), stat == 0, errmsg)
+      if (stat == 0) call t%check_true(trim(wholes(k))//' equals that of the uninterrupted run', &
+                                       same_bits(a, b), 'differs')
+   end do
+   call full%attr_int64('/run', 'steps', full_steps, stat, errmsg)
+   if (stat == 0) call continued%attr_int64('/run', 'steps', continued_steps, stat, errmsg)
+   call t%check_true('read /run steps', stat == 0, errmsg)
+   call t%check_true('both runs end at the same step', full_steps == continued_steps, &
+                     integer_text(int(full_steps))//' and '//integer_text(int(continued_steps)))
+   call full%close()
+   call continued%close()
+
+   ! the final state: every item of the final checkpoint
+   call read_checkpoint(trim(full_name), full_state, time, stat, errmsg)
+   if (stat == 0) call read_checkpoint(trim(continued_name), continued_state, time, stat, errmsg)
+   call t%check_true('read both final checkpoints', stat == 0, errmsg)
+   if (stat == 0) then
+      call t%check_true('the final checkpoints hold the same items', full_state%count == continued_state%count)
+      do k = 1, min(full_state%count, continued_state%count)
+         associate (x => full_state%items(k), y => continued_state%items(k))
+            if (x%integers) then
+               call t%check_true('final state '//trim(x%name), y%integers .and. size(x%int64s) == size(y%int64s))
+               if (y%integers .and. size(x%int64s) == size(y%int64s)) &
+                  call t%check_true('final state '//trim(x%name)//' equal', all(x%int64s == y%int64s))
+            else
+               call t%check_true('final state '//trim(x%name)//' equal', &
+                                 .not. y%integers .and. same_bits(x%reals, y%reals))
+            end if
+         end associate
+      end do
+   end if
+   write (output_unit, '(a,i0,a,i0,a)') 'compared ', rows_compared, ' rows of ', size(histories), &
+      ' histories and the final state bit for bit'
+   call t%finish('compare_continued')
+
+contains
+
+   !> The rows of `path` in the continued run equal the last rows of the full run.
+   subroutine compare_tail(path)
+      character(len=*), intent(in) :: path
+      integer(int64), allocatable :: full_dims(:), continued_dims(:)
+      real(dp), allocatable :: x(:, :), y(:, :)
+      integer(int64) :: rows, first
+      integer :: columns
+      if (.not. continued%exists(path)) then
+         call t%check_true(path//' in both files', .not. full%exists(path), 'only in '//trim(full_name))
+         return
+      end if
+      call full%shape(path, full_dims, stat, errmsg)
+      if (stat == 0) call continued%shape(path, continued_dims, stat, errmsg)
+      call t%check_true('shape of '//path, stat == 0, errmsg)
+      if (stat /= 0) return
+      rows = continued_dims(size(continued_dims))
+      columns = 1
+      if (size(continued_dims) == 2) columns = int(continued_dims(1))
+      call t%check_true(path//': the continued run has no more rows than the full run', &
+                        rows <= full_dims(size(full_dims)))
+      if (rows == 0 .or. rows > full_dims(size(full_dims))) return
+      first = full_dims(size(full_dims)) - rows + 1
+      allocate (x(columns, rows), y(columns, rows))
+      call full%read_rows(path, first, x, stat, errmsg)
+      if (stat == 0) call continued%read_rows(path, 1_int64, y, stat, errmsg)
+      call t%check_true('read '//path, stat == 0, errmsg)
+      if (stat /= 0) return
+      call t%check_true(path//' ('//integer_text(int(rows))//' rows) equals the end of the uninterrupted run', &
+                        same_bits(reshape(x, [size(x)]), reshape(y, [size(y)])), 'differs')
+      rows_compared = rows_compared + rows
+   end subroutine compare_tail
+
+   !> Equal bit patterns (NaNs and signed zeros included).
+   pure logical function same_bits(x, y)
+      real(dp), intent(in) :: x(:), y(:)
+      same_bits = size(x) == size(y)
+      if (same_bits) same_bits = all(transfer(x, 1_int64, size(x)) == transfer(y, 1_int64, size(y)))
+   end function same_bits
+end program compare_continued
