@@ -13,6 +13,7 @@
 module vibrobeam_band
    use vibrobeam_kinds, only: dp
    use vibrobeam_band_kernel, only: kernel_bandwidth, ldl_factor_kd3, ldl_solve_kd3, band_matvec_kd3
+   use vibrobeam_band_lapack, only: dpbtrf, dpbtrs, dsbmv
    implicit none
    private
    public :: symmetric_band, band_cholesky
@@ -35,31 +36,6 @@ module vibrobeam_band
       real(dp), allocatable :: factor(:,:)  !! (kd+1, n), in the form kd selects
    end type band_cholesky
 
-   interface
-      subroutine dpbtrf(uplo, n, kd, ab, ldab, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, kd, ldab
-         real(dp), intent(inout) :: ab(ldab, *)
-         integer, intent(out) :: info
-      end subroutine dpbtrf
-      subroutine dpbtrs(uplo, n, kd, nrhs, ab, ldab, b, ldb, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, kd, nrhs, ldab, ldb
-         real(dp), intent(in) :: ab(ldab, *)
-         real(dp), intent(inout) :: b(ldb, *)
-         integer, intent(out) :: info
-      end subroutine dpbtrs
-      subroutine dsbmv(uplo, n, k, alpha, a, lda, x, incx, beta, y, incy)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, k, lda, incx, incy
-         real(dp), intent(in) :: alpha, beta
-         real(dp), intent(in) :: a(lda, *), x(*)
-         real(dp), intent(inout) :: y(*)
-      end subroutine dsbmv
-   end interface
 
 contains
 

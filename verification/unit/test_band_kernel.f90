@@ -32,34 +32,10 @@ program test_band_kernel
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_allocate, band_combination, &
                              band_factor, band_solve, band_matvec
+   use vibrobeam_band_lapack, only: dpbtrf, dpbtrs, dsbmv
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_test_support, only: test_counter
    implicit none
-   interface
-      subroutine dpbtrf(uplo, n, kd, ab, ldab, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, kd, ldab
-         real(dp), intent(inout) :: ab(ldab, *)
-         integer, intent(out) :: info
-      end subroutine dpbtrf
-      subroutine dpbtrs(uplo, n, kd, nrhs, ab, ldab, b, ldb, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, kd, nrhs, ldab, ldb
-         real(dp), intent(in) :: ab(ldab, *)
-         real(dp), intent(inout) :: b(ldb, *)
-         integer, intent(out) :: info
-      end subroutine dpbtrs
-      subroutine dsbmv(uplo, n, k, alpha, a, lda, x, incx, beta, y, incy)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, k, lda, incx, incy
-         real(dp), intent(in) :: alpha, beta
-         real(dp), intent(in) :: a(lda, *), x(*)
-         real(dp), intent(inout) :: y(*)
-      end subroutine dsbmv
-   end interface
    real(dp), parameter :: u = epsilon(1.0_dp)/2   !! unit round-off
    integer, parameter :: kd = 3
    integer, parameter :: sizes(9) = [1, 2, 3, 4, 5, 7, 40, 200, 1000]
@@ -122,10 +98,11 @@ contains
    !> A = R R^T, R lower triangular with `width` sub-diagonals, entries uniform in
    !! [-1, 1] off the diagonal and in [1, 2] on it; R(m,m) = `pivot` at m = n/2 + 1 when
    !! pivot < 1 (the Cholesky factor of A is R, so that pivot sets the conditioning).
-   subroutine random_spd(n, width, pivot, a)
+   subroutine random_spd(n, width, pivot, a, factor)
       integer, intent(in) :: n, width
       real(dp), intent(in) :: pivot
       type(symmetric_band), intent(out) :: a
+      real(dp), intent(out), optional :: factor(width + 1, n)   !! R, band storage
       real(dp) :: r(width + 1, n)
       integer :: i, j, l
       call random_number(r)
@@ -141,6 +118,7 @@ contains
             end do
          end do
       end do
+      if (present(factor)) factor = r
    end subroutine random_spd
 
    !> S_i = sqrt(a_ii) sum_(|i-j|<=kd) sqrt(a_jj) |x_j| (see the header).
@@ -255,21 +233,11 @@ contains
       type(symmetric_band) :: a
       type(band_cholesky) :: chol
       real(dp) :: lapack_factor(kd + 1, n)
-      integer :: i, j, l, stat, info, attempt
+      integer :: stat, info, attempt
       logical :: trapping
       character(len=200) :: errmsg
       character(len=20) :: order
-      call random_number(r)
-      r(2:, :) = 2*r(2:, :) - 1
-      r(1, :) = 1 + r(1, :)
-      call band_allocate(a, n, kd)
-      do j = 1, n
-         do i = j, min(n, j + kd)
-            do l = max(1, i - kd), j
-               a%lower(1 + i - j, j) = a%lower(1 + i - j, j) + r(1 + i - l, l)*r(1 + j - l, l)
-            end do
-         end do
-      end do
+      call random_spd(n, kd, 1.0_dp, a, r)
       write (order, '(a,i0)') 'order ', m
       do attempt = 1, 2
          if (attempt == 1) then

@@ -1,0 +1,39 @@
+!> Explicit interfaces of the LAPACK/BLAS routines on symmetric band matrices (lower band
+!! storage) that vibrobeam calls: the fall-back of `vibrobeam_band` for bandwidths other
+!! than 3, and the oracle its kernels are tested against.
+module vibrobeam_band_lapack
+   use vibrobeam_kinds, only: dp
+   implicit none
+   private
+   public :: dpbtrf, dpbtrs, dsbmv
+
+   interface
+      !> Cholesky factorization A = L L^T (UPLO = 'L'); info = k > 0: the leading minor of
+      !! order k is not positive definite.
+      subroutine dpbtrf(uplo, n, kd, ab, ldab, info)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, kd, ldab
+         real(dp), intent(inout) :: ab(ldab, *)
+         integer, intent(out) :: info
+      end subroutine dpbtrf
+      !> Solve A X = B with the factor of dpbtrf.
+      subroutine dpbtrs(uplo, n, kd, nrhs, ab, ldab, b, ldb, info)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, kd, nrhs, ldab, ldb
+         real(dp), intent(in) :: ab(ldab, *)
+         real(dp), intent(inout) :: b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dpbtrs
+      !> y = alpha A x + beta y.
+      subroutine dsbmv(uplo, n, k, alpha, a, lda, x, incx, beta, y, incy)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, k, lda, incx, incy
+         real(dp), intent(in) :: alpha, beta
+         real(dp), intent(in) :: a(lda, *), x(*)
+         real(dp), intent(inout) :: y(*)
+      end subroutine dsbmv
+   end interface
+end module vibrobeam_band_lapack
