@@ -1,11 +1,12 @@
-!> Explicit interfaces of the LAPACK/BLAS routines on symmetric band matrices (lower band
-!! storage) that vibrobeam calls: the fall-back of `vibrobeam_band` for bandwidths other
-!! than 3, and the oracle its kernels are tested against.
+!> Explicit interfaces of the LAPACK/BLAS routines on symmetric band matrices that
+!! vibrobeam calls: in lower band storage the fall-back of `vibrobeam_band` for bandwidths
+!! other than 3 and the oracle its kernels are tested against; the tridiagonal ones for the
+!! curvature mass matrix of `vibrobeam_flexibility`.
 module vibrobeam_band_lapack
    use vibrobeam_kinds, only: dp
    implicit none
    private
-   public :: dpbtrf, dpbtrs, dsbmv
+   public :: dpbtrf, dpbtrs, dsbmv, dpttrf, dpttrs
 
    interface
       !> Cholesky factorization A = L L^T (UPLO = 'L'); info = k > 0: the leading minor of
@@ -35,5 +36,21 @@ module vibrobeam_band_lapack
          real(dp), intent(in) :: a(lda, *), x(*)
          real(dp), intent(inout) :: y(*)
       end subroutine dsbmv
+      !> L D L^T factorization of a symmetric positive definite tridiagonal matrix (diagonal
+      !! d, off-diagonal e); info = k > 0: the leading minor of order k is not positive definite.
+      subroutine dpttrf(n, d, e, info)
+         import :: dp
+         integer, intent(in) :: n
+         real(dp), intent(inout) :: d(*), e(*)
+         integer, intent(out) :: info
+      end subroutine dpttrf
+      !> Solve A X = B with the factor of dpttrf.
+      subroutine dpttrs(n, nrhs, d, e, b, ldb, info)
+         import :: dp
+         integer, intent(in) :: n, nrhs, ldb
+         real(dp), intent(in) :: d(*), e(*)
+         real(dp), intent(inout) :: b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dpttrs
    end interface
 end module vibrobeam_band_lapack

@@ -21,7 +21,8 @@
 !!     K^-1 f = T G^-1 T^T f,
 !!
 !! where T^T f is the moment of the loads about each section (sums from the tip), G^-1 a
-!! well-conditioned tridiagonal solve and T two cumulative sums from the clamp. Each stage
+!! well-conditioned tridiagonal solve (LAPACK dpttrf/dpttrs) and T two cumulative sums
+!! from the clamp. Each stage
 !! only sums: the relative error on a smooth f is a few eps times the number of elements.
 !!
 !! T, step by step. Hermite, element e of length h, kappa = kL (1 - xi) + kR xi:
@@ -32,7 +33,7 @@
 !! c_i = c_(i-1) + d_i (t_(i+3) - t_i)/3, d_2 = 0.
 module vibrobeam_flexibility
    use vibrobeam_kinds, only: dp
-   use vibrobeam_band, only: symmetric_band, band_cholesky, band_allocate, band_add, band_factor, band_solve
+   use vibrobeam_band_lapack, only: dpttrf, dpttrs
    use vibrobeam_model, only: beam_model
    implicit none
    private
@@ -46,7 +47,8 @@ module vibrobeam_flexibility
       real(dp) :: h = 0                        !! element length (Hermite)
       real(dp), allocatable :: first_step(:)   !! B-splines: (t_(i+2) - t_i)/2, i = 3..N+3
       real(dp), allocatable :: second_step(:)  !! B-splines: (t_(i+3) - t_i)/3, i = 3..N+3
-      type(band_cholesky) :: curvature_factor  !! factor of G
+      real(dp), allocatable :: curvature_pivots(:)      !! (J) D of G = L D L^T (dpttrf)
+      real(dp), allocatable :: curvature_multipliers(:) !! (J-1) L of G = L D L^T (dpttrf)
       real(dp), allocatable :: curvature(:)    !! (J) work space for z
    contains
       procedure :: setup
@@ -62,21 +64,19 @@ contains
       type(beam_model), intent(in) :: model
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      type(symmetric_band) :: g
       integer :: e, i, m, n
-      real(dp) :: span
       self%hermite = model%basis == 'hermite'
       self%unknowns = model%unknowns
       self%elements = model%elements
       self%h = model%h
       n = model%unknowns
-      call band_allocate(g, n, 1)
+      ! G: diagonal in curvature_pivots, sub-diagonal in curvature_multipliers, until dpttrf
+      allocate (self%curvature_pivots(n), self%curvature_multipliers(max(n - 1, 1)), source=0.0_dp)
       if (self%hermite) then
          ! z = (kL_1, kR_1, ..., kL_N, kR_N): G = EI h/6 [2 1; 1 2] per element
          do e = 1, model%elements
-            call band_add(g, 2*e - 1, 2*e - 1, model%ei*model%h/3)
-            call band_add(g, 2*e, 2*e, model%ei*model%h/3)
-            call band_add(g, 2*e, 2*e - 1, model%ei*model%h/6)
+            self%curvature_pivots(2*e - 1:2*e) = model%ei*model%h/3
+            self%curvature_multipliers(2*e - 1) = model%ei*model%h/6
          end do
       else
          ! z_m = e_(m+2), the value of kappa at x_(m-1): G = EI times the mass matrix of the
@@ -87,16 +87,15 @@ contains
                i = m + 2
                self%first_step(m) = (t(i + 2) - t(i))/2
                self%second_step(m) = (t(i + 3) - t(i))/3
-               call band_add(g, m, m, model%ei*(t(i + 2) - t(i))/3)
-               if (m < n) then
-                  span = t(i + 2) - t(i + 1)
-                  call band_add(g, m + 1, m, model%ei*span/6)
-               end if
+               self%curvature_pivots(m) = model%ei*(t(i + 2) - t(i))/3
+               if (m < n) self%curvature_multipliers(m) = model%ei*(t(i + 2) - t(i + 1))/6
             end do
          end associate
       end if
-      call band_factor(g, self%curvature_factor, stat, errmsg)
-      if (stat /= 0) errmsg = 'curvature mass matrix: '//errmsg
+      errmsg = ''
+      call dpttrf(n, self%curvature_pivots, self%curvature_multipliers, stat)
+      if (stat /= 0) write (errmsg, '(a,i0,a)') 'curvature mass matrix: dpttrf failed at pivot ', stat, &
+         ' (element length and EI must be > 0)'
       allocate (self%curvature(n))
    end subroutine setup
 
@@ -104,14 +103,18 @@ contains
    subroutine solve(self, x)
       class(cantilever_flexibility), intent(inout) :: self
       real(dp), intent(inout) :: x(:)   !! (J)
+      integer :: info
       if (self%unknowns == 0) return
       if (self%hermite) then
          call hermite_moments(self%elements, self%h, x, self%curvature)
-         call band_solve(self%curvature_factor, self%curvature)
-         call hermite_integrate(self%elements, self%h, self%curvature, x)
       else
          call spline_moments(self%unknowns, self%first_step, self%second_step, x, self%curvature)
-         call band_solve(self%curvature_factor, self%curvature)
+      end if
+      call dpttrs(self%unknowns, 1, self%curvature_pivots, self%curvature_multipliers, self%curvature, &
+                  self%unknowns, info)
+      if (self%hermite) then
+         call hermite_integrate(self%elements, self%h, self%curvature, x)
+      else
          call spline_integrate(self%unknowns, self%first_step, self%second_step, self%curvature, x)
       end if
    end subroutine solve
