@@ -12,13 +12,14 @@
 !! `band_solve` nor `band_matvec` allocates (for contiguous arguments).
 module vibrobeam_band
    use vibrobeam_kinds, only: dp
-   use vibrobeam_band_kernel, only: kernel_bandwidth, ldl_factor_kd3, ldl_solve_kd3, band_matvec_kd3
+   use vibrobeam_band_kernel, only: kernel_bandwidth, ldl_factor_kd3, ldl_solve_kd3, band_matvec_kd3, &
+                                    ldl_residual_solve_kd3
    use vibrobeam_band_lapack, only: dpbtrf, dpbtrs, dsbmv
    implicit none
    private
    public :: symmetric_band, band_cholesky
    public :: band_allocate, band_add, band_entry, band_matvec, band_combination
-   public :: band_factor, band_solve
+   public :: band_factor, band_solve, band_residual_solve
 
    !> A symmetric n x n matrix with kd sub-diagonals, lower band storage.
    type :: symmetric_band
@@ -134,4 +135,28 @@ contains
          call dpbtrs('L', chol%n, chol%kd, 1, chol%factor, chol%kd + 1, x, chol%n, info)
       end if
    end subroutine band_solve
+
+   !> y = W^-1 (b - A x), W given by its factorization `chol`: the solve of a step of the
+   !! velocity scheme (theory §3) with its product by K. With both bandwidths 3 one fused
+   !! pass (`ldl_residual_solve_kd3`, the same operations as band_matvec, a subtraction and
+   !! band_solve); otherwise BLAS dsbmv then LAPACK dpbtrs. No allocation.
+   subroutine band_residual_solve(chol, a, x, b, y)
+      type(band_cholesky), intent(in) :: chol   !! factorization of W (n x n)
+      type(symmetric_band), intent(in) :: a     !! A (n x n)
+      real(dp), intent(in) :: x(:), b(:)        !! (n)
+      real(dp), intent(out) :: y(:)             !! (n), not overlapping x or b
+      integer :: info
+      if (chol%n == 0) return
+      if (chol%kd == kernel_bandwidth .and. a%kd == kernel_bandwidth) then
+         call ldl_residual_solve_kd3(chol%n, chol%factor, a%lower, x, b, y)
+      else
+         y = b
+         call dsbmv('L', a%n, a%kd, -1.0_dp, a%lower, a%kd + 1, x, 1, 1.0_dp, y, 1)
+         if (chol%kd == kernel_bandwidth) then
+            call ldl_solve_kd3(chol%n, chol%factor, y)
+         else
+            call dpbtrs('L', chol%n, chol%kd, 1, chol%factor, chol%kd + 1, y, chol%n, info)
+         end if
+      end if
+   end subroutine band_residual_solve
 end module vibrobeam_band

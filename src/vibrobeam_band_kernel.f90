@@ -20,7 +20,7 @@ module vibrobeam_band_kernel
    use vibrobeam_kinds, only: dp
    implicit none
    private
-   public :: kernel_bandwidth, ldl_factor_kd3, ldl_solve_kd3, band_matvec_kd3
+   public :: kernel_bandwidth, ldl_factor_kd3, ldl_solve_kd3, band_matvec_kd3, ldl_residual_solve_kd3
 
    integer, parameter :: kernel_bandwidth = 3   !! the kd these kernels are written for
 
@@ -121,7 +121,7 @@ contains
       integer, intent(in) :: n
       real(dp), intent(in) :: ab(4, n), x(n)
       real(dp), intent(out) :: y(n)
-      real(dp) :: carry1, carry2, carry3, xj, sum
+      real(dp) :: carry1, carry2, carry3, xj
       integer :: j
       ! carryk: what columns before j have added to y(j+k-1)
       carry1 = 0
@@ -135,20 +135,107 @@ contains
          carry3 = ab(4, j)*xj
       end do
       do j = max(1, n - 2), n
-         xj = x(j)
-         sum = carry1 + ab(1, j)*xj
-         carry1 = carry2
-         carry2 = carry3
-         carry3 = 0
-         if (j + 1 <= n) then
-            sum = sum + ab(2, j)*x(j + 1)
-            carry1 = carry1 + ab(2, j)*xj
-         end if
-         if (j + 2 <= n) then
-            sum = sum + ab(3, j)*x(j + 2)
-            carry2 = carry2 + ab(3, j)*xj
-         end if
-         y(j) = sum
+         call matvec_row(n, ab, x, j, carry1, carry2, carry3, y(j))
       end do
    end subroutine band_matvec_kd3
+
+   !> Row i of y = A x with the running sums of `band_matvec_kd3` (carryk: what columns
+   !! before i have added to y(i+k-1)), for any i: the terms below row n are left out.
+   pure subroutine matvec_row(n, ab, x, i, carry1, carry2, carry3, value)
+      integer, intent(in) :: n, i
+      real(dp), intent(in) :: ab(4, n), x(n)
+      real(dp), intent(inout) :: carry1, carry2, carry3
+      real(dp), intent(out) :: value
+      real(dp) :: xi
+      xi = x(i)
+      value = carry1 + ab(1, i)*xi
+      carry1 = carry2
+      carry2 = carry3
+      carry3 = 0
+      if (i + 1 <= n) then
+         value = value + ab(2, i)*x(i + 1)
+         carry1 = carry1 + ab(2, i)*xi
+      end if
+      if (i + 2 <= n) then
+         value = value + ab(3, i)*x(i + 2)
+         carry2 = carry2 + ab(3, i)*xi
+      end if
+      if (i + 3 <= n) then
+         value = value + ab(4, i)*x(i + 3)
+         carry3 = ab(4, i)*xi
+      end if
+   end subroutine matvec_row
+
+   !> y = W^-1 (b - A x), W given by the factor of `ldl_factor_kd3`, A in lower band storage:
+   !! the product runs three rows ahead of the forward substitution in the same loop, so its
+   !! arithmetic fills the time the substitution waits on its chain from row to row; the
+   !! operations and their order are those of `band_matvec_kd3`, a subtraction and
+   !! `ldl_solve_kd3`. y must not overlap x or b.
+   pure subroutine ldl_residual_solve_kd3(n, factor, ab, x, b, y)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: factor(4, n)   !! L D L^T of W
+      real(dp), intent(in) :: ab(4, n)       !! A
+      real(dp), intent(in) :: x(n), b(n)
+      real(dp), intent(out) :: y(n)
+      real(dp) :: carry1, carry2, carry3, product, pending1, pending2, pending3, z, xi, next1, next2, next3
+      integer :: j, i
+      if (n < 1) return
+      carry1 = 0
+      carry2 = 0
+      carry3 = 0
+      pending1 = 0
+      pending2 = 0
+      pending3 = 0
+      ! rows 1..3 of b - A x start the forward substitution's running values
+      call matvec_row(n, ab, x, 1, carry1, carry2, carry3, product)
+      pending1 = b(1) - product
+      if (n >= 2) then
+         call matvec_row(n, ab, x, 2, carry1, carry2, carry3, product)
+         pending2 = b(2) - product
+      end if
+      if (n >= 3) then
+         call matvec_row(n, ab, x, 3, carry1, carry2, carry3, product)
+         pending3 = b(3) - product
+      end if
+      ! row j of the substitution with row i = j + 3 of the product (all of it inside)
+      do j = 1, n - 6
+         i = j + 3
+         xi = x(i)
+         product = carry1 + ab(1, i)*xi + ab(2, i)*x(i + 1) + ab(3, i)*x(i + 2) + ab(4, i)*x(i + 3)
+         carry1 = carry2 + ab(2, i)*xi
+         carry2 = carry3 + ab(3, i)*xi
+         carry3 = ab(4, i)*xi
+         z = pending1
+         y(j) = z
+         pending1 = pending2 - factor(2, j)*z
+         pending2 = pending3 - factor(3, j)*z
+         pending3 = (b(i) - product) - factor(4, j)*z
+      end do
+      do j = max(1, n - 5), n - 3   ! product rows n-2..n: their band ends at row n
+         i = j + 3
+         call matvec_row(n, ab, x, i, carry1, carry2, carry3, product)
+         z = pending1
+         y(j) = z
+         pending1 = pending2 - factor(2, j)*z
+         pending2 = pending3 - factor(3, j)*z
+         pending3 = (b(i) - product) - factor(4, j)*z
+      end do
+      do j = max(1, n - 2), n
+         z = pending1
+         y(j) = z
+         pending1 = pending2 - factor(2, j)*z
+         pending2 = pending3 - factor(3, j)*z
+         pending3 = 0
+      end do
+      next1 = 0
+      next2 = 0
+      next3 = 0
+      do j = n, 1, -1
+         z = (y(j)*factor(1, j) - factor(4, j)*next3 - factor(3, j)*next2) - factor(2, j)*next1
+         y(j) = z
+         next3 = next2
+         next2 = next1
+         next1 = z
+      end do
+   end subroutine ldl_residual_solve_kd3
 end module vibrobeam_band_kernel

@@ -20,6 +20,12 @@
 !!   relative error, about kappa u < 1e-3 here, is a negligible second-order change to the
 !!   bound.
 !!
+!! - fused y = A^-1 (b - P x) (`band_residual_solve`) against BLAS dsbmv + LAPACK dpbtrs:
+!!   forming b - P x costs at most (2kd+2) u (|b| + |P||x|) on either side, so the two
+!!   differ by at most 2 |A^-1| ((3kd+4) u S + (2kd+2) u (|b| + |P||x|)); where |A^-1| is
+!!   not formed, A y - (b - P x) recomputed must stay within (5kd+6) u S +
+!!   2 (2kd+2) u (|b| + |P||x|). P = K for the model's W, P = A otherwise.
+!!
 !! Matrices: random SPD band matrices A = R R^T (R lower band with 3 sub-diagonals, so A
 !! has 3) for n = 1 ... 1000, one of them ill-conditioned (a pivot of R at 1e-6: kappa
 !! about 1e12); the model's W = M + (theta dt)^2 K and K itself for both bases at
@@ -31,7 +37,7 @@ program test_band_kernel
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_get_halting_mode, ieee_invalid
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_allocate, band_combination, &
-                             band_factor, band_solve, band_matvec
+                             band_factor, band_solve, band_matvec, band_residual_solve
    use vibrobeam_band_lapack, only: dpbtrf, dpbtrs, dsbmv
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_test_support, only: test_counter
@@ -49,8 +55,9 @@ program test_band_kernel
    integer, allocatable :: seed(:)
    character(len=200) :: errmsg
    character(len=80) :: label
-   !> largest error/bound seen: product, residual (kernel), residual (LAPACK), forward
-   real(dp) :: largest_ratio(4) = 0
+   !> largest error/bound seen: product, residual (kernel), residual (LAPACK), forward,
+   !! fused residual solve
+   real(dp) :: largest_ratio(5) = 0
 
    call random_seed(size=seed_size)
    seed = [(104729*k + 7, k=1, seed_size)]
@@ -71,7 +78,7 @@ program test_band_kernel
          do d = 1, size(steps)
             write (label, '(a,i0,a,es7.1)') trim(bases(b))//' W, N = ', elements(k), ', dt = ', steps(d)
             a = band_combination(1.0_dp, model%mass, (0.5_dp*steps(d))**2, model%stiffness)
-            call compare(trim(label), a, model%unknowns <= 2000)
+            call compare(trim(label), a, model%unknowns <= 2000, model%stiffness)
          end do
          write (label, '(a,i0)') trim(bases(b))//' K, N = ', elements(k)
          call compare(trim(label), model%stiffness, model%unknowns <= 2000)
@@ -89,8 +96,8 @@ program test_band_kernel
    call random_spd(50, 5, 1.0_dp, a)
    call compare('LAPACK path, kd = 5, n = 50', a, .true.)
 
-   write (*, '(a,4es10.2)') 'largest error / bound: product, residual (kernel), residual (LAPACK), '// &
-      'kernel - LAPACK:', largest_ratio
+   write (*, '(a,5es10.2)') 'largest error / bound: product, residual (kernel), residual (LAPACK), '// &
+      'kernel - LAPACK, fused residual solve:', largest_ratio
    call t%finish('test_band_kernel')
 
 contains
@@ -154,18 +161,23 @@ contains
 
    !> The checks of the header on one SPD matrix; `skeel` adds the forward-error check
    !! (J LAPACK solves).
-   subroutine compare(label, a, skeel)
+   subroutine compare(label, a, skeel, product)
       character(len=*), intent(in) :: label
       type(symmetric_band), intent(in) :: a
       logical, intent(in) :: skeel
+      type(symmetric_band), intent(in), optional :: product   !! P of y = A^-1 (b - P x) (default A)
       type(band_cholesky) :: chol
+      type(symmetric_band) :: p
       real(dp) :: lapack_factor(a%kd + 1, a%n), column(a%n, 1)
       real(dp) :: x_true(a%n), rhs(a%n), x_kernel(a%n), x_lapack(a%n), y_kernel(a%n), y_blas(a%n), &
-                  limit(a%n), inverse_bound(a%n), s(a%n)
+                  limit(a%n), inverse_bound(a%n), s(a%n), b(a%n), fused(a%n), separate(a%n), &
+                  residual_size(a%n), inverse_residual_bound(a%n)
       real(dp) :: worst
       integer :: n, info, stat, j
       character(len=200) :: errmsg
       n = a%n
+      p = a
+      if (present(product)) p = product
       call random_number(x_true)
       x_true = 2*x_true - 1
       ! product
@@ -191,9 +203,45 @@ contains
       call dpbtrs('L', n, a%kd, 1, lapack_factor, a%kd + 1, x_lapack, n, info)
       call residual_check(label//' (kernel)', a, rhs, x_kernel, largest_ratio(2))
       call residual_check(label//' (LAPACK)', a, rhs, x_lapack, largest_ratio(3))
-      if (.not. skeel) return
-      ! |A^-1| S, one column of A^-1 at a time
+      ! the fused y = A^-1 (b - P x) against dsbmv + dpbtrs; b of the size of P x
+      call random_number(b)
+      b = (2*b - 1)*maxval(abs(y_blas))
+      call band_residual_solve(chol, p, x_true, b, fused)
+      separate = b
+      call dsbmv('L', n, p%kd, -1.0_dp, p%lower, p%kd + 1, x_true, 1, 1.0_dp, separate, 1)
+      call dpbtrs('L', n, a%kd, 1, lapack_factor, a%kd + 1, separate, n, info)
+      ! b - P x is formed with error <= (2kd+2) u (|b| + |P||x|) on either side
+      residual_size = abs(b) + absolute_product(p, x_true)
+      if (.not. skeel) then
+         ! A y^ - (b - P x), recomputed: (5kd+6) u S of the solve + 2 (2kd+2) u (|b| + |P||x|)
+         separate = b
+         call dsbmv('L', n, p%kd, -1.0_dp, p%lower, p%kd + 1, x_true, 1, 1.0_dp, separate, 1)
+         call dsbmv('L', n, a%kd, 1.0_dp, a%lower, a%kd + 1, fused, 1, -1.0_dp, separate, 1)
+         limit = (5*a%kd + 6)*u*bound_scale(a, fused) + 2*(2*p%kd + 2)*u*residual_size
+         worst = maxval(abs(separate)/limit, limit > 0)
+         largest_ratio(5) = max(largest_ratio(5), worst)
+         call t%check_true(label//': |A y - (b - P x)| of the fused solve', all(abs(separate) <= limit), &
+                           ratio_text(worst))
+         return
+      end if
+      ! |A^-1| S and |A^-1| (|b| + |P||x|), one column of A^-1 at a time
       s = max(bound_scale(a, x_kernel), bound_scale(a, x_lapack))
+      inverse_bound = 0
+      inverse_residual_bound = 0
+      do j = 1, n
+         column = 0
+         column(j, 1) = 1
+         call dpbtrs('L', n, a%kd, 1, lapack_factor, a%kd + 1, column, n, info)
+         inverse_bound = inverse_bound + abs(column(:, 1))*s(j)
+         inverse_residual_bound = inverse_residual_bound + abs(column(:, 1))*residual_size(j)
+      end do
+      limit = 2*(3*a%kd + 4)*u*inverse_bound
+      worst = maxval(abs(x_kernel - x_lapack)/limit, limit > 0)
+      largest_ratio(4) = max(largest_ratio(4), worst)
+      call t%check_true(label//': |x (kernel) - x (LAPACK)| <= 2 (3kd+4) u |A^-1| S', &
+                        all(abs(x_kernel - x_lapack) <= limit), ratio_text(worst))
+      ! the same for the fused solve, with the error of forming b - P x, and S of its solution
+      s = max(bound_scale(a, fused), bound_scale(a, separate))
       inverse_bound = 0
       do j = 1, n
          column = 0
@@ -201,11 +249,11 @@ contains
          call dpbtrs('L', n, a%kd, 1, lapack_factor, a%kd + 1, column, n, info)
          inverse_bound = inverse_bound + abs(column(:, 1))*s(j)
       end do
-      limit = 2*(3*a%kd + 4)*u*inverse_bound
-      worst = maxval(abs(x_kernel - x_lapack)/limit, limit > 0)
-      largest_ratio(4) = max(largest_ratio(4), worst)
-      call t%check_true(label//': |x (kernel) - x (LAPACK)| <= 2 (3kd+4) u |A^-1| S', &
-                        all(abs(x_kernel - x_lapack) <= limit), ratio_text(worst))
+      limit = 2*((3*a%kd + 4)*u*inverse_bound + (2*p%kd + 2)*u*inverse_residual_bound)
+      worst = maxval(abs(fused - separate)/limit, limit > 0)
+      largest_ratio(5) = max(largest_ratio(5), worst)
+      call t%check_true(label//': |y (fused) - y (dsbmv + dpbtrs)| <= 2 |A^-1| ((3kd+4) u S + (2kd+2) u '// &
+                        '(|b| + |P||x|))', all(abs(fused - separate) <= limit), ratio_text(worst))
    end subroutine compare
 
    !> |b - A x|_i <= (5kd+6) u S_i (header), the residual computed with dsbmv.
