@@ -10,7 +10,7 @@
 !! O(J ncv^2) beside the operator. No J x J array (docs/method.md, "Natural modes";
 !! Lehoucq, Sorensen & Yang, ARPACK Users' Guide, SIAM 1998, ch. 4).
 module vibrobeam_lanczos
-   use vibrobeam_kinds, only: dp
+   use vibrobeam_kinds, only: dp, int64
    use vibrobeam_band, only: band_matvec
    use vibrobeam_model, only: beam_model
    use vibrobeam_flexibility, only: cantilever_flexibility
@@ -84,7 +84,18 @@ contains
       call flexibility%setup(model, stat, errmsg)
       if (stat /= 0) return
       ncv = lanczos_basis_size(n, count)
-      allocate (lanczos_vectors(n, ncv), workd(3*n), workl(ncv*(ncv + 8)), resid(n), select(ncv))
+      ! ARPACK's work length ncv (ncv + 8) is a default integer
+      if (int(ncv, int64)*(ncv + 8) > huge(ncv)) then
+         stat = 1
+         write (errmsg, '(a,i0,a)') 'Lanczos: ', count, ' modes need a work array longer than ARPACK can index'
+         return
+      end if
+      allocate (lanczos_vectors(n, ncv), workd(3*n), workl(ncv*(ncv + 8)), resid(n), select(ncv), stat=stat)
+      if (stat /= 0) then
+         write (errmsg, '(a,i0,a,i0,a)') 'Lanczos: cannot allocate ', 8*int(n, int64)*ncv/2**20, &
+            ' MB for ', ncv, ' Lanczos vectors'
+         return
+      end if
       ! A fixed starting vector (info = 1), so that a run repeats exactly: a Weyl sequence,
       ! with components along every eigenvector (ARPACK's default draws a random one).
       resid = [(modulo(i*0.6180339887498949_dp, 1.0_dp) - 0.5_dp, i=1, n)]

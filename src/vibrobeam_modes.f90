@@ -14,7 +14,7 @@
 !!   eigenvector summed element by element (`energy_integrals`).
 !! Each mode is normalized to tip displacement 1.
 module vibrobeam_modes
-   use vibrobeam_kinds, only: dp
+   use vibrobeam_kinds, only: dp, int64
    use vibrobeam_model, only: beam_model, nodal_displacement, energy_integrals
    use vibrobeam_lanczos, only: lanczos_modes
    implicit none
@@ -82,7 +82,11 @@ contains
       end if
       dense = dense_is_cheaper(n, count)
       if (present(method)) dense = method == 'dense'
-      allocate (vectors(n, count), omega(count))
+      allocate (vectors(n, count), omega(count), stat=stat)
+      if (stat /= 0) then
+         write (errmsg, '(a,i0,a,i0,a)') 'cannot allocate ', 8*int(n, int64)*count/2**20, ' MB for ', count, ' modes'
+         return
+      end if
       if (dense) then
          call dense_modes(model, count, vectors, stat, errmsg)
          if (stat /= 0) return
@@ -132,7 +136,11 @@ contains
       kd = model%mass%kd
       allocate (mass_band, source=model%mass%lower)
       allocate (stiffness_band, source=model%stiffness%lower)
-      allocate (q(n, n), mu(n), work(7*n), iwork(5*n), ifail(n))
+      allocate (q(n, n), mu(n), work(7*n), iwork(5*n), ifail(n), stat=stat)
+      if (stat /= 0) then
+         write (errmsg, '(a,i0,a)') 'dsbgvx: cannot allocate its J x J work matrix (', 8*int(n, int64)**2/2**20, ' MB)'
+         return
+      end if
       call dsbgvx('V', 'I', 'L', n, kd, model%stiffness%kd, mass_band, kd + 1, stiffness_band, &
                   model%stiffness%kd + 1, q, n, 0.0_dp, 0.0_dp, n - count + 1, n, &
                   2*dlamch('S'), found, mu, vectors, n, work, iwork, ifail, stat)
