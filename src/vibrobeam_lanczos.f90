@@ -16,7 +16,7 @@ module vibrobeam_lanczos
    use vibrobeam_flexibility, only: cantilever_flexibility
    implicit none
    private
-   public :: lanczos_modes, lanczos_basis_size
+   public :: lanczos_modes
 
    integer, parameter :: max_restarts = 300   !! ARPACK's iparam(3)
 
