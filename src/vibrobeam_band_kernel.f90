@@ -77,7 +77,7 @@ contains
       integer, intent(in) :: n
       real(dp), intent(in) :: ab(4, n)
       real(dp), intent(inout) :: x(n)
-      real(dp) :: pending1, pending2, pending3, z, next1, next2, next3
+      real(dp) :: pending1, pending2, pending3, z
       integer :: j
       if (n < 1) return
       ! forward: pendingk = x(j+k-1) minus the columns of L already done
@@ -93,14 +93,36 @@ contains
          pending2 = pending3 - ab(3, j)*z
          pending3 = x(j + 3) - ab(4, j)*z
       end do
-      do j = max(1, n - 2), n   ! the last rows: no row j+3 (the factor's corner is zero)
+      call substitute_forward_last(n, ab, pending1, pending2, pending3, x)
+      call substitute_backward(n, ab, x)
+   end subroutine ldl_solve_kd3
+
+   !> The last rows of the forward substitution (no row j+3 below them), from the running
+   !! values pending1..3 of row n-2 on (fewer rows when n < 3).
+   pure subroutine substitute_forward_last(n, ab, pending1, pending2, pending3, x)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: ab(4, n)
+      real(dp), intent(inout) :: pending1, pending2, pending3
+      real(dp), intent(inout) :: x(n)
+      real(dp) :: z
+      integer :: j
+      do j = max(1, n - 2), n   ! (the factor's corner below row n is zero)
          z = pending1
          x(j) = z
          pending1 = pending2 - ab(2, j)*z
          pending2 = pending3 - ab(3, j)*z
          pending3 = 0
       end do
-      ! backward: nextk = x(j+k), zero past row n
+   end subroutine substitute_forward_last
+
+   !> Backward substitution x = D^-1 z - L^T x in place (z in, x out), the three following
+   !! x in scalars (nextk = x(j+k), zero past row n).
+   pure subroutine substitute_backward(n, ab, x)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: ab(4, n)
+      real(dp), intent(inout) :: x(n)
+      real(dp) :: z, next1, next2, next3
+      integer :: j
       next1 = 0
       next2 = 0
       next3 = 0
@@ -111,7 +133,7 @@ contains
          next2 = next1
          next1 = z
       end do
-   end subroutine ldl_solve_kd3
+   end subroutine substitute_backward
 
    !> y = A x for a symmetric A in lower band storage, one pass over the columns: column j
    !! gives y_j its diagonal and lower-triangle terms (read down column j) and adds its
@@ -177,7 +199,7 @@ contains
       real(dp), intent(in) :: ab(4, n)       !! A
       real(dp), intent(in) :: x(n), b(n)
       real(dp), intent(out) :: y(n)
-      real(dp) :: carry1, carry2, carry3, product, pending1, pending2, pending3, z, xi, next1, next2, next3
+      real(dp) :: carry1, carry2, carry3, product, pending1, pending2, pending3, z, xi
       integer :: j, i
       if (n < 1) return
       carry1 = 0
@@ -220,22 +242,7 @@ contains
          pending2 = pending3 - factor(3, j)*z
          pending3 = (b(i) - product) - factor(4, j)*z
       end do
-      do j = max(1, n - 2), n
-         z = pending1
-         y(j) = z
-         pending1 = pending2 - factor(2, j)*z
-         pending2 = pending3 - factor(3, j)*z
-         pending3 = 0
-      end do
-      next1 = 0
-      next2 = 0
-      next3 = 0
-      do j = n, 1, -1
-         z = (y(j)*factor(1, j) - factor(4, j)*next3 - factor(3, j)*next2) - factor(2, j)*next1
-         y(j) = z
-         next3 = next2
-         next2 = next1
-         next1 = z
-      end do
+      call substitute_forward_last(n, factor, pending1, pending2, pending3, y)
+      call substitute_backward(n, factor, y)
    end subroutine ldl_residual_solve_kd3
 end module vibrobeam_band_kernel

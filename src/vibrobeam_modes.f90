@@ -17,6 +17,7 @@ module vibrobeam_modes
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_model, only: beam_model, nodal_displacement, energy_integrals
    use vibrobeam_lanczos, only: lanczos_modes
+   use vibrobeam_band_lapack, only: dsbgvx
    implicit none
    private
    public :: compute_modes, dense_is_cheaper
@@ -26,16 +27,6 @@ module vibrobeam_modes
    integer, parameter :: dense_unknowns = 16, dense_fraction = 4
 
    interface
-      subroutine dsbgvx(jobz, range, uplo, n, ka, kb, ab, ldab, bb, ldbb, q, ldq, vl, vu, &
-                        il, iu, abstol, m, w, z, ldz, work, iwork, ifail, info)
-         import :: dp
-         character, intent(in) :: jobz, range, uplo
-         integer, intent(in) :: n, ka, kb, ldab, ldbb, ldq, il, iu, ldz
-         real(dp), intent(inout) :: ab(ldab, *), bb(ldbb, *)
-         real(dp), intent(out) :: q(ldq, *), w(*), z(ldz, *), work(*)
-         real(dp), intent(in) :: vl, vu, abstol
-         integer, intent(out) :: m, iwork(*), ifail(*), info
-      end subroutine dsbgvx
       function dlamch(cmach) result(value)
          import :: dp
          character, intent(in) :: cmach

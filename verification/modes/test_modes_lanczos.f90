@@ -78,6 +78,7 @@ program test_modes_lanczos
    use vibrobeam_modes, only: compute_modes, dense_is_cheaper
    use vibrobeam_cantilever_exact, only: cantilever_root, cantilever_mode_shape
    use vibrobeam_test_support, only: test_counter
+   use vibrobeam_band_lapack, only: dsbgvx
    use test_modes_lanczos_exact, only: ramp, deflection_ramp, slope_ramp, deflection_tip
    implicit none
    real(dp), parameter :: u = epsilon(1.0_dp)/2
@@ -189,18 +190,6 @@ contains
    function highest_eigenvalue(model) result(lambda)
       type(beam_model), intent(in) :: model
       real(dp) :: lambda
-      interface
-         subroutine dsbgvx(jobz, range, uplo, n, ka, kb, ab, ldab, bb, ldbb, q, ldq, vl, vu, &
-                           il, iu, abstol, m, w, z, ldz, work, iwork, ifail, info)
-            import :: dp
-            character, intent(in) :: jobz, range, uplo
-            integer, intent(in) :: n, ka, kb, ldab, ldbb, ldq, il, iu, ldz
-            real(dp), intent(inout) :: ab(ldab, *), bb(ldbb, *)
-            real(dp), intent(out) :: q(ldq, *), w(*), z(ldz, *), work(*)
-            real(dp), intent(in) :: vl, vu, abstol
-            integer, intent(out) :: m, iwork(*), ifail(*), info
-         end subroutine dsbgvx
-      end interface
       real(dp) :: stiffness(4, model%unknowns), mass(4, model%unknowns), q(1, 1), w(model%unknowns), z(1, 1), &
                   work(7*model%unknowns)
       integer :: n, found, iwork(5*model%unknowns), ifail(model%unknowns), info
