@@ -4,7 +4,7 @@
 !! holds one mode only, so the initial displacement is set here with mode_field). The tip
 !! displacement, recorded at every step, goes through amplitude_spectrum (Hann window); the
 !! three largest spectral peaks must sit within one bin width 1/(n dt) of the natural
-!! frequencies omega_k/(2 pi) of the same discrete model (compute_modes, LAPACK dsbgvx).
+!! frequencies omega_k/(2 pi) of the same discrete model (compute_modes).
 !!
 !! Also checked: each peak amplitude lies within the Hann scalloping loss of the tip
 !! amplitude of its mode, [8/(3 pi), 1] a_k (theta = 1/2 conserves the amplitude of each
