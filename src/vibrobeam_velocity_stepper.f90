@@ -141,7 +141,7 @@ contains
          end do
          if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) &
             self%dissipated_damping = self%dissipated_damping + dt*dot_product(v_theta, self%damping_times(v_theta))
-         if (theta /= 0.5_dp) then
+         if (abs(theta - 0.5_dp) > 0) then
             call band_matvec(self%mass, v_new - self%v, work_vector)
             self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)*dot_product(v_new - self%v, work_vector)
             call band_matvec(self%stiffness, u_new - self%u, work_vector)
