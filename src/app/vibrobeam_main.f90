@@ -16,6 +16,7 @@ program vibrobeam_main
    use vibrobeam_setup, only: prepared_scene, prepare_scene
    use vibrobeam_dynamics, only: run_dynamics, run_outcome
    use vibrobeam_results, only: result_files
+   use vibrobeam_blas_threads, only: limit_blas_threads
    implicit none
 
    type(scene_type) :: scene
@@ -30,7 +31,7 @@ program vibrobeam_main
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    call validate_scene(scene, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
-   warnings = ''
+   call limit_blas_threads(warnings)   ! one BLAS thread unless VIBROBEAM_BLAS_THREADS says otherwise
    call prepare_scene(scene, prepared, warnings, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    if (len(warnings) > 0) write (error_unit, '(a)', advance='no') prefixed(warnings, 'vibrobeam: warning: ')
