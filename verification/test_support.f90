@@ -35,6 +35,8 @@ contains
       size = abs(reference)
       if (present(scale)) size = max(size, scale)
       if (tolerance*size > 0) then
+         if (report_every_check()) write (output_unit, '(a,es10.3,a)') 'ratio ', &
+            abs(value - reference)/(tolerance*size), ' '//name
          if (abs(value - reference)/(tolerance*size) >= self%worst_ratio) then
             self%worst_ratio = abs(value - reference)/(tolerance*size)
             self%worst_check = name
@@ -49,6 +51,13 @@ contains
             ', tolerance ', tolerance
       end if
    end subroutine check_close
+
+   !> VIBROBEAM_CHECK_RATIOS set: print the ratio of every check (for margin studies).
+   logical function report_every_check()
+      integer :: length
+      call get_environment_variable('VIBROBEAM_CHECK_RATIOS', length=length)
+      report_every_check = length > 0
+   end function report_every_check
 
    subroutine check_true(self, name, condition, detail)
       class(test_counter), intent(inout) :: self

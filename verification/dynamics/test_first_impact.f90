@@ -79,7 +79,7 @@ contains
       write (output_unit, '(es10.3, es14.6, f12.3, 2es16.4)') scene%dt, t_impact, (t_impact - t_star)/scene%dt, &
          depth(k), bound
       write (label, '(a,es9.2)') 'first impact time, dt =', scene%dt
-      call t%check_close(trim(label), t_impact, t_star, 1.0_dp, 2*scene%dt)
+      call t%check_close(trim(label), abs(t_impact - t_star), 0.0_dp, 1.0_dp, 2*scene%dt)
       write (label, '(a,es9.2)') 'penetration within the bound, dt =', scene%dt
       call t%check_true(trim(label), depth(k) <= bound*(1 + 1e-9_dp))
    end do

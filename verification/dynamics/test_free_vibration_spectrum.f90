@@ -114,7 +114,7 @@ program test_free_vibration_spectrum
    end do
    do k = 1, modes
       call t%check_close('peak '//integer_text(k)//' frequency within one bin of omega_'//integer_text(k)//'/(2 pi)', &
-                         found_frequency(k), natural(k), 1.0_dp, width/natural(k))
+                         abs(found_frequency(k) - natural(k)), 0.0_dp, 1.0_dp, width)
       call t%check_true('peak '//integer_text(k)//' amplitude within the Hann scalloping loss of a_'//integer_text(k), &
                         found_amplitude(k) >= (1 - amplitude_tolerance)*hann_worst_scalloping*tip_amplitudes(k) .and. &
                         found_amplitude(k) <= (1 + amplitude_tolerance)*tip_amplitudes(k), &

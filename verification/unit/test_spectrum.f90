@@ -117,8 +117,8 @@ contains
       do m = 1, 3
          write (label, '(a,a,i0,a,f5.2,a)') trim(title), ': sine ', m, ' (', positions(m), ' bins)'
          f_true = positions(m)/(n*dt)
-         call t%check_close(trim(label)//' peak frequency within one bin', frequency(peaks(m)), f_true, &
-                            1.0_dp, width/f_true)
+         call t%check_close(trim(label)//' peak frequency within one bin', abs(frequency(peaks(m)) - f_true), &
+                            0.0_dp, 1.0_dp, width)
          ! amplitude in [8/(3 pi), 1] A, 1% allowed for leakage of the other components
          call t%check_true(trim(label)//' peak amplitude within the Hann scalloping loss', &
                            amplitude(peaks(m)) >= (1 - tolerance)*hann_worst_scalloping*amplitudes(m) .and. &
