@@ -65,6 +65,8 @@ module vibrobeam_roundoff_bounds
       real(dp) :: sum_squares = 0             !! sum b_k^2
       real(dp) :: linear = 0                  !! sum b_k (worst case)
       real(dp), allocatable :: u_before(:), v_before(:), u_before_previous(:)
+      real(dp), allocatable :: residual(:)    !! position scheme: bound of each row of rho, the
+                                              !! residual of W U^{n+1} = rhs + dt^2 H^T r
       real(dp) :: work_before = 0, impacts_before = 0, damping_before = 0, numerical_before = 0
    contains
       procedure :: start => ledger_start
@@ -184,8 +186,9 @@ contains
       type is (velocity_stepper)
          call velocity_step_bound(stepper, self%u_before, self%v_before, self%step, self%impacts, self%numerical)
       type is (position_stepper)
+         if (.not. allocated(self%residual)) allocate (self%residual(size(stepper%u)))
          call position_step_bound(stepper, self%u_before, self%u_before_previous, self%step, self%impacts, &
-                                  self%penetration)
+                                  self%penetration, self%residual)
       class default
          error stop 'energy_ledger: unknown scheme'
       end select
@@ -387,10 +390,11 @@ contains
    !! max(|Z_free|, |levels|) (`project_admissible`); with e = 0, U^{n+1} = Z.
    !! `impacts` (e = 0): -r_c H_c (U^{n+1} - U^{n-1})/2 >= 0 because H_c U^{n+1} = g_c and
    !! U^{n-1} is admissible; each of the two holds to `penetration`, and the sum rounds.
-   subroutine position_step_bound(s, u_old, u_older, bound, impacts, penetration)
+   subroutine position_step_bound(s, u_old, u_older, bound, impacts, penetration, residual)
       type(position_stepper), intent(in) :: s
       real(dp), intent(in) :: u_old(:), u_older(:)   !! U^n, U^{n-1}
       real(dp), intent(out) :: bound, impacts, penetration
+      real(dp), intent(out) :: residual(:)           !! the bound of |rho| row by row
       real(dp), dimension(size(u_old)) :: stride, rhs, u_free, y, column, z, cu, force
       real(dp) :: e, slack, largest, rho, level_scale, held
       integer :: kd, n, a, c, m
@@ -423,15 +427,18 @@ contains
          cu = 0
          if (s%rayleigh_mass > 0) cu = s%rayleigh_mass*abs_band_times(s%mass, abs(u_older))
          if (s%rayleigh_stiffness > 0) cu = cu + s%rayleigh_stiffness*abs_band_times(s%stiffness, abs(u_older))
-         rho = gamma_n(2*kd + 5)*dot_product(abs(stride), abs_band_times(s%mass, 2*abs(u_old) + abs(u_older)) &
-               + dt**2*abs_band_times(s%stiffness, abs(1 - 2*theta)*abs(u_old) + theta*abs(u_older)) &
-               + dt**2*abs(force) + 0.5_dp*dt*cu)
-         rho = rho + gamma_n(3*kd + 4)*dot_product(abs(stride), abs_factor_times(s%iteration_factor, abs(u_free) + (1 + e)*y))
-         rho = rho + gamma_n(m + 7)*dot_product(abs(stride), abs_band_times(s%iteration_matrix, &
-                                              abs(u_free) + 2*e*abs(u_older) + (1 + e)*(abs(z) + y)))
+         residual = gamma_n(2*kd + 5)*(abs_band_times(s%mass, 2*abs(u_old) + abs(u_older)) &
+                    + dt**2*abs_band_times(s%stiffness, abs(1 - 2*theta)*abs(u_old) + theta*abs(u_older)) &
+                    + dt**2*abs(force) + 0.5_dp*dt*cu)
+         residual = residual + gamma_n(3*kd + 4)*abs_factor_times(s%iteration_factor, abs(u_free) + (1 + e)*y)
+         residual = residual + gamma_n(m + 7)*abs_band_times(s%iteration_matrix, &
+                                                             abs(u_free) + 2*e*abs(u_older) + (1 + e)*(abs(z) + y))
          if (m > 0 .and. s%projector%regime == regime_band) then
-            rho = rho + 8*gamma_n(3*(2*kd + 2) + 1 + 2*kd + 1)*dot_product(abs(stride), &
-                     abs_band_times(s%iteration_matrix, abs(u_free) + abs(z)) + (1 + e)*abs(all_rows_transpose(s)))
+            residual = residual + 8*gamma_n(3*(2*kd + 2) + 1 + 2*kd + 1)*(abs_band_times(s%iteration_matrix, &
+                          abs(u_free) + abs(z)) + (1 + e)*abs(all_rows_transpose(s)))
+         end if
+         rho = dot_product(abs(stride), residual)
+         if (m > 0 .and. s%projector%regime == regime_band) then
             slack = max(1e-12_dp, 16*m*epsilon(1.0_dp))
             largest = maxval(abs(s%multiplier))
             do c = 1, s%contacts%count

@@ -7,7 +7,10 @@
 !!   values (h-relative step 1e-4);
 !! - the clamp: with the model's unknowns, u(0) = u_x(0) = 0 for any coefficients;
 !! - cubic reproduction: the spline interpolating a cubic with u(0) = u_x(0) = 0
-!!   (x^2 (3 - x), built by `interpolate_field`) equals it everywhere.
+!!   (x^2 (3 - x), built by `interpolate_field`) equals it everywhere;
+!! - `&initial velocity = 'uniform'` (docs/method.md, initial data): never above the
+!!   amplitude A, nondecreasing from the clamp, equal to A with zero slope from x = 2h on,
+!!   3/4 A at x = h.
 !! Every tolerance is a round-off (or truncation) bound derived beside its check, in units
 !! of u = eps/2 and gamma_n = n u/(1 - n u) (`vibrobeam_roundoff_bounds`). Cox-de Boor
 !! computes a cubic B-spline value in 3 levels of at most 6 roundings each (two differences
@@ -18,6 +21,8 @@ program test_bspline_basis
    use vibrobeam_bspline, only: bspline_knots, bspline_shape
    use vibrobeam_model, only: beam_model, build_model, point_row, node_row, interpolate_field
    use vibrobeam_roundoff_bounds, only: gamma_n
+   use vibrobeam_scene, only: scene_type
+   use vibrobeam_initial_state, only: initial_velocity
    use vibrobeam_test_support, only: test_counter
    implicit none
    interface
@@ -144,7 +149,47 @@ contains
                             sum(abs(weights)*coefficient_error(max(dofs, 1)), mask=dofs /= 0) + &
                             gamma_n(25)*sum(abs(weights*u(max(dofs, 1))), mask=dofs /= 0) + gamma_n(4)*abs(exact))
       end do
+      call uniform_velocity(model, label)
    end subroutine check_mesh
+
+   !> The B-spline 'uniform' initial velocity: a monotone ramp over two elements, then A.
+   !! Values are sums of 4 products of gamma_21-accurate basis values with coefficients A:
+   !! gamma_25 A (partition of unity); slopes gamma_28 sum |B'_a| A.
+   subroutine uniform_velocity(model, label)
+      type(beam_model), intent(in) :: model
+      character(len=*), intent(in) :: label
+      real(dp), parameter :: amplitude = 0.7_dp
+      type(scene_type) :: scene
+      real(dp) :: v(model%unknowns)
+      real(dp) :: x, value, previous, weights(4)
+      integer :: i, dofs(4)
+      scene%velocity = 'uniform'
+      scene%velocity_amplitude = amplitude
+      v = initial_velocity(scene, model)
+      previous = 0
+      do i = 0, 400
+         x = model%length*i/400
+         call point_row(model, x, dofs, weights)
+         value = sum(weights*v(max(dofs, 1)), mask=dofs /= 0)
+         call t%check_close(label//' uniform velocity: not above the amplitude', max(value - amplitude, 0.0_dp), &
+                            0.0_dp, 1.0_dp, gamma_n(25)*amplitude)
+         call t%check_close(label//' uniform velocity: nondecreasing', max(previous - value, 0.0_dp), 0.0_dp, 1.0_dp, &
+                            2*gamma_n(25)*amplitude)
+         previous = value
+         if (x >= 2*model%h) then
+            call t%check_close(label//' uniform velocity: A from x = 2h on', value, amplitude, gamma_n(25))
+            call point_row(model, x, dofs, weights, order=1)
+            call t%check_close(label//' uniform velocity: zero slope from x = 2h on', &
+                               sum(weights*v(max(dofs, 1)), mask=dofs /= 0), 0.0_dp, 1.0_dp, &
+                               gamma_n(28)*sum(abs(weights))*amplitude)
+         end if
+      end do
+      if (model%elements >= 2) then
+         call point_row(model, model%h, dofs, weights)
+         call t%check_close(label//' uniform velocity: 3/4 A at x = h', sum(weights*v(max(dofs, 1)), mask=dofs /= 0), &
+                            0.75_dp*amplitude, gamma_n(25))
+      end if
+   end subroutine uniform_velocity
 
    pure real(dp) function cubic(x, order)
       real(dp), intent(in) :: x
