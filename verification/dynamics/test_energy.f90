@@ -28,6 +28,10 @@
 !!   e = 1 with the position scheme, whose energy is not conserved through impacts: over
 !!   t_end, max |E^n/E^0 - 1| must decrease as dt decreases (the scheme converges to the
 !!   energy-conserving solution, Dumont & Paoli 2006); the balance closes at every step.
+!! usage: test_energy SCENE.nml gains DT [DT ...]
+!!   the scene run with scheme = 'position' at its own e: prints the largest energy the
+!!   impulses of one step add, relative to the energy before that step (the table of
+!!   docs/method.md, "The position-based scheme"); asserts only the balance.
 !! usage: test_energy SCENE.nml theta THETA [THETA ...]
 !!   the velocity scheme with each theta: E - W + D_impacts + D_damping + D_numerical is
 !!   constant to the drift bound at every step; the impacts' increment is >= 0 (to its
@@ -122,6 +126,16 @@ program test_energy
                                                                abs(r%numerical_end) + abs(r%numerical_lowest) <= 0)
          if (scene%theta > 0.5_dp) call t%check_true('dissipated_numerical > 0 for theta > 1/2, '//trim(argument), &
                                                      r%numerical_end > 0)
+      end do
+   case ('gains')
+      scene%scheme = 'position'
+      write (output_unit, '(a)') '     dt      e    largest one-step gain of the impulses / E before the step'
+      do k = 3, command_argument_count()
+         call get_command_argument(k, argument)
+         read (argument, *) scene%dt
+         r = run(scene, nint(scene%t_end/scene%dt))
+         write (output_unit, '(es10.3,f6.2,f12.4)') scene%dt, scene%restitution, r%gain
+         call check_balance(r)
       end do
    case ('dissipate', 'measure')
       write (output_unit, '(a)') '     dt     steps  impacts  max (E^{n+1}-E^n)/E^0  rise/bound  E_end/E0  penetration/dt' // &
