@@ -32,7 +32,7 @@
 !!    probability 3e-8 per run. The worst case without that model, sum b_k, is reported
 !!    beside it (`ledger%linear`).
 module vibrobeam_roundoff_bounds
-   use vibrobeam_kinds, only: dp
+   use vibrobeam_kinds, only: dp, error_unit
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_matvec, band_solve, band_factor
    use vibrobeam_contact_points, only: contact_set, contact_value, no_bound
    use vibrobeam_contact_solver, only: regime_band
@@ -41,10 +41,12 @@ module vibrobeam_roundoff_bounds
    use vibrobeam_position_stepper, only: position_stepper
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_test_support, only: read_test_scene, prepare_test_scene
    implicit none
    private
    public :: unit_roundoff, gamma_n, abs_band_times, abs_factor_times, energy_form_bound, stepper_energy_bound
-   public :: energy_ledger, hoeffding_lambda, stepper_balance, balance_bounds, static_error_bounds, dense_inverse, permuted_lu_times
+   public :: energy_ledger, hoeffding_lambda, stepper_balance, balance_bounds, balance_bounds_at
+   public :: static_error_bounds, dense_inverse, permuted_lu_times
 
    real(dp), parameter :: unit_roundoff = epsilon(1.0_dp)/2   !! u
    real(dp), parameter :: hoeffding_lambda = 6                 !! 2 exp(-18) = 3e-8
@@ -265,6 +267,32 @@ contains
       end do
    end subroutine balance_bounds
 
+   !> `balance_bounds` of the scene of namelist file `path`, at the output times `time` of
+   !! a result file of that scene (the bound after step nint(t/dt)); stops the test if the
+   !! scene cannot be read or run.
+   function balance_bounds_at(path, time) result(bound)
+      character(len=*), intent(in) :: path
+      real(dp), intent(in) :: time(:)
+      real(dp) :: bound(size(time))
+      type(scene_type) :: scene
+      type(prepared_scene) :: prepared
+      real(dp), allocatable :: bounds(:)
+      integer :: steps, j, stat
+      character(len=512) :: errmsg
+      scene = read_test_scene(path)
+      call prepare_test_scene(scene, prepared)
+      steps = nint(scene%t_end/scene%dt)
+      allocate (bounds(0:steps))
+      call balance_bounds(scene, prepared, steps, bounds, stat, errmsg)
+      if (stat /= 0) then
+         write (error_unit, '(a)') 'FAIL repeating the run for its round-off bounds: '//trim(errmsg)
+         error stop 1
+      end if
+      do j = 1, size(time)
+         bound(j) = bounds(min(steps, max(0, nint(time(j)/scene%dt))))
+      end do
+   end function balance_bounds_at
+
    !> b_k of one step of the velocity scheme, from (U^n, V^n) to the stepper's state.
    !! The computed step satisfies W dV = dt r + H^T P + rho with (every |.| entrywise)
    !!   |rho| <= gamma_{2kd+5} dt (|F| + |K|(|U| + theta dt |V|) + |C||V|)      r and its terms
@@ -285,13 +313,13 @@ contains
       type(velocity_stepper), intent(in) :: s
       real(dp), intent(in) :: u_old(:), v_old(:)
       real(dp), intent(out) :: bound, impacts, numerical
-      real(dp), dimension(size(u_old)) :: v_theta, a_theta, force, rhs, v_free, x, y, column, ku, cv, dv, du
+      real(dp), dimension(size(u_old)) :: v_theta, a_theta, force, rhs, v_free, x, y, ku, cv, dv, du
       real(dp) :: slack, largest
-      integer :: k, m, kd, n, a, c
+      integer :: k, m, kd, n
       m = s%active_count
       kd = s%stiffness%kd
       n = size(u_old)
-      associate (theta => s%theta, dt => s%dt)
+      associate (theta => s%theta, dt => s%dt, h => s%contacts)
          v_theta = theta*s%v + (1 - theta)*v_old
          a_theta = theta*abs(s%v) + (1 - theta)*abs(v_old)
          force = theta*s%loads%at(s%t) + (1 - theta)*s%loads%at(s%t - dt)
@@ -304,16 +332,7 @@ contains
          call band_solve(s%iteration_factor, rhs)
          x = rhs
          v_free = v_old + x
-         y = 0
-         do k = 1, m
-            c = s%active(k)
-            column = 0
-            do a = 1, 4
-               if (s%contacts%dofs(a, c) /= 0) column(s%contacts%dofs(a, c)) = s%contacts%weights(a, c)
-            end do
-            call band_solve(s%iteration_factor, column)
-            y = y + abs(column*s%impulse(k))
-         end do
+         y = responses(s%iteration_factor, s%contacts, s%active(1:m), s%impulse(1:m))
          if (s%rayleigh_mass > 0) cv = s%rayleigh_mass*abs_band_times(s%mass, abs(v_old))
          if (s%rayleigh_stiffness > 0) cv = cv + s%rayleigh_stiffness*abs_band_times(s%stiffness, abs(v_old))
          bound = gamma_n(2*kd + 5)*dt*dot_product(abs(v_theta), abs(force) + &
@@ -340,13 +359,13 @@ contains
          bound = bound + gamma_n(n + 2)*dot_product(abs(force), abs(du))
          impacts = 0
          do k = 1, m
-            impacts = impacts + gamma_n(5)*abs(s%impulse(k))*(abs_row(s%active(k), s%v) + abs_row(s%active(k), v_old)) &
-                      + gamma_n(3*kd + 4 + m)*abs(s%impulse(k))*(abs_row(s%active(k), v_free) + abs_row(s%active(k), y) &
-                                                               + abs_row(s%active(k), s%v))
+            impacts = impacts + gamma_n(5)*abs(s%impulse(k))*(abs_row(h, s%active(k), s%v) + abs_row(h, s%active(k), v_old)) &
+                      + gamma_n(3*kd + 4 + m)*abs(s%impulse(k))*(abs_row(h, s%active(k), v_free) + abs_row(h, s%active(k), y) &
+                                                               + abs_row(h, s%active(k), s%v))
          end do
          if (m > 0 .and. s%projector%regime == regime_band) impacts = impacts + &
-            8*gamma_n(3*(2*kd + 2) + 1 + 2*kd + 1)*sum(abs(s%impulse(1:m))*[(abs_row(s%active(k), v_free) + &
-            abs_row(s%active(k), s%v), k=1, m)])
+            8*gamma_n(3*(2*kd + 2) + 1 + 2*kd + 1)*sum(abs(s%impulse(1:m))*[(abs_row(h, s%active(k), v_free) + &
+            abs_row(h, s%active(k), s%v), k=1, m)])
          bound = bound + impacts
          if (s%rayleigh_mass > 0 .or. s%rayleigh_stiffness > 0) then
             cv = 0
@@ -358,22 +377,11 @@ contains
          if (abs(theta - 0.5_dp) > 0) then
             numerical = (theta - 0.5_dp)*(gamma_n(2*kd + n + 3)*(dot_product(abs(dv), abs_band_times(s%mass, abs(dv))) &
                         + dot_product(abs(du), abs_band_times(s%stiffness, abs(du)))) &
-                        + gamma_n(5 + m)*sum(abs(s%impulse(1:m))*[(abs_row(s%active(k), s%v) + &
-                                                                 abs_row(s%active(k), v_old), k=1, m)]))
+                        + gamma_n(5 + m)*sum(abs(s%impulse(1:m))*[(abs_row(h, s%active(k), s%v) + &
+                                                                 abs_row(h, s%active(k), v_old), k=1, m)]))
          end if
          bound = bound + numerical
       end associate
-   contains
-      !> |H_c| |x|
-      real(dp) function abs_row(c, x)
-         integer, intent(in) :: c
-         real(dp), intent(in) :: x(:)
-         integer :: a
-         abs_row = 0
-         do a = 1, 4
-            if (s%contacts%dofs(a, c) /= 0) abs_row = abs_row + abs(s%contacts%weights(a, c)*x(s%contacts%dofs(a, c)))
-         end do
-      end function abs_row
    end subroutine velocity_step_bound
 
    !> b_k of one step of the position scheme, from (U^n, U^{n-1}) to the stepper's state.
@@ -398,11 +406,11 @@ contains
       real(dp), intent(out) :: residual(:)           !! the bound of |rho| row by row
       real(dp), dimension(size(u_old)) :: stride, rhs, u_free, y, column, z, cu, force
       real(dp) :: e, slack, largest, rho, level_scale, held
-      integer :: kd, n, a, c, m
+      integer :: kd, n, c, m
       kd = s%stiffness%kd
       n = size(u_old)
       e = s%restitution
-      associate (theta => s%theta, dt => s%dt)
+      associate (theta => s%theta, dt => s%dt, h => s%contacts)
          stride = s%u - u_older
          force = s%loads%at(s%t - dt)
          ! U_free as the stepper computed it (for its size only)
@@ -413,18 +421,9 @@ contains
          call band_solve(s%iteration_factor, rhs)
          u_free = rhs
          z = (s%u + e*u_older)/(1 + e)
-         y = 0
-         m = 0
-         do c = 1, s%contacts%count
-            if (abs(s%multiplier(c)) <= 0) cycle
-            m = m + 1
-            column = 0
-            do a = 1, 4
-               if (s%contacts%dofs(a, c) /= 0) column(s%contacts%dofs(a, c)) = s%contacts%weights(a, c)
-            end do
-            call band_solve(s%iteration_factor, column)
-            y = y + abs(column*s%multiplier(c))
-         end do
+         m = count(abs(s%multiplier) > 0)
+         y = responses(s%iteration_factor, s%contacts, pack([(c, c=1, s%contacts%count)], abs(s%multiplier) > 0), &
+                       pack(s%multiplier, abs(s%multiplier) > 0))
          cu = 0
          if (s%rayleigh_mass > 0) cu = s%rayleigh_mass*abs_band_times(s%mass, abs(u_older))
          if (s%rayleigh_stiffness > 0) cu = cu + s%rayleigh_stiffness*abs_band_times(s%stiffness, abs(u_older))
@@ -458,19 +457,19 @@ contains
          impacts = 0
          do c = 1, s%contacts%count
             if (abs(s%multiplier(c)) <= 0) cycle
-            held = gamma_n(3*kd + m + 11)*(abs_row(c, u_free) + (1 + e)*abs_row(c, y) + abs_row(c, s%u) + &
+            held = gamma_n(3*kd + m + 11)*(abs_row(h, c, u_free) + (1 + e)*abs_row(h, c, y) + abs_row(h, c, s%u) + &
                                          abs(merge(s%contacts%lower(c), s%contacts%upper(c), s%multiplier(c) > 0)))
             penetration = max(penetration, 1e-12_dp*level_scale + held)
          end do
          do c = 1, s%contacts%count
             if (abs(s%multiplier(c)) <= 0) cycle
-            impacts = impacts + 0.5_dp*(1 + e)*abs(s%multiplier(c))/dt**2*(2*penetration + gamma_n(8)*abs_row(c, stride))
+            impacts = impacts + 0.5_dp*(1 + e)*abs(s%multiplier(c))/dt**2*(2*penetration + gamma_n(8)*abs_row(h, c, stride))
          end do
          ! the increments of the running sums: work F.stride/2, impacts r.H stride/2, damping
          bound = bound + gamma_n(n + 2)*0.5_dp*dot_product(abs(force), abs(stride))
          do c = 1, s%contacts%count
             if (abs(s%multiplier(c)) > 0) bound = bound + gamma_n(8)*0.5_dp*(1 + e)*abs(s%multiplier(c))/dt**2* &
-                                                  abs_row(c, stride)
+                                                  abs_row(h, c, stride)
          end do
          if (s%rayleigh_mass > 0 .or. s%rayleigh_stiffness > 0) then
             cu = 0
@@ -480,16 +479,6 @@ contains
          end if
       end associate
    contains
-      !> |H_c| |x|
-      real(dp) function abs_row(c, x)
-         integer, intent(in) :: c
-         real(dp), intent(in) :: x(:)
-         integer :: a
-         abs_row = 0
-         do a = 1, 4
-            if (s%contacts%dofs(a, c) /= 0) abs_row = abs_row + abs(s%contacts%weights(a, c)*x(s%contacts%dofs(a, c)))
-         end do
-      end function abs_row
       function all_rows_transpose(s) result(h)
          type(position_stepper), intent(in) :: s
          real(dp) :: h(size(s%u))
@@ -503,6 +492,38 @@ contains
          end do
       end function all_rows_transpose
    end subroutine position_step_bound
+
+   !> Y = sum_k |W^-1 H_{c_k}^T| |P_k|: the size of the terms of the projection's
+   !! correction W^-1 H^T P, one band solve per point (as the projector's own columns).
+   function responses(factor, contacts, points, impulses) result(y)
+      type(band_cholesky), intent(in) :: factor
+      type(contact_set), intent(in) :: contacts
+      integer, intent(in) :: points(:)
+      real(dp), intent(in) :: impulses(:)
+      real(dp) :: y(factor%n), column(factor%n)
+      integer :: k, a
+      y = 0
+      do k = 1, size(points)
+         column = 0
+         do a = 1, 4
+            if (contacts%dofs(a, points(k)) /= 0) column(contacts%dofs(a, points(k))) = contacts%weights(a, points(k))
+         end do
+         call band_solve(factor, column)
+         y = y + abs(column*impulses(k))
+      end do
+   end function responses
+
+   !> |H_c| |x|: the size of the terms of H_c x.
+   pure real(dp) function abs_row(contacts, c, x)
+      type(contact_set), intent(in) :: contacts
+      integer, intent(in) :: c
+      real(dp), intent(in) :: x(:)
+      integer :: a
+      abs_row = 0
+      do a = 1, 4
+         if (contacts%dofs(a, c) /= 0) abs_row = abs_row + abs(contacts%weights(a, c)*x(contacts%dofs(a, c)))
+      end do
+   end function abs_row
 
    !> |H|^T |P| over the active points of a velocity step.
    function rows_transpose(s, p) result(h)

@@ -5,7 +5,7 @@
 !! x^T A x), b_k for each step, and for a whole run the two evaluations plus
 !! min(sum b_k, 6 sqrt(sum b_k^2)). Each check prints the largest ratio value/bound, which
 !! must stay below 1 on any conforming BLAS; a broken identity moves the energy by orders
-!! of magnitude more (the plain law of SPEC §3 by 1e-3 to 4e-2 E0 in one step).
+!! of magnitude more (the plain law of theory §3 by 1e-3 to 4e-2 E0 in one step).
 !!
 !! usage: test_energy SCENE.nml conserve STEPS
 !!   e = 1, theta = 1/2, no load: |E^n - E^0| <= drift bound + the round-off of the
@@ -14,7 +14,7 @@
 !!   e < 1, no load: E^{n+1} <= E^n + (one-step bound) at every step, for every dt given
 !!   (the scene's own settings otherwise), with the default treatment of separating points;
 !!   the balance closes step by step and the impacts' share never goes below zero. The same
-!!   run with the plain law of SPEC §3 (&impact separating_points = 'restitution') is
+!!   run with the plain law of theory §3 (&impact separating_points = 'restitution') is
 !!   reported beside it (largest energy increase), not asserted.
 !! usage: test_energy SCENE.nml measure DT [DT ...]
 !!   any scheme, e < 1: the same table; asserts that the balance closes step by step, that
@@ -139,7 +139,7 @@ program test_energy
       end do
    case ('dissipate', 'measure')
       write (output_unit, '(a)') '     dt     steps  impacts  max (E^{n+1}-E^n)/E^0  rise/bound  E_end/E0  penetration/dt' // &
-         '  plain SPEC law: max rise   max impulse gain/E^n'
+         '  plain law: max rise   max impulse gain/E^n'
       do k = 3, command_argument_count()
          call get_command_argument(k, argument)
          read (argument, *) scene%dt

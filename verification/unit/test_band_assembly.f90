@@ -9,7 +9,7 @@ program test_band_assembly
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: band_entry, band_matvec, band_factor, band_solve, band_cholesky
    use vibrobeam_model, only: beam_model, build_model
-   use vibrobeam_roundoff_bounds, only: gamma_n, abs_factor_times
+   use vibrobeam_roundoff_bounds, only: gamma_n, abs_factor_times, dense_inverse, permuted_lu_times
    use vibrobeam_test_support, only: test_counter
    implicit none
    interface
@@ -159,36 +159,4 @@ contains
                          maxval(abs(y - rhs(:, 1))/bound), 0.0_dp, 1.0_dp, 1.0_dp)
    end subroutine compare
 
-   !> A^-1 of a small dense matrix (column by column, LAPACK dgesv).
-   function dense_inverse(a) result(inverse)
-      real(dp), intent(in) :: a(:, :)
-      real(dp) :: inverse(size(a, 1), size(a, 1)), work(size(a, 1), size(a, 1))
-      integer :: pivots(size(a, 1)), info, i
-      work = a
-      inverse = 0
-      do i = 1, size(a, 1)
-         inverse(i, i) = 1
-      end do
-      call dgesv(size(a, 1), size(a, 1), work, size(a, 1), pivots, inverse, size(a, 1), info)
-   end function dense_inverse
-
-   !> P^T |L| |U| x for the factors of dgetrf/dgesv (PA = LU, unit lower L below the diagonal).
-   function permuted_lu_times(factors, pivots, x) result(y)
-      real(dp), intent(in) :: factors(:, :), x(:)
-      integer, intent(in) :: pivots(:)
-      real(dp) :: y(size(x)), z(size(x)), swap
-      integer :: i, n
-      n = size(x)
-      do i = 1, n
-         z(i) = sum(abs(factors(i, i:n))*x(i:n))
-      end do
-      do i = 1, n
-         y(i) = z(i) + sum(abs(factors(i, 1:i - 1))*z(1:i - 1))
-      end do
-      do i = n, 1, -1   ! P = P_n ... P_1, so P^T applies the interchanges in reverse
-         swap = y(i)
-         y(i) = y(pivots(i))
-         y(pivots(i)) = swap
-      end do
-   end function permuted_lu_times
 end program test_band_assembly

@@ -20,7 +20,7 @@ program test_bspline_basis
    use vibrobeam_kinds, only: dp
    use vibrobeam_bspline, only: bspline_knots, bspline_shape
    use vibrobeam_model, only: beam_model, build_model, point_row, node_row, interpolate_field
-   use vibrobeam_roundoff_bounds, only: gamma_n
+   use vibrobeam_roundoff_bounds, only: gamma_n, dense_inverse, permuted_lu_times
    use vibrobeam_scene, only: scene_type
    use vibrobeam_initial_state, only: initial_velocity
    use vibrobeam_test_support, only: test_counter
@@ -223,44 +223,4 @@ contains
       end do
    end function evaluate
 
-   !> A^-1 of a small dense matrix (column by column, LAPACK dgesv).
-   function dense_inverse(a) result(inverse)
-      real(dp), intent(in) :: a(:, :)
-      real(dp) :: inverse(size(a, 1), size(a, 1)), work(size(a, 1), size(a, 1))
-      integer :: pivots(size(a, 1)), info, i
-      interface
-         subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
-            import :: dp
-            integer, intent(in) :: n, nrhs, lda, ldb
-            real(dp), intent(inout) :: a(lda, *), b(ldb, *)
-            integer, intent(out) :: ipiv(*), info
-         end subroutine dgesv
-      end interface
-      work = a
-      inverse = 0
-      do i = 1, size(a, 1)
-         inverse(i, i) = 1
-      end do
-      call dgesv(size(a, 1), size(a, 1), work, size(a, 1), pivots, inverse, size(a, 1), info)
-   end function dense_inverse
-
-   !> P^T |L| |U| x for the factors of dgetrf (PA = LU, unit lower L below the diagonal).
-   function permuted_lu_times(factors, pivots, x) result(y)
-      real(dp), intent(in) :: factors(:, :), x(:)
-      integer, intent(in) :: pivots(:)
-      real(dp) :: y(size(x)), z(size(x)), swap
-      integer :: i, n
-      n = size(x)
-      do i = 1, n
-         z(i) = sum(abs(factors(i, i:n))*x(i:n))
-      end do
-      do i = 1, n
-         y(i) = z(i) + sum(abs(factors(i, 1:i - 1))*z(1:i - 1))
-      end do
-      do i = n, 1, -1   ! P = P_n ... P_1, so P^T applies the interchanges in reverse
-         swap = y(i)
-         y(i) = y(pivots(i))
-         y(pivots(i)) = swap
-      end do
-   end function permuted_lu_times
 end program test_bspline_basis
