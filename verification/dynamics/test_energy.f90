@@ -145,7 +145,7 @@ program test_energy
          read (argument, *) scene%dt
          steps = nint(scene%t_end/scene%dt)
          scene%separating_points = 'restitution'
-         plain = run(scene, steps)
+         plain = run(scene, steps, bounds=.false.)   ! reported only: no round-off bounds needed
          scene%separating_points = 'elastic'
          r = run(scene, steps)
          write (output_unit, '(es10.3,i8,i8,es16.3,es12.3,f12.6,es14.3,es14.3,f16.4)') scene%dt, steps, r%impacts, r%rise, &
@@ -184,17 +184,22 @@ contains
       call t%check_close('|E - W + D - its initial value| / the drift bound', r%drift_ratio, 0.0_dp, 1.0_dp, 1.0_dp)
    end subroutine check_balance
 
-   !> Run `steps` steps with the round-off ledger and record what the checks need.
-   function run(scene, steps) result(r)
+   !> Run `steps` steps with the round-off ledger (unless `bounds` is false) and record
+   !! what the checks need.
+   function run(scene, steps, bounds) result(r)
       type(scene_type), intent(in) :: scene
       integer, intent(in) :: steps
+      logical, intent(in), optional :: bounds
       type(run_record) :: r
+      logical :: with_bounds
       class(time_stepper), allocatable :: stepper
       type(energy_ledger) :: ledger
       real(dp) :: e0, e_old, e_new, u, b0, b_old, b_new, bound, impacts_total, scale, increment
       logical :: touching(prepared%contacts%count), now(prepared%contacts%count)
       integer :: n, stat, k, c
       character(len=512) :: errmsg
+      with_bounds = .true.
+      if (present(bounds)) with_bounds = bounds
       call start_time_stepper(scene, prepared, stepper, stat, errmsg)
       call ledger%start(stepper)
       e0 = stepper%kinetic_energy() + stepper%elastic_energy()
@@ -210,6 +215,14 @@ contains
       impacts_total = 0
       touching = .false.
       do n = 1, steps
+         if (.not. with_bounds) then
+            call stepper%step(stat, errmsg)
+            if (stat /= 0) error stop 'step failed'
+            e_new = stepper%kinetic_energy() + stepper%elastic_energy()
+            r%rise = max(r%rise, (e_new - e_old)/e0)
+            e_old = e_new
+            cycle
+         end if
          call ledger%before_step(stepper)
          call stepper%step(stat, errmsg)
          if (stat /= 0) then
