@@ -268,6 +268,7 @@ contains
                (u - prepared%contacts%upper(c))/ledger%penetration)
          end do
       end do
+      if (.not. with_bounds) return   ! only the largest rise was wanted
       if (e0 > 0) r%conserve_bound = (ledger%drift() + impacts_total)/e0
       r%drift_bound = ledger%drift()/scale
       ! energies of the 'theta' table relative to the largest energy of the run (E0 may be 0)
