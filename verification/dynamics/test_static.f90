@@ -24,7 +24,8 @@ program test_static
    use vibrobeam_setup, only: prepared_scene
    use vibrobeam_static, only: solve_static
    use vibrobeam_contact_points, only: contact_value
-   use vibrobeam_roundoff_bounds, only: static_error_bounds, gamma_n
+   use vibrobeam_roundoff_bounds, only: gamma_n
+   use vibrobeam_static_bounds, only: static_error_bounds
    use vibrobeam_band, only: band_cholesky, band_factor, band_solve
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
    implicit none

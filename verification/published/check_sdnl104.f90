@@ -18,7 +18,8 @@ program check_sdnl104
    use vibrobeam_cantilever_exact, only: cantilever_root
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene
-   use vibrobeam_roundoff_bounds, only: balance_bounds_at, static_error_bounds, gamma_n
+   use vibrobeam_roundoff_bounds, only: balance_bounds_at, gamma_n
+   use vibrobeam_static_bounds, only: static_error_bounds
    use vibrobeam_static, only: solve_static
    use vibrobeam_contact_solver, only: delassus_limit
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene

@@ -9,7 +9,8 @@ program test_band_assembly
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: band_entry, band_matvec, band_factor, band_solve, band_cholesky
    use vibrobeam_model, only: beam_model, build_model
-   use vibrobeam_roundoff_bounds, only: gamma_n, abs_factor_times, dense_inverse, permuted_lu_times
+   use vibrobeam_roundoff_bounds, only: gamma_n, abs_factor_times
+   use vibrobeam_static_bounds, only: dense_inverse, permuted_lu_times
    use vibrobeam_test_support, only: test_counter
    implicit none
    interface

@@ -20,7 +20,8 @@ program test_bspline_basis
    use vibrobeam_kinds, only: dp
    use vibrobeam_bspline, only: bspline_knots, bspline_shape
    use vibrobeam_model, only: beam_model, build_model, point_row, node_row, interpolate_field
-   use vibrobeam_roundoff_bounds, only: gamma_n, dense_inverse, permuted_lu_times
+   use vibrobeam_roundoff_bounds, only: gamma_n
+   use vibrobeam_static_bounds, only: dense_inverse, permuted_lu_times
    use vibrobeam_scene, only: scene_type
    use vibrobeam_initial_state, only: initial_velocity
    use vibrobeam_test_support, only: test_counter
