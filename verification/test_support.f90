@@ -1,11 +1,14 @@
 !> Shared checks of the vibrobeam test programs: each check prints one line on failure
 !! naming the quantity, its value, the reference and the tolerance; `finish` prints
-!! 'NAME: N passed, M failed' and exits non-zero when anything failed.
+!! 'NAME: N passed, M failed' and exits non-zero when anything failed, and the largest
+!! ratio |value - reference| / allowed difference over the `check_close` calls (how much
+!! room each tolerance leaves; the CI prints it for every library it runs on).
 module vibrobeam_test_support
    use vibrobeam_kinds, only: dp, error_unit, output_unit
    use vibrobeam_scene, only: scene_type, validate_scene
    use vibrobeam_input, only: read_scene
    use vibrobeam_setup, only: prepared_scene, prepare_scene
+   use vibrobeam_blas_threads, only: limit_blas_threads
    implicit none
    private
    public :: test_counter, read_test_scene, prepare_test_scene, fitted_order
@@ -13,6 +16,8 @@ module vibrobeam_test_support
    type, public :: test_counter
       integer :: passed = 0
       integer :: failed = 0
+      real(dp) :: worst_ratio = 0                !! largest |value - reference| / allowed difference
+      character(len=120) :: worst_check = ''     !! the check where it occurred
    contains
       procedure :: check_close     !! |value - reference| <= tolerance * max(|reference|, scale)
       procedure :: check_true
@@ -29,6 +34,14 @@ contains
       real(dp) :: size
       size = abs(reference)
       if (present(scale)) size = max(size, scale)
+      if (tolerance*size > 0) then
+         if (report_every_check()) write (output_unit, '(a,es10.3,a)') 'ratio ', &
+            abs(value - reference)/(tolerance*size), ' '//name
+         if (abs(value - reference)/(tolerance*size) >= self%worst_ratio) then
+            self%worst_ratio = abs(value - reference)/(tolerance*size)
+            self%worst_check = name
+         end if
+      end if
       if (abs(value - reference) <= tolerance*size) then
          self%passed = self%passed + 1
       else
@@ -38,6 +51,13 @@ contains
             ', tolerance ', tolerance
       end if
    end subroutine check_close
+
+   !> VIBROBEAM_CHECK_RATIOS set: print the ratio of every check (for margin studies).
+   logical function report_every_check()
+      integer :: length
+      call get_environment_variable('VIBROBEAM_CHECK_RATIOS', length=length)
+      report_every_check = length > 0
+   end function report_every_check
 
    subroutine check_true(self, name, condition, detail)
       class(test_counter), intent(inout) :: self
@@ -59,6 +79,8 @@ contains
    subroutine finish(self, program_name)
       class(test_counter), intent(in) :: self
       character(len=*), intent(in) :: program_name
+      if (len_trim(self%worst_check) > 0) write (output_unit, '(a,es10.3,a)') program_name// &
+         ': largest |value - reference| / tolerance ', self%worst_ratio, ' ('//trim(self%worst_check)//')'
       write (output_unit, '(a,i0,a,i0,a)') program_name//': ', self%passed, ' passed, ', self%failed, ' failed'
       if (self%failed > 0) error stop 1
    end subroutine finish
@@ -93,13 +115,16 @@ contains
       end if
    end function read_test_scene
 
-   !> prepare_scene, stopping the test on failure.
+   !> prepare_scene, stopping the test on failure; the BLAS thread policy of the program
+   !! (`limit_blas_threads`) applies to every driver that steps a scene.
    subroutine prepare_test_scene(scene, prepared)
       type(scene_type), intent(in) :: scene
       type(prepared_scene), intent(out) :: prepared
       character(len=:), allocatable :: warnings
       integer :: stat
       character(len=512) :: errmsg
+      call limit_blas_threads(warnings)
+      if (len(warnings) > 0) write (error_unit, '(a)') 'warning: '//warnings
       warnings = ''
       call prepare_scene(scene, prepared, warnings, stat, errmsg)
       if (stat /= 0) then

@@ -24,12 +24,13 @@ program vibrobeam_main
    use vibrobeam_hdf5_base, only: close_library
    use vibrobeam_progress, only: progress_meter
    use vibrobeam_signals, only: watch_signals, interrupt_requested, interrupt_name
+   use vibrobeam_blas_threads, only: limit_blas_threads
    implicit none
 
    type(scene_type) :: scene
    type(prepared_scene) :: prepared
    character(len=message_length) :: errmsg
-   character(len=:), allocatable :: input_file, warnings
+   character(len=:), allocatable :: input_file, warnings, blas_warning
    logical :: check_only, text_only
    integer :: stat
 
@@ -42,6 +43,8 @@ program vibrobeam_main
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    call check_output_target(scene, input_file, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
+   call limit_blas_threads(blas_warning)   ! one BLAS thread unless VIBROBEAM_BLAS_THREADS says otherwise
+   if (len(blas_warning) > 0) warnings = warnings//blas_warning//new_line('a')
    call prepare_scene(scene, prepared, warnings, stat, errmsg)
    if (stat == setup_numerical_failure) call fail(exit_numerical_failure, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
