@@ -18,7 +18,8 @@ module vibrobeam_static
 
 contains
 
-   subroutine solve_static(stiffness, contacts, force, contact_regime, u, reaction, iterations, stat, errmsg)
+   subroutine solve_static(stiffness, contacts, force, contact_regime, u, reaction, iterations, stat, errmsg, &
+                           contact_method)
       type(symmetric_band), intent(in) :: stiffness
       type(contact_set), intent(in) :: contacts
       real(dp), intent(in) :: force(:)                 !! F (J)
@@ -27,6 +28,7 @@ contains
       real(dp), intent(out) :: reaction(:)             !! (contacts%count) P_c, 0 if not in contact
       integer, intent(out) :: iterations, stat
       character(len=*), intent(out) :: errmsg
+      character(len=*), intent(in), optional :: contact_method   !! 'newton' (default) | 'pivoting'
       type(band_cholesky) :: factor
       type(contact_projector) :: projector
       real(dp) :: u_free(size(force))
@@ -38,7 +40,11 @@ contains
       call band_solve(factor, u_free)
       u = u_free
       if (contacts%count == 0) return
-      call projector%setup(stiffness, factor, contacts, contact_regime)
+      if (present(contact_method)) then
+         call projector%setup(stiffness, factor, contacts, contact_regime, contact_method)
+      else
+         call projector%setup(stiffness, factor, contacts, contact_regime)
+      end if
       call projector%project_admissible(u_free, u, reaction, iterations, stat, errmsg)
    end subroutine solve_static
 end module vibrobeam_static
