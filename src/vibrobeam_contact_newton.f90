@@ -41,7 +41,8 @@
 module vibrobeam_contact_newton
    use vibrobeam_kinds, only: dp
    use vibrobeam_contact_points, only: contact_value, no_bound
-   use vibrobeam_contact_system, only: contact_system, solve_tally
+   use vibrobeam_band, only: band_matvec
+   use vibrobeam_contact_system, only: contact_system, solve_tally, scatter_rows
    implicit none
    private
    public :: newton_project, newton_report
@@ -53,8 +54,11 @@ module vibrobeam_contact_newton
       integer :: crossovers = 0              !! active-set restarts from the interior point
    end type newton_report
 
-   !> Active-set iterations from the warm start before the interior-point method.
-   integer, parameter :: warm_limit = 2
+   !> Active-set iterations from the warm start before the interior-point method: at least
+   !! warm_minimum, at most warm_limit, and only while the number of points that change
+   !! side decreases (a start far from the solution, e.g. statics from x_free, needs a few,
+   !! each of which shrinks the changes; a cycling or creeping iteration does not).
+   integer, parameter :: warm_minimum = 2, warm_limit = 40
    !> Active-set iterations of one crossover.
    integer, parameter :: polish_limit = 3
    !> Interior-point iterations before the fall-back.
@@ -68,9 +72,8 @@ module vibrobeam_contact_newton
    !! exceed residual_limit * scale (a solve that loses all but 8 digits has failed).
    real(dp), parameter :: residual_limit = 1e-8_dp
    !> Crossover once mu <= crossover_reduction mu_0 and the indicated set did not change
-   !! in the last iteration; g recomputed from P after every step once
-   !! mu <= anchor_reduction mu_0.
-   real(dp), parameter :: crossover_reduction = 1e-6_dp, anchor_reduction = 1e-6_dp
+   !! in the last iteration.
+   real(dp), parameter :: crossover_reduction = 1e-6_dp
    !> Interior-point finish once every product s y, t z <= round_factor eps P_max scale.
    real(dp), parameter :: round_factor = 16
    !> Slacks of the interior-point start: at least start_fraction times the largest
@@ -84,7 +87,8 @@ contains
    !> Solve the projection (module comment). side(k): in, the warm start (+1 lower held,
    !! -1 upper held, 0 free); out, the final held set. stat: 0 ok; 1 no convergence (fall
    !! back); 2 a factorization failed; 3 the residual check of the exact finish failed.
-   subroutine newton_project(system, x_free, points, lower, upper, side, x, multiplier, report, tally, stat, errmsg)
+   subroutine newton_project(system, x_free, points, lower, upper, side, x, multiplier, report, tally, stat, errmsg, &
+                             w_x_free_given)
       type(contact_system), intent(inout) :: system
       real(dp), intent(in) :: x_free(:)
       integer, intent(in) :: points(:)
@@ -95,8 +99,11 @@ contains
       type(solve_tally), intent(inout) :: tally
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp) :: free_value(size(points)), value(size(points)), scale, tolerance
-      integer :: k, iteration
+      !> b = W x_free when the caller knows it exactly (statics: the load vector; its product
+      !! form loses the digits that K^-1 F lost); otherwise computed as W x_free
+      real(dp), intent(in), optional :: w_x_free_given(:)
+      real(dp) :: free_value(size(points)), value(size(points)), w_x_free(size(x_free)), scale, tolerance
+      integer :: k, iteration, changes, previous_changes
       logical :: converged
       stat = 0
       errmsg = ''
@@ -112,18 +119,26 @@ contains
          side = 0
          return
       end if
+      if (present(w_x_free_given)) then
+         w_x_free = w_x_free_given
+      else
+         call band_matvec(system%metric, x_free, w_x_free)
+      end if
       ! warm start: the previous set where its bound exists, plus every violated point
       where (side == 1 .and. lower <= -no_bound) side = 0
       where (side == -1 .and. upper >= no_bound) side = 0
       where (free_value < lower - tolerance) side = 1
       where (free_value > upper + tolerance) side = -1
+      changes = huge(1)
       do iteration = 1, warm_limit
          report%active_set_iterations = report%active_set_iterations + 1
-         call active_set_step(system, x_free, points, lower, upper, scale, side, x, multiplier, value, converged, &
-                              tally, stat, errmsg)
+         previous_changes = changes
+         call active_set_step(system, x_free, w_x_free, points, lower, upper, scale, side, x, multiplier, value, &
+                              converged, tally, stat, errmsg, changes)
          if (stat /= 0 .or. converged) return
+         if (iteration >= warm_minimum .and. changes >= previous_changes) exit   ! no progress: globalize
       end do
-      call interior_point(system, x_free, points, lower, upper, scale, &
+      call interior_point(system, x_free, w_x_free, points, lower, upper, scale, &
                           max(maxval(lower - free_value), maxval(free_value - upper)), side, x, multiplier, value, &
                           report, tally, stat, errmsg)
    end subroutine newton_project
@@ -139,10 +154,10 @@ contains
    !> One active-set iteration: solve with the set `side` held; converged when no held
    !! multiplier has the wrong sign and no free point violates its bound beyond the
    !! tolerance; otherwise update `side` (drop the first, add the second).
-   subroutine active_set_step(system, x_free, points, lower, upper, scale, side, x, multiplier, value, converged, &
-                              tally, stat, errmsg)
+   subroutine active_set_step(system, x_free, w_x_free, points, lower, upper, scale, side, x, multiplier, value, &
+                              converged, tally, stat, errmsg, changes)
       type(contact_system), intent(inout) :: system
-      real(dp), intent(in) :: x_free(:), lower(:), upper(:), scale
+      real(dp), intent(in) :: x_free(:), w_x_free(:), lower(:), upper(:), scale
       integer, intent(in) :: points(:)
       integer, intent(inout) :: side(:)
       real(dp), intent(out) :: x(:), multiplier(:), value(:)
@@ -150,13 +165,15 @@ contains
       type(solve_tally), intent(inout) :: tally
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      integer, intent(out), optional :: changes   !! points that changed side
       logical :: held(size(points)), wrong(size(points)), enter_lower(size(points)), enter_upper(size(points))
       real(dp) :: target(size(points)), accuracy, tolerance, error_estimate
       integer :: k
       converged = .false.
+      if (present(changes)) changes = 0
       held = side /= 0
       target = merge(lower, upper, side >= 0)
-      call system%solve_held(x_free, points, held, target, x, multiplier, error_estimate, tally, stat, errmsg)
+      call system%solve_held(x_free, w_x_free, points, held, target, x, multiplier, error_estimate, tally, stat, errmsg)
       if (stat /= 0) return
       do k = 1, size(points)
          value(k) = contact_value(system%contacts, points(k), x)
@@ -177,29 +194,28 @@ contains
          end if
          return
       end if
+      if (present(changes)) changes = count(wrong) + count(enter_lower) + count(enter_upper)
       where (wrong) side = 0
       where (enter_lower) side = 1
       where (enter_upper) side = -1
    end subroutine active_set_step
 
-   !> Mehrotra's predictor-corrector on the complementarity conditions
-   !!     H x - s = lower, H x + t = upper, s, t, y, z >= 0, s y = t z = 0, y - z = P,
-   !! with x = x_free + W^-1 H^T P: only the values g = H x, the slacks and the
-   !! multipliers per point are carried, and Newton's equations reduce to
-   !! dg = (A^-1 + D)^-1 rho, D = y/s + z/t (`solve_barrier`: one factorization and two
-   !! solves per iteration). P is carried beside y - z, the start being infeasible in both.
+   !> Mehrotra's predictor-corrector on the optimality conditions
+   !!     W x - b = H^T (y - z),  H x - s = lower,  H x + t = upper,
+   !!     s, t, y, z >= 0,  s y = t z = 0          (b = W x_free, P = y - z),
+   !! an infeasible primal-dual method: every residual is evaluated from the iterate by a
+   !! product with W, so the band solves only have to give a good direction (they lose
+   !! accuracy like cond(W), ~N^4 for a beam's stiffness). Newton's equations reduce to
+   !! (W + H^T D H) dx = -r_d + H^T rho, D = y/s + z/t (`factor_barrier`, `solve_barrier`:
+   !! one factorization and two solves per iteration).
    !!
-   !! Start: P = 0 (g = H x_free); every slack at least start_fraction times the largest
-   !! violation of x_free, and every product s y, t z equal to mu_0 = that floor times the
-   !! largest multiplier of the last active-set solve: centred, with residuals only on the
-   !! violated points. (Starting from the last active-set iterate instead, shifted into the
-   !! interior as Mehrotra (1992) does, puts a floor multiplier on every free point; their
-   !! sum moves g far from the bounds and cost 2-3 times more iterations in the slap.)
-   !!
-   !! Drift: the barrier solves lose accuracy like cond(W) (~N^4 for a beam's stiffness),
-   !! so the carried g drifts from H x(P) (5e-7 relative at N = 16000 in the slap); from
-   !! mu <= anchor_reduction mu_0 on, g is recomputed from P after every step (`respond`,
-   !! one more solve), so that the end game solves the true problem.
+   !! Start: x = x_free; every slack at least start_fraction times the largest violation of
+   !! x_free, and every product s y, t z equal to mu_0 = that floor times the largest
+   !! multiplier of the last active-set solve: centred, with residuals only on the violated
+   !! points and in W x - b - H^T (y - z). (Starting from the last active-set iterate
+   !! instead, shifted into the interior as Mehrotra (1992) does, puts a floor multiplier
+   !! on every free point; their sum moves the beam far from the bounds and cost 2-3 times
+   !! more iterations in the slap.)
    !!
    !! Crossover: the indicated set is {y_k + dy_k > c_k (s_k + ds_k)} (lower; likewise
    !! upper) at the affine-scaling (predictor) point, with c_k = H_k W H_k^T the stiffness
@@ -207,18 +223,21 @@ contains
    !! applied to the Newton prediction of the solution. (With a global scale, largest
    !! multiplier over largest value, for c_k, points with a small gap next to a stiff
    !! neighbourhood were indicated held, and holding them cost multipliers of the wrong
-   !! sign of 2-8 % of the largest.) Once mu <= crossover_reduction mu_0 and the indicated
-   !! set did not change in the last iteration, the active-set iteration restarts from it
-   !! (at most polish_limit iterations).
+   !! sign of 2-8 % of the largest.) The active-set iteration restarts from it (at most
+   !! polish_limit iterations) once mu <= crossover_reduction mu_0 and the indicated set
+   !! did not change in the last iteration, and once every product is below the round-off
+   !! of the complementarity (round_factor eps P_max scale).
    !!
-   !! Interior-point finish: once every product is below the round-off of the
-   !! complementarity (round_factor eps P_max scale), P = y - z (exactly of the right sign
-   !! on one-sided points) and x = x_free + W^-1 H^T P, consistent by construction, with
-   !! y_k s_k, t_k z_k as the complementarity residual.
-   subroutine interior_point(system, x_free, points, lower, upper, scale, violation, side, x, multiplier, value, &
-                             report, tally, stat, errmsg)
+   !! Interior-point finish, if that crossover fails: once the products have reached
+   !! round-off and so have the residuals (|W x - b - H^T P| <= round_factor eps
+   !! (|W| |x| + |b| + |H^T P|), |H x - s - bound| <= gap_factor eps scale), the iterate
+   !! itself is the answer: P = y - z (exactly of the right sign on one-sided points), x
+   !! consistent with it to round-off, complementarity residual y_k s_k, t_k z_k. (No
+   !! correction through W^-1: for statics its solves carry no digits at N ~ 10^4.)
+   subroutine interior_point(system, x_free, w_x_free, points, lower, upper, scale, violation, side, x, multiplier, &
+                             value, report, tally, stat, errmsg)
       type(contact_system), intent(inout) :: system
-      real(dp), intent(in) :: x_free(:), lower(:), upper(:), scale
+      real(dp), intent(in) :: x_free(:), w_x_free(:), lower(:), upper(:), scale
       real(dp), intent(in) :: violation          !! largest violation of x_free (> 0)
       integer, intent(in) :: points(:)
       integer, intent(inout) :: side(:)
@@ -227,10 +246,11 @@ contains
       type(solve_tally), intent(inout) :: tally
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      logical :: has_lower(size(points)), has_upper(size(points)), converged
-      real(dp), dimension(size(points)) :: s, t, y, z, p, g, weight, stiffness, r_lower, r_upper, r_sy, r_tz, &
-                                           ds, dt, dy, dz, dp_, dg, y_gain, z_gain
-      real(dp) :: mu, mu0, mu_affine, sigma, alpha, slack_floor
+      logical :: has_lower(size(points)), has_upper(size(points)), converged, round_off, round_off_tried
+      real(dp), dimension(size(points)) :: s, t, y, z, g, weight, stiffness, r_lower, r_upper, r_sy, r_tz, &
+                                           ds, dt, dy, dz, dg, y_gain, z_gain
+      real(dp), dimension(size(x_free)) :: xi, r_dual, dx
+      real(dp) :: mu, mu0, mu_affine, sigma, alpha, slack_floor, metric_norm
       integer :: indicated(size(points)), previous(size(points)), pairs, iteration, k, polish
       stat = 0
       errmsg = ''
@@ -239,26 +259,43 @@ contains
       pairs = count(has_lower) + count(has_upper)
       ! centred start at x_free; an absent side carries s = 1, y = 0 (t = 1, z = 0), which
       ! keeps it out of every product and sum
-      do k = 1, size(points)
-         g(k) = contact_value(system%contacts, points(k), x_free)
-      end do
+      xi = x_free
+      call values_at(xi, g)
       slack_floor = start_fraction*violation
       mu0 = slack_floor*max(maxval(abs(multiplier)), tiny(1.0_dp))
       s = merge(max(g - lower, slack_floor), 1.0_dp, has_lower)
       t = merge(max(upper - g, slack_floor), 1.0_dp, has_upper)
       y = merge(mu0/s, 0.0_dp, has_lower)
       z = merge(mu0/t, 0.0_dp, has_upper)
-      p = 0
       stiffness = system%row_stiffness(points)
       mu = mu0
       previous = 2
+      metric_norm = maxval(sum(abs(system%metric%lower), dim=1))   ! |W|_inf, within a factor 2
+      round_off_tried = .false.
       do iteration = 1, interior_limit
+         ! residuals of the iterate
+         call band_matvec(system%metric, xi, r_dual)
+         r_dual = r_dual - w_x_free
+         dx = 0
+         call scatter_rows(system%contacts, points, merge(y, 0.0_dp, has_lower) - merge(z, 0.0_dp, has_upper), dx)
+         r_dual = r_dual - dx
+         r_lower = merge(g - s - lower, 0.0_dp, has_lower)
+         r_upper = merge(g + t - upper, 0.0_dp, has_upper)
+         ! interior-point finish: every residual and product at round-off
+         if (round_off_tried .and. &
+             maxval(abs(r_dual)) <= round_factor*epsilon(1.0_dp)*(2*metric_norm*maxval(abs(xi)) + &
+                                     maxval(abs(w_x_free)) + maxval(abs(dx))) .and. &
+             max(maxval(abs(r_lower)), maxval(abs(r_upper))) <= gap_factor*epsilon(1.0_dp)*max(scale, maxval(abs(g)))) then
+            multiplier = merge(y, 0.0_dp, has_lower) - merge(z, 0.0_dp, has_upper)
+            x = xi
+            value = g
+            side = previous
+            return
+         end if
          report%interior_iterations = report%interior_iterations + 1
          weight = y/s + z/t
          call system%factor_barrier(points, weight, tally, stat, errmsg)
          if (stat /= 0) return
-         r_lower = merge(g - s - lower, 0.0_dp, has_lower)
-         r_upper = merge(g + t - upper, 0.0_dp, has_upper)
          ! predictor (affine scaling); its full step predicts the solution
          r_sy = -s*y
          r_tz = -t*z
@@ -277,39 +314,24 @@ contains
          where (has_lower) y = y + alpha*dy
          where (has_upper) t = t + alpha*dt
          where (has_upper) z = z + alpha*dz
-         p = p + alpha*dp_
-         g = g + alpha*dg
+         xi = xi + alpha*dx
+         call values_at(xi, g)
          mu = (sum(s*y, has_lower) + sum(t*z, has_upper))/pairs
-         if (mu <= anchor_reduction*mu0) then
-            call system%respond(x_free, points, p, x, tally)
-            do k = 1, size(points)
-               g(k) = contact_value(system%contacts, points(k), x)
-            end do
-         end if
-         ! interior-point finish
-         if (max(maxval(s*y, has_lower), maxval(t*z, has_upper)) <= &
-             round_factor*epsilon(1.0_dp)*max(maxval(y), maxval(z))*max(scale, maxval(abs(g)))) then
-            multiplier = y - z
-            call system%respond(x_free, points, multiplier, x, tally)
-            do k = 1, size(points)
-               value(k) = contact_value(system%contacts, points(k), x)
-            end do
-            side = 0
-            where (has_lower .and. y > z) side = 1
-            where (has_upper .and. z > y) side = -1
-            return
-         end if
+         round_off = max(maxval(s*y, has_lower), maxval(t*z, has_upper)) <= &
+                     round_factor*epsilon(1.0_dp)*max(maxval(y), maxval(z))*max(scale, maxval(abs(g)))
          ! crossover
          indicated = 0
          where (has_lower .and. y_gain > 0) indicated = 1
          where (has_upper .and. z_gain > 0 .and. (indicated == 0 .or. z_gain > y_gain)) indicated = -1
-         if (mu <= crossover_reduction*mu0 .and. all(indicated == previous)) then
+         if ((mu <= crossover_reduction*mu0 .and. all(indicated == previous)) .or. &
+             (round_off .and. .not. round_off_tried)) then
+            round_off_tried = round_off_tried .or. round_off
             report%crossovers = report%crossovers + 1
             side = indicated
             do polish = 1, polish_limit
                report%active_set_iterations = report%active_set_iterations + 1
-               call active_set_step(system, x_free, points, lower, upper, scale, side, x, multiplier, value, converged, &
-                                    tally, stat, errmsg)
+               call active_set_step(system, x_free, w_x_free, points, lower, upper, scale, side, x, multiplier, value, &
+                                    converged, tally, stat, errmsg)
                if (stat /= 0 .or. converged) return
             end do
          end if
@@ -320,19 +342,30 @@ contains
       write (errmsg, '(a,i0,a,es9.2,a)') 'contact projection: no solution after ', report%interior_iterations, &
          ' interior-point iterations (mu/mu0 = ', mu/mu0, ')'
    contains
-      !> Newton direction for the current right-hand sides (r_lower, r_upper, r_sy, r_tz)
-      !! and the residual y - z - p.
+      !> Newton direction for the current right-hand sides (r_dual, r_lower, r_upper, r_sy,
+      !! r_tz).
       subroutine newton_direction()
          real(dp) :: rho(size(points))
-         rho = merge((r_sy - y*r_lower)/s, 0.0_dp, has_lower) - merge((r_tz + z*r_upper)/t, 0.0_dp, has_upper) &
-               + (merge(y, 0.0_dp, has_lower) - merge(z, 0.0_dp, has_upper) - p)
-         call system%solve_barrier(points, rho, dg, tally)
-         dp_ = rho - weight*dg
+         rho = merge((r_sy - y*r_lower)/s, 0.0_dp, has_lower) - merge((r_tz + z*r_upper)/t, 0.0_dp, has_upper)
+         dx = -r_dual
+         call scatter_rows(system%contacts, points, rho, dx)
+         call system%solve_barrier(dx, tally)
+         call values_at(dx, dg)
          ds = merge(dg + r_lower, 0.0_dp, has_lower)
          dy = merge((r_sy - y*ds)/s, 0.0_dp, has_lower)
          dt = merge(-dg - r_upper, 0.0_dp, has_upper)
          dz = merge((r_tz - z*dt)/t, 0.0_dp, has_upper)
       end subroutine newton_direction
+
+      !> H_k v for every point.
+      subroutine values_at(v, values)
+         real(dp), intent(in) :: v(:)
+         real(dp), intent(out) :: values(:)
+         integer :: i
+         do i = 1, size(points)
+            values(i) = contact_value(system%contacts, points(i), v)
+         end do
+      end subroutine values_at
 
       !> Largest alpha keeping s, t, y, z >= 0 along the direction (huge if unbounded).
       pure real(dp) function step_to_boundary() result(alpha_max)

@@ -150,9 +150,11 @@ contains
    !> Projection onto the whole admissible set {lower(c) <= H_c x <= upper(c), every
    !! contact point c} (statics, theory §4's position projection). multiplier(c) = P_c,
    !! 0 off contact. stat as for `project`.
-   subroutine project_admissible(self, x_free, x, multiplier, iterations, stat, errmsg)
+   subroutine project_admissible(self, x_free, x, multiplier, iterations, stat, errmsg, w_x_free)
       class(contact_projector), intent(inout) :: self
       real(dp), intent(in) :: x_free(:)
+      !> W x_free when known exactly (statics: the load vector); else computed
+      real(dp), intent(in), optional :: w_x_free(:)
       real(dp), intent(out) :: x(:)
       real(dp), intent(out) :: multiplier(:)     !! (contacts%count)
       integer, intent(out) :: iterations, stat
@@ -166,7 +168,7 @@ contains
       associate (contacts => self%system%contacts)
          if (self%method == method_newton) then
             call newton_project(self%system, x_free, [(c, c=1, contacts%count)], contacts%lower, contacts%upper, &
-                                self%warm_side, x, multiplier, report, tally, stat, errmsg)
+                                self%warm_side, x, multiplier, report, tally, stat, errmsg, w_x_free)
             call take_report(self, report)
          end if
          if (self%method == method_pivoting .or. stat /= 0) then

@@ -1,23 +1,27 @@
 !> The linear algebra of the contact projection (theory §5): for the metric W (symmetric
 !! positive definite band matrix, factored once per run) and the constraint rows H_c of the
-!! contact points, three kernels that every contact method is built from. Each is O(J) with
-!! LAPACK band routines (or O(J m) with cached columns in the 'delassus' regime):
+!! contact points, the kernels every contact method is built from, each O(J) with LAPACK
+!! band routines (or O(J m) with cached columns in the 'delassus' regime):
 !!
-!! - `respond`:     x = x_free + W^-1 H^T P for given multipliers P (one back-substitution
-!!                  with the factor of W, or a sum of cached columns W^-1 H_c^T);
-!! - `solve_held`:  the projection with a set F of constraints held as equalities,
-!!                  H_F x = t_F, W (x - x_free) = H_F^T P_F, P = 0 off F. Three ways:
-!!                  'delassus': dense Cholesky of the Delassus block A_FF = H_F W^-1 H_F^T
-!!                  from the cached columns; 'band' with unit rows (Hermite elements: H_c x
-!!                  is one unknown): the held unknowns are fixed, and the principal
-!!                  submatrix of W on the others (again a band matrix) is factored by dpbtrf;
-!!                  'band' with general rows (B-splines): the banded saddle-point system
-!!                  (`vibrobeam_saddle_band`) in increment form. The factors are kept while F
-!!                  does not change.
-!! - `factor_barrier` / `solve_barrier`: the interior-point system: for weights D_k >= 0,
-!!                  dg = H (W + H^T D H)^-1 H^T rho = (A^-1 + D)^-1 rho, A = H W^-1 H^T; the
-!!                  matrix W + H^T D H keeps the band of W (a row's nonzeros lie within it),
-!!                  so dpbtrf/dpbtrs.
+!! - `solve_held`: the projection with a set F of constraints held as equalities,
+!!   H_F x = t_F, W x - b = H_F^T P_F, P = 0 off F, where b = W x_free. Three ways:
+!!   'delassus': dense Cholesky of the Delassus block A_FF = H_F W^-1 H_F^T from the
+!!   cached columns (x = x_free + sum_k P_k W^-1 H_k^T); 'band' with unit rows (Hermite
+!!   elements: H_c x is one unknown): the held unknowns take their targets, and the
+!!   principal submatrix W_RR on the others (again a band matrix) is factored by dpbtrf,
+!!   W_RR x_R = b_R - W_RH t; 'band' with general rows (B-splines): the banded
+!!   saddle-point system (`vibrobeam_saddle_band`). The factors are kept while F does not
+!!   change. Every solve is refined once (below).
+!! - `factor_barrier` / `solve_barrier`: the interior-point system W + H^T D H for
+!!   weights D_k >= 0 (dpbtrf/dpbtrs): a row's nonzeros lie within the band of W, so the
+!!   matrix keeps it.
+!!
+!! The band kernels take b = W x_free rather than x_free and evaluate every residual by a
+!! product with W: a band solve with W loses accuracy like its condition number (~N^4 for
+!! a beam's stiffness, so that K^-1 F is wrong in the second digit for a static cantilever
+!! of 10^4 Hermite elements), while the products stay exact to round-off, and the held
+!! problem W_RR x_R = b_R - W_RH t is far better conditioned than W when the held points
+!! pin the beam.
 !!
 !! Multipliers are signed: P_k >= 0 pushes H_k x up (a lower bound), P_k <= 0 down.
 module vibrobeam_contact_system
@@ -27,7 +31,7 @@ module vibrobeam_contact_system
    use vibrobeam_saddle_band, only: saddle_factor
    implicit none
    private
-   public :: contact_system, solve_tally, regime_delassus, regime_band
+   public :: contact_system, solve_tally, regime_delassus, regime_band, scatter_rows
 
    integer, parameter :: regime_delassus = 1, regime_band = 2
 
@@ -58,7 +62,6 @@ module vibrobeam_contact_system
       integer :: barrier_kd = 0
    contains
       procedure :: setup => setup_system
-      procedure :: respond
       procedure :: solve_held
       procedure :: factor_barrier
       procedure :: solve_barrier
@@ -146,38 +149,17 @@ contains
       end if
    end subroutine setup_system
 
-   !> x = x_free + W^-1 sum_k H_{points(k)}^T multiplier(k).
-   subroutine respond(self, x_free, points, multiplier, x, tally)
-      class(contact_system), intent(in) :: self
-      real(dp), intent(in) :: x_free(:), multiplier(:)
-      integer, intent(in) :: points(:)
-      real(dp), intent(out) :: x(:)
-      type(solve_tally), intent(inout) :: tally
-      integer :: k
-      tally%linear_solves = tally%linear_solves + 1
-      if (self%regime == regime_delassus) then
-         x = x_free
-         do k = 1, size(points)
-            if (multiplier(k) /= 0) x = x + multiplier(k)*self%response(:, points(k))
-         end do
-      else
-         x = 0
-         call scatter_rows(self%contacts, points, multiplier, x)
-         call band_solve(self%metric_factor, x)
-         x = x_free + x
-      end if
-   end subroutine respond
-
    !> The projection with the constraints `held` held as equalities H_k x = target(k)
    !! (module comment): x and the multipliers (0 where not held). Every solve is followed
-   !! by one step of iterative refinement with the same factors (residual of the increment
-   !! form, correction applied); `error_estimate` = max_k |H_k correction| over all
-   !! `points` estimates the remaining error of the values H_k x (it bounds it when
-   !! cond eps < 1; the forward error of a band solve grows like the condition number of
-   !! W, ~N^4 for a beam's stiffness). stat = 2 when a factorization fails.
-   subroutine solve_held(self, x_free, points, held, target, x, multiplier, error_estimate, tally, stat, errmsg)
+   !! by one step of iterative refinement with the same factors (the residual of the held
+   !! problem computed by products with W, the correction applied); `error_estimate` =
+   !! max_k |H_k correction| over all `points` estimates the remaining error of the values
+   !! H_k x (it bounds it while cond eps < 1). stat = 2 when a factorization fails.
+   subroutine solve_held(self, x_free, w_x_free, points, held, target, x, multiplier, error_estimate, tally, &
+                         stat, errmsg)
       class(contact_system), intent(inout) :: self
       real(dp), intent(in) :: x_free(:)
+      real(dp), intent(in) :: w_x_free(:)   !! b = W x_free
       integer, intent(in) :: points(:)
       logical, intent(in) :: held(:)
       real(dp), intent(in) :: target(:)
@@ -187,8 +169,8 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer, allocatable :: held_points(:)
-      real(dp), allocatable :: held_target(:), held_multiplier(:), increment(:), correction(:), w_increment(:), &
-                               correction_multiplier(:)
+      real(dp), allocatable :: held_target(:), held_multiplier(:), correction(:), residual(:), &
+                               residual_multiplier(:), correction_multiplier(:)
       integer :: k
       stat = 0
       errmsg = ''
@@ -198,46 +180,43 @@ contains
       held_points = pack(points, held)
       if (size(held_points) == 0) return
       held_target = pack(target, held)
-      allocate (held_multiplier(size(held_points)), increment(size(x_free)), correction(size(x_free)))
-      ! constraint defects of x_free: the increment must close them
-      do k = 1, size(held_points)
-         held_target(k) = held_target(k) - contact_value(self%contacts, held_points(k), x_free)
-      end do
+      allocate (held_multiplier(size(held_points)), correction(size(x_free)))
       tally%linear_solves = tally%linear_solves + 2   ! the solve and its refinement
       if (self%regime == regime_delassus) then
+         do k = 1, size(held_points)
+            held_target(k) = held_target(k) - contact_value(self%contacts, held_points(k), x_free)
+         end do
          call solve_delassus(self, held_points, held_target, held_multiplier, correction, tally, stat, errmsg)
          if (stat /= 0) return
          do k = 1, size(held_points)
             x = x + held_multiplier(k)*self%response(:, held_points(k))
          end do
       else if (self%unit_rows) then
-         call solve_reduced(self, held_points, held_target, increment, held_multiplier, correction, tally, stat, errmsg)
+         call solve_reduced(self, w_x_free, held_points, held_target, x, held_multiplier, correction, tally, stat, errmsg)
          if (stat /= 0) return
-         x = x_free + increment
       else
          if (.not. self%saddle%holds(held_points)) then
             call self%saddle%factor(self%metric, self%contacts, held_points, stat, errmsg)
             tally%factorizations = tally%factorizations + 1
             if (stat /= 0) return
          end if
-         ! [W, -H^T; -H, 0] [d; P] = [0; -(t - H x_free)], then the same system for the
-         ! residual [-(W d - H^T P); H d - (t - H x_free)]
-         allocate (w_increment(size(x_free)), correction_multiplier(size(held_points)))
-         call self%saddle%solve([(0.0_dp, k=1, self%unknowns)], -held_target, increment, held_multiplier, &
-                                stat, errmsg)
+         ! [W, -H^T; -H, 0] [x; P] = [b; -t], then the same system for the residual
+         ! [b - W x + H^T P; H x - t], the correction added
+         allocate (residual(size(x_free)), residual_multiplier(size(held_points)), &
+                   correction_multiplier(size(held_points)))
+         call self%saddle%solve(w_x_free, -held_target, x, held_multiplier, stat, errmsg)
          if (stat /= 0) return
-         call band_matvec(self%metric, increment, w_increment)
+         call band_matvec(self%metric, x, residual)
          correction = 0
          call scatter_rows(self%contacts, held_points, held_multiplier, correction)
-         w_increment = correction - w_increment
+         residual = w_x_free - residual + correction
          do k = 1, size(held_points)
-            correction_multiplier(k) = contact_value(self%contacts, held_points(k), increment) - held_target(k)
+            residual_multiplier(k) = contact_value(self%contacts, held_points(k), x) - held_target(k)
          end do
-         call self%saddle%solve(w_increment, correction_multiplier, correction, held_target, stat, errmsg)
+         call self%saddle%solve(residual, residual_multiplier, correction, correction_multiplier, stat, errmsg)
          if (stat /= 0) return
-         increment = increment + correction
-         held_multiplier = held_multiplier + held_target   ! (held_target now holds the multipliers' correction)
-         x = x_free + increment
+         x = x + correction
+         held_multiplier = held_multiplier + correction_multiplier
       end if
       do k = 1, size(points)
          error_estimate = max(error_estimate, abs(contact_value(self%contacts, points(k), correction)))
@@ -285,18 +264,19 @@ contains
       end do
    end subroutine solve_delassus
 
-   !> Unit rows: the held unknowns j_k take x_free(j_k) + defect(k); the others solve
-   !! W_RR d_R = -W_RH d_H with the band factor of the principal submatrix W_RR; the
-   !! multipliers are P_k = (W d)_{j_k}, so that W d = H^T P holds row by row.
-   subroutine solve_reduced(self, points, defect, increment, multiplier, correction, tally, stat, errmsg)
+   !> Unit rows: the held unknowns j_k take target(k); the others solve
+   !! W_RR x_R = b_R - W_RH x_H with the band factor of the principal submatrix W_RR, then
+   !! once more for the residual b_R - (W x)_R (refinement, `correction`); the multipliers
+   !! are P_k = (W x - b)_{j_k}, so that W x - b = H^T P holds row by row.
+   subroutine solve_reduced(self, w_x_free, points, target, x, multiplier, correction, tally, stat, errmsg)
       type(contact_system), intent(inout) :: self
       integer, intent(in) :: points(:)
-      real(dp), intent(in) :: defect(:)
-      real(dp), intent(out) :: increment(:), multiplier(:), correction(:)
+      real(dp), intent(in) :: w_x_free(:), target(:)
+      real(dp), intent(out) :: x(:), multiplier(:), correction(:)
       type(solve_tally), intent(inout) :: tally
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp), allocatable :: reduced_rhs(:), w_increment(:)
+      real(dp), allocatable :: reduced_rhs(:), w_x(:)
       integer :: k, i, free_count, pass
       stat = 0
       errmsg = ''
@@ -305,19 +285,18 @@ contains
          tally%factorizations = tally%factorizations + 1
          if (stat /= 0) return
       end if
-      increment = 0
+      x = 0
       do k = 1, size(points)
-         increment(self%contacts%dofs(1, points(k))) = defect(k)
+         x(self%contacts%dofs(1, points(k))) = target(k)
       end do
-      allocate (w_increment(size(increment)))
+      allocate (w_x(size(x)))
       free_count = count(self%reduced_index > 0)
       allocate (reduced_rhs(free_count))
-      ! pass 1: W_RR d_R = -W_RH d_H; pass 2: the same for the residual -(W d)_R, added
       correction = 0
       do pass = 1, 2
-         call band_matvec(self%metric, increment, w_increment)
+         call band_matvec(self%metric, x, w_x)
          do i = 1, self%unknowns
-            if (self%reduced_index(i) > 0) reduced_rhs(self%reduced_index(i)) = -w_increment(i)
+            if (self%reduced_index(i) > 0) reduced_rhs(self%reduced_index(i)) = w_x_free(i) - w_x(i)
          end do
          if (free_count > 0) call dpbtrs('L', free_count, self%reduced_kd, 1, self%reduced_factor, &
                                          self%reduced_kd + 1, reduced_rhs, free_count, stat)
@@ -329,13 +308,13 @@ contains
          do i = 1, self%unknowns
             if (self%reduced_index(i) > 0) then
                if (pass == 2) correction(i) = reduced_rhs(self%reduced_index(i))
-               increment(i) = increment(i) + reduced_rhs(self%reduced_index(i))
+               x(i) = x(i) + reduced_rhs(self%reduced_index(i))
             end if
          end do
       end do
-      call band_matvec(self%metric, increment, w_increment)
+      call band_matvec(self%metric, x, w_x)
       do k = 1, size(points)
-         multiplier(k) = w_increment(self%contacts%dofs(1, points(k)))
+         multiplier(k) = w_x(self%contacts%dofs(1, points(k))) - w_x_free(self%contacts%dofs(1, points(k)))
       end do
    end subroutine solve_reduced
 
@@ -425,23 +404,15 @@ contains
       end if
    end subroutine factor_barrier
 
-   !> increment(k) = H_k (W + H^T D H)^-1 H^T rho with the factor of `factor_barrier`.
-   subroutine solve_barrier(self, points, rho, increment, tally)
+   !> Overwrite v with (W + H^T D H)^-1 v, the factor of `factor_barrier`.
+   subroutine solve_barrier(self, v, tally)
       class(contact_system), intent(in) :: self
-      integer, intent(in) :: points(:)
-      real(dp), intent(in) :: rho(:)
-      real(dp), intent(out) :: increment(:)
+      real(dp), intent(inout) :: v(:)
       type(solve_tally), intent(inout) :: tally
-      real(dp) :: v(self%unknowns)
-      integer :: k, info
+      integer :: info
       tally%linear_solves = tally%linear_solves + 1
-      v = 0
-      call scatter_rows(self%contacts, points, rho, v)
       call dpbtrs('L', self%unknowns, self%barrier_kd, 1, self%barrier_factor, self%barrier_kd + 1, v, &
                   self%unknowns, info)
-      do k = 1, size(points)
-         increment(k) = contact_value(self%contacts, points(k), v)
-      end do
    end subroutine solve_barrier
 
    !> v = v + sum_k H_{points(k)}^T value(k).

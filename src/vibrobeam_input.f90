@@ -411,17 +411,19 @@ contains
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      character(len=64) :: contact_solver
+      character(len=64) :: contact_solver, contact_method
       integer :: contact_max_iterations
-      namelist /solver/ contact_solver, contact_max_iterations
+      namelist /solver/ contact_solver, contact_method, contact_max_iterations
       integer :: ios
       character(len=256) :: iomsg
       contact_solver = scene%contact_solver
+      contact_method = scene%contact_method
       contact_max_iterations = scene%contact_max_iterations
       rewind (unit)
       read (unit, nml=solver, iostat=ios, iomsg=iomsg)
       call read_status(unit, 'solver', ios, iomsg, stat, errmsg)
       scene%contact_solver = lowercase(contact_solver)
+      scene%contact_method = lowercase(contact_method)
       scene%contact_max_iterations = contact_max_iterations
    end subroutine read_solver
 

@@ -62,6 +62,7 @@ module vibrobeam_scene
       real(dp) :: base_amplitude = 0, base_frequency = 0
       ! &solver (vibrobeam extension)
       character(len=16) :: contact_solver = 'auto'
+      character(len=16) :: contact_method = 'newton'   !! 'newton' | 'pivoting'
       integer :: contact_max_iterations = 0
       ! &output
       character(len=text_length) :: file = 'results/vibrobeam.h5'
@@ -190,6 +191,7 @@ contains
       call in_range('load', 'base_frequency', scene%base_frequency, 0.0_dp, huge(1.0_dp))
       ! &solver
       call one_of('solver', 'contact_solver', scene%contact_solver, [character(len=16) :: 'auto', 'delassus', 'band'])
+      call one_of('solver', 'contact_method', scene%contact_method, [character(len=16) :: 'newton', 'pivoting'])
       call integer_in_range('solver', 'contact_max_iterations', scene%contact_max_iterations, 0, huge(1))
       ! &output
       if (len_trim(scene%file) == 0) call fail('&output file is empty; give a file name such as ''results/run.h5''')
@@ -334,6 +336,7 @@ contains
       call add_real('load.base_amplitude', scene%base_amplitude, 'm')
       call add_real('load.base_frequency', scene%base_frequency, 'rad/s')
       call add_string('solver.contact_solver', scene%contact_solver)
+      call add_string('solver.contact_method', scene%contact_method)
       call add_integer('solver.contact_max_iterations', scene%contact_max_iterations)
       call add_string('output.file', scene%file)
       call add_integer('output.every', scene%every)

@@ -12,6 +12,7 @@ module vibrobeam_setup
    use vibrobeam_stepper, only: time_stepper
    use vibrobeam_velocity_stepper, only: velocity_stepper
    use vibrobeam_position_stepper, only: position_stepper
+   use vibrobeam_contact_solver, only: contact_method_code
    implicit none
    private
    public :: prepared_scene, prepare_scene, start_stepper, start_time_stepper
@@ -68,7 +69,7 @@ contains
          case ('static')
             allocate (reaction(contacts%count))
             call solve_static(model%stiffness, contacts, prepared%loads%at(0.0_dp), scene%contact_solver, &
-                              prepared%u0, reaction, iterations, stat, errmsg)
+                              prepared%u0, reaction, iterations, stat, errmsg, trim(scene%contact_method))
             if (stat /= 0) then
                errmsg = '&initial displacement = ''static'': '//trim(errmsg)
                return
@@ -102,6 +103,7 @@ contains
                         scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
                         prepared%u0, prepared%v0, stat, errmsg)
       stepper%projector%max_iterations = scene%contact_max_iterations
+      stepper%projector%method = contact_method_code(trim(scene%contact_method))
       if (scene%separating_points == 'restitution') stepper%separating_restitution = scene%restitution
    end subroutine start_stepper
 
@@ -120,6 +122,7 @@ contains
                             scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
                             prepared%u0, prepared%v0, stat, errmsg)
          position%projector%max_iterations = scene%contact_max_iterations
+         position%projector%method = contact_method_code(trim(scene%contact_method))
          call move_alloc(position, stepper)
       else
          allocate (velocity)

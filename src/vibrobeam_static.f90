@@ -45,6 +45,6 @@ contains
       else
          call projector%setup(stiffness, factor, contacts, contact_regime)
       end if
-      call projector%project_admissible(u_free, u, reaction, iterations, stat, errmsg)
+      call projector%project_admissible(u_free, u, reaction, iterations, stat, errmsg, force)
    end subroutine solve_static
 end module vibrobeam_static

@@ -167,7 +167,7 @@ contains
       call system_clock(start, rate)
       allocate (u(model%unknowns), reaction(contacts%count))
       call solve_static(model%stiffness, contacts, loads%at(0.0_dp), scene%contact_solver, u, reaction, &
-                        iterations, stat, errmsg)
+                        iterations, stat, errmsg, trim(scene%contact_method))
       if (stat /= 0) call fail(exit_numerical_failure, errmsg)
       call files%open(scene, model, stat, errmsg)
       if (stat == 0) call files%write_static(model, nodal_displacement(model, u), contacts%x, reaction, stat, errmsg)
