@@ -251,7 +251,7 @@ contains
                                            ds, dt, dy, dz, dg, y_gain, z_gain
       real(dp), dimension(size(x_free)) :: xi, r_dual, dx
       real(dp) :: mu, mu0, mu_affine, sigma, alpha, slack_floor, metric_norm
-      integer :: indicated(size(points)), previous(size(points)), pairs, iteration, k, polish
+      integer :: indicated(size(points)), previous(size(points)), pairs, iteration, polish
       stat = 0
       errmsg = ''
       has_lower = lower > -no_bound

@@ -138,7 +138,7 @@ contains
          call pivot_project(self%system, x_free, active, s, b, self%max_iterations, x, impulse, iterations, tally, &
                             stat, errmsg)
          self%iterations = self%iterations + iterations
-         side = nint(merge(s, 0.0_dp, impulse /= 0))
+         side = nint(merge(s, 0.0_dp, abs(impulse) > 0))
       end if
       self%warm_side = 0
       self%warm_side(active) = side

@@ -119,7 +119,7 @@ contains
       self%unit_rows = .true.
       spread = 0
       do c = 1, contacts%count
-         if (count(contacts%dofs(:, c) /= 0) /= 1 .or. contacts%weights(1, c) /= 1) self%unit_rows = .false.
+         if (count(contacts%dofs(:, c) /= 0) /= 1 .or. abs(contacts%weights(1, c) - 1) > 0) self%unit_rows = .false.
          spread = max(spread, maxval(contacts%dofs(:, c)) - minval(contacts%dofs(:, c), contacts%dofs(:, c) /= 0))
       end do
       self%barrier_kd = max(metric%kd, spread)

@@ -1,0 +1,41 @@
+file(REMOVE_RECURSE
+  "CMakeFiles/vibrobeam_lib.dir/generated/vibrobeam_version.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_band.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_bspline.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_cantilever_exact.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_contact_newton.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_contact_pivoting.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_contact_points.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_contact_solver.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_contact_system.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_dynamics.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_filesystem.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_hdf5.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_hermite.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_initial_state.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_input.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_kinds.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_lcp.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_loads.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_model.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_modes.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_position_stepper.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_recorder.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_results.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_saddle_band.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_scene.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_setup.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_spectrum.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_static.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_status.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_stepper.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_text.f90.o"
+  "CMakeFiles/vibrobeam_lib.dir/src/vibrobeam_velocity_stepper.f90.o"
+  "libvibrobeam_lib.a"
+  "libvibrobeam_lib.pdb"
+)
+
+# Per-language clean rules from dependency scanning.
+foreach(lang Fortran)
+  include(CMakeFiles/vibrobeam_lib.dir/cmake_clean_${lang}.cmake OPTIONAL)
+endforeach()

@@ -1,0 +1,2 @@
+# Empty compiler generated dependencies file for test_hdf5_roundtrip.
+# This may be replaced when dependencies are built.

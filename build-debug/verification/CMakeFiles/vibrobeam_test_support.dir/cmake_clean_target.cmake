@@ -1,0 +1,3 @@
+file(REMOVE_RECURSE
+  "libvibrobeam_test_support.a"
+)

@@ -1,0 +1,3 @@
+file(REMOVE_RECURSE
+  "libvibrobeam_convergence_runs.a"
+)

@@ -1,0 +1,2 @@
+# Empty compiler generated dependencies file for work_precision.
+# This may be replaced when dependencies are built.
