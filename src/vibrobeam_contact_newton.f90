@@ -58,7 +58,7 @@ module vibrobeam_contact_newton
    !! warm_minimum, at most warm_limit, and only while the number of points that change
    !! side decreases (a start far from the solution, e.g. statics from x_free, needs a few,
    !! each of which shrinks the changes; a cycling or creeping iteration does not).
-   integer, parameter :: warm_minimum = 2, warm_limit = 40
+   integer, parameter :: warm_minimum = 4, warm_limit = 40
    !> Active-set iterations of one crossover.
    integer, parameter :: polish_limit = 3
    !> Interior-point iterations before the fall-back.

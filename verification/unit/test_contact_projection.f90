@@ -14,7 +14,7 @@
 !!   solved as a dense equality-constrained QP (dense KKT system, LAPACK dgesv); the one
 !!   that satisfies every sign and bound is the solution (unique: W is positive definite
 !!   and the rows are independent);
-!! - one-sided, m up to 2000: the dense LCP of the explicitly formed Delassus matrix
+!! - one-sided, m up to 1000: the dense LCP of the explicitly formed Delassus matrix
 !!   A = S H W^-1 H^T S (W^-1 by dense Cholesky, dpotrf/dpotrs, for J <= 600; by
 !!   band solves for larger J) solved by `solve_lcp` (block principal pivoting with
 !!   Murty's rule, itself tested against enumeration in test_lcp);
@@ -95,7 +95,7 @@ program test_contact_projection
    call lcp_case(bspline_like, 12, 'delassus')
    call lcp_case(hermite_like, 300, 'band')
    call lcp_case(bspline_like, 300, 'band')
-   call lcp_case(bspline_like, 2000, 'band')
+   call lcp_case(bspline_like, 1000, 'band')
    ! 3. Hermite-like rows at m = 2000 against projected Gauss-Seidel
    call gauss_seidel_case(2000)
    ! 4. the beam's own metrics (M + theta^2 dt^2 K, and K), both bases, against the dense LCP
