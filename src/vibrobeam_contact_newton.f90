@@ -232,8 +232,10 @@ contains
    !! round-off and so have the residuals (|W x - b - H^T P| <= round_factor eps
    !! (|W| |x| + |b| + |H^T P|), |H x - s - bound| <= gap_factor eps scale), the iterate
    !! itself is the answer: P = y - z (exactly of the right sign on one-sided points), x
-   !! consistent with it to round-off, complementarity residual y_k s_k, t_k z_k. (No
-   !! correction through W^-1: for statics its solves carry no digits at N ~ 10^4.)
+   !! consistent with it to round-off, complementarity residual y_k s_k, t_k z_k; the
+   !! multipliers of the points indicated free are set to 0 when the sum of their rows
+   !! H^T P is itself within that round-off. (No correction through W^-1: for statics its
+   !! solves carry no digits at N ~ 10^4.)
    subroutine interior_point(system, x_free, w_x_free, points, lower, upper, scale, violation, side, x, multiplier, &
                              value, report, tally, stat, errmsg)
       type(contact_system), intent(inout) :: system
@@ -287,6 +289,13 @@ contains
                                      maxval(abs(w_x_free)) + maxval(abs(dx))) .and. &
              max(maxval(abs(r_lower)), maxval(abs(r_upper))) <= gap_factor*epsilon(1.0_dp)*max(scale, maxval(abs(g)))) then
             multiplier = merge(y, 0.0_dp, has_lower) - merge(z, 0.0_dp, has_upper)
+            ! the multipliers of the points indicated free are of round-off size: drop them
+            ! where the equilibrium residual stays at round-off without them
+            r_dual = 0
+            call scatter_rows(system%contacts, points, merge(multiplier, 0.0_dp, previous == 0), r_dual)
+            if (maxval(abs(r_dual)) <= round_factor*epsilon(1.0_dp)*(2*metric_norm*maxval(abs(xi)) + &
+                                        maxval(abs(w_x_free)) + maxval(abs(dx)))) &
+               where (previous == 0) multiplier = 0
             x = xi
             value = g
             side = previous

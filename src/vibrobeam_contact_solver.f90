@@ -40,6 +40,9 @@ module vibrobeam_contact_solver
    !> Largest number of contact points for which 'auto' caches the Delassus columns
    !! (measured, verification/benchmark/REPORT.md).
    integer, parameter :: delassus_limit = 16
+   !> Pivots of the fall-back per projection when `max_iterations` is 0: the pivoting's own
+   !! default, max(100, 10 m), would let a projection of 10^5 points run for hours.
+   integer, parameter :: fallback_pivot_limit = 500
 
    !> What the projection needs about the scene (set up once per run), its warm-start
    !! state, and what the last projection did.
@@ -135,7 +138,7 @@ contains
       end if
       if (self%method == method_pivoting .or. stat /= 0) then
          self%used_fallback = self%method == method_newton
-         call pivot_project(self%system, x_free, active, s, b, self%max_iterations, x, impulse, iterations, tally, &
+         call pivot_project(self%system, x_free, active, s, b, pivot_limit(self), x, impulse, iterations, tally, &
                             stat, errmsg)
          self%iterations = self%iterations + iterations
          side = nint(merge(s, 0.0_dp, abs(impulse) > 0))
@@ -173,7 +176,7 @@ contains
          end if
          if (self%method == method_pivoting .or. stat /= 0) then
             self%used_fallback = self%method == method_newton
-            call pivot_admissible(self%system, x_free, self%max_iterations, x, multiplier, iterations, tally, stat, errmsg)
+            call pivot_admissible(self%system, x_free, pivot_limit(self), x, multiplier, iterations, tally, stat, errmsg)
             self%iterations = self%iterations + iterations
             self%warm_side = 0
             where (multiplier > 0) self%warm_side = 1
@@ -184,6 +187,14 @@ contains
       self%linear_solves = tally%linear_solves
       self%factorizations = tally%factorizations
    end subroutine project_admissible
+
+   !> Pivots allowed per projection: `max_iterations` (0: the pivoting's default), or for the
+   !! fall-back of 'newton' fallback_pivot_limit when it is 0.
+   pure integer function pivot_limit(self)
+      type(contact_projector), intent(in) :: self
+      pivot_limit = self%max_iterations
+      if (self%method == method_newton .and. pivot_limit == 0) pivot_limit = fallback_pivot_limit
+   end function pivot_limit
 
    subroutine start_report(self)
       type(contact_projector), intent(inout) :: self

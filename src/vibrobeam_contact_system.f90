@@ -26,6 +26,7 @@
 !! Multipliers are signed: P_k >= 0 pushes H_k x up (a lower bound), P_k <= 0 down.
 module vibrobeam_contact_system
    use vibrobeam_kinds, only: dp
+   use vibrobeam_lapack, only: dpbtrf, dpbtrs, dpotrf, dpotrs
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_solve, band_matvec, band_entry
    use vibrobeam_contact_points, only: contact_set, contact_value
    use vibrobeam_saddle_band, only: saddle_factor
@@ -67,38 +68,6 @@ module vibrobeam_contact_system
       procedure :: solve_barrier
    end type contact_system
 
-   interface
-      subroutine dpbtrf(uplo, n, kd, ab, ldab, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, kd, ldab
-         real(dp), intent(inout) :: ab(ldab, *)
-         integer, intent(out) :: info
-      end subroutine dpbtrf
-      subroutine dpbtrs(uplo, n, kd, nrhs, ab, ldab, b, ldb, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, kd, nrhs, ldab, ldb
-         real(dp), intent(in) :: ab(ldab, *)
-         real(dp), intent(inout) :: b(ldb, *)
-         integer, intent(out) :: info
-      end subroutine dpbtrs
-      subroutine dpotrf(uplo, n, a, lda, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, lda
-         real(dp), intent(inout) :: a(lda, *)
-         integer, intent(out) :: info
-      end subroutine dpotrf
-      subroutine dpotrs(uplo, n, nrhs, a, lda, b, ldb, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, nrhs, lda, ldb
-         real(dp), intent(in) :: a(lda, *)
-         real(dp), intent(inout) :: b(ldb, *)
-         integer, intent(out) :: info
-      end subroutine dpotrs
-   end interface
 
 contains
 

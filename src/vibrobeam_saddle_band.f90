@@ -13,6 +13,7 @@
 !! on F, so the factors are kept and reused while F does not change.
 module vibrobeam_saddle_band
    use vibrobeam_kinds, only: dp
+   use vibrobeam_lapack, only: dgbtrf, dgbtrs
    use vibrobeam_band, only: symmetric_band
    use vibrobeam_contact_points, only: contact_set
    implicit none
@@ -35,23 +36,6 @@ module vibrobeam_saddle_band
       procedure :: forget
    end type saddle_factor
 
-   interface
-      subroutine dgbtrf(m, n, kl, ku, ab, ldab, ipiv, info)
-         import :: dp
-         integer, intent(in) :: m, n, kl, ku, ldab
-         real(dp), intent(inout) :: ab(ldab, *)
-         integer, intent(out) :: ipiv(*), info
-      end subroutine dgbtrf
-      subroutine dgbtrs(trans, n, kl, ku, nrhs, ab, ldab, ipiv, rhs, ldb, info)
-         import :: dp
-         character, intent(in) :: trans
-         integer, intent(in) :: n, kl, ku, nrhs, ldab, ldb
-         real(dp), intent(in) :: ab(ldab, *)
-         integer, intent(in) :: ipiv(*)
-         real(dp), intent(inout) :: rhs(ldb, *)
-         integer, intent(out) :: info
-      end subroutine dgbtrs
-   end interface
 
 contains
 

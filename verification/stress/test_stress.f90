@@ -48,35 +48,10 @@ program test_stress
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_matvec, band_solve, band_entry, band_factor
    use vibrobeam_contact_points, only: contact_set, contact_value, no_bound
    use vibrobeam_static, only: solve_static
-   use vibrobeam_lcp, only: solve_lcp
-   use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
+   use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene, band_abs_times, band_condition, &
+                                     dense_lcp_reference
    implicit none
 
-   interface
-      subroutine dpbcon(uplo, n, kd, ab, ldab, anorm, rcond, work, iwork, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, kd, ldab
-         real(dp), intent(in) :: ab(ldab, *), anorm
-         real(dp), intent(out) :: rcond, work(*)
-         integer, intent(out) :: iwork(*), info
-      end subroutine dpbcon
-      subroutine dpotrf(uplo, n, a, lda, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, lda
-         real(dp), intent(inout) :: a(lda, *)
-         integer, intent(out) :: info
-      end subroutine dpotrf
-      subroutine dpotrs(uplo, n, nrhs, a, lda, b, ldb, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, nrhs, lda, ldb
-         real(dp), intent(in) :: a(lda, *)
-         real(dp), intent(inout) :: b(ldb, *)
-         integer, intent(out) :: info
-      end subroutine dpotrs
-   end interface
 
    type(test_counter) :: t
    type(scene_type) :: scene
@@ -105,21 +80,6 @@ contains
       rounding_gamma = n*epsilon(1.0_dp)/(1 - n*epsilon(1.0_dp))
    end function rounding_gamma
 
-   !> |A| |v| for a symmetric band matrix.
-   function abs_times(a, v) result(y)
-      type(symmetric_band), intent(in) :: a
-      real(dp), intent(in) :: v(:)
-      real(dp) :: y(size(v))
-      integer :: i, j
-      y = 0
-      do j = 1, a%n
-         y(j) = y(j) + abs(a%lower(1, j))*abs(v(j))
-         do i = j + 1, min(a%n, j + a%kd)
-            y(i) = y(i) + abs(a%lower(1 + i - j, j))*abs(v(j))
-            y(j) = y(j) + abs(a%lower(1 + i - j, j))*abs(v(i))
-         end do
-      end do
-   end function abs_times
 
    !> |L| |L^T| |v| for a band Cholesky factor (lower storage).
    function abs_factor_times(f, v) result(y)
@@ -164,16 +124,6 @@ contains
       end do
    end function rows_transpose
 
-   !> Estimated condition number of the SPD band matrix a (dpbcon on its factor).
-   real(dp) function condition(a, f)
-      type(symmetric_band), intent(in) :: a
-      type(band_cholesky), intent(in) :: f
-      real(dp) :: rcond, work(3*a%n), ones(a%n)
-      integer :: iwork(a%n), info
-      ones = 1
-      call dpbcon('L', a%n, a%kd, f%factor, a%kd + 1, maxval(abs_times(a, ones)), rcond, work, iwork, info)
-      condition = 1/max(rcond, tiny(1.0_dp))
-   end function condition
 
    subroutine dynamic_checks(scene)
       type(scene_type), intent(in) :: scene
@@ -199,7 +149,7 @@ contains
       type is (velocity_stepper)
          separating = stepper%separating_restitution
       end select
-      kappa = condition(stepper%iteration_matrix, stepper%iteration_factor)
+      kappa = band_condition(stepper%iteration_matrix, stepper%iteration_factor)
       steps = nint(scene%t_end/scene%dt)
       e0 = stepper%kinetic_energy() + stepper%elastic_energy()
       e_old = e0
@@ -244,10 +194,10 @@ contains
             call band_solve(stepper%iteration_factor, v_f)
             v_f = stepper%v - v_f
             scale = abs_factor_times(stepper%iteration_factor, v_f - v_old) &
-                    + abs_times(stepper%iteration_matrix, abs(v_f) + abs(stepper%v)) &
+                    + band_abs_times(stepper%iteration_matrix, abs(v_f) + abs(stepper%v)) &
                     + rows_transpose(contacts, stepper%active(1:m), stepper%impulse(1:m), .true., size(dv)) + dt*abs(f_bar) &
-                    + dt*abs_times(stepper%stiffness, abs(u_old) + 0.5_dp*dt*abs(v_old)) &
-                    + abs_times(stepper%mass, dv) + dt*abs_times(stepper%stiffness, u_bar)
+                    + dt*band_abs_times(stepper%stiffness, abs(u_old) + 0.5_dp*dt*abs(v_old)) &
+                    + band_abs_times(stepper%mass, dv) + dt*band_abs_times(stepper%stiffness, u_bar)
             worst_residual = max(worst_residual, maxval(abs(rho)/(2*rounding_gamma(12)*scale + tiny(1.0_dp))))
             if (any(abs(rho) > 2*rounding_gamma(12)*scale)) consistent = .false.
             ! 3. complementarity and 4. the active constraints
@@ -282,8 +232,8 @@ contains
             rise = de - dot_product(f_bar, du)
             bound = 0.5_dp*comp_bound + 2*rounding_gamma(12)*dot_product(abs(v_bar), scale) &
                     + epsilon(1.0_dp)*dot_product(abs(k_u - f_bar), abs(stepper%u)) &
-                    + rounding_gamma(9)*(dot_product(abs(v_bar), abs_times(stepper%mass, dv)) &
-                                + dot_product(abs(u_bar), abs_times(stepper%stiffness, du))) &
+                    + rounding_gamma(9)*(dot_product(abs(v_bar), band_abs_times(stepper%mass, dv)) &
+                                + dot_product(abs(u_bar), band_abs_times(stepper%stiffness, du))) &
                     + rounding_gamma(size(du))*dot_product(abs(f_bar), abs(du))
             if (rise > bound) below_bound = .false.
             e_scale = max(e_scale, e_old)
@@ -324,10 +274,9 @@ contains
       type(scene_type) :: scene
       type(prepared_scene) :: prepared
       type(band_cholesky) :: factor
-      real(dp), allocatable :: u(:), r(:), u_ref(:), r_ref(:), f(:), residual(:), dense(:, :), columns(:, :), &
-                               a(:, :), q(:), z(:), w(:)
+      real(dp), allocatable :: u(:), r(:), u_ref(:), r_ref(:), f(:), residual(:)
       real(dp) :: tol, kappa, scale, value, force_scale
-      integer :: stat, iterations, m, j, i, c, l, info, pass
+      integer :: stat, iterations, m, c, pass
       character(len=512) :: errmsg
       character(len=160) :: detail
       scene = scene_in
@@ -341,12 +290,12 @@ contains
             call solve_static(stiffness, contacts, f, 'band', u, r, iterations, stat, errmsg, 'newton')
             call t%check_true('solve_static succeeds', stat == 0, trim(errmsg))
             call band_factor(stiffness, factor, stat, errmsg)
-            kappa = condition(stiffness, factor)
+            kappa = band_condition(stiffness, factor)
             ! equilibrium K u - F = H^T R, to the round-off of the products
             allocate (residual(stiffness%n))
             call band_matvec(stiffness, u, residual)
             residual = residual - f - rows_transpose(contacts, [(c, c=1, m)], r, .false., stiffness%n)
-            scale = maxval(abs_times(stiffness, u)) + maxval(abs(f)) + &
+            scale = maxval(band_abs_times(stiffness, u)) + maxval(abs(f)) + &
                     maxval(rows_transpose(contacts, [(c, c=1, m)], r, .true., stiffness%n))
             write (detail, '(a,es10.3,a,es10.3)') '|K u - F - H^T R| = ', maxval(abs(residual)), ', bound ', &
                2*rounding_gamma(12)*scale
@@ -366,34 +315,11 @@ contains
             write (output_unit, '(a,i0,a,i0,a,i0,a,es9.2,a,es12.5)') 'static N = ', scene%elements, ': ', &
                count(abs(r) > 0), ' of ', m, ' points in contact; cond(K) ', kappa, '; sum of reactions ', sum(r)
             if (pass == 1) then
-               ! dense reference: A = H K^-1 H^T (dense Cholesky), q = H K^-1 F - lower (one-sided floor)
+               ! dense reference: the LCP of A = H K^-1 H^T (dense Cholesky), q = H K^-1 F - lower
                if (any(contacts%upper < no_bound)) error stop 'static reference: one-sided bounds only'
-               allocate (dense(stiffness%n, stiffness%n), columns(stiffness%n, m + 1), a(m, m), q(m), z(m), w(m))
-               do j = 1, stiffness%n
-                  do i = 1, stiffness%n
-                     dense(i, j) = band_entry(stiffness, i, j)
-                  end do
-               end do
-               columns = 0
-               do c = 1, m
-                  do l = 1, 4
-                     if (contacts%dofs(l, c) /= 0) columns(contacts%dofs(l, c), c) = contacts%weights(l, c)
-                  end do
-               end do
-               columns(:, m + 1) = f
-               call dpotrf('L', stiffness%n, dense, stiffness%n, info)
-               call dpotrs('L', stiffness%n, m + 1, dense, stiffness%n, columns, stiffness%n, info)
-               do l = 1, m
-                  do c = 1, m
-                     a(c, l) = contact_value(contacts, c, columns(:, l))
-                  end do
-                  q(l) = contact_value(contacts, l, columns(:, m + 1)) - contacts%lower(l)
-               end do
-               a = 0.5_dp*(a + transpose(a))
-               call solve_lcp(a, q, z, w, iterations, stat, errmsg)
+               allocate (u_ref(stiffness%n), r_ref(m))
+               call dense_lcp_reference(stiffness, contacts, [(1.0_dp, c=1, m)], u_ref, r_ref, stat, errmsg, load=f)
                call t%check_true('dense LCP reference solves', stat == 0, trim(errmsg))
-               r_ref = z
-               u_ref = columns(:, m + 1) + matmul(columns(:, 1:m), z)
                tol = 4*(stiffness%n + m)*epsilon(1.0_dp)*kappa
                write (output_unit, '(a,es10.3,a,es10.3,a,es10.3)') '  against the dense LCP: |u - u_ref|/|u_ref| ', &
                   maxval(abs(u - u_ref))/maxval(abs(u_ref)), ', |R - R_ref|/|R_ref| ', &

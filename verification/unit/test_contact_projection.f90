@@ -41,42 +41,11 @@ program test_contact_projection
                              band_matvec, band_solve
    use vibrobeam_contact_points, only: contact_set, contact_value, no_bound
    use vibrobeam_contact_solver, only: contact_projector
-   use vibrobeam_lcp, only: solve_lcp
    use vibrobeam_model, only: beam_model, build_model, node_row
-   use vibrobeam_test_support, only: test_counter
+   use vibrobeam_test_support, only: test_counter, band_abs_times, band_condition, dense_lcp_reference
+   use vibrobeam_lapack, only: dgesv
    implicit none
 
-   interface
-      subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
-         import :: dp
-         integer, intent(in) :: n, nrhs, lda, ldb
-         real(dp), intent(inout) :: a(lda, *), b(ldb, *)
-         integer, intent(out) :: ipiv(*), info
-      end subroutine dgesv
-      subroutine dpotrf(uplo, n, a, lda, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, lda
-         real(dp), intent(inout) :: a(lda, *)
-         integer, intent(out) :: info
-      end subroutine dpotrf
-      subroutine dpotrs(uplo, n, nrhs, a, lda, b, ldb, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, nrhs, lda, ldb
-         real(dp), intent(in) :: a(lda, *)
-         real(dp), intent(inout) :: b(ldb, *)
-         integer, intent(out) :: info
-      end subroutine dpotrs
-      subroutine dpbcon(uplo, n, kd, ab, ldab, anorm, rcond, work, iwork, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, kd, ldab
-         real(dp), intent(in) :: ab(ldab, *), anorm
-         real(dp), intent(out) :: rcond, work(*)
-         integer, intent(out) :: iwork(*), info
-      end subroutine dpbcon
-   end interface
 
    integer, parameter :: hermite_like = 1, bspline_like = 2
    type(test_counter) :: t
@@ -168,28 +137,11 @@ contains
       if (maxval(contacts%dofs) > n) error stop 'random_rows: too few unknowns'
    end function random_rows
 
-   !> Estimated condition number (1-norm) of the SPD band matrix w from its factor.
-   real(dp) function condition(w, factor)
-      type(symmetric_band), intent(in) :: w
-      type(band_cholesky), intent(in) :: factor
-      real(dp) :: rcond, work(3*w%n), norm1
-      integer :: iwork(w%n), info, j
-      norm1 = 0
-      do j = 1, w%n
-         norm1 = max(norm1, sum([(abs(band_entry(w, j, k)), k=max(1, j - w%kd), min(w%n, j + w%kd))]))
-      end do
-      call dpbcon('L', w%n, w%kd, factor%factor, w%kd + 1, norm1, rcond, work, iwork, info)
-      condition = 1/max(rcond, tiny(1.0_dp))
-   end function condition
 
    !> |W|_inf.
    real(dp) function norm_inf(w)
       type(symmetric_band), intent(in) :: w
-      integer :: j
-      norm_inf = 0
-      do j = 1, w%n
-         norm_inf = max(norm_inf, sum([(abs(band_entry(w, j, k)), k=max(1, j - w%kd), min(w%n, j + w%kd))]))
-      end do
+      norm_inf = maxval(band_abs_times(w, [(1.0_dp, k=1, w%n)]))
    end function norm_inf
 
    !> Solve with the projector: one-sided through `project` (all points, side s_k), or
@@ -277,6 +229,32 @@ contains
       end do
    end subroutine compare
 
+   !> Random x_free (uniform in [-1, 1]), sides (70 % from below) and bounds within 0.6 of
+   !! the free values, so that some hold and some do not; two-sided: an upper bound 0.1 to
+   !! 0.6 above the lower one, absent for a fifth of the points.
+   subroutine random_bounds(contacts, n, one_sided, x_free, s)
+      type(contact_set), intent(inout) :: contacts
+      integer, intent(in) :: n
+      logical, intent(in) :: one_sided
+      real(dp), allocatable, intent(out) :: x_free(:), s(:)
+      integer :: c
+      allocate (x_free(n), s(contacts%count))
+      do c = 1, n
+         x_free(c) = 2*uniform() - 1
+      end do
+      do c = 1, contacts%count
+         s(c) = merge(1.0_dp, -1.0_dp, uniform() < 0.7_dp)
+         contacts%lower(c) = contact_value(contacts, c, x_free) + 0.6_dp*(2*uniform() - 1)
+         contacts%upper(c) = contacts%lower(c) + 0.1_dp + 0.5_dp*uniform()
+         if (one_sided) then
+            if (s(c) > 0) contacts%upper(c) = no_bound
+            if (s(c) < 0) contacts%lower(c) = -no_bound
+         else if (uniform() < 0.2_dp) then
+            contacts%upper(c) = no_bound   ! a point with one side only
+         end if
+      end do
+   end subroutine random_bounds
+
    !> A small random problem against enumeration.
    subroutine small_case(kind, one_sided, regime)
       integer, intent(in) :: kind
@@ -292,28 +270,15 @@ contains
       n = merge(2*m + 2, m + 3, kind == hermite_like)
       w = random_metric(n)
       contacts = random_rows(kind, m, n)
-      allocate (x_free(n), s(m), x(n), p(m), x_ref(n), p_ref(m))
-      do c = 1, n
-         x_free(c) = 2*uniform() - 1
-      end do
-      do c = 1, m
-         s(c) = merge(1.0_dp, -1.0_dp, uniform() < 0.7_dp)
-         ! bounds near the free values, so that some hold and some do not
-         contacts%lower(c) = contact_value(contacts, c, x_free) + 0.6_dp*(2*uniform() - 1)
-         contacts%upper(c) = contacts%lower(c) + 0.1_dp + 0.5_dp*uniform()
-         if (one_sided) then
-            if (s(c) > 0) contacts%upper(c) = no_bound
-            if (s(c) < 0) contacts%lower(c) = -no_bound
-         else if (uniform() < 0.2_dp) then
-            contacts%upper(c) = no_bound   ! a point with one side only
-         end if
-      end do
+      allocate (x(n), p(m), x_ref(n), p_ref(m))
+      call random_bounds(contacts, n, one_sided, x_free, s)
       call solve_with_projector(w, contacts, regime, x_free, one_sided, s, x, p)
       call enumerate(w, contacts, x_free, x_ref, p_ref)
       call band_factor(w, factor, stat, errmsg)
       call compare('small '//trim(merge('hermite-like', 'bspline-like', kind == hermite_like))//' '// &
                    trim(merge('one-sided', 'two-sided', one_sided))//' '//trim(regime), &
-                   w, contacts, x_free, one_sided, s, x, p, x_ref, p_ref, condition(w, factor)*merge(1, 9, kind == hermite_like))
+                   w, contacts, x_free, one_sided, s, x, p, x_ref, p_ref, &
+                   band_condition(w, factor)*merge(1, 9, kind == hermite_like))
    end subroutine small_case
 
    !> Every assignment of the points to {lower, free, upper}, each an equality-constrained
@@ -392,23 +357,14 @@ contains
       n = merge(2*m + 2, m + 3, kind == hermite_like)
       w = random_metric(n)
       contacts = random_rows(kind, m, n)
-      allocate (x_free(n), s(m), x(n), p(m), x_ref(n), p_ref(m))
-      do c = 1, n
-         x_free(c) = 2*uniform() - 1
-      end do
-      do c = 1, m
-         s(c) = merge(1.0_dp, -1.0_dp, uniform() < 0.7_dp)
-         contacts%lower(c) = contact_value(contacts, c, x_free) + 0.6_dp*(2*uniform() - 1)
-         contacts%upper(c) = contacts%lower(c)
-         if (s(c) > 0) contacts%upper(c) = no_bound
-         if (s(c) < 0) contacts%lower(c) = -no_bound
-      end do
+      allocate (x(n), p(m), x_ref(n), p_ref(m))
+      call random_bounds(contacts, n, .true., x_free, s)
       call solve_with_projector(w, contacts, regime, x_free, .true., s, x, p)
       call lcp_reference(w, contacts, x_free, s, x_ref, p_ref)
       call band_factor_checked(w, factor)
       write (label, '(a,i0,a)') 'LCP reference, m = ', m, ' '//trim(regime)
       call compare(trim(label), w, contacts, x_free, .true., s, x, p, x_ref, p_ref, &
-                   condition(w, factor)*merge(1, 9, kind == hermite_like))
+                   band_condition(w, factor)*merge(1, 9, kind == hermite_like))
    end subroutine lcp_case
 
    subroutine band_factor_checked(w, factor)
@@ -420,53 +376,16 @@ contains
       if (stat /= 0) error stop 'band_factor failed'
    end subroutine band_factor_checked
 
-   !> Dense Delassus matrix A = S H W^-1 H^T S (W^-1 H^T by dense Cholesky for J <= 600,
-   !! by band solves beyond), q = s (H x_free - b), `solve_lcp`; P = s z,
-   !! x = x_free + W^-1 H^T P.
+   !> The dense LCP reference (`dense_lcp_reference`, test_support).
    subroutine lcp_reference(w, contacts, x_free, s, x_ref, p_ref)
       type(symmetric_band), intent(in) :: w
       type(contact_set), intent(in) :: contacts
       real(dp), intent(in) :: x_free(:), s(:)
       real(dp), intent(out) :: x_ref(:), p_ref(:)
-      real(dp), allocatable :: columns(:, :), dense(:, :), a(:, :), q(:), z(:), wz(:)
-      type(band_cholesky) :: factor
-      integer :: m, n, c, l, i, j, info, iterations, stat
+      integer :: stat
       character(len=256) :: errmsg
-      m = contacts%count
-      n = w%n
-      allocate (columns(n, m), a(m, m), q(m), z(m), wz(m))
-      columns = 0
-      do c = 1, m
-         do l = 1, 4
-            if (contacts%dofs(l, c) /= 0) columns(contacts%dofs(l, c), c) = contacts%weights(l, c)
-         end do
-      end do
-      if (n <= 600) then
-         allocate (dense(n, n))
-         do j = 1, n
-            do i = 1, n
-               dense(i, j) = band_entry(w, i, j)
-            end do
-         end do
-         call dpotrf('L', n, dense, n, info)
-         call dpotrs('L', n, m, dense, n, columns, n, info)
-      else
-         call band_factor_checked(w, factor)
-         do c = 1, m
-            call band_solve(factor, columns(:, c))
-         end do
-      end if
-      do l = 1, m
-         do c = 1, m
-            a(c, l) = s(c)*s(l)*contact_value(contacts, c, columns(:, l))
-         end do
-         q(l) = s(l)*(contact_value(contacts, l, x_free) - merge(contacts%lower(l), contacts%upper(l), s(l) > 0))
-      end do
-      a = 0.5_dp*(a + transpose(a))
-      call solve_lcp(a, q, z, wz, iterations, stat, errmsg)
+      call dense_lcp_reference(w, contacts, s, x_ref, p_ref, stat, errmsg, x_free=x_free)
       call t%check_true('dense LCP reference solves', stat == 0, trim(errmsg))
-      p_ref = s*z
-      x_ref = x_free + matmul(columns, p_ref)
    end subroutine lcp_reference
 
    !> Hermite-like one-sided rows at m points against projected Gauss-Seidel on x.
@@ -523,7 +442,7 @@ contains
       p_ref = [(w_x(2*c - 1) - w_free(2*c - 1), c=1, m)]
       call band_factor_checked(w, factor)
       call compare('projected Gauss-Seidel reference, m = 2000', w, contacts, x_free, .true., s, x, p, x_ref, p_ref, &
-                   condition(w, factor))
+                   band_condition(w, factor))
    end subroutine gauss_seidel_case
 
    !> The beam's own metric (dt > 0: M + (dt/2)^2 K; dt < 0: K) with a floor at every node
@@ -568,6 +487,6 @@ contains
       call band_factor_checked(w, factor)
       write (label, '(a,i0,a)') 'beam metric '//basis//', N = ', elements, merge(' (dynamics)', ' (statics) ', dt > 0)
       call compare(trim(label), w, contacts, x_free, .true., s, x, p, x_ref, p_ref, &
-                   condition(w, factor)*merge(1, 9, basis == 'hermite'))
+                   band_condition(w, factor)*merge(1, 9, basis == 'hermite'))
    end subroutine beam_case
 end program test_contact_projection

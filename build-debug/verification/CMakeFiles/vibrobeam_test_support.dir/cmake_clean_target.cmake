@@ -1,3 +1,0 @@
-file(REMOVE_RECURSE
-  "libvibrobeam_test_support.a"
-)

@@ -1,3 +1,0 @@
-file(REMOVE_RECURSE
-  "libvibrobeam_convergence_runs.a"
-)
