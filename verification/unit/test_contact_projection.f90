@@ -264,7 +264,7 @@ contains
       type(band_cholesky) :: factor
       type(contact_set) :: contacts
       real(dp), allocatable :: x_free(:), s(:), x(:), p(:), x_ref(:), p_ref(:)
-      integer :: m, n, c, stat
+      integer :: m, n, stat
       character(len=64) :: errmsg
       m = 2 + int(5*uniform())
       n = merge(2*m + 2, m + 3, kind == hermite_like)
@@ -352,7 +352,7 @@ contains
       type(band_cholesky) :: factor
       type(contact_set) :: contacts
       real(dp), allocatable :: x_free(:), s(:), x(:), p(:), x_ref(:), p_ref(:)
-      integer :: n, c
+      integer :: n
       character(len=32) :: label
       n = merge(2*m + 2, m + 3, kind == hermite_like)
       w = random_metric(n)
