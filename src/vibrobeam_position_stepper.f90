@@ -97,6 +97,8 @@ contains
          u_free = rhs
          z_free = (u_free + e*u_old)/(1 + e)
          call self%projector%project_admissible(z_free, z, self%multiplier, self%iterations, stat, errmsg)
+         self%linear_solves = self%projector%linear_solves
+         self%used_fallback = self%projector%used_fallback
          if (stat /= 0) return
          u_new = (1 + e)*z - e*u_old
          if (.not. ieee_is_finite(sum(u_new))) then

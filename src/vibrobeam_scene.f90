@@ -80,6 +80,7 @@ module vibrobeam_scene
       real(dp) :: base_amplitude = 0, base_frequency = 0
       ! &solver (vibrobeam extension)
       character(len=keyword_length) :: contact_solver = 'auto'
+      character(len=keyword_length) :: contact_method = 'newton'   !! 'newton' | 'pivoting'
       integer :: contact_max_iterations = 0
       ! &output
       character(len=path_length) :: file = 'results/vibrobeam.h5'
@@ -188,6 +189,7 @@ contains
          real_variable('load', 'base_amplitude', -1e6_dp, 1e6_dp, 'm'), &
          real_variable('load', 'base_frequency', 0.0_dp, 1e15_dp, 'rad/s'), &
          keyword_variable('solver', 'contact_solver', 'auto|delassus|band'), &
+         keyword_variable('solver', 'contact_method', 'newton|pivoting'), &
          integer_variable('solver', 'contact_max_iterations', 0, many), &
          path_variable('output', 'file'), &
          integer_variable('output', 'every', 1, many), &
@@ -336,6 +338,7 @@ contains
       call check_real('load', 'base_frequency', scene%base_frequency)
       ! &solver
       call check_keyword('solver', 'contact_solver', scene%contact_solver)
+      call check_keyword('solver', 'contact_method', scene%contact_method)
       call check_integer('solver', 'contact_max_iterations', scene%contact_max_iterations)
       ! &output
       if (len_trim(scene%file) == 0) call fail('&output file = '''' is empty: give a file name such as ''results/run.h5''')
@@ -512,6 +515,7 @@ contains
       call add_real('load.base_amplitude', scene%base_amplitude, 'm')
       call add_real('load.base_frequency', scene%base_frequency, 'rad/s')
       call add_string('solver.contact_solver', scene%contact_solver)
+      call add_string('solver.contact_method', scene%contact_method)
       call add_integer('solver.contact_max_iterations', scene%contact_max_iterations)
       call add_string('output.file', scene%file)
       call add_integer('output.every', scene%every)

@@ -127,6 +127,8 @@ contains
          ! 3. projection
          call self%projector%project(v_free, self%active(1:m), signs(1:m), offsets(1:m), v_new, &
                                      self%impulse(1:m), self%iterations, stat, errmsg)
+         self%linear_solves = self%projector%linear_solves
+         self%used_fallback = self%projector%used_fallback
          if (stat /= 0) return
          ! 4. positions
          v_theta = theta*v_new + (1 - theta)*self%v

@@ -41,7 +41,7 @@ module vibrobeam_roundoff_bounds
    use vibrobeam_position_stepper, only: position_stepper
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
-   use vibrobeam_test_support, only: read_test_scene, prepare_test_scene
+   use vibrobeam_test_support, only: read_test_scene, prepare_test_scene, abs_factor_times
    implicit none
    private
    public :: unit_roundoff, gamma_n, abs_band_times, abs_factor_times, energy_form_bound, stepper_energy_bound
@@ -100,26 +100,6 @@ contains
          end do
       end do
    end function abs_band_times
-
-   !> |L| |L^T| |x| for a band Cholesky factor (lower band storage, as dpbtrf leaves it).
-   pure function abs_factor_times(chol, x) result(y)
-      type(band_cholesky), intent(in) :: chol
-      real(dp), intent(in) :: x(:)
-      real(dp) :: y(size(x)), z(size(x))
-      integer :: i, j
-      z = 0   ! |L^T| |x|: z_j = sum_{i >= j} |L_ij| |x_i|
-      do j = 1, chol%n
-         do i = j, min(chol%n, j + chol%kd)
-            z(j) = z(j) + abs(chol%factor(1 + i - j, j)*x(i))
-         end do
-      end do
-      y = 0   ! |L| z: y_i = sum_{j <= i} |L_ij| z_j
-      do j = 1, chol%n
-         do i = j, min(chol%n, j + chol%kd)
-            y(i) = y(i) + abs(chol%factor(1 + i - j, j))*z(j)
-         end do
-      end do
-   end function abs_factor_times
 
    !> Bound of |fl(1/2 x^T A x) - 1/2 x^T A x| for the product dot(x, dsbmv(A, x)) (1.).
    function energy_form_bound(a, x) result(bound)

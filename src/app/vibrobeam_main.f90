@@ -232,7 +232,7 @@ contains
       call meter%init(scene%progress)
       allocate (u(model%unknowns), reaction(contacts%count))
       call solve_static(model%stiffness, contacts, loads%at(0.0_dp), scene%contact_solver, u, reaction, &
-                        iterations, stat, errmsg, scene%contact_max_iterations)
+                        iterations, stat, errmsg, scene%contact_max_iterations, trim(scene%contact_method))
       if (stat /= 0) call fail(exit_numerical_failure, errmsg)
       call files%open(scene, model, stat, errmsg)
       if (stat == 0) call files%write_static(nodal_displacement(model, u), contacts%x, reaction, stat, errmsg)
