@@ -38,7 +38,7 @@ module vibrobeam_contact_solver
 
    integer, parameter :: method_newton = 1, method_pivoting = 2
    !> Largest number of contact points for which 'auto' caches the Delassus columns
-   !! (measured, verification/benchmark/REPORT.md).
+   !! (measured, studies/benchmark/REPORT.md).
    integer, parameter :: delassus_limit = 16
    !> Pivots of the fall-back per projection when `max_iterations` is 0: the pivoting's own
    !! default, max(100, 10 m), would let a projection of 10^5 points run for hours.

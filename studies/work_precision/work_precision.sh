@@ -3,20 +3,20 @@
 # {velocity, position} x {theta = 1/2, 1} over a range of N and dt, on (a) free vibration
 # against the closed form and (b) inputs/looseness_tip_stops.nml over [0, 10 ms] against a
 # converged fine run. Builds the study program (Release), runs it and regenerates the
-# committed results in verification/work_precision/: work_precision_{free,impacts}.txt
-# (tables), .dat (gnuplot blocks) and .png. Discussion: verification/work_precision/REPORT.md.
+# committed results in studies/work_precision/: work_precision_{free,impacts}.txt
+# (tables), .dat (gnuplot blocks) and .png. Discussion: studies/work_precision/REPORT.md.
 #
-# usage: scripts/work_precision.sh [BUILD_DIR]   (default: build, relative to the repository
+# usage: studies/work_precision/work_precision.sh [BUILD_DIR]   (default: build, relative to the repository
 #        root like the other scripts; the study itself takes about 3 min on one core)
 # needs: cmake, a Fortran compiler, the project's libraries, gnuplot (pngcairo terminal)
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 build=${1:-build}
-results=verification/work_precision
+results=studies/work_precision
 
 source scripts/build_release.sh
 build_release "$build" work_precision
-program=$build/verification/work_precision/work_precision
+program=$build/studies/work_precision/work_precision
 
 # The machine the timings come from (appended to both tables).
 machine_notes() {

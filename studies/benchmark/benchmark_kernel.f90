@@ -1,5 +1,5 @@
 !> Benchmark of the band kernel and of the natural modes (KERNEL_REPORT.md beside this
-!! file; scripts/benchmark_kernel.sh runs every part under both BLAS libraries).
+!! file; studies/benchmark/benchmark_kernel.sh runs every part under both BLAS libraries).
 !!
 !!   benchmark_kernel kernel                      wall-clock table, J = 40 ... 1e5
 !!   benchmark_kernel count WORKLOAD J CALLS      CALLS calls of one workload, for

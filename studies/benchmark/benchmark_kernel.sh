@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Benchmark of the band kernel of bandwidth 3 and of the natural modes
-# (verification/benchmark/KERNEL_REPORT.md). Under the reference BLAS/LAPACK and under
+# (studies/benchmark/KERNEL_REPORT.md). Under the reference BLAS/LAPACK and under
 # OpenBLAS (chosen with LD_LIBRARY_PATH, same binary):
 #  1. wall clock: LAPACK dpbtrs + BLAS dsbmv against band_solve + band_matvec (the kd = 3
 #     kernels), against band_residual_solve (the two fused in one pass) and against one
@@ -13,17 +13,17 @@
 #     `kind = 'modes'` runs of the vibrobeam executable at N = 1000, 3000, 1e4, 1e5;
 #  5. the crossover table of the two modes paths (dense_is_cheaper).
 # Builds Release (-O2) in BUILD_DIR, runs for about 10 minutes (valgrind, the dense path at
-# N = 3000) and writes verification/benchmark/benchmark_kernel.txt.
-#   usage: scripts/benchmark_kernel.sh [BUILD_DIR]      (default: build)
+# N = 3000) and writes studies/benchmark/benchmark_kernel.txt.
+#   usage: studies/benchmark/benchmark_kernel.sh [BUILD_DIR]      (default: build)
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 build=${1:-build}
-table=verification/benchmark/benchmark_kernel.txt
+table=studies/benchmark/benchmark_kernel.txt
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 
 source scripts/build_release.sh
 build_release "$build" benchmark_kernel vibrobeam
-program=$build/verification/benchmark/benchmark_kernel
+program=$build/studies/benchmark/benchmark_kernel
 fortran=$(sed -n 's/^CMAKE_Fortran_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")
 libraries=(reference /usr/lib/x86_64-linux-gnu/blas:/usr/lib/x86_64-linux-gnu/lapack
            openblas /usr/lib/x86_64-linux-gnu/openblas-pthread)
@@ -57,7 +57,7 @@ timed() {
 }
 
 {
-  echo "# benchmark_kernel: scripts/benchmark_kernel.sh, $(date -u +%Y-%m-%dT%H:%MZ)"
+  echo "# benchmark_kernel: studies/benchmark/benchmark_kernel.sh, $(date -u +%Y-%m-%dT%H:%MZ)"
   for ((l = 0; l < ${#libraries[@]}; l += 2)); do
     name=${libraries[l]}
     export LD_LIBRARY_PATH=${libraries[l + 1]}

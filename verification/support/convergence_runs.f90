@@ -1,6 +1,6 @@
-!> The runs of the self-convergence study (self_convergence.f90, REPORT.md in this
-!! directory): run the velocity-based stepper on a variant of a scene, keep the histories
-!! that the comparisons need (tip, sample points, energy, impact events) and compare a run
+!> The runs of the self-convergence study (studies/convergence: self_convergence.f90,
+!! REPORT.md), shared with its test verification/dynamics/test_first_episode.f90: run the
+!! velocity-based stepper on a variant of a scene, keep the histories that the comparisons need (tip, sample points, energy, impact events) and compare a run
 !! with a finer one. The error measures are defined in self_convergence.f90's header.
 module vibrobeam_convergence_runs
    use vibrobeam_kinds, only: dp, int64, error_unit, output_unit

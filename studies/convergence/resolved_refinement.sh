@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Refinement of the two-stop looseness scene with time steps that resolve the mesh: the
-# follow-up of scripts/convergence_study.sh (verification/convergence/REPORT.md, section
+# follow-up of studies/convergence/convergence_study.sh (studies/convergence/REPORT.md, section
 # "Resolved time steps"). Every run is the bundled scene inputs/looseness_tip_stops.nml
 # with only `elements`, `dt`, `t_end`, `restitution`, `scheme`, `velocity_amplitude` and
 # the output file and interval changed, run by the vibrobeam executable itself; the
@@ -20,18 +20,18 @@
 #   E. the sensitivity to the data: the initial velocity perturbed by a relative 1e-10 ... 1e-5.
 # (D and E are printed before C, which holds the longest runs.)
 #
-# usage: scripts/resolved_refinement.sh [BUILD_DIR]   (default: build, relative to the repository
+# usage: studies/convergence/resolved_refinement.sh [BUILD_DIR]   (default: build, relative to the repository
 #        root like the other scripts; about 10 min on 2 cores,
 #        of which 6 min for the two runs at N = 128)
-#        scripts/resolved_refinement.sh --plot-only     (redraws the figure from the table)
-# writes verification/convergence/resolved_refinement.txt and resolved_refinement_dissipation.png
+#        studies/convergence/resolved_refinement.sh --plot-only     (redraws the figure from the table)
+# writes studies/convergence/resolved_refinement.txt and resolved_refinement_dissipation.png
 # needs: cmake, a Fortran compiler, the project's libraries, awk, gnuplot (pngcairo terminal)
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 build=${1:-build}
 scene=inputs/looseness_tip_stops.nml
-table=verification/convergence/resolved_refinement.txt
-figure=verification/convergence/resolved_refinement_dissipation.png
+table=studies/convergence/resolved_refinement.txt
+figure=studies/convergence/resolved_refinement_dissipation.png
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -130,7 +130,7 @@ summarize() {
 
 start=$(date +%s)
 {
-echo "# Resolved refinement of $scene over [0, $window s] (scripts/resolved_refinement.sh)"
+echo "# Resolved refinement of $scene over [0, $window s] (studies/convergence/resolved_refinement.sh)"
 echo "# tip errors: max over the output times (every 1e-5 s) in [0, T] of |u_tip - u_tip,ref| (m)"
 echo "# omega_max = 2.2886e5 (N/8)^2 rad/s (the largest eigenvalue of the Hermite pencil, N = 8)"
 echo

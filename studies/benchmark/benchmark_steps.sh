@@ -1,23 +1,23 @@
 #!/usr/bin/env bash
-# Benchmark of the velocity-based time stepper (verification/benchmark/REPORT.md): time
+# Benchmark of the velocity-based time stepper (studies/benchmark/REPORT.md): time
 # per step against N = 16..1024 for (a) free flight above a tip obstacle and (b) a beam
 # in persistent contact with an obstacle under its whole length, beside one band solve +
 # one band matrix-vector product of the same size. Then a cross-check: the vibrobeam
 # executable timed with /usr/bin/time on two generated inputs at N = 1024.
 #
 # Builds Release (-O2) in BUILD_DIR (an existing build directory is switched to
-# Release), runs for about a minute and writes verification/benchmark/benchmark_steps.txt.
+# Release), runs for about a minute and writes studies/benchmark/benchmark_steps.txt.
 # The numbers are medians of repeated wall-clock timings: run it on an otherwise idle machine.
-#   usage: scripts/benchmark_steps.sh [BUILD_DIR]      (default: build)
+#   usage: studies/benchmark/benchmark_steps.sh [BUILD_DIR]      (default: build)
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 build=${1:-build}
-table=verification/benchmark/benchmark_steps.txt
+table=studies/benchmark/benchmark_steps.txt
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 
 source scripts/build_release.sh
 build_release "$build" benchmark_steps vibrobeam
-program=$build/verification/benchmark/benchmark_steps
+program=$build/studies/benchmark/benchmark_steps
 fortran=$(sed -n 's/^CMAKE_Fortran_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")
 
 echo "benchmark_steps: timing (about a minute) ..." >&2

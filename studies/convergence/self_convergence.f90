@@ -1,6 +1,6 @@
 !> Self-convergence study of the velocity-based stepper (SPEC §3) on the two-stop
 !! looseness scene (inputs/looseness_tip_stops.nml): a steel cantilever whose tip rattles
-!! between rigid stops at +-1 mm. Results and discussion: verification/convergence/REPORT.md.
+!! between rigid stops at +-1 mm. Results and discussion: studies/convergence/REPORT.md.
 !!
 !! There is no closed form, so every run is compared with a finer run of the same scene
 !! (self-convergence) over a window [0, T] that holds about five impact events. Errors of
@@ -84,12 +84,12 @@ program self_convergence
    open (newunit=data_unit, file=output_directory//'/self_convergence.dat', status='replace', action='write', &
          iostat=stat, iomsg=errmsg)
    if (stat /= 0) call fail(errmsg)
-   write (data_unit, '(a)') '# self_convergence.dat, written by verification/convergence/self_convergence.f90 '// &
+   write (data_unit, '(a)') '# self_convergence.dat, written by studies/convergence/self_convergence.f90 '// &
       'for '//scene_file, '# one block per study; gnuplot selects one by the start of its first comment '// &
       'line: index ''name''', '', ''
 
    call emit('Self-convergence of the velocity-based stepper (SPEC 3) on '//scene_file)
-   call emit('(verification/convergence/self_convergence.f90; discussion in verification/convergence/REPORT.md)')
+   call emit('(studies/convergence/self_convergence.f90; discussion in studies/convergence/REPORT.md)')
    call emit('')
 
    ! the joint path: dt halves, N grows by sqrt(2), from (dt0, N0)

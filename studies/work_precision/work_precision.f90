@@ -1,6 +1,6 @@
 !> Work-precision study (issue 4): error against CPU time for every combination of
 !! {Hermite, B-spline} x {velocity (SPEC §3), position (SPEC §4)} x {theta = 1/2, 1}
-!! over a sweep of N and dt, on two scenes (verification/work_precision/REPORT.md):
+!! over a sweep of N and dt, on two scenes (studies/work_precision/REPORT.md):
 !!
 !! - `free`: free vibration of the normalized cantilever (k2 = 1, L = 1, no obstacle)
 !!   released with a mode-1 velocity (tip 1) and a mode-2 displacement (tip 0.05), over
@@ -200,7 +200,7 @@ contains
 
       open (newunit=unit, file=directory//'/work_precision_free.txt', status='replace', action='write')
       write (unit, '(a)') '# Work-precision study (a): free vibration against the closed form (SPEC §6)'
-      write (unit, '(a)') '# program verification/work_precision/work_precision.f90, run by scripts/work_precision.sh'
+      write (unit, '(a)') '# program studies/work_precision/work_precision.f90, run by studies/work_precision/work_precision.sh'
       write (unit, '(a)') '# beam: L = 1, k2 = 1, clamped-free, no obstacle, no load, no damping'
       write (unit, '(a,f5.2,a,f5.2,a)') '# initial data: mode-1 velocity (tip ', velocity_amplitude, &
          ') + mode-2 displacement (tip ', displacement_amplitude, '), closed-form shapes interpolated on the mesh'
@@ -352,7 +352,7 @@ contains
 
       open (newunit=unit, file=directory//'/work_precision_impacts.txt', status='replace', action='write')
       write (unit, '(a)') '# Work-precision study (b): two-stop looseness scene against a converged fine run'
-      write (unit, '(a)') '# program verification/work_precision/work_precision.f90, run by scripts/work_precision.sh'
+      write (unit, '(a)') '# program studies/work_precision/work_precision.f90, run by studies/work_precision/work_precision.sh'
       write (unit, '(a)') '# scene '//path//' (steel, L = 0.5 m, tip stops at -1/+1 mm, e = 0.8, '// &
          'mode-1 release 0.5 m/s) over [0, 10 ms]'
       write (unit, '(a,es10.3,a,i0,a,es12.5,a)') '# samples every ', sample_interval, ' s (', &

@@ -1,6 +1,6 @@
 !> Benchmark of the contact projection (issue 10), a study, not a test: it asserts
-!! nothing and is not run by ctest; scripts/benchmark_contact.sh builds it in Release,
-!! runs it and writes benchmark_contact.txt beside this file (verification/benchmark/
+!! nothing and is not run by ctest; studies/benchmark/benchmark_contact.sh builds it in Release,
+!! runs it and writes benchmark_contact.txt beside this file (studies/benchmark/
 !! REPORT.md discusses the results).
 !!
 !! A. The slap (verification/stress/slap_plastic.nml, slap_bouncing.nml: a beam dropped

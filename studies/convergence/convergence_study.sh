@@ -1,21 +1,21 @@
 #!/usr/bin/env bash
 # Self-convergence study of the velocity-based stepper on inputs/looseness_tip_stops.nml:
 # builds the study program (Release), runs it, and regenerates the committed results in
-# verification/convergence/: self_convergence.txt (tables), self_convergence.dat (gnuplot
-# blocks) and self_convergence.png. Discussion: verification/convergence/REPORT.md.
+# studies/convergence/: self_convergence.txt (tables), self_convergence.dat (gnuplot
+# blocks) and self_convergence.png. Discussion: studies/convergence/REPORT.md.
 #
-# usage: scripts/convergence_study.sh [BUILD_DIR]   (default: build, relative to the
+# usage: studies/convergence/convergence_study.sh [BUILD_DIR]   (default: build, relative to the
 #        repository root like the other scripts; the study itself takes about 30 s)
 # needs: cmake, a Fortran compiler, the project's libraries, gnuplot (pngcairo terminal)
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 build=${1:-build}
-results=verification/convergence
+results=studies/convergence
 scene=inputs/looseness_tip_stops.nml
 
 source scripts/build_release.sh
 build_release "$build" self_convergence
-program=$build/verification/convergence/self_convergence
+program=$build/studies/convergence/self_convergence
 
 start=$(date +%s)
 "$program" "$scene" "$results"

@@ -1,11 +1,11 @@
 !> Self-convergence through the first contact episode of the two-stop looseness scene
 !! (inputs/looseness_tip_stops.nml), the part of the self-convergence study that holds
-!! (REPORT.md in this directory, studies 5 and 6).
+!! (studies/convergence/REPORT.md, studies 5 and 6).
 !!
 !! The joint path of the study, level k: dt = 4e-5/2^k s, N = nint(16 2^(k/2)), k = 0..3,
 !! against level 4 = (dt0/16, 4 N0), over [0, 4 ms]: the first contact episode of the
 !! scene (upper stop, first impulse at 2.07 ms, last at 3.51 ms, about 60 rebounds at
-!! dt = 1e-5 s) and 0.5 ms of free flight after it. Errors as in self_convergence.f90:
+!! dt = 1e-5 s) and 0.5 ms of free flight after it. Errors as in studies/convergence/self_convergence.f90:
 !! tip (max in time), field (time-RMS at 11 points), energy at 4 ms.
 !!
 !! Passes when every run has exactly one impact event in the window with at least 10 steps
@@ -13,7 +13,7 @@
 !! level, and the observed order of the tip error from level 0 to level 3 is at least 0.5
 !! in dt (measured: about 0.8; free flight alone gives 2). The energy
 !! error at 4 ms is printed, not checked: the energy an episode dissipates does not
-!! converge at these resolutions (REPORT.md, "Resolved time steps", C).
+!! converge at these resolutions (studies/convergence/REPORT.md, "Resolved time steps", C).
 !! usage: test_first_episode SCENE.nml
 program test_first_episode
    use vibrobeam_kinds, only: dp, output_unit
