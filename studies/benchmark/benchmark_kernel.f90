@@ -26,7 +26,7 @@ program benchmark_kernel
    use vibrobeam_kinds, only: dp, int64, output_unit, error_unit
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_combination, band_factor, band_solve, &
                              band_matvec, band_residual_solve
-   use vibrobeam_band_lapack, only: dpbtrf, dpbtrs, dsbmv
+   use vibrobeam_lapack, only: dpbtrf, dpbtrs, dsbmv
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_modes, only: compute_modes
    use vibrobeam_scene, only: scene_type, obstacle_type, validate_scene

@@ -4,6 +4,7 @@
 !! 2nd ed., 2002). Dense inverses: for the test meshes only.
 module vibrobeam_static_bounds
    use vibrobeam_kinds, only: dp
+   use vibrobeam_lapack, only: dgesv, dgetrf
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_solve, band_factor
    use vibrobeam_contact_points, only: contact_set
    use vibrobeam_roundoff_bounds, only: gamma_n, abs_band_times, abs_factor_times
@@ -43,14 +44,6 @@ contains
       integer, allocatable :: held(:), order(:), pivots(:)
       integer :: n, m, k, a, c, i, j, info, kd, position
       character(len=200) :: errmsg
-      interface
-         subroutine dgetrf(m, n, a, lda, ipiv, info)
-            import :: dp
-            integer, intent(in) :: m, n, lda
-            real(dp), intent(inout) :: a(lda, *)
-            integer, intent(out) :: ipiv(*), info
-         end subroutine dgetrf
-      end interface
       n = stiffness%n
       kd = stiffness%kd
       m = count(abs(reaction) > 0)
@@ -159,14 +152,6 @@ contains
       real(dp) :: inverse(size(a, 1), size(a, 1))
       real(dp), allocatable :: work(:, :)
       integer :: pivots(size(a, 1)), info, i
-      interface
-         subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
-            import :: dp
-            integer, intent(in) :: n, nrhs, lda, ldb
-            real(dp), intent(inout) :: a(lda, *), b(ldb, *)
-            integer, intent(out) :: ipiv(*), info
-         end subroutine dgesv
-      end interface
       allocate (work, source=a)
       inverse = 0
       do i = 1, size(a, 1)
