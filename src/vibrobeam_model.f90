@@ -17,7 +17,7 @@ module vibrobeam_model
    implicit none
    private
    public :: beam_model, build_model, point_row, node_row, nodal_displacement
-   public :: load_vector, point_load_vector, interpolate_field, space_profile, energy_integrals
+   public :: load_vector, point_load_vector, interpolate_field, space_profile, unit_profile, energy_integrals
 
    integer, parameter :: bandwidth = 3   !! sub-diagonals of M and K for both bases
 
@@ -249,6 +249,13 @@ contains
          end do
       end do
    end function load_vector
+
+   !> The profile of a uniform load: 1 along the whole beam.
+   pure function unit_profile(x) result(value)
+      real(dp), intent(in) :: x
+      real(dp) :: value
+      value = 1 + 0*x
+   end function unit_profile
 
    !> Load vector of a unit point force at x (the virtual work of the force: the row of
    !! `point_row`).

@@ -9,7 +9,7 @@
 program static_tip
    use vibrobeam_kinds, only: dp
    use vibrobeam_version, only: version_string
-   use vibrobeam_model, only: beam_model, build_model, load_vector
+   use vibrobeam_model, only: beam_model, build_model, load_vector, unit_profile
    use vibrobeam_band, only: band_cholesky, band_factor, band_solve, band_entry
    implicit none
    integer, parameter :: elements = 8
@@ -31,7 +31,7 @@ program static_tip
    if (stat /= 0) call fail('build_model: '//trim(errmsg))
    call band_factor(model%stiffness, factor, stat, errmsg)
    if (stat /= 0) call fail('band_factor: '//trim(errmsg))
-   u = q*load_vector(model, uniform)
+   u = q*load_vector(model, unit_profile)
    call band_solve(factor, u)
 
    ! The tolerance: a backward-stable band solve gives a relative error of at most about
@@ -64,12 +64,6 @@ program static_tip
    print '(a)', 'PASS'
 
 contains
-
-   pure function uniform(x) result(value)
-      real(dp), intent(in) :: x
-      real(dp) :: value
-      value = 1 + 0*x
-   end function uniform
 
    subroutine fail(message)
       character(len=*), intent(in) :: message
