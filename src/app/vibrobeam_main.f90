@@ -8,7 +8,7 @@ program vibrobeam_main
    use, intrinsic :: iso_c_binding, only: c_int
    use vibrobeam_kinds, only: dp, error_unit, output_unit
    use vibrobeam_status, only: exit_ok, exit_other_error, exit_invalid_input, exit_numerical_failure, &
-                               exit_interrupted, message_length
+                               exit_interrupted, message_length, stat_numerical_failure
    use vibrobeam_version, only: version_string
    use vibrobeam_scene, only: scene_type, validate_scene, format_scene
    use vibrobeam_input, only: read_scene, namelist_groups_text
@@ -17,7 +17,7 @@ program vibrobeam_main
    use vibrobeam_model, only: nodal_displacement
    use vibrobeam_modes, only: compute_modes
    use vibrobeam_static, only: solve_static
-   use vibrobeam_setup, only: prepared_scene, prepare_scene, setup_numerical_failure
+   use vibrobeam_setup, only: prepared_scene, prepare_scene
    use vibrobeam_dynamics, only: run_dynamics, run_outcome
    use vibrobeam_results, only: result_files, run_summary, publish_files
    use vibrobeam_text_output, only: derived_file, derive_text_files
@@ -46,7 +46,7 @@ program vibrobeam_main
    call limit_blas_threads(blas_warning)   ! one BLAS thread unless VIBROBEAM_BLAS_THREADS says otherwise
    if (len(blas_warning) > 0) warnings = warnings//blas_warning//new_line('a')
    call prepare_scene(scene, prepared, warnings, stat, errmsg)
-   if (stat == setup_numerical_failure) call fail(exit_numerical_failure, errmsg)
+   if (stat == stat_numerical_failure) call fail(exit_numerical_failure, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    warnings = warnings//scene_warnings(scene)
    if (len(warnings) > 0) write (error_unit, '(a)', advance='no') prefixed(warnings, 'vibrobeam: warning: ')
