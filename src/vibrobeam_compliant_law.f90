@@ -69,10 +69,10 @@ contains
       real(dp), intent(in) :: k, a, p
       elastic_slope = 0
       if (p > 0) then
-         if (a == 1) then
-            elastic_slope = k
-         else
+         if (abs(a - 1) > 0) then
             elastic_slope = k*a*p**(a - 1)
+         else
+            elastic_slope = k
          end if
       end if
    end function elastic_slope
