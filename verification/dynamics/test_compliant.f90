@@ -41,7 +41,7 @@ program test_compliant
    use vibrobeam_contact_points, only: contact_set
    use vibrobeam_compliant_law, only: stop_potential
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_add, band_factor, band_matvec, band_solve
-   use vibrobeam_roundoff_bounds, only: gamma_n, energy_ledger, abs_band_times, hoeffding_lambda
+   use vibrobeam_roundoff_bounds, only: gamma_n, energy_ledger, abs_band_times, hoeffding_lambda, abs_row
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene, abs_factor_times
    implicit none
    type(test_counter) :: t
@@ -223,17 +223,6 @@ contains
          engaged = all(seen)
       end associate
    end subroutine run
-
-   real(dp) function abs_row(contacts, c, x)
-      type(contact_set), intent(in) :: contacts
-      integer, intent(in) :: c
-      real(dp), intent(in) :: x(:)
-      integer :: a
-      abs_row = 0
-      do a = 1, 4
-         if (contacts%dofs(a, c) /= 0) abs_row = abs_row + abs(contacts%weights(a, c)*x(contacts%dofs(a, c)))
-      end do
-   end function abs_row
 
    subroutine add_abs_row(contacts, y, c, w)
       type(contact_set), intent(in) :: contacts
