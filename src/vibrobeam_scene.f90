@@ -331,11 +331,6 @@ contains
       call check_real('time', 'theta', scene%theta)
       call check_real('time', 'gamma', scene%gamma)
       call check_keyword('time', 'compliant_rule', scene%compliant_rule)
-      if (stat == 0 .and. scene%scheme == 'position' .and. scene%kind == 'dynamics') then
-         if (any(scene%obstacles%stiffness > 0)) &
-            call fail('&time scheme = ''position'' does not take compliant stops (&obstacles stiffness > 0) yet; '// &
-                      'use scheme = ''velocity''')
-      end if
       if (stat /= 0) return
       if (scene%kind == 'dynamics') then
          call in_range('time', 'dt', scene%dt, 0.0_dp, scene%t_end, ' s, (0, t_end]')

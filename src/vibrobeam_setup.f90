@@ -193,11 +193,13 @@ contains
       type(position_stepper), allocatable :: position
       if (scene%scheme == 'position') then
          allocate (position)
+         position%compliant_rule = rule_code(trim(scene%compliant_rule))
          call position%init(prepared%model, prepared%contacts, prepared%loads, scene%dt, scene%theta, &
                             scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
                             prepared%u0, prepared%v0, stat, errmsg)
          position%projector%max_iterations = scene%contact_max_iterations
          position%projector%method = contact_method_code(trim(scene%contact_method))
+         position%compliant%method = trim(scene%contact_method)
          call move_alloc(position, stepper)
       else
          allocate (velocity)
