@@ -9,10 +9,16 @@
 !! - the penetration scale dt |v| of the velocity-based scheme (theory §3: a contact point
 !!   is activated from its predicted position, so it may enter an obstacle by about one
 !!   step of its approach velocity), with the velocity scale used and where it comes from;
-!! - the estimated size of the results (`vibrobeam_output_target`).
+!! - the estimated size of the results (`vibrobeam_output_target`);
+!! - for each compliant stop, its contact time scale T_c = pi sqrt(m_eff/(k + k_b)) against
+!!   dt (docs/theory.md section 8, "Resolution"): k_b = 3EI/x^3 is the beam's static
+!!   stiffness at the stop's position x (a clamped-free beam loaded at x), k the stop's
+!!   stiffness (a longitudinal one's total, at its middle), m_eff = k_b/omega_1^2 the mass
+!!   that makes the beam at x a one-degree-of-freedom oscillator of mode 1's frequency.
 !!
 !! Warnings (not errors): a time step with fewer than `steps_per_period_wanted` steps per
-!! period of mode 1, and physical data of implausible magnitude (a Young's modulus typed
+!! period of mode 1, a compliant stop with fewer than `steps_per_contact_wanted` steps per
+!! contact time scale, and physical data of implausible magnitude (a Young's modulus typed
 !! in GPa or MPa, a density in g/cm^3, a section in mm^2 or cm^2, an inertia in mm^4 or
 !! cm^4 beside an area in m^2).
 module vibrobeam_check_report
@@ -26,11 +32,15 @@ module vibrobeam_check_report
    implicit none
    private
    public :: check_report, make_check_report, check_report_text, scene_warnings
-   public :: steps_per_period_wanted, velocity_scale
+   public :: steps_per_period_wanted, velocity_scale, steps_per_contact_wanted, contact_time_scale
 
    !> Fewer steps than this per period of mode 1: the time step does not resolve it (a
    !! theta = 1/2 scheme then errs by about (omega dt)^2/12 = 8e-3 in phase per period).
    real(dp), parameter :: steps_per_period_wanted = 20
+   !> Fewer steps than this per contact time scale of a compliant stop: the contact is not
+   !! resolved (studies/compliant_resolution/REPORT.md: the first episode's duration and
+   !! impulse err by 30 % and 18 % at 10 steps, by 2.9 % and 1.2 % at 20, below 1 % at 40).
+   real(dp), parameter :: steps_per_contact_wanted = 20
    !> Continuum frequencies listed.
    integer, parameter :: listed_modes = 5
    !> Plausible magnitudes (warnings below): steel is 2.1e11 Pa, rubber 1e6 Pa; water
@@ -90,6 +100,7 @@ contains
       type(check_report), intent(in) :: report
       character(len=:), allocatable :: text
       integer :: n
+      real(dp) :: time_scale, beam_stiffness, mass
       text = 'natural frequencies of the clamped-free beam (continuum closed form; the obstacles are ignored):'// &
              new_line('a')
       do n = 1, listed_modes
@@ -108,18 +119,55 @@ contains
              resolved_text(report%resolved_modes, report%unknowns)//new_line('a')
       text = text//'penetration scale dt*|v| = '//g(report%penetration)//' m, with |v| = '//g(report%velocity)// &
              ' m/s: '//report%velocity_source//new_line('a')
+      do n = 1, size(scene%obstacles)
+         call contact_time_scale(scene, n, time_scale, beam_stiffness, mass)
+         if (time_scale <= 0) cycle
+         text = text//'compliant stop '//integer_text(n)//': beam stiffness there k_b = 3EI/x^3 = '// &
+                g(beam_stiffness)//' N/m, effective mass k_b/omega_1^2 = '//g(mass)// &
+                ' kg, contact time scale pi sqrt(m_eff/(k + k_b)) = '//g(time_scale)//' s = '// &
+                g(time_scale/scene%dt)//' steps'
+         if (time_scale/scene%dt < steps_per_contact_wanted) text = text//' (NOT resolved: fewer than '// &
+                                                                   g(steps_per_contact_wanted)//')'
+         text = text//new_line('a')
+      end do
       text = text//'estimated result size: '//g(report%size%total_bytes)//' bytes (HDF5 '// &
              g(report%size%hdf5_bytes)//', text '//g(report%size%text_bytes)//'): '//g(report%size%outputs)// &
              ' output times of '//g(report%size%values_per_output)//' values and '//g(report%size%snapshots)// &
              ' field snapshots of '//integer_text(scene%elements + 1)//' nodes; impacts not counted'//new_line('a')
    end function check_report_text
 
+   !> Contact time scale of compliant obstacle i of the scene (s; module comment), with the
+   !! beam's stiffness k_b at it (N/m) and the effective mass m_eff (kg; per unit rho S when
+   !! the beam is given by k2). 0 for a rigid obstacle or one at the clamp.
+   subroutine contact_time_scale(scene, i, time_scale, beam_stiffness, effective_mass)
+      type(scene_type), intent(in) :: scene
+      integer, intent(in) :: i
+      real(dp), intent(out) :: time_scale, beam_stiffness, effective_mass
+      real(dp) :: x, k, omega1
+      time_scale = 0
+      beam_stiffness = 0
+      effective_mass = 0
+      associate (o => scene%obstacles(i))
+         if (o%stiffness <= 0) return
+         x = 0.5_dp*(o%x_from + o%x_to)
+         if (x <= 0) return
+         k = o%stiffness
+         if (o%x_to - o%x_from > 1e-9_dp*scene%length/scene%elements) k = k*(o%x_to - o%x_from)
+         ! ei_of is k2 = EI/(rho S) when the beam is given by k2: then per unit rho S, like k
+         beam_stiffness = 3*ei_of(scene)/x**3
+         omega1 = cantilever_frequency(1, scene%length, k2_of(scene))
+         effective_mass = beam_stiffness/omega1**2
+         time_scale = pi*sqrt(effective_mass/(k + beam_stiffness))
+      end associate
+   end subroutine contact_time_scale
+
    !> Warnings for a valid scene, one line each (without the 'vibrobeam: warning: '
    !! prefix the program adds): an unresolved mode 1, implausible physical data.
    function scene_warnings(scene) result(text)
       type(scene_type), intent(in) :: scene
       character(len=:), allocatable :: text
-      real(dp) :: omega1, steps, ratio
+      real(dp) :: omega1, steps, ratio, time_scale, beam_stiffness, mass
+      integer :: i
       text = ''
       if (scene%kind == 'dynamics') then
          omega1 = cantilever_frequency(1, scene%length, k2_of(scene))
@@ -129,6 +177,15 @@ contains
                      '(omega_1 = '//g(omega1)//' rad/s, continuum): fewer than '//g(steps_per_period_wanted)// &
                      ', so no natural mode is resolved; dt <= '//g(2*pi/(omega1*steps_per_period_wanted))// &
                      ' s resolves mode 1')
+         do i = 1, size(scene%obstacles)
+            call contact_time_scale(scene, i, time_scale, beam_stiffness, mass)
+            if (time_scale <= 0) cycle
+            if (time_scale/scene%dt < steps_per_contact_wanted) &
+               call add('&obstacles stiffness('//integer_text(i)//') = '//real_text(scene%obstacles(i)%stiffness)// &
+                        ': its contact time scale '//g(time_scale)//' s spans '//g(time_scale/scene%dt)// &
+                        ' steps of dt, fewer than '//g(steps_per_contact_wanted)//', so the contact is not resolved; '// &
+                        'dt <= '//g(time_scale/steps_per_contact_wanted)//' s resolves it')
+         end do
       end if
       if (is_unset(scene%youngs_modulus)) return
       if (scene%youngs_modulus < youngs_modulus_least) &

@@ -10,11 +10,18 @@
 !!   with a warning;
 !! - several obstacles on the same side of a node: the most restrictive one counts;
 !! - the clamped node x = 0 never moves: an obstacle there is only checked (u = 0 must be
-!!   admissible).
+!!   admissible);
+!! - a compliant obstacle (stiffness > 0, docs/theory.md section 8) gives each node it
+!!   covers a spring instead of a bound: its stiffness per unit length is lumped at the
+!!   nodes with their tributary lengths inside [x_from, x_to] (h inside, h/2 at an end
+!!   node; a punctual one puts its whole stiffness on its node). Springs on the same node
+!!   and side act in parallel, each from its own level, and a rigid bound on the same node
+!!   and side acts beside them (whichever is reached first holds).
 module vibrobeam_contact_points
    use vibrobeam_kinds, only: dp
    use vibrobeam_scene, only: scene_type
    use vibrobeam_model, only: beam_model, node_row
+   use vibrobeam_compliant_law, only: spring_set
    implicit none
    private
    public :: contact_set, build_contact_points, contact_value, no_bound
@@ -30,6 +37,7 @@ module vibrobeam_contact_points
       real(dp), allocatable :: upper(:)      !! g2(x_c) (m), +no_bound if no obstacle above
       integer, allocatable :: dofs(:,:)      !! (4, count) unknowns of row H_c (0 = none)
       real(dp), allocatable :: weights(:,:)  !! (4, count) coefficients of row H_c
+      type(spring_set) :: springs            !! the compliant stops (none: rigid obstacles only)
    end type contact_set
 
 contains
@@ -46,7 +54,10 @@ contains
       character(len=*), intent(out) :: errmsg
       real(dp) :: lower(0:model%elements), upper(0:model%elements), level, tolerance, xi
       integer :: lower_source(0:model%elements), upper_source(0:model%elements)
-      integer :: i, k, first, last, c
+      integer :: i, k, first, last, c, j
+      logical :: covered(0:model%elements)
+      integer :: spring_node(size(scene%obstacles)*(model%elements + 1)), spring_obstacle(size(spring_node))
+      real(dp) :: spring_level(size(spring_node)), spring_length(size(spring_node))
       character(len=160) :: line
       stat = 0
       errmsg = ''
@@ -54,6 +65,8 @@ contains
       upper = no_bound
       lower_source = 0
       upper_source = 0
+      covered = .false.
+      j = 0
       tolerance = 1e-9_dp*model%h
       do k = 1, size(scene%obstacles)
          associate (o => scene%obstacles(k))
@@ -82,6 +95,24 @@ contains
                else
                   xi = min(1.0_dp, max(0.0_dp, (model%x(i + 1) - o%x_from)/(o%x_to - o%x_from)))
                   level = (1 - xi)*o%level_from + xi*o%level_to
+               end if
+               if (o%stiffness > 0) then
+                  ! a spring, never a bound; the clamped node never moves and gets none
+                  if (i == 0) cycle
+                  covered(i) = .true.
+                  j = j + 1
+                  spring_node(j) = i
+                  spring_obstacle(j) = k
+                  spring_level(j) = level
+                  if (first == last) then
+                     spring_length(j) = max(o%x_to - o%x_from, 0.0_dp)
+                     if (spring_length(j) <= tolerance) spring_length(j) = 1   ! punctual: the stiffness itself
+                  else
+                     ! tributary length of node i inside [x_from, x_to]
+                     spring_length(j) = max(0.0_dp, min(o%x_to, model%x(i + 1) + 0.5_dp*model%h, model%length) - &
+                                        max(o%x_from, model%x(i + 1) - 0.5_dp*model%h))
+                  end if
+                  cycle
                end if
                if (o%side == 'below') then
                   if (level > lower(i)) then
@@ -113,13 +144,13 @@ contains
             return
          end if
       end do
-      contacts%count = count(lower(1:) > -no_bound .or. upper(1:) < no_bound)
+      contacts%count = count(lower(1:) > -no_bound .or. upper(1:) < no_bound .or. covered(1:))
       allocate (contacts%node(contacts%count), contacts%x(contacts%count), contacts%lower(contacts%count), &
                 contacts%upper(contacts%count), contacts%dofs(4, contacts%count), &
                 contacts%weights(4, contacts%count))
       c = 0
       do i = 1, model%elements
-         if (lower(i) <= -no_bound .and. upper(i) >= no_bound) cycle
+         if (lower(i) <= -no_bound .and. upper(i) >= no_bound .and. .not. covered(i)) cycle
          c = c + 1
          contacts%node(c) = i
          contacts%x(c) = model%x(i + 1)
@@ -127,6 +158,21 @@ contains
          contacts%upper(c) = upper(i)
          call node_row(model, i, contacts%dofs(:, c), contacts%weights(:, c))
       end do
+      associate (springs => contacts%springs)
+         springs%count = j
+         allocate (springs%point(j), springs%sign(j), springs%level(j), springs%stiffness(j), &
+                   springs%exponent(j), springs%damping(j))
+         do k = 1, j
+            springs%point(k) = findloc(contacts%node, spring_node(k), 1)
+            associate (o => scene%obstacles(spring_obstacle(k)))
+               springs%sign(k) = merge(1.0_dp, -1.0_dp, o%side == 'below')
+               springs%level(k) = spring_level(k)
+               springs%stiffness(k) = o%stiffness*spring_length(k)
+               springs%exponent(k) = o%exponent
+               springs%damping(k) = o%damping
+            end associate
+         end do
+      end associate
    end subroutine build_contact_points
 
    !> H_c U: the displacement of the beam at contact point c (m).

@@ -12,6 +12,14 @@
 !! continued run carries it on (its checkpoint holds the open episodes) and writes it
 !! again when it closes. Attributes of /episodes: `gap` (s) and `closed` (episodes closed
 !! during the run, the rows with open_at_end = 0).
+!!
+!! At a contact point with compliant stops (docs/theory.md section 8) an episode is a
+!! contiguous interval of nonzero stop force: it opens at the first step whose end-of-step
+!! force is nonzero (start = that time, approach_speed = |u_t| of the point then, impacts =
+!! 1) and closes at the first step without force (no `gap` merging: the force itself shows
+!! when the contact lasts); its impulse is sum dt f. Its duration end - start is the
+!! contact duration (to one step). The rigid rule above groups the separate impulses of a
+!! rigid stop's micro-impacts into what a compliant stop shows as one interval of force.
 module vibrobeam_episodes
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_stepper, only: time_stepper
@@ -19,6 +27,7 @@ module vibrobeam_episodes
    use vibrobeam_hdf5_series, only: h5_series
    use vibrobeam_state_record, only: state_record
    use vibrobeam_step_observer, only: step_observer, step_events
+   use vibrobeam_contact_points, only: contact_value
    implicit none
    private
    public :: episode_tracker, episode_columns
@@ -119,6 +128,28 @@ contains
          if (self%open(c)) then
             self%impulse(c) = self%impulse(c) + stepper%impulse(k)
             self%last_impulse(c) = t
+         end if
+      end do
+      ! compliant stops: episodes are contiguous intervals of nonzero force
+      do k = 1, stepper%contacts%springs%count
+         c = stepper%contacts%springs%point(k)
+         if (touched(c)) cycle   ! a rigid impulse this step, or a point seen already
+         if (abs(stepper%contact_force(c)) > 0) then
+            touched(c) = .true.
+            if (.not. self%open(c)) then
+               self%open(c) = .true.
+               self%start(c) = t
+               self%impulse(c) = 0
+               self%approach(c) = abs(contact_value(stepper%contacts, c, stepper%v))
+               self%impacts(c) = 1
+            end if
+            self%impulse(c) = self%impulse(c) + stepper%dt*stepper%contact_force(c)
+            self%last_impulse(c) = t
+            self%last_impact(c) = t
+         else if (self%open(c)) then
+            touched(c) = .true.
+            call close_episode(c, .false.)
+            if (stat /= 0) return
          end if
       end do
       do c = 1, size(self%open)

@@ -210,8 +210,8 @@ contains
       character(len=*), intent(out) :: errmsg
       integer :: count
       character(len=keyword_length) :: side(max_obstacles)
-      real(dp), dimension(max_obstacles) :: x_from, x_to, level_from, level_to
-      namelist /obstacles/ count, side, x_from, x_to, level_from, level_to
+      real(dp), dimension(max_obstacles) :: x_from, x_to, level_from, level_to, stiffness, exponent, damping
+      namelist /obstacles/ count, side, x_from, x_to, level_from, level_to, stiffness, exponent, damping
       character(len=:), allocatable :: record
       type(namelist_variable), allocatable :: table(:)
       integer :: ios, i, k
@@ -220,6 +220,7 @@ contains
       count = 0
       side = ''
       x_from = 0; x_to = 0; level_from = 0; level_to = 0
+      stiffness = 0; exponent = 1; damping = 0
       stat = 0
       errmsg = ''
       do k = 1, size(scanned%items)
@@ -259,6 +260,9 @@ contains
          scene%obstacles(i)%x_to = merge(x_to(i), scene%obstacles(i)%x_from, scanned%is_given('obstacles', 'x_to', i))
          scene%obstacles(i)%level_from = level_from(i)
          scene%obstacles(i)%level_to = merge(level_to(i), level_from(i), scanned%is_given('obstacles', 'level_to', i))
+         scene%obstacles(i)%stiffness = stiffness(i)
+         scene%obstacles(i)%exponent = exponent(i)
+         scene%obstacles(i)%damping = damping(i)
       end do
       stat = 0
    contains
@@ -266,7 +270,8 @@ contains
          integer, intent(in) :: i
          given = scanned%is_given('obstacles', 'side', i) .or. scanned%is_given('obstacles', 'x_from', i) .or. &
                  scanned%is_given('obstacles', 'x_to', i) .or. scanned%is_given('obstacles', 'level_from', i) .or. &
-                 scanned%is_given('obstacles', 'level_to', i)
+                 scanned%is_given('obstacles', 'level_to', i) .or. scanned%is_given('obstacles', 'stiffness', i) .or. &
+                 scanned%is_given('obstacles', 'exponent', i) .or. scanned%is_given('obstacles', 'damping', i)
       end function given
    end subroutine read_obstacles
 
@@ -301,13 +306,13 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp) :: t_end, dt, theta, gamma
-      character(len=keyword_length) :: scheme
-      namelist /time/ t_end, dt, scheme, theta, gamma
+      character(len=keyword_length) :: scheme, compliant_rule
+      namelist /time/ t_end, dt, scheme, theta, gamma, compliant_rule
       character(len=:), allocatable :: record
       integer :: ios, k
       character(len=256) :: iomsg
       t_end = scene%t_end; dt = scene%dt; scheme = scene%scheme
-      theta = scene%theta; gamma = scene%gamma
+      theta = scene%theta; gamma = scene%gamma; compliant_rule = scene%compliant_rule
       stat = 0
       errmsg = ''
       do k = 1, size(scanned%items)
@@ -317,7 +322,7 @@ contains
          if (read_failed(ios, iomsg, scanned%label(k), stat, errmsg)) return
       end do
       scene%t_end = t_end; scene%dt = dt; scene%scheme = lowercase(scheme)
-      scene%theta = theta; scene%gamma = gamma
+      scene%theta = theta; scene%gamma = gamma; scene%compliant_rule = lowercase(compliant_rule)
    end subroutine read_time
 
    subroutine read_initial(scanned, scene, stat, errmsg)

@@ -31,6 +31,8 @@ module vibrobeam_position_stepper
    use vibrobeam_loads, only: load_set
    use vibrobeam_stepper, only: time_stepper, save_stepper_state, restore_stepper_state
    use vibrobeam_state_record, only: state_record
+   use vibrobeam_compliant_law, only: end_force, stop_potential
+   use vibrobeam_compliant_solve, only: rigid_admissible
    implicit none
    private
    public :: position_stepper
@@ -43,6 +45,8 @@ module vibrobeam_position_stepper
       procedure :: step
       procedure :: kinetic_energy => half_step_kinetic_energy
       procedure :: elastic_energy => half_step_elastic_energy
+      procedure :: contact_potential => half_step_contact_potential
+      procedure, private :: compliant_projection
       procedure :: save_state
       procedure :: restore_state
    end type position_stepper
@@ -97,8 +101,12 @@ contains
          call band_solve(self%iteration_factor, rhs)
          u_free = rhs
          z_free = (u_free + e*u_old)/(1 + e)
-         call self%projector%project_admissible(z_free, z, self%multiplier, self%iterations, stat, errmsg)
-         self%linear_solves = self%projector%linear_solves
+         if (self%contacts%springs%count > 0) then
+            call self%compliant_projection(z_free, z, stat, errmsg)
+         else
+            call self%projector%project_admissible(z_free, z, self%multiplier, self%iterations, stat, errmsg)
+            self%linear_solves = self%projector%linear_solves
+         end if
          self%used_fallback = self%projector%used_fallback
          if (stat /= 0) return
          u_new = (1 + e)*z - e*u_old
@@ -137,6 +145,59 @@ contains
    end subroutine step
 
    !> The base type's state and U^{n-1}.
+   !> The projection with compliant stops (docs/theory.md section 8, "The position
+   !! scheme"): the springs act at t_n through the half-step penetrations
+   !! pbar^{n+1/2} = s (g - H (U^{n+1} + U^n)/2), with the step force of the scene's rule
+   !! between pbar^{n-1/2} and pbar^{n+1/2} (the gradient rule conserves E^{n+1/2} +
+   !! sum Phi(pbar^{n+1/2})). In the unknown Z = (U^{n+1} + e U^{n-1})/(1 + e):
+   !! W (Z - Z_free) = dt^2/(1 + e) sum_j s_j f_j H_j^T + H^T multiplier, and
+   !! pbar^{n+1/2} = s (g - H (U^n - e U^{n-1})/2) - s (1 + e)/2 H Z.
+   subroutine compliant_projection(self, z_free, z, stat, errmsg)
+      class(position_stepper), intent(inout) :: self
+      real(dp), intent(in) :: z_free(:)
+      real(dp), intent(out) :: z(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp) :: p0(self%contacts%springs%count), q(self%contacts%springs%count), e
+      integer :: no_points(0), j
+      real(dp) :: no_values(0)
+      e = self%restitution
+      associate (springs => self%contacts%springs, c => self%compliant)
+         p0 = self%spring_penetrations(0.5_dp*(self%u + self%u_previous))
+         q = self%spring_penetrations(0.5_dp*(self%u - e*self%u_previous))
+         call c%solve(springs, self%contacts, self%iteration_matrix, self%projector, z_free, q, p0, 0.5_dp*(1 + e), &
+                      self%dt**2/(1 + e), 0.5_dp, self%dt, rigid_admissible, no_points, no_values, no_values, z, &
+                      self%multiplier, stat, errmsg)
+         self%iterations = c%iterations
+         self%linear_solves = c%linear_solves
+         if (stat /= 0) then
+            stat = 3
+            return
+         end if
+         ! energy: the beam's half-step energy loses sum f dpbar; Phi(pbar) stores it
+         self%dissipated_contact_damping = self%dissipated_contact_damping + sum((c%force - c%elastic)*(c%p1 - p0))
+         self%dissipated_numerical = self%dissipated_numerical + sum(c%elastic*(c%p1 - p0)) - &
+            sum(stop_potential(springs%stiffness, springs%exponent, c%p1) - &
+                stop_potential(springs%stiffness, springs%exponent, p0))
+         self%contact_force = 0
+         do j = 1, springs%count
+            self%contact_force(springs%point(j)) = self%contact_force(springs%point(j)) + springs%sign(j)* &
+               end_force(springs%stiffness(j), springs%exponent(j), springs%damping(j), self%dt, p0(j), c%p1(j))
+         end do
+      end associate
+   end subroutine compliant_projection
+
+   !> sum_j Phi_j(pbar_j^{n+1/2}), the stops' part of the half-step energy (J).
+   function half_step_contact_potential(self) result(energy)
+      class(position_stepper), intent(in) :: self
+      real(dp) :: energy
+      energy = 0
+      associate (springs => self%contacts%springs)
+         if (springs%count > 0) energy = sum(stop_potential(springs%stiffness, springs%exponent, &
+                                                            self%spring_penetrations(0.5_dp*(self%u + self%u_previous))))
+      end associate
+   end function half_step_contact_potential
+
    subroutine save_state(self, record)
       class(position_stepper), intent(in) :: self
       type(state_record), intent(inout) :: record

@@ -80,6 +80,11 @@ module vibrobeam_recorder
       type(h5_series) :: histories(history_count), point_u, point_v, field_time, field, impact_columns(5)
       type(h5_series) :: spectrum_frequency, spectrum_amplitude
       type(h5_array) :: fraction
+      ! compliant stops (docs/output.md): created only when the scene has springs
+      logical :: compliant = .false.
+      type(h5_series) :: contact_potential, contact_damping, contact_force
+      type(h5_array) :: peak_force_array
+      real(dp), allocatable :: peak_force(:)         !! largest |force| per contact point over every step (N)
    contains
       procedure :: init => recorder_init
       procedure :: create_datasets
@@ -126,6 +131,8 @@ contains
       self%length = model%length
       allocate (self%in_contact(contacts), source=.false.)
       allocate (self%contact_time(contacts), source=0.0_dp)
+      self%compliant = stepper%contacts%springs%count > 0
+      allocate (self%peak_force(contacts), source=0.0_dp)
       allocate (self%events%impact(contacts), source=.false.)
       tolerance = 1e-12_dp*model%length
       self%tip_contact = 0
@@ -194,6 +201,16 @@ contains
       if (stat == 0) call self%spectrum_frequency%create(writer, '/spectrum/frequency', 1, 'Hz', stat, errmsg)
       if (stat == 0) call self%spectrum_amplitude%create(writer, '/spectrum/tip_amplitude', 1, 'm', stat, errmsg)
       if (stat == 0) call self%episodes%create_datasets(writer, stat, errmsg)
+      if (stat == 0 .and. self%compliant) then
+         call self%contact_potential%create(writer, '/energy/contact_potential', 1, 'J', stat, errmsg)
+         if (stat == 0) call self%contact_damping%create(writer, '/energy/dissipated_contact_damping', 1, 'J', &
+                                                         stat, errmsg)
+         if (stat == 0) call self%contact_force%create(writer, '/contact/force', stepper%contacts%count, 'N', &
+                                                       stat, errmsg, matrix=.true.)
+         if (stat == 0) call self%peak_force_array%create(writer, '/contact/peak_force', stepper%contacts%count, &
+                                                          .false., stat, errmsg)
+         if (stat == 0) call writer%attr_string('/contact/peak_force', 'unit', 'N', stat, errmsg)
+      end if
    end subroutine create_datasets
 
    !> Largest penetration of the current positions into an obstacle (m, >= 0).
@@ -236,6 +253,15 @@ contains
          end if
          if (c == self%tip_contact) self%tip_impulse = self%tip_impulse + stepper%impulse(k)
       end do
+      if (self%compliant) then
+         ! Hook for force statistics (issue 12; the statistics module of the sweeps work is
+         ! not on this branch): stepper%contact_force holds the true force at every contact
+         ! point after every step; a statistics observer should accumulate, per point and
+         ! while the force is nonzero, its peak, mean and RMS here, beside peak_force.
+         ! a compliant point is in contact while its stops push (docs/output.md)
+         where (abs(stepper%contact_force) > 0) now = .true.
+         self%peak_force = max(self%peak_force, abs(stepper%contact_force))
+      end if
       where (now) self%contact_time = self%contact_time + stepper%dt
       self%in_contact = now
       depth = penetration(stepper)
@@ -282,7 +308,7 @@ contains
       type(beam_model), intent(in) :: model
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp) :: row(history_count), interval
+      real(dp) :: row(history_count), interval, potential
       real(dp) :: values(size(self%point_x)), speeds(size(self%point_x))
       integer :: k
       stat = 0
@@ -303,6 +329,16 @@ contains
       row(h_damping) = stepper%dissipated_damping
       row(h_numerical) = stepper%dissipated_numerical
       row(h_dissipated) = row(h_impacts) + row(h_damping) + row(h_numerical)
+      if (self%compliant) then
+         ! the stops' stored energy is part of the total, their damping a dissipation
+         potential = stepper%contact_potential()
+         row(h_total) = row(h_total) + potential
+         row(h_dissipated) = row(h_dissipated) + stepper%dissipated_contact_damping
+         call self%contact_potential%append([potential], stat, errmsg)
+         if (stat == 0) call self%contact_damping%append([stepper%dissipated_contact_damping], stat, errmsg)
+         if (stat == 0) call self%contact_force%append(stepper%contact_force, stat, errmsg)
+         if (stat /= 0) return
+      end if
       row(h_balance) = row(h_total) - row(h_work) + row(h_dissipated)
       row(h_penetration) = penetration(stepper)
       do k = 1, history_count
@@ -383,6 +419,9 @@ contains
       if (stat == 0 .and. size(self%point_x) > 0) call self%point_u%write(stat, errmsg)
       if (stat == 0 .and. size(self%point_x) > 0) call self%point_v%write(stat, errmsg)
       if (stat == 0) call self%episodes%write_buffers(stat, errmsg)
+      if (stat == 0 .and. self%compliant) call self%contact_potential%write(stat, errmsg)
+      if (stat == 0 .and. self%compliant) call self%contact_damping%write(stat, errmsg)
+      if (stat == 0 .and. self%compliant) call self%contact_force%write(stat, errmsg)
    end subroutine write_buffers
 
    !> Rows so far: [outputs, field snapshots, impacts, episodes].
@@ -413,6 +452,7 @@ contains
       if (stat == 0) call writer%rewrite_attr('/contact', 'max_penetration_time', self%max_penetration_time, &
                                                    stat, errmsg)
       if (stat == 0) call writer%rewrite_attr('/impacts', 'count', self%impacts, stat, errmsg)
+      if (stat == 0 .and. self%compliant) call self%peak_force_array%write_reals(self%peak_force, stat, errmsg)
       if (stat /= 0) return
       call self%spectrum%spectrum(frequency, amplitude, segments, width, stat, errmsg)
       if (stat /= 0) then
@@ -442,6 +482,12 @@ contains
       call self%point_u%close()
       call self%point_v%close()
       call self%fraction%close()
+      if (self%compliant) then
+         call self%contact_potential%close()
+         call self%contact_damping%close()
+         call self%contact_force%close()
+         call self%peak_force_array%close()
+      end if
       call self%spectrum_frequency%close()
       call self%spectrum_amplitude%close()
    end subroutine finish
@@ -455,6 +501,7 @@ contains
                                                 self%max_penetration_time])
       call record%put_logicals('recorder.in_contact', self%in_contact)
       call record%put_reals('recorder.contact_time', self%contact_time)
+      if (self%compliant) call record%put_reals('recorder.peak_force', self%peak_force)
       call self%spectrum%save_state(record)
       call self%episodes%save_state(record)
    end subroutine save_state
@@ -471,6 +518,7 @@ contains
       if (stat == 0) call record%get_reals('recorder.values', values, stat, errmsg)
       if (stat == 0) call record%get_logicals('recorder.in_contact', self%in_contact, stat, errmsg)
       if (stat == 0) call record%get_reals('recorder.contact_time', self%contact_time, stat, errmsg)
+      if (stat == 0 .and. self%compliant) call record%get_reals('recorder.peak_force', self%peak_force, stat, errmsg)
       if (stat == 0) call self%spectrum%restore_state(record, stat, errmsg)
       if (stat == 0) call self%episodes%restore_state(record, stat, errmsg)
       if (stat /= 0) return

@@ -38,6 +38,12 @@ module vibrobeam_scene
       character(len=keyword_length) :: side = 'below'   !! 'below' (bounds u from below) | 'above'
       real(dp) :: x_from = 0, x_to = 0      !! extent along the beam (m)
       real(dp) :: level_from = 0, level_to = 0   !! surface height at x_from, x_to (m)
+      !> 0: rigid (Newton's law, &impact); > 0: compliant stop with force stiffness p^exponent
+      !! (N/m for a punctual obstacle, N/m per m of length for a longitudinal one; per unit
+      !! rho S when the beam is given by k2), docs/theory.md section 8
+      real(dp) :: stiffness = 0
+      real(dp) :: exponent = 1                   !! 1 linear, 1.5 Hertz-like
+      real(dp) :: damping = 0                    !! Hunt-Crossley alpha (s/m), compliant stops only
    end type obstacle_type
 
    !> Every input value of a run, after defaults.
@@ -66,6 +72,9 @@ module vibrobeam_scene
       real(dp) :: t_end = 1, dt = 1e-4_dp
       character(len=keyword_length) :: scheme = 'velocity'
       real(dp) :: theta = 0.5_dp, gamma = 0.5_dp
+      !> force of a compliant stop over a step: 'gradient' (discrete gradient of its potential,
+      !! conserves energy) or 'mean' (theta-weighted mean of the end forces, Newmark's rule)
+      character(len=keyword_length) :: compliant_rule = 'gradient'
       ! &initial
       character(len=keyword_length) :: displacement = 'zero'
       integer :: displacement_mode = 1
@@ -166,6 +175,9 @@ contains
          real_variable('obstacles', 'x_to', 0.0_dp, 1e6_dp, 'm', max_obstacles), &
          real_variable('obstacles', 'level_from', -1e6_dp, 1e6_dp, 'm', max_obstacles), &
          real_variable('obstacles', 'level_to', -1e6_dp, 1e6_dp, 'm', max_obstacles), &
+         real_variable('obstacles', 'stiffness', 0.0_dp, 1e30_dp, 'N/m', max_obstacles), &
+         real_variable('obstacles', 'exponent', 1.0_dp, 3.0_dp, '', max_obstacles), &
+         real_variable('obstacles', 'damping', 0.0_dp, 1e6_dp, 's/m', max_obstacles), &
          real_variable('impact', 'restitution', 0.0_dp, 1.0_dp, ''), &
          keyword_variable('impact', 'separating_points', 'elastic|restitution'), &
          real_variable('time', 't_end', 1e-15_dp, 1e12_dp, 's'), &
@@ -173,6 +185,7 @@ contains
          keyword_variable('time', 'scheme', 'velocity|position'), &
          real_variable('time', 'theta', 0.5_dp, 1.0_dp, ''), &
          real_variable('time', 'gamma', 0.0_dp, 1.0_dp, ''), &
+         keyword_variable('time', 'compliant_rule', 'gradient|mean'), &
          keyword_variable('initial', 'displacement', 'zero|mode|static'), &
          integer_variable('initial', 'displacement_mode', 1, 100), &
          real_variable('initial', 'displacement_amplitude', -1e6_dp, 1e6_dp, 'm'), &
@@ -295,6 +308,14 @@ contains
             call check_real('obstacles', 'x_to', o%x_to, item)
             call check_real('obstacles', 'level_from', o%level_from, item)
             call check_real('obstacles', 'level_to', o%level_to, item)
+            call check_real('obstacles', 'stiffness', o%stiffness, item)
+            call check_real('obstacles', 'exponent', o%exponent, item)
+            call check_real('obstacles', 'damping', o%damping, item)
+            if (stat /= 0) return
+            if (o%stiffness <= 0 .and. o%damping > 0) &
+               call fail('&obstacles damping'//item//' = '//real_text(o%damping)// &
+                         ' is given for a rigid obstacle (stiffness'//item// &
+                         ' = 0): contact damping needs a compliant stop; give stiffness'//item//' > 0 or damping 0')
             if (stat /= 0) return
             call in_range('obstacles', 'x_from'//item, o%x_from, 0.0_dp, scene%length, ' m, [0, length]')
             call in_range('obstacles', 'x_to'//item, o%x_to, o%x_from, scene%length, ' m, [x_from'//item//', length]')
@@ -309,6 +330,7 @@ contains
       call check_keyword('time', 'scheme', scene%scheme)
       call check_real('time', 'theta', scene%theta)
       call check_real('time', 'gamma', scene%gamma)
+      call check_keyword('time', 'compliant_rule', scene%compliant_rule)
       if (stat /= 0) return
       if (scene%kind == 'dynamics') then
          call in_range('time', 'dt', scene%dt, 0.0_dp, scene%t_end, ' s, (0, t_end]')
@@ -491,6 +513,9 @@ contains
          call add_real('obstacles.x_to'//trim(index), scene%obstacles(i)%x_to, 'm')
          call add_real('obstacles.level_from'//trim(index), scene%obstacles(i)%level_from, 'm')
          call add_real('obstacles.level_to'//trim(index), scene%obstacles(i)%level_to, 'm')
+         call add_real('obstacles.stiffness'//trim(index), scene%obstacles(i)%stiffness, 'N/m')
+         call add_real('obstacles.exponent'//trim(index), scene%obstacles(i)%exponent, '')
+         call add_real('obstacles.damping'//trim(index), scene%obstacles(i)%damping, 's/m')
       end do
       call add_real('impact.restitution', scene%restitution, '')
       call add_string('impact.separating_points', scene%separating_points)
@@ -499,6 +524,7 @@ contains
       call add_string('time.scheme', scene%scheme)
       call add_real('time.theta', scene%theta, '')
       call add_real('time.gamma', scene%gamma, '')
+      call add_string('time.compliant_rule', scene%compliant_rule)
       call add_string('initial.displacement', scene%displacement)
       call add_integer('initial.displacement_mode', scene%displacement_mode)
       call add_real('initial.displacement_amplitude', scene%displacement_amplitude, 'm')

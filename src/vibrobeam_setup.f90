@@ -18,6 +18,7 @@ module vibrobeam_setup
    use vibrobeam_state_record, only: state_record
    use vibrobeam_checkpoint, only: read_checkpoint, check_compatible
    use vibrobeam_contact_solver, only: contact_method_code
+   use vibrobeam_compliant_law, only: rule_code
    implicit none
    private
    public :: prepared_scene, prepare_scene, start_stepper, start_time_stepper
@@ -173,11 +174,13 @@ contains
       type(velocity_stepper), intent(out) :: stepper
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      stepper%compliant_rule = rule_code(trim(scene%compliant_rule))
       call stepper%init(prepared%model, prepared%contacts, prepared%loads, scene%dt, scene%theta, scene%gamma, &
                         scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
                         prepared%u0, prepared%v0, stat, errmsg)
       stepper%projector%max_iterations = scene%contact_max_iterations
       stepper%projector%method = contact_method_code(trim(scene%contact_method))
+      stepper%compliant%method = trim(scene%contact_method)
       if (scene%separating_points == 'restitution') stepper%separating_restitution = scene%restitution
    end subroutine start_stepper
 
@@ -193,11 +196,13 @@ contains
       type(position_stepper), allocatable :: position
       if (scene%scheme == 'position') then
          allocate (position)
+         position%compliant_rule = rule_code(trim(scene%compliant_rule))
          call position%init(prepared%model, prepared%contacts, prepared%loads, scene%dt, scene%theta, &
                             scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
                             prepared%u0, prepared%v0, stat, errmsg)
          position%projector%max_iterations = scene%contact_max_iterations
          position%projector%method = contact_method_code(trim(scene%contact_method))
+         position%compliant%method = trim(scene%contact_method)
          call move_alloc(position, stepper)
       else
          allocate (velocity)

@@ -10,6 +10,9 @@ module vibrobeam_stepper
    use vibrobeam_contact_solver, only: contact_projector
    use vibrobeam_loads, only: load_set
    use vibrobeam_state_record, only: state_record
+   use vibrobeam_compliant_law, only: stop_potential, rule_gradient
+   use vibrobeam_compliant_solve, only: compliant_solver
+   use vibrobeam_contact_points, only: contact_value
    implicit none
    private
    public :: time_stepper, save_stepper_state, restore_stepper_state
@@ -43,10 +46,20 @@ module vibrobeam_stepper
       real(dp) :: dissipated_damping = 0     !! energy taken by Rayleigh damping (J)
       real(dp) :: dissipated_numerical = 0   !! energy taken by the theta-method itself (J): velocity scheme,
                                              !! 0 for theta = 1/2; 0 for the position scheme
+      ! compliant stops (docs/theory.md section 8); unused when contacts%springs%count = 0
+      real(dp) :: dissipated_contact_damping = 0   !! energy taken by the stops' damping (J)
+      integer :: compliant_rule = rule_gradient    !! how a step takes the stop force (vibrobeam_compliant_law)
+      type(compliant_solver) :: compliant          !! the step's Newton solve with springs
+      !> force of the compliant stops on each contact point at t (N, positive upwards;
+      !! 0 at rigid-only points)
+      real(dp), allocatable :: contact_force(:)
    contains
       procedure(step_interface), deferred :: step
       procedure :: kinetic_energy
       procedure :: elastic_energy
+      procedure :: contact_potential
+      procedure :: compliant_energy
+      procedure :: spring_penetrations
       procedure :: set_up_system
       procedure :: damping_times
       procedure :: save_state => save_stepper_state
@@ -81,6 +94,51 @@ contains
       energy = 0.5_dp*dot_product(self%u, ku)
    end function elastic_energy
 
+   !> Penetration p_j = s_j (g_j - H_c U) of every spring at the displacement `u` (m).
+   function spring_penetrations(self, u) result(p)
+      class(time_stepper), intent(in) :: self
+      real(dp), intent(in) :: u(:)
+      real(dp) :: p(self%contacts%springs%count)
+      integer :: j
+      associate (springs => self%contacts%springs)
+         do j = 1, springs%count
+            p(j) = springs%sign(j)*(springs%level(j) - contact_value(self%contacts, springs%point(j), u))
+         end do
+      end associate
+   end function spring_penetrations
+
+   !> Energy stored in the compliant stops, sum_j Phi_j(p_j) (J).
+   function contact_potential(self) result(energy)
+      class(time_stepper), intent(in) :: self
+      real(dp) :: energy
+      associate (springs => self%contacts%springs)
+         energy = 0
+         if (springs%count > 0) &
+            energy = sum(stop_potential(springs%stiffness, springs%exponent, self%spring_penetrations(self%u)))
+      end associate
+   end function contact_potential
+
+   !> Energy bookkeeping of the compliant stops over the step that ends at `u_new` (call it
+   !! before U^n is replaced): the beam lost sum_j f_j (p_j^{n+1} - p_j^n) to the stops (f_j
+   !! the force the step applied), of which Phi_j(p^{n+1}) - Phi_j(p^n) is stored,
+   !! (f_j - elastic_j) dp_j >= 0 is taken by the contact damping and the rest,
+   !! elastic_j dp_j - dPhi_j (round-off for the 'gradient' rule; the 'mean' rule's error at
+   !! a step that engages or releases a stop), is the time discretization's: it goes to
+   !! `dissipated_numerical` (docs/theory.md section 8).
+   subroutine compliant_energy(self, u_new)
+      class(time_stepper), intent(inout) :: self
+      real(dp), intent(in) :: u_new(:)
+      real(dp) :: p0(self%contacts%springs%count), p1(self%contacts%springs%count)
+      associate (springs => self%contacts%springs, c => self%compliant)
+         p0 = self%spring_penetrations(self%u)
+         p1 = self%spring_penetrations(u_new)
+         self%dissipated_contact_damping = self%dissipated_contact_damping + sum((c%force - c%elastic)*(p1 - p0))
+         self%dissipated_numerical = self%dissipated_numerical + sum(c%elastic*(p1 - p0)) - &
+            sum(stop_potential(springs%stiffness, springs%exponent, p1) - &
+                stop_potential(springs%stiffness, springs%exponent, p0))
+      end associate
+   end subroutine compliant_energy
+
    !> What both schemes set up the same way: the data of the run, the iteration matrix
    !! W = mass_coefficient M + stiffness_coefficient K (each scheme gives its own
    !! coefficients) with its Cholesky factor, the contact projection in the metric of W,
@@ -110,12 +168,15 @@ contains
       self%steps = 0
       n = contacts%count
       allocate (self%active(n), self%impulse(n), self%velocity_before(n), self%velocity_after(n), &
-                self%approaching(n))
+                self%approaching(n), self%contact_force(n))
+      self%contact_force = 0
       self%active_count = 0
       self%iteration_matrix = band_combination(mass_coefficient, model%mass, stiffness_coefficient, model%stiffness)
       call band_factor(self%iteration_matrix, self%iteration_factor, stat, errmsg)
       if (stat /= 0) return
       call self%projector%setup(self%iteration_matrix, self%iteration_factor, contacts, contact_regime)
+      if (contacts%springs%count > 0) call self%compliant%setup(contacts%springs, self%compliant_rule, contact_regime, &
+                                                                'newton')
    end subroutine set_up_system
 
    !> Put everything a continued run needs to go on bitwise into `record` (docs/output.md,
@@ -130,6 +191,10 @@ contains
       call record%put_reals('stepper.v', self%v)
       call record%put_reals('stepper.energy_sums', [self%work, self%dissipated_impacts, self%dissipated_damping, &
                                                     self%dissipated_numerical])
+      if (self%contacts%springs%count > 0) then
+         call record%put_reals('stepper.contact_damping', [self%dissipated_contact_damping])
+         call record%put_reals('stepper.contact_force', self%contact_force)
+      end if
    end subroutine save_stepper_state
 
    !> Take back what `save_state` put into `record` (same sizes); t = steps dt.
@@ -143,6 +208,12 @@ contains
       if (stat == 0) call record%get_reals('stepper.u', self%u, stat, errmsg)
       if (stat == 0) call record%get_reals('stepper.v', self%v, stat, errmsg)
       if (stat == 0) call record%get_reals('stepper.energy_sums', sums, stat, errmsg)
+      if (stat == 0 .and. self%contacts%springs%count > 0) then
+         call record%get_reals('stepper.contact_damping', sums(1:1), stat, errmsg)
+         if (stat == 0) self%dissipated_contact_damping = sums(1)
+         if (stat == 0) call record%get_reals('stepper.contact_force', self%contact_force, stat, errmsg)
+         if (stat == 0) call record%get_reals('stepper.energy_sums', sums, stat, errmsg)
+      end if
       if (stat /= 0) return
       self%work = sums(1)
       self%dissipated_impacts = sums(2)

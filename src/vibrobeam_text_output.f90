@@ -24,8 +24,9 @@ module vibrobeam_text_output
    integer, parameter :: path_length = 1024
 
    !> Every suffix a result's .dat files can have.
-   character(len=*), parameter :: text_suffixes(13) = [character(len=16) :: 'modes', 'shapes', 'static', &
-      'reactions', 'tip', 'energy', 'impacts', 'episodes', 'points', 'field', 'spectrum', 'obstacles', 'contact']
+   character(len=*), parameter :: text_suffixes(14) = [character(len=16) :: 'modes', 'shapes', 'static', &
+      'reactions', 'tip', 'energy', 'impacts', 'episodes', 'points', 'field', 'spectrum', 'obstacles', 'contact', &
+      'force']
 
    !> Most values read from the HDF5 file at once (8 MiB).
    integer, parameter :: block_values = 2**20
@@ -311,6 +312,17 @@ contains
                            points_text(x)//' m, then v (m/s) at each')
             call stream_rows(sink, [character(len=40) :: '/time', '/points/displacement', '/points/velocity'], &
                              [1, points, points], outputs, 'wide')
+            call close_sink(sink)
+            if (stat /= 0 .or. interrupted) return
+         end if
+         if (file%exists('/contact/force')) then
+            ! compliant stops: the force at each contact point (docs/output.md)
+            call file%read_reals('/contact/x', x, stat, errmsg)
+            if (stat /= 0) return
+            points = size(x)
+            call open_sink(sink, 'force', 't (s)  then the compliant stops'' force (N) at each contact point x = '// &
+                           points_text(x)//' m')
+            call stream_rows(sink, [character(len=40) :: '/time', '/contact/force'], [1, points], outputs, 'wide')
             call close_sink(sink)
             if (stat /= 0 .or. interrupted) return
          end if

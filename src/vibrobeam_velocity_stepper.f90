@@ -16,6 +16,11 @@
 !! active point gives it the wrong sign and the energy can grow; with e_c = 1 there its
 !! term vanishes, so impacts only dissipate. The rest of the energy change that is not
 !! work or damping is the theta-method's own, `dissipated_numerical` (see `step`).
+!!
+!! Compliant stops (docs/theory.md section 8): their force enters step 3 implicitly, as
+!! dt sum_j s_j f_j H_j^T with f_j the step force of `vibrobeam_compliant_law` at the
+!! penetrations of U^{n+1}; `vibrobeam_compliant_solve` solves the step by Newton's method
+!! with the rigid projection inside each iteration (`compliant_step`).
 module vibrobeam_velocity_stepper
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
@@ -26,6 +31,8 @@ module vibrobeam_velocity_stepper
    use vibrobeam_loads, only: load_set
    use vibrobeam_stepper, only: time_stepper, save_stepper_state, restore_stepper_state
    use vibrobeam_state_record, only: state_record
+   use vibrobeam_compliant_law, only: end_force, stop_potential
+   use vibrobeam_compliant_solve, only: rigid_active
    implicit none
    private
    public :: velocity_stepper
@@ -45,6 +52,7 @@ module vibrobeam_velocity_stepper
       procedure :: init
       procedure :: step
       procedure :: restore_state
+      procedure, private :: compliant_step
    end type velocity_stepper
 
 contains
@@ -90,7 +98,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp), dimension(size(self%u)) :: rhs, work_vector, v_free, v_new, u_new, force_new, force_theta, v_theta
-      real(dp) :: predicted, e_c, impulse_power
+      real(dp) :: predicted, e_c, impulse_power, spring_power
       real(dp) :: signs(self%contacts%count), offsets(self%contacts%count)
       integer :: c, m, k
       associate (dt => self%dt, theta => self%theta)
@@ -125,11 +133,16 @@ contains
             offsets(m) = -e_c*self%velocity_before(m)
          end do
          self%active_count = m
-         ! 3. projection
-         call self%projector%project(v_free, self%active(1:m), signs(1:m), offsets(1:m), v_new, &
-                                     self%impulse(1:m), self%iterations, stat, errmsg)
-         self%linear_solves = self%projector%linear_solves
-         self%used_fallback = self%projector%used_fallback
+         ! 3. projection (with the compliant stops' forces when the scene has any)
+         if (self%contacts%springs%count > 0) then
+            call self%compliant_step(v_free, signs(1:m), offsets(1:m), v_new, spring_power, stat, errmsg)
+         else
+            call self%projector%project(v_free, self%active(1:m), signs(1:m), offsets(1:m), v_new, &
+                                        self%impulse(1:m), self%iterations, stat, errmsg)
+            self%linear_solves = self%projector%linear_solves
+            self%used_fallback = self%projector%used_fallback
+            spring_power = 0
+         end if
          if (stat /= 0) return
          ! 4. positions
          v_theta = theta*v_new + (1 - theta)*self%v
@@ -147,7 +160,7 @@ contains
          ! approaching points and e_c = 1 on separating ones) and the theta-method the last
          ! term (0 for theta = 1/2; >= 0 in every step without impulses for theta > 1/2).
          if (self%loads%present) self%work = self%work + dot_product(force_theta, u_new - self%u)
-         impulse_power = 0
+         impulse_power = spring_power
          do k = 1, m
             self%velocity_after(k) = contact_value(self%contacts, self%active(k), v_new)
             self%dissipated_impacts = self%dissipated_impacts - 0.5_dp*self%impulse(k)* &
@@ -163,6 +176,7 @@ contains
             self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)* &
                                         (dot_product(u_new - self%u, work_vector) - impulse_power)
          end if
+         if (self%contacts%springs%count > 0) call self%compliant_energy(u_new)
          self%u = u_new
          self%v = v_new
          self%force = force_new
@@ -171,6 +185,44 @@ contains
          self%impulse_time = self%t   ! the impulse acts over [t_n, t_{n+1}]; recorded at its end
       end associate
    end subroutine step
+
+   !> Step 3 with compliant stops: V^{n+1} from Newton's method on
+   !! W (V - V_free) = dt sum_j s_j f_j(p_j) H_j^T + H^T P, p_j = s_j (g_j - H_j U^{n+1}),
+   !! U^{n+1} = U^n + dt ((1 - theta) V^n + theta V), with the rigid projection of the
+   !! active points inside each iteration. spring_power = sum_j dt s_j f_j H_j (V^{n+1} - V^n),
+   !! the springs' part of the theta-method's term. stat 3 when Newton fails (exit 3).
+   subroutine compliant_step(self, v_free, signs, offsets, v_new, spring_power, stat, errmsg)
+      class(velocity_stepper), intent(inout) :: self
+      real(dp), intent(in) :: v_free(:), signs(:), offsets(:)
+      real(dp), intent(out) :: v_new(:), spring_power
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp) :: p0(self%contacts%springs%count), q(self%contacts%springs%count)
+      integer :: m, j
+      m = size(signs)
+      associate (springs => self%contacts%springs, dt => self%dt, theta => self%theta)
+         p0 = self%spring_penetrations(self%u)
+         q = self%spring_penetrations(self%u + dt*(1 - theta)*self%v)
+         call self%compliant%solve(springs, self%contacts, self%iteration_matrix, self%projector, v_free, q, p0, &
+                                   theta*dt, dt, theta, dt, rigid_active, self%active(1:m), signs, offsets, v_new, &
+                                   self%impulse(1:m), stat, errmsg)
+         self%iterations = self%compliant%iterations
+         self%linear_solves = self%compliant%linear_solves
+         self%used_fallback = self%projector%used_fallback
+         if (stat /= 0) then
+            stat = 3
+            return
+         end if
+         spring_power = 0
+         self%contact_force = 0
+         do j = 1, springs%count
+            spring_power = spring_power + dt*springs%sign(j)*self%compliant%force(j)* &
+                           contact_value(self%contacts, springs%point(j), v_new - self%v)
+            self%contact_force(springs%point(j)) = self%contact_force(springs%point(j)) + springs%sign(j)* &
+               end_force(springs%stiffness(j), springs%exponent(j), springs%damping(j), dt, p0(j), self%compliant%p1(j))
+         end do
+      end associate
+   end subroutine compliant_step
 
 
 end module vibrobeam_velocity_stepper

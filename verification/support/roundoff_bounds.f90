@@ -45,7 +45,7 @@ module vibrobeam_roundoff_bounds
    implicit none
    private
    public :: unit_roundoff, gamma_n, abs_band_times, abs_factor_times, energy_form_bound, stepper_energy_bound
-   public :: energy_ledger, hoeffding_lambda, stepper_balance, balance_bounds, balance_bounds_at
+   public :: energy_ledger, hoeffding_lambda, stepper_balance, balance_bounds, balance_bounds_at, abs_row
 
    real(dp), parameter :: unit_roundoff = epsilon(1.0_dp)/2   !! u
    real(dp), parameter :: hoeffding_lambda = 6                 !! 2 exp(-18) = 3e-8

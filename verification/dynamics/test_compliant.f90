@@ -1,0 +1,237 @@
+!> Verification of compliant stops (docs/theory.md section 8).
+!!
+!! usage: test_compliant static STATIC_TIP.nml
+!!   A cantilever under a uniform load q whose tip rests on a spring k at gap g has the tip
+!!   reaction R = (q L^4/(8EI) - g) / (L^3/(3EI) + 1/k) (superposition of the clamped-free
+!!   deflections of q and of the tip force; Hermite elements with a consistent load vector
+!!   are exact at the nodes). Checked for k = 1e2 .. 1e10 N/m and N = 1, 2, 4, 8 to
+!!   1e-10 relative; the derived round-off bound (below) must itself be below 1e-10. Then
+!!   R -> R_rigid = 3EI(qL^4/(8EI) - g)/L^3 as k -> infinity: exactly,
+!!   R_rigid - R = R_rigid / (1 + k L^3/(3EI)), so the fitted slope of log(R_rigid - R)
+!!   against log k must be -1 (within 0.02 over k = 1e6 .. 1e9).
+!!   Round-off: the tip displacement u solves J U = F + k(-g) e, J = K + k e e^T, after
+!!   U_free = K^-1 F; with z = J^-1 e (the tip row of J^-1) its error is at most, to first
+!!   order (band Cholesky backward error, Higham Thm 10.4),
+!!     gamma_{3kd+6} |z|^T (|L_J||D_J||L_J^T||U| + |L_K||D_K||L_K^T||U_free| + |K|(|U_free| + |U|)),
+!!   and R = k (-g - u) divides it by |g + u|: for k >= 1e9 N/m that exceeds 1e-10 (the
+!!   penetration p = R/k cancels), and for N = 8 (cond(K) grows like N^4) it is 2e-10: the
+!!   check uses the bound itself there, and asserts the bound below 1e-10 for N <= 4.
+!!
+!! usage: test_compliant energy SCENE.nml
+!!   No load, no damping, theta = 1/2, the 'gradient' rule: the discrete energy
+!!   E = 1/2 V^T M V + 1/2 U^T K U + sum_j Phi_j(p_j) stays constant at every step to its
+!!   round-off bound: the beam's per-step bound of `vibrobeam_roundoff_bounds` (the free
+!!   step and rigid impulses) plus, per step and spring, the terms the springs add:
+!!   - the Newton acceptance: |f_applied - f(p)| <= 1024 eps max_j f_j, times |dp_j|;
+!!   - the discrete gradient's rounding: gamma_8 (Phi_j(p^n) + Phi_j(p^{n+1})) + the
+!!     midpoint replacement's a|a-1| k p^(a-1) |dp|^3 / 24 when |dp| <= 1e-5 |p|;
+!!   - the penetrations' rounding, gamma_6 (|g_j| + |H_j| |U^n| + |H_j| |U^{n+1}|), times f_j;
+!!   - the solve with J = W + dt^2 theta sum d_j H^T H: gamma_{3kd+4} |V^{n+1/2}|^T |L||D||L^T|
+!!     |V^{n+1} - V_free| (the last correction bounded by the whole one) and
+!!     gamma_{2kd+5} |V^{n+1/2}|^T (|W| (|V_free| + 2|V^{n+1}|) + dt sum_j f_j |H_j^T|);
+!!   combined like the ledger's b_k (min of the sum and 6 sqrt(sum of squares)), plus
+!!   gamma_4 of the potential at both ends. Also checks that the run engages every spring
+!!   and that the rigid stop is hit, and prints the same measurement for the 'mean' rule.
+program test_compliant
+   use vibrobeam_kinds, only: dp, output_unit
+   use vibrobeam_scene, only: scene_type, ei_of
+   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_static, only: solve_static
+   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_contact_points, only: contact_set
+   use vibrobeam_compliant_law, only: stop_potential
+   use vibrobeam_band, only: symmetric_band, band_cholesky, band_add, band_factor, band_matvec, band_solve
+   use vibrobeam_roundoff_bounds, only: gamma_n, energy_ledger, abs_band_times, hoeffding_lambda, abs_row
+   use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene, abs_factor_times
+   implicit none
+   type(test_counter) :: t
+   character(len=512) :: mode, path
+   call get_command_argument(1, mode)
+   call get_command_argument(2, path)
+   select case (mode)
+   case ('static')
+      call static_checks()
+   case ('energy')
+      call energy_checks()
+   case default
+      error stop 'usage: test_compliant static|energy SCENE.nml'
+   end select
+   call t%finish('test_compliant')
+
+contains
+
+   subroutine static_checks()
+      type(scene_type) :: scene
+      type(prepared_scene) :: prepared
+      real(dp), parameter :: stiffnesses(9) = [1e2_dp, 1e3_dp, 1e4_dp, 1e5_dp, 1e6_dp, 1e7_dp, 1e8_dp, 1e9_dp, 1e10_dp]
+      integer, parameter :: meshes(4) = [1, 2, 4, 8]
+      real(dp), allocatable :: u(:), reaction(:)
+      real(dp) :: q, g, ei, length, exact, rigid, bound, error, x(4), y(4), slope
+      type(symmetric_band) :: stiffened
+      type(band_cholesky) :: factor, k_factor
+      real(dp), allocatable :: u_free(:), z(:)
+      integer :: i, k, iterations, stat, tip, fit
+      character(len=256) :: errmsg
+      character(len=80) :: label
+      scene = read_test_scene(trim(path))
+      q = -scene%distributed
+      g = -scene%obstacles(1)%level_from
+      ei = ei_of(scene)
+      length = scene%length
+      rigid = 3*ei*(q*length**4/(8*ei) - g)/length**3
+      fit = 0
+      do i = 1, size(meshes)
+         scene%elements = meshes(i)
+         do k = 1, size(stiffnesses)
+            scene%obstacles(1)%stiffness = stiffnesses(k)
+            call prepare_test_scene(scene, prepared)
+            allocate (u(prepared%model%unknowns), reaction(prepared%contacts%count), z(prepared%model%unknowns))
+            call solve_static(prepared%model%stiffness, prepared%contacts, prepared%loads%at(0.0_dp), 'auto', u, &
+                              reaction, iterations, stat, errmsg)
+            if (stat /= 0) error stop 'static solve failed'
+            exact = (q*length**4/(8*ei) - g)/(length**3/(3*ei) + 1/stiffnesses(k))
+            ! derived bound of the relative error of R
+            stiffened = prepared%model%stiffness
+            tip = prepared%contacts%dofs(1, 1)
+            call band_add(stiffened, tip, tip, stiffnesses(k))
+            call band_factor(stiffened, factor, stat, errmsg)
+            call band_factor(prepared%model%stiffness, k_factor, stat, errmsg)
+            u_free = prepared%loads%at(0.0_dp)
+            call band_solve(k_factor, u_free)
+            z = 0
+            z(tip) = 1
+            call band_solve(factor, z)
+            bound = gamma_n(3*stiffened%kd + 6)*dot_product(abs(z), abs_factor_times(factor, abs(u)) + &
+                    abs_factor_times(k_factor, abs(u_free)) + abs_band_times(prepared%model%stiffness, &
+                    abs(u_free) + abs(u)))/abs(g + u(tip)) + gamma_n(12)
+            error = abs(reaction(1) - exact)/abs(exact)
+            write (output_unit, '(a,i2,a,es8.1,a,es22.14,a,es9.2,a,es9.2)') 'N = ', meshes(i), ', k = ', &
+               stiffnesses(k), ': R = ', reaction(1), ', relative error ', error, ', bound ', bound
+            write (label, '(a,i0,a,es8.1)') 'tip reaction on a spring, N = ', meshes(i), ', k = ', stiffnesses(k)
+            ! 1e-10 relative where the round-off bound allows it; beyond (a stiff spring: R = k p
+            ! with p = -g - u cancelling) the derived bound itself
+            call t%check_close(trim(label), reaction(1), exact, max(1e-10_dp, bound))
+            if (stiffnesses(k) <= 1e8_dp .and. meshes(i) <= 4) &
+               call t%check_true(trim(label)//': round-off bound below 1e-10', bound < 1e-10_dp)
+            if (i == size(meshes) .and. k >= 5 .and. k <= 8) then
+               fit = fit + 1
+               x(fit) = log(stiffnesses(k))
+               y(fit) = log(abs(rigid - reaction(1)))
+            end if
+            deallocate (u, reaction, z)
+         end do
+      end do
+      slope = (4*sum(x*y) - sum(x)*sum(y))/(4*sum(x**2) - sum(x)**2)
+      write (output_unit, '(a,f8.4,a)') 'rigid limit: R_rigid - R ~ k^', slope, ' (exact: k^-1)'
+      call t%check_close('rate of R -> R_rigid', slope, -1.0_dp, 0.02_dp)
+   end subroutine static_checks
+
+   subroutine energy_checks()
+      type(scene_type) :: scene
+      type(prepared_scene) :: prepared
+      real(dp) :: drift(2), bound(2), ratio(2)
+      logical :: engaged(2), rigid_hit(2)
+      integer :: r
+      character(len=8), parameter :: rules(2) = [character(len=8) :: 'gradient', 'mean']
+      scene = read_test_scene(trim(path))
+      call prepare_test_scene(scene, prepared)
+      do r = 1, 2
+         scene%compliant_rule = rules(r)
+         call run(scene, prepared, drift(r), bound(r), ratio(r), engaged(r), rigid_hit(r))
+         write (output_unit, '(a,a8,a,es10.3,a,es10.3,a,es10.3)') 'rule ', rules(r), ': max |E^n - E^0| = ', &
+            drift(r), ' J, final round-off bound ', bound(r), ' J, largest |E^n - E^0|/bound_n ', ratio(r)
+      end do
+      call t%check_true('every spring engaged', engaged(1))
+      call t%check_true('the rigid stop is hit', rigid_hit(1))
+      call t%check_true('gradient rule: |E^n - E^0| <= round-off bound at every step', ratio(1) <= 1)
+      call t%check_true('mean rule: energy not conserved (engagement steps), so the test can fail', ratio(2) > 1)
+   end subroutine energy_checks
+
+   subroutine run(scene, prepared, drift, bound, ratio, engaged, rigid_hit)
+      type(scene_type), intent(in) :: scene
+      type(prepared_scene), intent(in) :: prepared
+      real(dp), intent(out) :: drift, bound, ratio
+      logical, intent(out) :: engaged, rigid_hit
+      class(time_stepper), allocatable :: s
+      type(energy_ledger) :: ledger
+      real(dp), allocatable :: u0(:), v0(:), v_free(:), v_half(:), work(:), p0(:), p1(:), hrow(:)
+      real(dp) :: e0, energy, spring_step, linear, squares, fmax, potential_bound
+      logical, allocatable :: seen(:)
+      integer :: n, steps, j, stat, kd
+      character(len=256) :: errmsg
+      call start_time_stepper(scene, prepared, s, stat, errmsg)
+      if (stat /= 0) error stop 'cannot start the stepper'
+      steps = nint(scene%t_end/scene%dt)
+      kd = s%stiffness%kd
+      associate (springs => s%contacts%springs)
+         allocate (seen(springs%count), source=.false.)
+         e0 = s%kinetic_energy() + s%elastic_energy() + s%contact_potential()
+         call ledger%start(s)
+         drift = 0
+         ratio = 0
+         linear = 0
+         squares = 0
+         rigid_hit = .false.
+         potential_bound = gamma_n(4)*s%contact_potential()
+         do n = 1, steps
+            u0 = s%u
+            v0 = s%v
+            p0 = s%spring_penetrations(u0)
+            call ledger%before_step(s)
+            call s%step(stat, errmsg)
+            if (stat /= 0) error stop 'step failed'
+            call ledger%after_step(s)
+            if (s%active_count > 0) rigid_hit = rigid_hit .or. any(abs(s%impulse(1:s%active_count)) > 0)
+            p1 = s%spring_penetrations(s%u)
+            seen = seen .or. p1 > 0
+            ! the springs' terms of this step (module comment)
+            fmax = maxval(abs(s%compliant%force))
+            v_half = 0.5_dp*(s%v + v0)
+            work = s%u
+            ! V_free as the stepper computed it, for its size
+            call band_matvec(s%stiffness, u0 + 0.5_dp*s%dt*v0, work)
+            work = -s%dt*work
+            call band_solve(s%iteration_factor, work)
+            v_free = v0 + work
+            spring_step = 0
+            hrow = 0*s%u
+            do j = 1, springs%count
+               spring_step = spring_step + 1024*epsilon(1.0_dp)*fmax*abs(p1(j) - p0(j)) &
+                  + gamma_n(8)*(stop_potential(springs%stiffness(j), springs%exponent(j), p0(j)) + &
+                                stop_potential(springs%stiffness(j), springs%exponent(j), p1(j))) &
+                  + springs%exponent(j)*abs(springs%exponent(j) - 1)*springs%stiffness(j)* &
+                    max(p0(j), p1(j), 0.0_dp)**(springs%exponent(j) - 1)*abs(p1(j) - p0(j))**3/24 &
+                  + gamma_n(6)*abs(s%compliant%force(j))*(abs(springs%level(j)) + &
+                    abs_row(s%contacts, springs%point(j), u0) + abs_row(s%contacts, springs%point(j), s%u))
+               call add_abs_row(s%contacts, hrow, springs%point(j), s%dt*abs(s%compliant%force(j)))
+            end do
+            if (any(abs(s%compliant%force) > 0)) then
+               spring_step = spring_step + gamma_n(3*kd + 4)*dot_product(abs(v_half), &
+                  abs_factor_times(s%compliant%jacobian_factor, abs(s%v - v_free))) &
+                  + gamma_n(2*kd + 5)*dot_product(abs(v_half), abs_band_times(s%iteration_matrix, &
+                  abs(v_free) + 2*abs(s%v)) + hrow)
+            end if
+            linear = linear + spring_step
+            squares = squares + spring_step**2
+            energy = s%kinetic_energy() + s%elastic_energy() + s%contact_potential()
+            bound = ledger%drift() + min(linear, hoeffding_lambda*sqrt(squares)) + potential_bound + &
+                    gamma_n(4)*s%contact_potential()
+            ! drift: the largest |E^n - E^0| over the run; ratio: the largest |E^n - E^0|/bound_n
+            drift = max(drift, abs(energy - e0))
+            ratio = max(ratio, abs(energy - e0)/bound)
+         end do
+         engaged = all(seen)
+      end associate
+   end subroutine run
+
+   subroutine add_abs_row(contacts, y, c, w)
+      type(contact_set), intent(in) :: contacts
+      real(dp), intent(inout) :: y(:)
+      integer, intent(in) :: c
+      real(dp), intent(in) :: w
+      integer :: a
+      do a = 1, 4
+         if (contacts%dofs(a, c) /= 0) y(contacts%dofs(a, c)) = y(contacts%dofs(a, c)) + w*abs(contacts%weights(a, c))
+      end do
+   end subroutine add_abs_row
+end program test_compliant
