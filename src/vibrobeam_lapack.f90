@@ -4,7 +4,7 @@ module vibrobeam_lapack
    use vibrobeam_kinds, only: dp
    implicit none
    private
-   public :: dpbtrf, dpbtrs, dpbcon, dpotrf, dpotrs, dgbtrf, dgbtrs, dgesv
+   public :: dpbtrf, dpbtrs, dpbcon, dpotrf, dpotrs, dpotri, dgbtrf, dgbtrs, dgesv, dgeqrf, dormqr, dsygv
 
    interface
       !> Cholesky factorization of a symmetric positive definite band matrix.
@@ -74,5 +74,40 @@ module vibrobeam_lapack
          real(dp), intent(inout) :: a(lda, *), b(ldb, *)
          integer, intent(out) :: ipiv(*), info
       end subroutine dgesv
+      !> Inverse of a symmetric positive definite matrix from its dpotrf factor.
+      subroutine dpotri(uplo, n, a, lda, info)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, lda
+         real(dp), intent(inout) :: a(lda, *)
+         integer, intent(out) :: info
+      end subroutine dpotri
+      !> QR factorization of a dense matrix (Householder reflectors).
+      subroutine dgeqrf(m, n, a, lda, tau, work, lwork, info)
+         import :: dp
+         integer, intent(in) :: m, n, lda, lwork
+         real(dp), intent(inout) :: a(lda, *)
+         real(dp), intent(out) :: tau(*), work(*)
+         integer, intent(out) :: info
+      end subroutine dgeqrf
+      !> C := Q C, Q^T C, C Q or C Q^T with the Q of dgeqrf.
+      subroutine dormqr(side, trans, m, n, k, a, lda, tau, c, ldc, work, lwork, info)
+         import :: dp
+         character, intent(in) :: side, trans
+         integer, intent(in) :: m, n, k, lda, ldc, lwork
+         real(dp), intent(in) :: a(lda, *), tau(*)
+         real(dp), intent(inout) :: c(ldc, *)
+         real(dp), intent(out) :: work(*)
+         integer, intent(out) :: info
+      end subroutine dormqr
+      !> Dense symmetric-definite generalized eigenproblem A x = lambda B x.
+      subroutine dsygv(itype, jobz, uplo, n, a, lda, b, ldb, w, work, lwork, info)
+         import :: dp
+         integer, intent(in) :: itype, n, lda, ldb, lwork
+         character, intent(in) :: jobz, uplo
+         real(dp), intent(inout) :: a(lda, *), b(ldb, *)
+         real(dp), intent(out) :: w(*), work(*)
+         integer, intent(out) :: info
+      end subroutine dsygv
    end interface
 end module vibrobeam_lapack
