@@ -62,6 +62,7 @@ module vibrobeam_recorder
       integer :: tip_contact = 0                     !! contact point at the tip, 0 if none
       real(dp) :: tip_impulse = 0                    !! tip impulse since the last output (N s)
       logical, allocatable :: in_contact(:)          !! contact point had an impulse last step
+      logical, allocatable :: touched(:)             !! work space of `after_step`: an impulse this step
       real(dp), allocatable :: contact_time(:)       !! time spent in contact per point (s)
       real(dp) :: max_penetration = 0                !! over every step (m)
       real(dp) :: max_penetration_time = 0
@@ -133,7 +134,7 @@ contains
       if (scene%field_every > 0) self%field_every = scene%field_every
       self%last_step = last_step
       self%length = model%length
-      allocate (self%in_contact(contacts), source=.false.)
+      allocate (self%in_contact(contacts), self%touched(contacts), source=.false.)
       allocate (self%contact_time(contacts), source=0.0_dp)
       allocate (self%events%impact(contacts), source=.false.)
       tolerance = 1e-12_dp*model%length
@@ -246,11 +247,11 @@ contains
       class(time_stepper), intent(in) :: stepper
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      logical :: now(size(self%in_contact))
       real(dp) :: depth
       integer :: k, c
       stat = 0
       errmsg = ''
+      associate (now => self%touched)
       now = .false.
       do k = 1, stepper%active_count
          c = stepper%active(k)
@@ -268,6 +269,7 @@ contains
       end do
       where (now) self%contact_time = self%contact_time + stepper%dt
       self%in_contact = now
+      end associate
       depth = penetration(stepper)
       if (depth > self%max_penetration) then
          self%max_penetration = depth

@@ -80,16 +80,15 @@ contains
    pure function reduction_cutoff(scene) result(cutoff)
       type(scene_type), intent(in) :: scene
       real(dp) :: cutoff
-      real(dp), allocatable :: forcing(:)
+      real(dp) :: forcing(3)
+      logical :: loaded(3)
       if (.not. is_unset(scene%reduction_frequency)) then
          cutoff = scene%reduction_frequency
          return
       end if
-      forcing = [real(dp) ::]
-      if (abs(scene%distributed) > 0) forcing = [forcing, scene%distributed_frequency]
-      if (abs(scene%point_force) > 0) forcing = [forcing, scene%point_frequency]
-      if (abs(scene%base_amplitude) > 0) forcing = [forcing, scene%base_frequency]
-      cutoff = default_reduction_frequency(scene%dt, forcing)
+      forcing = [scene%distributed_frequency, scene%point_frequency, scene%base_frequency]
+      loaded = [abs(scene%distributed) > 0, abs(scene%point_force) > 0, abs(scene%base_amplitude) > 0]
+      cutoff = default_reduction_frequency(scene%dt, pack(forcing, loaded))
    end function reduction_cutoff
 
    !> The Craig-Bampton reduced model of a prepared scene (`vibrobeam_reduction`).

@@ -49,6 +49,7 @@ module vibrobeam_stepper
       procedure :: elastic_energy
       procedure :: set_up_system
       procedure :: damping_times
+      procedure :: damping_into
       procedure :: save_state => save_stepper_state
       procedure :: restore_state => restore_stepper_state
    end type time_stepper
@@ -150,6 +151,23 @@ contains
       self%dissipated_numerical = sums(4)
       self%t = self%steps*self%dt
    end subroutine restore_stepper_state
+
+   !> y = C x = a M x + b K x into preallocated y, with z (same size) as work space: the
+   !! same operations, in the same order, as `damping_times`, without a temporary.
+   subroutine damping_into(self, x, y, z)
+      class(time_stepper), intent(in) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(out) :: y(:), z(:)
+      y = 0
+      if (self%rayleigh_mass > 0) then
+         call band_matvec(self%mass, x, z)
+         y = self%rayleigh_mass*z
+      end if
+      if (self%rayleigh_stiffness > 0) then
+         call band_matvec(self%stiffness, x, z)
+         y = y + self%rayleigh_stiffness*z
+      end if
+   end subroutine damping_into
 
    !> C x = a M x + b K x (Rayleigh damping).
    function damping_times(self, x) result(y)

@@ -36,6 +36,10 @@ module vibrobeam_velocity_stepper
       !! remedy, default) or `restitution` (the plain law of SPEC §3, for comparison)
       real(dp) :: separating_restitution = 1
       real(dp), allocatable :: force(:)            !! F(t_n)
+      !> work space of `step` (J each), allocated once by `init`: a step allocates nothing
+      real(dp), allocatable :: rhs(:), work_vector(:), damping_vector(:), v_free(:), v_new(:), u_new(:), &
+                               force_new(:), force_theta(:), v_theta(:)
+      real(dp), allocatable :: signs(:), offsets(:)   !! (contact points) work space of `step`
       ! u = U^n, v = V^n; work = sum F^{n+theta}.(U^{n+1} - U^n),
       ! dissipated_impacts = -sum P.H (V^{n+1} + V^n)/2,
       ! dissipated_damping = sum dt V^{n+theta}.C V^{n+theta},
@@ -70,6 +74,10 @@ contains
       self%u = u0
       self%v = v0
       self%force = loads%at(0.0_dp)
+      allocate (self%rhs(size(u0)), self%work_vector(size(u0)), self%damping_vector(size(u0)), &
+                self%v_free(size(u0)), self%v_new(size(u0)), self%u_new(size(u0)), self%force_new(size(u0)), &
+                self%force_theta(size(u0)), self%v_theta(size(u0)))
+      allocate (self%signs(contacts%count), self%offsets(contacts%count))
    end subroutine init
 
    !> The base type's restore, then F(t_n) from the loads (which a continued run may change).
@@ -88,17 +96,25 @@ contains
       class(velocity_stepper), intent(inout) :: self
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp), dimension(size(self%u)) :: rhs, work_vector, v_free, v_new, u_new, force_new, force_theta, v_theta
       real(dp) :: predicted, e_c, impulse_power
-      real(dp) :: signs(self%contacts%count), offsets(self%contacts%count)
       integer :: c, m, k
-      associate (dt => self%dt, theta => self%theta)
+      ! every vector lives in the stepper's work space (allocated by `init`)
+      associate (dt => self%dt, theta => self%theta, rhs => self%rhs, work_vector => self%work_vector, &
+                 v_free => self%v_free, v_new => self%v_new, u_new => self%u_new, force_new => self%force_new, &
+                 force_theta => self%force_theta, v_theta => self%v_theta, signs => self%signs, &
+                 offsets => self%offsets, damping_vector => self%damping_vector)
+         stat = 0
+         errmsg = ''
          ! 1. free velocity
-         force_new = self%loads%at((self%steps + 1)*dt)   ! t_{n+1} from the global step number
+         call self%loads%evaluate((self%steps + 1)*dt, force_new)   ! t_{n+1} from the global step number
          force_theta = theta*force_new + (1 - theta)*self%force
-         call band_matvec(self%stiffness, self%u + theta*dt*self%v, work_vector)
+         rhs = self%u + theta*dt*self%v
+         call band_matvec(self%stiffness, rhs, work_vector)
          rhs = force_theta - work_vector
-         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) rhs = rhs - self%damping_times(self%v)
+         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) then
+            call self%damping_into(self%v, damping_vector, work_vector)
+            rhs = rhs - damping_vector
+         end if
          rhs = dt*rhs
          call band_solve(self%iteration_factor, rhs)
          v_free = self%v + rhs
@@ -124,9 +140,15 @@ contains
             offsets(m) = -e_c*self%velocity_before(m)
          end do
          self%active_count = m
-         ! 3. projection
-         call self%projector%project(v_free, self%active(1:m), signs(1:m), offsets(1:m), v_new, &
-                                     self%impulse(1:m), self%iterations, stat, errmsg)
+         ! 3. projection (with no active point it is the identity)
+         if (m > 0) then
+            call self%projector%project(v_free, self%active(1:m), signs(1:m), offsets(1:m), v_new, &
+                                        self%impulse(1:m), self%iterations, stat, errmsg)
+         else
+            v_new = v_free
+            call self%projector%record_free()
+            self%iterations = 0
+         end if
          self%linear_solves = self%projector%linear_solves
          self%used_fallback = self%projector%used_fallback
          if (stat /= 0) return
@@ -145,7 +167,10 @@ contains
          ! so the impacts take -P.H (V^{n+1} + V^n)/2 (>= 0 by Newton's law with e_c <= 1 on
          ! approaching points and e_c = 1 on separating ones) and the theta-method the last
          ! term (0 for theta = 1/2; >= 0 in every step without impulses for theta > 1/2).
-         if (self%loads%present) self%work = self%work + dot_product(force_theta, u_new - self%u)
+         if (self%loads%present) then
+            rhs = u_new - self%u
+            self%work = self%work + dot_product(force_theta, rhs)
+         end if
          impulse_power = 0
          do k = 1, m
             self%velocity_after(k) = contact_value(self%contacts, self%active(k), v_new)
@@ -153,14 +178,18 @@ contains
                                       (self%velocity_after(k) + self%velocity_before(k))
             impulse_power = impulse_power + self%impulse(k)*(self%velocity_after(k) - self%velocity_before(k))
          end do
-         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) &
-            self%dissipated_damping = self%dissipated_damping + dt*dot_product(v_theta, self%damping_times(v_theta))
+         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) then
+            call self%damping_into(v_theta, damping_vector, work_vector)
+            self%dissipated_damping = self%dissipated_damping + dt*dot_product(v_theta, damping_vector)
+         end if
          if (abs(theta - 0.5_dp) > 0) then
-            call band_matvec(self%mass, v_new - self%v, work_vector)
-            self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)*dot_product(v_new - self%v, work_vector)
-            call band_matvec(self%stiffness, u_new - self%u, work_vector)
+            rhs = v_new - self%v
+            call band_matvec(self%mass, rhs, work_vector)
+            self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)*dot_product(rhs, work_vector)
+            rhs = u_new - self%u
+            call band_matvec(self%stiffness, rhs, work_vector)
             self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)* &
-                                        (dot_product(u_new - self%u, work_vector) - impulse_power)
+                                        (dot_product(rhs, work_vector) - impulse_power)
          end if
          self%u = u_new
          self%v = v_new
