@@ -31,6 +31,9 @@
 !! 1 + 1e-9. A reduced model whose errors are of the size of that row's is as close to the
 !! full model as the statistics over this window can tell.
 !!
+!! Rows are named by one word (full, full-perturbed, full-N=..., k=..., default-cutoff), so
+!! that the columns split on blanks.
+!!
 !! usage: work_precision_reduced SCENE.nml ELEMENTS MEASURE_FROM T_END OUTPUT.txt [full]
 !! With `full` only the full model runs, at N, N/2 and 2N (its own mesh dependence).
 program work_precision_reduced
@@ -91,14 +94,14 @@ program work_precision_reduced
    call print_row(unit, 'full', full)
    call print_row(output_unit, 'full', full)
    reduced = run(perturbed_scene, 'none', -1)
-   call print_row(unit, 'full, perturbed', reduced)
-   call print_row(output_unit, 'full, perturbed', reduced)
+   call print_row(unit, 'full-perturbed', reduced)
+   call print_row(output_unit, 'full-perturbed', reduced)
    if (full_only) then
       ! the full model's own mesh dependence: N/2 and 2N against N
       do k = 1, 2
          scene%elements = merge(elements/2, 2*elements, k == 1)
          reduced = run(scene, 'none', -1)
-         write (argument, '(a,i0)') 'full, N = ', scene%elements
+         write (argument, '(a,i0)') 'full-N=', scene%elements
          call print_row(unit, trim(argument), reduced)
          call print_row(output_unit, trim(argument), reduced)
       end do
@@ -108,13 +111,13 @@ program work_precision_reduced
    do k = 1, size(mode_counts)
       if (mode_counts(k) > 2*elements - 2) cycle
       reduced = run(scene, 'craig-bampton', mode_counts(k))
-      write (argument, '(a,i0)') 'k = ', mode_counts(k)
+      write (argument, '(a,i0)') 'k=', mode_counts(k)
       call print_row(unit, trim(argument), reduced)
       call print_row(output_unit, trim(argument), reduced)
    end do
    reduced = run(scene, 'craig-bampton', -1)
-   call print_row(unit, 'default cut-off', reduced)
-   call print_row(output_unit, 'default cut-off', reduced)
+   call print_row(unit, 'default-cutoff', reduced)
+   call print_row(output_unit, 'default-cutoff', reduced)
    close (unit)
 
 contains
