@@ -52,7 +52,9 @@ NML
 # seconds per step of vibrobeam: N REDUCTION LIBRARY
 vibrobeam_step() {
   local n=$1 reduction=$2 library=$3 steps t1 t2
+  # about 0.3 s or more per run: /usr/bin/time resolves 10 ms
   steps=$(( 4000000 / n )); (( steps < 2000 )) && steps=2000; (( steps > 400000 )) && steps=400000
+  [ "$reduction" = none ] || steps=1000000
   scene "$n" "$steps" 1000000000 .false. "$reduction" "$work/a.h5" > "$work/a.nml"
   scene "$n" $(( 2 * steps )) 1000000000 .false. "$reduction" "$work/b.h5" > "$work/b.nml"
   t1=$( { /usr/bin/time -f %e env LD_LIBRARY_PATH=$library "$vibrobeam" "$work/a.nml" > /dev/null; } 2>&1 | tail -1)
@@ -118,7 +120,7 @@ floor() {   # N FILE -> dpbtrs+dsbmv us at J = 2N, or '-'
     echo "$n $(( 2 * n )) $sic $compared $full_ref $full_open $(floor "$n" "$work/floor_reference.txt") $(floor "$n" "$work/floor_openblas.txt") $ratio_ref $ratio_open $difference $reduced $r $reduced_difference"
   done
   echo "# machine: $(nproc) processor(s), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), load average $(cut -d' ' -f1-3 /proc/loadavg)"
-  echo "# source: git $(git rev-parse --short HEAD 2>/dev/null || echo '?'); Siconos $($python -c 'import siconos; print(getattr(siconos, "__version__", "?"))' 2>/dev/null || echo 'not installed')"
+  echo "# source: git $(git rev-parse --short HEAD 2>/dev/null || echo '?'); python3-siconos $(dpkg-query -W -f '${Version}' python3-siconos 2>/dev/null || echo 'not installed')"
 } | tee "$results"
 
 gnuplot <<GNUPLOT
