@@ -32,7 +32,7 @@
 !! are (band kernels other than kd = 3 go to LAPACK).
 module vibrobeam_reduction
    use vibrobeam_kinds, only: dp
-   use vibrobeam_band, only: symmetric_band, band_allocate, band_matvec
+   use vibrobeam_band, only: band_allocate, band_matvec, band_to_dense
    use vibrobeam_model, only: beam_model
    use vibrobeam_contact_points, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
@@ -214,8 +214,8 @@ contains
             if (contacts%dofs(d, c) /= 0) rows(contacts%dofs(d, c), c) = contacts%weights(d, c)
          end do
       end do
-      stiffness = dense_of(model%stiffness)
-      mass = dense_of(model%mass)
+      stiffness = band_to_dense(model%stiffness)
+      mass = band_to_dense(model%mass)
       if (m > 0) then
          call dgeqrf(n, m, rows, n, tau, work, lwork, stat)
          if (stat == 0) call dormqr('L', 'T', n, n, m, rows, n, tau, stiffness, n, work, lwork, stat)
@@ -240,20 +240,6 @@ contains
       if (m > 0) call dormqr('L', 'N', n, count, m, rows, n, tau, embedded, n, work, lwork, stat)
       vectors = embedded
    end subroutine dense_fixed_interface_modes
-
-   !> The dense n x n form of a symmetric band matrix.
-   pure function dense_of(a) result(dense)
-      type(symmetric_band), intent(in) :: a
-      real(dp) :: dense(a%n, a%n)
-      integer :: i, j
-      dense = 0
-      do j = 1, a%n
-         do i = j, min(a%n, j + a%kd)
-            dense(i, j) = a%lower(1 + i - j, j)
-            dense(j, i) = dense(i, j)
-         end do
-      end do
-   end function dense_of
 
    !> The reduced model: M_r = T^T M T and K_r = diag(S^-1, omega^2), dense r x r, in band
    !! storage with kd = r - 1. Everything else (length, beam data) as in the full model.

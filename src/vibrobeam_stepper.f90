@@ -152,8 +152,8 @@ contains
       self%t = self%steps*self%dt
    end subroutine restore_stepper_state
 
-   !> y = C x = a M x + b K x into preallocated y, with z (same size) as work space: the
-   !! same operations, in the same order, as `damping_times`, without a temporary.
+   !> y = C x = a M x + b K x into preallocated y, with z (same size) as work space (the
+   !! steppers' form, without a temporary; `damping_times` is the function form).
    subroutine damping_into(self, x, y, z)
       class(time_stepper), intent(in) :: self
       real(dp), intent(in) :: x(:)
@@ -174,14 +174,6 @@ contains
       class(time_stepper), intent(in) :: self
       real(dp), intent(in) :: x(:)
       real(dp) :: y(size(x)), z(size(x))
-      y = 0
-      if (self%rayleigh_mass > 0) then
-         call band_matvec(self%mass, x, z)
-         y = self%rayleigh_mass*z
-      end if
-      if (self%rayleigh_stiffness > 0) then
-         call band_matvec(self%stiffness, x, z)
-         y = y + self%rayleigh_stiffness*z
-      end if
+      call self%damping_into(x, y, z)
    end function damping_times
 end module vibrobeam_stepper

@@ -26,7 +26,7 @@ program test_reduction
    use vibrobeam_scene, only: scene_type, obstacle_type, validate_scene
    use vibrobeam_setup, only: prepared_scene, start_stepper
    use vibrobeam_velocity_stepper, only: velocity_stepper
-   use vibrobeam_band, only: symmetric_band, band_cholesky, band_factor, band_solve, band_combination
+   use vibrobeam_band, only: band_cholesky, band_factor, band_solve, band_to_dense
    use vibrobeam_contact_points, only: contact_value
    use vibrobeam_lapack, only: dsygv, dpotrf, dpotrs
    use vibrobeam_test_support, only: test_counter, prepare_test_scene
@@ -85,20 +85,6 @@ contains
       call prepare_test_scene(reduced, prepared)
    end subroutine reduced_scene
 
-   !> Dense form of a symmetric band matrix.
-   pure function dense(a) result(d)
-      type(symmetric_band), intent(in) :: a
-      real(dp) :: d(a%n, a%n)
-      integer :: i, j
-      d = 0
-      do j = 1, a%n
-         do i = j, min(a%n, j + a%kd)
-            d(i, j) = a%lower(1 + i - j, j)
-            d(j, i) = d(i, j)
-         end do
-      end do
-   end function dense
-
    !> Eigenvalues (ascending) of the pencil (a, b) (b = identity when absent).
    function eigenvalues(a, b) result(lambda)
       real(dp), intent(in) :: a(:,:)
@@ -145,8 +131,8 @@ contains
       if (stat == 0) call start_stepper(scene, reduced, reduced_stepper, stat, errmsg)
       if (stat /= 0) error stop 'test_reduction: stepper set-up failed'
       t = reduced%reduction%transform
-      kappa_w = condition(dense(full_stepper%iteration_matrix))
-      kappa_wr = condition(dense(reduced_stepper%iteration_matrix))
+      kappa_w = condition(band_to_dense(full_stepper%iteration_matrix))
+      kappa_wr = condition(band_to_dense(reduced_stepper%iteration_matrix))
       kappa_t = sqrt(condition(matmul(transpose(t), t)))
       steps = 400
       difference = 0
@@ -201,13 +187,13 @@ contains
       call band_solve(factor, exact)
       t = reduced%reduction%transform
       projected = matmul(force, t)
-      stiffness_r = dense(reduced%reduced_model%stiffness)
+      stiffness_r = band_to_dense(reduced%reduced_model%stiffness)
       s = stiffness_r
       call dpotrf('L', m, s, m, info)
       y = reshape(projected, [m, 1])
       call dpotrs('L', m, 1, s, m, y, m, info)
       if (info /= 0) error stop 'test_reduction: reduced static solve failed'
-      tolerance = 10*full%model%unknowns*u*(condition(dense(full%model%stiffness)) + condition(stiffness_r))
+      tolerance = 10*full%model%unknowns*u*(condition(band_to_dense(full%model%stiffness)) + condition(stiffness_r))
       do c = 1, m
          call counter%check_close(basis//' static: T^T H^T f = f', projected(c), f(c), tolerance, 1.0_dp)
       end do
@@ -232,14 +218,14 @@ contains
       scene = beam_scene(basis, 16, .true.)
       call prepare_test_scene(scene, full)
       j = full%model%unknowns
-      lambda_full = eigenvalues(dense(full%model%stiffness), dense(full%model%mass))
+      lambda_full = eigenvalues(band_to_dense(full%model%stiffness), band_to_dense(full%model%mass))
       m = 2
       counts = [0, 1, 2, 4, 8, j - m]
       allocate (previous(j), source=huge(1.0_dp))
       do k = 1, size(counts)
          call reduced_scene(scene, counts(k), reduced)
          r = reduced%reduced_model%unknowns
-         lambda = eigenvalues(dense(reduced%reduced_model%stiffness), dense(reduced%reduced_model%mass))
+         lambda = eigenvalues(band_to_dense(reduced%reduced_model%stiffness), band_to_dense(reduced%reduced_model%mass))
          write (output_unit, '(a,i3,a,3es12.4)') basis//' modes kept', counts(k), &
             ': relative excess of omega_1..3 over the full model ', &
             (sqrt(lambda(i)/lambda_full(i)) - 1, i=1, min(3, r))
