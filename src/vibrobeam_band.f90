@@ -20,7 +20,7 @@ module vibrobeam_band
    private
    public :: symmetric_band, band_cholesky
    public :: band_allocate, band_add, band_entry, band_matvec, band_combination
-   public :: band_factor, band_solve, band_residual_solve
+   public :: band_factor, band_solve, band_residual_solve, band_to_dense
 
    !> A symmetric n x n matrix with kd sub-diagonals, lower band storage.
    type :: symmetric_band
@@ -164,4 +164,19 @@ contains
          end if
       end if
    end subroutine band_residual_solve
+
+   !> The dense n x n form of a symmetric band matrix (small matrices: the reduced model's
+   !! dense paths and tests).
+   pure function band_to_dense(a) result(dense)
+      type(symmetric_band), intent(in) :: a
+      real(dp) :: dense(a%n, a%n)
+      integer :: i, j
+      dense = 0
+      do j = 1, a%n
+         do i = j, min(a%n, j + a%kd)
+            dense(i, j) = a%lower(1 + i - j, j)
+            dense(j, i) = dense(i, j)
+         end do
+      end do
+   end function band_to_dense
 end module vibrobeam_band

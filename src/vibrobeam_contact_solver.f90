@@ -65,6 +65,7 @@ module vibrobeam_contact_solver
       procedure :: setup
       procedure :: project
       procedure :: project_admissible
+      procedure :: record_free
    end type contact_projector
 
 contains
@@ -150,6 +151,16 @@ contains
       self%linear_solves = tally%linear_solves
       self%factorizations = tally%factorizations
    end subroutine project
+
+   !> What `project` records when no point is active (its projection is then x = x_free):
+   !! the steppers call this instead, so a free-flight step allocates nothing.
+   subroutine record_free(self)
+      class(contact_projector), intent(inout) :: self
+      call start_report(self)
+      self%warm_side = 0
+      self%linear_solves = 0
+      self%factorizations = 0
+   end subroutine record_free
 
    !> Projection onto the whole admissible set {lower(c) <= H_c x <= upper(c), every
    !! contact point c} (statics, theory §4's position projection). multiplier(c) = P_c,

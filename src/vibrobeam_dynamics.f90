@@ -77,7 +77,11 @@ contains
       call start_time_stepper(scene, prepared, stepper, stat, errmsg)
       if (stat /= 0) return
       summary%start_step = stepper%steps
-      call recorder%init(scene, stepper, prepared%model, prepared%v0, last)
+      if (prepared%reduced) then
+         call recorder%init(scene, stepper, prepared%model, stepper%v, last, prepared%reduction)
+      else
+         call recorder%init(scene, stepper, prepared%model, prepared%v0, last)
+      end if
       if (prepared%resuming) then
          call recorder%restore_state(prepared%resume, stat, errmsg)
          if (stat /= 0) then

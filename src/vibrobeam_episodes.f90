@@ -39,6 +39,7 @@ module vibrobeam_episodes
       real(dp) :: gap = 0                          !! impacts closer than this: one episode (s)
       real(dp), allocatable :: x(:)                !! (contact points) position (m)
       logical, allocatable :: open(:)              !! an episode is open at the point
+      logical, allocatable :: touched(:)           !! work space of `observe_step`: an impulse this step
       real(dp), allocatable :: start(:), last_impulse(:), last_impact(:), impulse(:), approach(:)
       integer(int64), allocatable :: impacts(:)
       integer(int64) :: written = 0                !! episodes closed (rows of /episodes)
@@ -69,7 +70,7 @@ contains
       n = size(x)
       self%gap = gap
       self%x = x
-      allocate (self%open(n), source=.false.)
+      allocate (self%open(n), self%touched(n), source=.false.)
       allocate (self%start(n), self%last_impulse(n), self%last_impact(n), self%impulse(n), self%approach(n), &
                 source=0.0_dp)
       allocate (self%impacts(n), source=0_int64)
@@ -98,12 +99,12 @@ contains
       type(step_events), intent(in) :: events
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      logical :: touched(size(self%open))
       real(dp) :: t
       integer :: k, c
       stat = 0
       errmsg = ''
       t = stepper%impulse_time
+      associate (touched => self%touched)
       touched = .false.
       do k = 1, stepper%active_count
          c = stepper%active(k)
@@ -158,6 +159,7 @@ contains
             if (stat /= 0) return
          end if
       end do
+      end associate
    contains
       subroutine close_episode(point, still_open)
          integer, intent(in) :: point

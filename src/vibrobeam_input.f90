@@ -155,14 +155,18 @@ contains
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer :: elements
-      character(len=keyword_length) :: basis
-      namelist /mesh/ elements, basis
+      integer :: elements, reduction_modes
+      character(len=keyword_length) :: basis, reduction
+      real(dp) :: reduction_frequency
+      namelist /mesh/ elements, basis, reduction, reduction_frequency, reduction_modes
       character(len=:), allocatable :: record
       integer :: ios, k
       character(len=256) :: iomsg
       elements = scene%elements
       basis = scene%basis
+      reduction = scene%reduction
+      reduction_frequency = scene%reduction_frequency
+      reduction_modes = scene%reduction_modes
       stat = 0
       errmsg = ''
       do k = 1, size(scanned%items)
@@ -173,6 +177,9 @@ contains
       end do
       scene%elements = elements
       scene%basis = lowercase(basis)
+      scene%reduction = lowercase(reduction)
+      scene%reduction_frequency = reduction_frequency
+      scene%reduction_modes = reduction_modes
    end subroutine read_mesh
 
    subroutine read_analysis(scanned, scene, stat, errmsg)

@@ -62,16 +62,28 @@ contains
    !> The `count` lowest eigenvalues lambda (ascending) of K phi = lambda M phi of the
    !! clamped-free beam, with their M-orthonormal eigenvectors. stat /= 0 with errmsg if
    !! count is not in [1, J-1] or on any ARPACK error.
-   subroutine lanczos_modes(model, count, eigenvalues, vectors, stat, errmsg)
+   !!
+   !! With `held_dofs`, `held_weights` and `constraint_modes` the modes are those of the beam
+   !! with the m displacements H_c U (rows of 4 unknowns and weights) held at 0, the
+   !! fixed-interface modes of Craig-Bampton (`vibrobeam_reduction`): the operator becomes
+   !! the constrained flexibility (I - Psi H) K^-1, Psi = K^-1 H^T (H K^-1 H^T)^-1 the
+   !! constraint modes. It is M-symmetric (K^-1 - K^-1 H^T S^-1 H K^-1 is symmetric), its
+   !! range is {H U = 0}, and its m zero eigenvalues are the smallest, never wanted.
+   subroutine lanczos_modes(model, count, eigenvalues, vectors, stat, errmsg, held_dofs, held_weights, &
+                            constraint_modes)
       type(beam_model), intent(in) :: model
       integer, intent(in) :: count                   !! 1 <= count <= J - 1
       real(dp), intent(out) :: eigenvalues(:)        !! (count) lambda (rad^2/s^2), ascending
       real(dp), intent(out) :: vectors(:,:)          !! (J, count), phi^T M phi = 1
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      integer, intent(in), optional :: held_dofs(:,:)           !! (4, m) unknowns of each held row (0: none)
+      real(dp), intent(in), optional :: held_weights(:,:)       !! (4, m) its weights
+      real(dp), intent(in), optional :: constraint_modes(:,:)   !! (J, m) Psi
       type(cantilever_flexibility) :: flexibility
       real(dp), allocatable :: lanczos_vectors(:,:), workd(:), workl(:), resid(:)
       logical, allocatable :: select(:)
+      real(dp), allocatable :: held(:)
       integer :: n, ncv, ido, info, iparam(11), ipntr(11), i
       real(dp) :: tolerance
       n = model%unknowns
@@ -84,6 +96,7 @@ contains
       end if
       call flexibility%setup(model, stat, errmsg)
       if (stat /= 0) return
+      if (present(constraint_modes)) allocate (held(size(constraint_modes, 2)))
       ncv = lanczos_basis_size(n, count)
       ! ARPACK's work length ncv (ncv + 8) is a default integer
       if (int(ncv, int64)*(ncv + 8) > huge(ncv)) then
@@ -118,9 +131,11 @@ contains
          case (-1)   ! y = K^-1 M x (the start: M x not yet known)
             call band_matvec(model%mass, workd(ipntr(1):ipntr(1) + n - 1), workd(ipntr(2):ipntr(2) + n - 1))
             call flexibility%solve(workd(ipntr(2):ipntr(2) + n - 1))
+            if (present(constraint_modes)) call hold(workd(ipntr(2):ipntr(2) + n - 1))
          case (1)    ! y = K^-1 M x, with M x given
             workd(ipntr(2):ipntr(2) + n - 1) = workd(ipntr(3):ipntr(3) + n - 1)
             call flexibility%solve(workd(ipntr(2):ipntr(2) + n - 1))
+            if (present(constraint_modes)) call hold(workd(ipntr(2):ipntr(2) + n - 1))
          case (2)    ! y = M x
             call band_matvec(model%mass, workd(ipntr(1):ipntr(1) + n - 1), workd(ipntr(2):ipntr(2) + n - 1))
          case (99)
@@ -142,6 +157,25 @@ contains
          stat = stat_failure
          errmsg = 'Lanczos: '//arpack_message('dseupd', info, iparam(5), count, ncv)
       end if
+
+   contains
+
+      !> y := y - Psi (H y): the static response with the held displacements put back to 0.
+      subroutine hold(y)
+         real(dp), intent(inout) :: y(:)
+         integer :: c, a
+         real(dp) :: value
+         do c = 1, size(constraint_modes, 2)
+            value = 0
+            do a = 1, 4
+               if (held_dofs(a, c) /= 0) value = value + held_weights(a, c)*y(held_dofs(a, c))
+            end do
+            held(c) = value
+         end do
+         do c = 1, size(constraint_modes, 2)
+            y = y - held(c)*constraint_modes(:, c)
+         end do
+      end subroutine hold
    end subroutine lanczos_modes
 
    !> What an ARPACK info (dsaupd / dseupd, ARPACK-NG 3.8 documentation) means.

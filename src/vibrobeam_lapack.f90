@@ -12,8 +12,8 @@ module vibrobeam_lapack
    private
    public :: poison_failed_solve
    public :: dpbtrf, dpbtrs, dpbcon, dsbmv, dsbgvx, dpttrf, dpttrs
-   public :: dpotrf, dpotrs, dgbtrf, dgbtrs, dgbsv, dgesv, dlamch
-   public :: dgetrf, dgeqrf, dorgqr, dsyev, dsygv   ! the tests' dense references
+   public :: dpotrf, dpotrs, dpotri, dgbtrf, dgbtrs, dgbsv, dgesv, dlamch, dgeqrf, dormqr, dsygv
+   public :: dgetrf, dorgqr, dsyev   ! the tests' dense references
 
    interface
       !> Cholesky factorization A = L L^T (UPLO = 'L'); info = k > 0: the leading minor of
@@ -136,7 +136,15 @@ module vibrobeam_lapack
          real(dp), intent(inout) :: a(lda, *)
          integer, intent(out) :: ipiv(*), info
       end subroutine dgetrf
-      !> QR factorization of a general matrix (tests).
+      !> Inverse of a symmetric positive definite matrix from its dpotrf factor.
+      subroutine dpotri(uplo, n, a, lda, info)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, lda
+         real(dp), intent(inout) :: a(lda, *)
+         integer, intent(out) :: info
+      end subroutine dpotri
+      !> QR factorization of a dense matrix (Householder reflectors).
       subroutine dgeqrf(m, n, a, lda, tau, work, lwork, info)
          import :: dp
          integer, intent(in) :: m, n, lda, lwork
@@ -162,7 +170,17 @@ module vibrobeam_lapack
          real(dp), intent(out) :: w(*), work(*)
          integer, intent(out) :: info
       end subroutine dsyev
-      !> Eigenvalues (and vectors) of a dense symmetric-definite pencil (tests).
+      !> C := Q C, Q^T C, C Q or C Q^T with the Q of dgeqrf.
+      subroutine dormqr(side, trans, m, n, k, a, lda, tau, c, ldc, work, lwork, info)
+         import :: dp
+         character, intent(in) :: side, trans
+         integer, intent(in) :: m, n, k, lda, ldc, lwork
+         real(dp), intent(in) :: a(lda, *), tau(*)
+         real(dp), intent(inout) :: c(ldc, *)
+         real(dp), intent(out) :: work(*)
+         integer, intent(out) :: info
+      end subroutine dormqr
+      !> Dense symmetric-definite generalized eigenproblem A x = lambda B x.
       subroutine dsygv(itype, jobz, uplo, n, a, lda, b, ldb, w, work, lwork, info)
          import :: dp
          integer, intent(in) :: itype, n, lda, ldb, lwork

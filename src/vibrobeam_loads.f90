@@ -24,6 +24,7 @@ module vibrobeam_loads
       real(dp) :: base_frequency = 0
    contains
       procedure :: at => load_at
+      procedure :: evaluate => load_evaluate
    end type load_set
 
 contains
@@ -54,10 +55,18 @@ contains
       class(load_set), intent(in) :: self
       real(dp), intent(in) :: t   !! time (s)
       real(dp) :: f(size(self%uniform))
+      call load_evaluate(self, t, f)
+   end function load_at
+
+   !> F(t) into f (the time steppers: no temporary array).
+   pure subroutine load_evaluate(self, t, f)
+      class(load_set), intent(in) :: self
+      real(dp), intent(in) :: t   !! time (s)
+      real(dp), intent(out) :: f(:)   !! (J)
       f = 0
       if (.not. self%present) return
       f = (self%distributed*cos(self%distributed_frequency*t + self%distributed_phase) + &
            self%base_load*sin(self%base_frequency*t))*self%uniform
       if (abs(self%point_force) > 0) f = f + self%point_force*cos(self%point_frequency*t)*self%point
-   end function load_at
+   end subroutine load_evaluate
 end module vibrobeam_loads

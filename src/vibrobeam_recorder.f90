@@ -22,7 +22,8 @@
 module vibrobeam_recorder
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_scene, only: scene_type, is_unset
-   use vibrobeam_model, only: beam_model, nodal_displacement, point_row
+   use vibrobeam_model, only: beam_model, nodal_displacement, point_row, node_row
+   use vibrobeam_reduction, only: reduced_basis
    use vibrobeam_contact_points, only: contact_value
    use vibrobeam_cantilever_exact, only: cantilever_frequency
    use vibrobeam_stepper, only: time_stepper
@@ -61,6 +62,7 @@ module vibrobeam_recorder
       integer :: tip_contact = 0                     !! contact point at the tip, 0 if none
       real(dp) :: tip_impulse = 0                    !! tip impulse since the last output (N s)
       logical, allocatable :: in_contact(:)          !! contact point had an impulse last step
+      logical, allocatable :: touched(:)             !! work space of `after_step`: an impulse this step
       real(dp), allocatable :: contact_time(:)       !! time spent in contact per point (s)
       real(dp) :: max_penetration = 0                !! over every step (m)
       real(dp) :: max_penetration_time = 0
@@ -73,6 +75,10 @@ module vibrobeam_recorder
       integer, allocatable :: point_dofs(:, :)       !! (4, points)
       real(dp), allocatable :: point_weights(:, :)   !! (4, points)
       real(dp) :: length = 0
+      ! a reduced model (&mesh reduction): the stepper's unknowns are q, U = T q
+      type(reduced_basis), allocatable :: reduction   !! T, for field snapshots
+      real(dp), allocatable :: tip_row(:)            !! (r) u_h(L) = tip_row . q
+      real(dp), allocatable :: point_rows(:, :)      !! (r, points) u_h(x_p) = point_rows(:, p) . q
       type(welch_estimator) :: spectrum
       type(episode_tracker) :: episodes
       type(step_events) :: events
@@ -114,22 +120,26 @@ contains
    !! scene: a contact point that starts on its obstacle (within the activation tolerance
    !! 1e-12 L) without moving into it is in persistent contact from t = 0, so its first
    !! impulse is not an impact.
-   subroutine recorder_init(self, scene, stepper, model, v0, last_step)
+   !! With `reduction` the stepper runs a reduced model (its u, v are q, dq/dt, and its
+   !! contact rows act on q): tip and observation points are read through rows of T
+   !! (r products per value) and U = T q is formed only for a field snapshot.
+   subroutine recorder_init(self, scene, stepper, model, v0, last_step, reduction)
       class(dynamics_recorder), intent(inout) :: self
       type(scene_type), intent(in) :: scene
       class(time_stepper), intent(in) :: stepper
       type(beam_model), intent(in) :: model
-      real(dp), intent(in) :: v0(:)
+      real(dp), intent(in) :: v0(:)   !! in the stepper's unknowns
       integer(int64), intent(in) :: last_step
-      real(dp) :: value, speed, tolerance, gap
-      integer :: c, p, contacts
+      type(reduced_basis), intent(in), optional :: reduction
+      real(dp) :: value, speed, tolerance, gap, weights(4)
+      integer :: c, p, contacts, dofs(4)
       contacts = stepper%contacts%count
       self%every = scene%every
       self%field_every = scene%every
       if (scene%field_every > 0) self%field_every = scene%field_every
       self%last_step = last_step
       self%length = model%length
-      allocate (self%in_contact(contacts), source=.false.)
+      allocate (self%in_contact(contacts), self%touched(contacts), source=.false.)
       allocate (self%contact_time(contacts), source=0.0_dp)
       self%compliant = stepper%contacts%springs%count > 0
       allocate (self%peak_force(contacts), source=0.0_dp)
@@ -150,10 +160,31 @@ contains
       do p = 1, size(self%point_x)
          call point_row(model, self%point_x(p), self%point_dofs(:, p), self%point_weights(:, p))
       end do
+      if (present(reduction)) then
+         self%reduction = reduction
+         call node_row(model, model%elements, dofs, weights)
+         self%tip_row = reduced_row(dofs, weights)
+         allocate (self%point_rows(reduction%boundary + reduction%modes, size(self%point_x)))
+         do p = 1, size(self%point_x)
+            self%point_rows(:, p) = reduced_row(self%point_dofs(:, p), self%point_weights(:, p))
+         end do
+      end if
       call self%spectrum%init(self%every*scene%dt, last_step/self%every + 1)
       gap = scene%episode_gap
       if (is_unset(gap)) gap = default_episode_gap(model%length, model%ei/model%rho_s)
       call self%episodes%init(stepper%contacts%x, gap)
+   contains
+      !> The row sum_a weights(a) T(dofs(a), :) of a value of U.
+      function reduced_row(dofs, weights) result(row)
+         integer, intent(in) :: dofs(4)
+         real(dp), intent(in) :: weights(4)
+         real(dp) :: row(size(self%reduction%transform, 2))
+         integer :: a
+         row = 0
+         do a = 1, 4
+            if (dofs(a) /= 0) row = row + weights(a)*self%reduction%transform(dofs(a), :)
+         end do
+      end function reduced_row
    end subroutine recorder_init
 
    !> Create every dataset of the run (before the file enters SWMR mode) and write what is
@@ -233,11 +264,11 @@ contains
       class(time_stepper), intent(in) :: stepper
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      logical :: now(size(self%in_contact))
       real(dp) :: depth
       integer :: k, c
       stat = 0
       errmsg = ''
+      associate (now => self%touched)
       now = .false.
       do k = 1, stepper%active_count
          c = stepper%active(k)
@@ -264,6 +295,7 @@ contains
       end if
       where (now) self%contact_time = self%contact_time + stepper%dt
       self%in_contact = now
+      end associate
       depth = penetration(stepper)
       if (depth > self%max_penetration) then
          self%max_penetration = depth
@@ -365,7 +397,9 @@ contains
       real(dp) function tip_value(unknowns)
          real(dp), intent(in) :: unknowns(:)
          real(dp) :: nodes(model%elements + 1)
-         if (model%basis == 'hermite') then
+         if (allocated(self%tip_row)) then
+            tip_value = dot_product(self%tip_row, unknowns)
+         else if (model%basis == 'hermite') then
             tip_value = unknowns(model%unknowns - 1)
          else
             nodes = nodal_displacement(model, unknowns)
@@ -377,6 +411,10 @@ contains
          integer, intent(in) :: p
          real(dp), intent(in) :: unknowns(:)
          integer :: a
+         if (allocated(self%point_rows)) then
+            point_value = dot_product(self%point_rows(:, p), unknowns)
+            return
+         end if
          point_value = 0
          do a = 1, 4
             if (self%point_dofs(a, p) /= 0) point_value = point_value + self%point_weights(a, p)* &
@@ -396,7 +434,11 @@ contains
       errmsg = ''
       if (stepper%steps == self%last_field_step) return
       call self%field_time%append([stepper%t], stat, errmsg)
-      if (stat == 0) call self%field%append(nodal_displacement(model, stepper%u), stat, errmsg)
+      if (allocated(self%reduction)) then
+         if (stat == 0) call self%field%append(nodal_displacement(model, self%reduction%expand(stepper%u)), stat, errmsg)
+      else
+         if (stat == 0) call self%field%append(nodal_displacement(model, stepper%u), stat, errmsg)
+      end if
       self%last_field_step = stepper%steps
    end subroutine sample_field
 

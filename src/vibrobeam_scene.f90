@@ -60,6 +60,9 @@ module vibrobeam_scene
       ! &mesh
       integer :: elements = 32
       character(len=keyword_length) :: basis = 'hermite'
+      character(len=keyword_length) :: reduction = 'none'   !! 'none' | 'craig-bampton' (dynamics only)
+      real(dp) :: reduction_frequency = unset   !! cut-off of the fixed-interface modes (rad/s); unset: default
+      integer :: reduction_modes = -1           !! number of fixed-interface modes; -1: set by the cut-off
       ! &analysis
       character(len=keyword_length) :: kind = 'dynamics'
       integer :: modes = 6
@@ -167,6 +170,9 @@ contains
          real_variable('beam', 'rayleigh_stiffness', 0.0_dp, 1e3_dp, 's'), &
          integer_variable('mesh', 'elements', 1, 1000000), &
          keyword_variable('mesh', 'basis', 'hermite|bspline'), &
+         keyword_variable('mesh', 'reduction', 'none|craig-bampton'), &
+         real_variable('mesh', 'reduction_frequency', 1e-30_dp, 1e30_dp, 'rad/s'), &
+         integer_variable('mesh', 'reduction_modes', 0, 100000), &
          keyword_variable('analysis', 'kind', 'modes|static|dynamics'), &
          integer_variable('analysis', 'modes', 1, 2000000), &
          integer_variable('obstacles', 'count', 0, max_obstacles), &
@@ -290,6 +296,18 @@ contains
       ! &mesh
       call check_integer('mesh', 'elements', scene%elements)
       call check_keyword('mesh', 'basis', scene%basis)
+      call check_keyword('mesh', 'reduction', scene%reduction)
+      if (.not. is_unset(scene%reduction_frequency)) &
+         call check_real('mesh', 'reduction_frequency', scene%reduction_frequency)
+      if (scene%reduction_modes /= -1) call check_integer('mesh', 'reduction_modes', scene%reduction_modes)
+      if (stat /= 0) return
+      if (scene%reduction /= 'none' .and. scene%kind == 'dynamics' .and. len_trim(scene%from_file) > 0) &
+         call fail('&mesh reduction = '''//trim(scene%reduction)//''' cannot continue a checkpoint '// &
+                   '(&initial from_file): its state is in reduced coordinates; use reduction = ''none''')
+      if (scene%reduction_modes /= -1 .and. .not. is_unset(scene%reduction_frequency)) &
+         call fail('&mesh reduction_modes = '//integer_text(scene%reduction_modes)//' and reduction_frequency = '// &
+                   real_text(scene%reduction_frequency)//' rad/s are both given: give one of them')
+      if (stat /= 0) return
       ! &analysis: `modes` is bounded by the mesh only when modes are computed
       call check_keyword('analysis', 'kind', scene%kind)
       call check_integer('analysis', 'modes', scene%modes)
@@ -503,6 +521,10 @@ contains
       call add_real('beam.rayleigh_stiffness', scene%rayleigh_stiffness, 's')
       call add_integer('mesh.elements', scene%elements)
       call add_string('mesh.basis', scene%basis)
+      call add_string('mesh.reduction', scene%reduction)
+      if (.not. is_unset(scene%reduction_frequency)) &
+         call add_real('mesh.reduction_frequency', scene%reduction_frequency, 'rad/s')
+      if (scene%reduction_modes /= -1) call add_integer('mesh.reduction_modes', scene%reduction_modes)
       call add_string('analysis.kind', scene%kind)
       call add_integer('analysis.modes', scene%modes)
       call add_integer('obstacles.count', size(scene%obstacles))

@@ -6,7 +6,7 @@ module vibrobeam_setup
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_status, only: stat_failure, stat_numerical_failure
    use vibrobeam_text, only: real_text
-   use vibrobeam_scene, only: scene_type, rho_s_of, ei_of, step_count
+   use vibrobeam_scene, only: scene_type, rho_s_of, ei_of, step_count, is_unset
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_contact_points, only: contact_set, build_contact_points, contact_value
    use vibrobeam_loads, only: load_set, build_loads
@@ -19,9 +19,11 @@ module vibrobeam_setup
    use vibrobeam_checkpoint, only: read_checkpoint, check_compatible
    use vibrobeam_contact_solver, only: contact_method_code
    use vibrobeam_compliant_law, only: rule_code
+   use vibrobeam_reduction, only: reduced_basis, build_reduction, reduce_model, reduce_contacts, reduce_loads, &
+                                  reduce_state, default_reduction_frequency
    implicit none
    private
-   public :: prepared_scene, prepare_scene, start_stepper, start_time_stepper
+   public :: prepared_scene, prepare_scene, start_stepper, start_time_stepper, reduction_cutoff
 
    type :: prepared_scene
       type(beam_model) :: model
@@ -32,6 +34,14 @@ module vibrobeam_setup
       logical :: resuming = .false.    !! continues the checkpoint of &initial from_file
       type(state_record) :: resume     !! that checkpoint
       real(dp) :: resume_time = 0      !! its time (s)
+      !> &mesh reduction = 'craig-bampton' (dynamics): the steppers run on the reduced
+      !! model, contact points, loads and initial state below, the recorder maps back
+      logical :: reduced = .false.
+      type(reduced_basis) :: reduction
+      type(beam_model) :: reduced_model
+      type(contact_set) :: reduced_contacts
+      type(load_set) :: reduced_loads
+      real(dp), allocatable :: q0(:), qv0(:)   !! initial reduced coordinates and velocities
    end type prepared_scene
 
 contains
@@ -65,8 +75,61 @@ contains
       if (.not. all(ieee_is_finite(prepared%u0)) .or. .not. all(ieee_is_finite(prepared%v0))) then
          stat = stat_numerical_failure
          errmsg = '&initial: the initial displacement or velocity is not finite (interpolation on the mesh failed)'
+         return
       end if
+      if (scene%kind == 'dynamics' .and. scene%reduction == 'craig-bampton') call reduce_scene(scene, prepared, stat, errmsg)
    end subroutine prepare_scene
+
+   !> The cut-off of the fixed-interface modes (rad/s): &mesh reduction_frequency, or its
+   !! default from the forcing frequencies and dt (`default_reduction_frequency`).
+   pure function reduction_cutoff(scene) result(cutoff)
+      type(scene_type), intent(in) :: scene
+      real(dp) :: cutoff
+      real(dp) :: forcing(3)
+      logical :: loaded(3)
+      if (.not. is_unset(scene%reduction_frequency)) then
+         cutoff = scene%reduction_frequency
+         return
+      end if
+      forcing = [scene%distributed_frequency, scene%point_frequency, scene%base_frequency]
+      loaded = [abs(scene%distributed) > 0, abs(scene%point_force) > 0, abs(scene%base_amplitude) > 0]
+      cutoff = default_reduction_frequency(scene%dt, pack(forcing, loaded))
+   end function reduction_cutoff
+
+   !> The Craig-Bampton reduced model of a prepared scene (`vibrobeam_reduction`).
+   subroutine reduce_scene(scene, prepared, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(prepared_scene), intent(inout) :: prepared
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      if (scene%reduction_modes > prepared%model%unknowns - prepared%contacts%count) then
+         stat = stat_failure
+         write (errmsg, '(a,i0,a,i0,a,i0,a,i0,a)') '&mesh reduction_modes = ', scene%reduction_modes, &
+            ' is more than the J - m = ', prepared%model%unknowns - prepared%contacts%count, &
+            ' fixed-interface modes of the mesh (J = ', prepared%model%unknowns, ' unknowns, m = ', &
+            prepared%contacts%count, ' contact points)'
+         return
+      end if
+      call build_reduction(prepared%model, prepared%contacts, reduction_cutoff(scene), scene%reduction_modes, &
+                           prepared%reduction, stat, errmsg)
+      if (stat /= 0) then
+         errmsg = '&mesh reduction = ''craig-bampton'': '//trim(errmsg)
+         stat = stat_numerical_failure
+         return
+      end if
+      if (prepared%reduction%boundary + prepared%reduction%modes == 0) then
+         stat = stat_failure
+         errmsg = '&mesh reduction = ''craig-bampton'' keeps nothing: no contact point and no mode below '// &
+                  'reduction_frequency = '//real_text(reduction_cutoff(scene))//' rad/s; raise it or give reduction_modes'
+         return
+      end if
+      call reduce_model(prepared%model, prepared%reduction, prepared%reduced_model)
+      call reduce_contacts(prepared%contacts, prepared%reduced_contacts)
+      call reduce_loads(prepared%loads, prepared%reduction, prepared%reduced_loads)
+      prepared%q0 = reduce_state(prepared%model, prepared%contacts, prepared%reduction, prepared%u0)
+      prepared%qv0 = reduce_state(prepared%model, prepared%contacts, prepared%reduction, prepared%v0)
+      prepared%reduced = .true.
+   end subroutine reduce_scene
 
    !> The initial state of a run that continues the checkpoint of &initial from_file
    !! (docs/output.md, "Checkpoint and restart"): the file must match the scene; t_end
@@ -175,9 +238,15 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       stepper%compliant_rule = rule_code(trim(scene%compliant_rule))
-      call stepper%init(prepared%model, prepared%contacts, prepared%loads, scene%dt, scene%theta, scene%gamma, &
-                        scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
-                        prepared%u0, prepared%v0, stat, errmsg)
+      if (prepared%reduced) then
+         call stepper%init(prepared%reduced_model, prepared%reduced_contacts, prepared%reduced_loads, scene%dt, &
+                           scene%theta, scene%gamma, scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, &
+                           scene%contact_solver, prepared%q0, prepared%qv0, stat, errmsg)
+      else
+         call stepper%init(prepared%model, prepared%contacts, prepared%loads, scene%dt, scene%theta, scene%gamma, &
+                           scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
+                           prepared%u0, prepared%v0, stat, errmsg)
+      end if
       stepper%projector%max_iterations = scene%contact_max_iterations
       stepper%projector%method = contact_method_code(trim(scene%contact_method))
       stepper%compliant%method = trim(scene%contact_method)
@@ -197,9 +266,15 @@ contains
       if (scene%scheme == 'position') then
          allocate (position)
          position%compliant_rule = rule_code(trim(scene%compliant_rule))
-         call position%init(prepared%model, prepared%contacts, prepared%loads, scene%dt, scene%theta, &
-                            scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
-                            prepared%u0, prepared%v0, stat, errmsg)
+         if (prepared%reduced) then
+            call position%init(prepared%reduced_model, prepared%reduced_contacts, prepared%reduced_loads, scene%dt, &
+                               scene%theta, scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, &
+                               scene%contact_solver, prepared%q0, prepared%qv0, stat, errmsg)
+         else
+            call position%init(prepared%model, prepared%contacts, prepared%loads, scene%dt, scene%theta, &
+                               scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
+                               prepared%u0, prepared%v0, stat, errmsg)
+         end if
          position%projector%max_iterations = scene%contact_max_iterations
          position%projector%method = contact_method_code(trim(scene%contact_method))
          position%compliant%method = trim(scene%contact_method)

@@ -62,6 +62,7 @@ module vibrobeam_stepper
       procedure :: spring_penetrations
       procedure :: set_up_system
       procedure :: damping_times
+      procedure :: damping_into
       procedure :: save_state => save_stepper_state
       procedure :: restore_state => restore_stepper_state
    end type time_stepper
@@ -222,11 +223,12 @@ contains
       self%t = self%steps*self%dt
    end subroutine restore_stepper_state
 
-   !> C x = a M x + b K x (Rayleigh damping).
-   function damping_times(self, x) result(y)
+   !> y = C x = a M x + b K x into preallocated y, with z (same size) as work space (the
+   !! steppers' form, without a temporary; `damping_times` is the function form).
+   subroutine damping_into(self, x, y, z)
       class(time_stepper), intent(in) :: self
       real(dp), intent(in) :: x(:)
-      real(dp) :: y(size(x)), z(size(x))
+      real(dp), intent(out) :: y(:), z(:)
       y = 0
       if (self%rayleigh_mass > 0) then
          call band_matvec(self%mass, x, z)
@@ -236,5 +238,13 @@ contains
          call band_matvec(self%stiffness, x, z)
          y = y + self%rayleigh_stiffness*z
       end if
+   end subroutine damping_into
+
+   !> C x = a M x + b K x (Rayleigh damping).
+   function damping_times(self, x) result(y)
+      class(time_stepper), intent(in) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp) :: y(size(x)), z(size(x))
+      call self%damping_into(x, y, z)
    end function damping_times
 end module vibrobeam_stepper

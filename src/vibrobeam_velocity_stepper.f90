@@ -25,7 +25,7 @@ module vibrobeam_velocity_stepper
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
    use vibrobeam_status, only: stat_not_finite
-   use vibrobeam_band, only: band_solve, band_matvec
+   use vibrobeam_band, only: band_matvec, band_residual_solve
    use vibrobeam_model, only: beam_model
    use vibrobeam_contact_points, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
@@ -44,6 +44,10 @@ module vibrobeam_velocity_stepper
       !! remedy, default) or `restitution` (the plain law of SPEC §3, for comparison)
       real(dp) :: separating_restitution = 1
       real(dp), allocatable :: force(:)            !! F(t_n)
+      !> work space of `step` (J each), allocated once by `init`: a step allocates nothing
+      real(dp), allocatable :: rhs(:), work_vector(:), damping_vector(:), v_free(:), v_new(:), u_new(:), &
+                               force_new(:), force_theta(:)
+      real(dp), allocatable :: signs(:), offsets(:)   !! (contact points) work space of `step`
       ! u = U^n, v = V^n; work = sum F^{n+theta}.(U^{n+1} - U^n),
       ! dissipated_impacts = -sum P.H (V^{n+1} + V^n)/2,
       ! dissipated_damping = sum dt V^{n+theta}.C V^{n+theta},
@@ -79,6 +83,10 @@ contains
       self%u = u0
       self%v = v0
       self%force = loads%at(0.0_dp)
+      allocate (self%rhs(size(u0)), self%work_vector(size(u0)), self%damping_vector(size(u0)), &
+                self%v_free(size(u0)), self%v_new(size(u0)), self%u_new(size(u0)), self%force_new(size(u0)), &
+                self%force_theta(size(u0)), source=0.0_dp)
+      allocate (self%signs(contacts%count), self%offsets(contacts%count))
    end subroutine init
 
    !> The base type's restore, then F(t_n) from the loads (which a continued run may change).
@@ -97,20 +105,31 @@ contains
       class(velocity_stepper), intent(inout) :: self
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp), dimension(size(self%u)) :: rhs, work_vector, v_free, v_new, u_new, force_new, force_theta, v_theta
-      real(dp) :: predicted, e_c, impulse_power, spring_power
-      real(dp) :: signs(self%contacts%count), offsets(self%contacts%count)
-      integer :: c, m, k
-      associate (dt => self%dt, theta => self%theta)
-         ! 1. free velocity
-         force_new = self%loads%at((self%steps + 1)*dt)   ! t_{n+1} from the global step number
-         force_theta = theta*force_new + (1 - theta)*self%force
-         call band_matvec(self%stiffness, self%u + theta*dt*self%v, work_vector)
-         rhs = force_theta - work_vector
-         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) rhs = rhs - self%damping_times(self%v)
-         rhs = dt*rhs
-         call band_solve(self%iteration_factor, rhs)
-         v_free = self%v + rhs
+      real(dp) :: predicted, e_c, spring_power
+      integer :: c, m
+      logical :: finite
+      ! every vector lives in the stepper's work space (allocated by `init`); the new state
+      ! is built there and swapped in (move_alloc moves descriptors, copies nothing)
+      stat = 0
+      errmsg = ''
+      associate (dt => self%dt, theta => self%theta, rhs => self%rhs, work_vector => self%work_vector, &
+                 v_free => self%v_free, force_new => self%force_new, force_theta => self%force_theta, &
+                 signs => self%signs, offsets => self%offsets, damping_vector => self%damping_vector)
+         ! 1. free velocity V_free = V^n + dt W^-1 (F^{n+theta} - C V^n - K (U^n + theta dt V^n)):
+         ! the product with K inside the solve's forward pass (band_residual_solve)
+         if (self%loads%present) then
+            call self%loads%evaluate((self%steps + 1)*dt, force_new)   ! t_{n+1} from the global step number
+            force_theta = theta*force_new + (1 - theta)*self%force
+         end if                                                        ! (else both stay 0)
+         rhs = self%u + theta*dt*self%v
+         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) then
+            call self%damping_into(self%v, damping_vector, work_vector)
+            damping_vector = force_theta - damping_vector
+            call band_residual_solve(self%iteration_factor, self%stiffness, rhs, damping_vector, v_free)
+         else
+            call band_residual_solve(self%iteration_factor, self%stiffness, rhs, force_theta, v_free)
+         end if
+         v_free = self%v + dt*v_free
          ! 2. active set at U~ = U^n + gamma dt V^n
          m = 0
          do c = 1, self%contacts%count
@@ -133,57 +152,98 @@ contains
             offsets(m) = -e_c*self%velocity_before(m)
          end do
          self%active_count = m
-         ! 3. projection (with the compliant stops' forces when the scene has any)
-         if (self%contacts%springs%count > 0) then
-            call self%compliant_step(v_free, signs(1:m), offsets(1:m), v_new, spring_power, stat, errmsg)
-         else
-            call self%projector%project(v_free, self%active(1:m), signs(1:m), offsets(1:m), v_new, &
-                                        self%impulse(1:m), self%iterations, stat, errmsg)
-            self%linear_solves = self%projector%linear_solves
-            self%used_fallback = self%projector%used_fallback
-            spring_power = 0
-         end if
-         if (stat /= 0) return
-         ! 4. positions
-         v_theta = theta*v_new + (1 - theta)*self%v
-         u_new = self%u + dt*v_theta
-         if (.not. ieee_is_finite(sum(v_new)) .or. .not. ieee_is_finite(sum(u_new))) then
-            stat = stat_not_finite
-            write (errmsg, '(a,es12.5,a)') 'the solution is no longer finite at t = ', self%t + dt, ' s'
-            return
-         end if
-         ! energy bookkeeping (docs/method.md "Energies"; theory §6). With dV = V^{n+1} - V^n,
-         ! dU = U^{n+1} - U^n = dt V^{n+theta}, the step equations give exactly
-         !   E^{n+1} - E^n = F^{n+theta}.dU - dt V^{n+theta}.C V^{n+theta}
-         !                   + P.H (V^{n+1} + V^n)/2 - (theta - 1/2) (dV.M dV + dU.K dU - P.H dV),
-         ! so the impacts take -P.H (V^{n+1} + V^n)/2 (>= 0 by Newton's law with e_c <= 1 on
-         ! approaching points and e_c = 1 on separating ones) and the theta-method the last
-         ! term (0 for theta = 1/2; >= 0 in every step without impulses for theta > 1/2).
-         if (self%loads%present) self%work = self%work + dot_product(force_theta, u_new - self%u)
-         impulse_power = spring_power
-         do k = 1, m
-            self%velocity_after(k) = contact_value(self%contacts, self%active(k), v_new)
-            self%dissipated_impacts = self%dissipated_impacts - 0.5_dp*self%impulse(k)* &
-                                      (self%velocity_after(k) + self%velocity_before(k))
-            impulse_power = impulse_power + self%impulse(k)*(self%velocity_after(k) - self%velocity_before(k))
-         end do
-         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) &
-            self%dissipated_damping = self%dissipated_damping + dt*dot_product(v_theta, self%damping_times(v_theta))
-         if (abs(theta - 0.5_dp) > 0) then
-            call band_matvec(self%mass, v_new - self%v, work_vector)
-            self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)*dot_product(v_new - self%v, work_vector)
-            call band_matvec(self%stiffness, u_new - self%u, work_vector)
-            self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)* &
-                                        (dot_product(u_new - self%u, work_vector) - impulse_power)
-         end if
-         if (self%contacts%springs%count > 0) call self%compliant_energy(u_new)
-         self%u = u_new
-         self%v = v_new
-         self%force = force_new
-         self%steps = self%steps + 1
-         self%t = self%steps*dt
-         self%impulse_time = self%t   ! the impulse acts over [t_n, t_{n+1}]; recorded at its end
       end associate
+      ! 3. projection (with no active point it is the identity: V^{n+1} = V_free), with the
+      ! compliant stops' forces when the scene has any
+      spring_power = 0
+      if (self%contacts%springs%count > 0) then
+         call self%compliant_step(self%v_free, self%signs(1:m), self%offsets(1:m), self%v_new, spring_power, &
+                                  stat, errmsg)
+         if (stat /= 0) return
+         call complete(self%v_new)
+      else if (m > 0) then
+         call self%projector%project(self%v_free, self%active(1:m), self%signs(1:m), self%offsets(1:m), self%v_new, &
+                                     self%impulse(1:m), self%iterations, stat, errmsg)
+         self%linear_solves = self%projector%linear_solves
+         self%used_fallback = self%projector%used_fallback
+         if (stat /= 0) return
+         call complete(self%v_new)
+      else
+         call self%projector%record_free()
+         self%iterations = 0
+         self%linear_solves = 0
+         self%used_fallback = .false.
+         call complete(self%v_free)
+      end if
+      if (.not. finite) then
+         stat = stat_not_finite
+         write (errmsg, '(a,es12.5,a)') 'the solution is no longer finite at t = ', self%t + self%dt, ' s'
+         return
+      end if
+      call swap(self%u, self%u_new)
+      if (m > 0 .or. self%contacts%springs%count > 0) then
+         call swap(self%v, self%v_new)
+      else
+         call swap(self%v, self%v_free)
+      end if
+      if (self%loads%present) call swap(self%force, self%force_new)
+      self%steps = self%steps + 1
+      self%t = self%steps*self%dt
+      self%impulse_time = self%t   ! the impulse acts over [t_n, t_{n+1}]; recorded at its end
+
+   contains
+
+      !> 4. positions U^{n+1} = U^n + dt V^{n+theta} into u_new, and the energy bookkeeping,
+      !! given V^{n+1} = v_next; `finite` says whether U^{n+1} and V^{n+1} are finite.
+      subroutine complete(v_next)
+         real(dp), intent(in) :: v_next(:)
+         real(dp) :: impulse_power, v_theta, total, work
+         integer :: i, k
+         associate (dt => self%dt, theta => self%theta, u => self%u, v => self%v, u_new => self%u_new, &
+                    rhs => self%rhs, work_vector => self%work_vector)
+            ! one pass: positions, the finiteness test and the work of the loads
+            total = 0
+            work = 0
+            do i = 1, size(u)
+               v_theta = theta*v_next(i) + (1 - theta)*v(i)
+               u_new(i) = u(i) + dt*v_theta
+               total = total + (v_next(i) + u_new(i))
+               work = work + self%force_theta(i)*(u_new(i) - u(i))
+            end do
+            finite = ieee_is_finite(total)
+            if (.not. finite) return
+            ! energy bookkeeping (docs/method.md "Energies"; theory §6). With dV = V^{n+1} - V^n,
+            ! dU = U^{n+1} - U^n = dt V^{n+theta}, the step equations give exactly
+            !   E^{n+1} - E^n = F^{n+theta}.dU - dt V^{n+theta}.C V^{n+theta}
+            !                   + P.H (V^{n+1} + V^n)/2 - (theta - 1/2) (dV.M dV + dU.K dU - P.H dV),
+            ! so the impacts take -P.H (V^{n+1} + V^n)/2 (>= 0 by Newton's law with e_c <= 1 on
+            ! approaching points and e_c = 1 on separating ones) and the theta-method the last
+            ! term (0 for theta = 1/2; >= 0 in every step without impulses for theta > 1/2).
+            if (self%loads%present) self%work = self%work + work
+            impulse_power = spring_power
+            do k = 1, m
+               self%velocity_after(k) = contact_value(self%contacts, self%active(k), v_next)
+               self%dissipated_impacts = self%dissipated_impacts - 0.5_dp*self%impulse(k)* &
+                                         (self%velocity_after(k) + self%velocity_before(k))
+               impulse_power = impulse_power + self%impulse(k)*(self%velocity_after(k) - self%velocity_before(k))
+            end do
+            if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) then
+               rhs = theta*v_next + (1 - theta)*v
+               call self%damping_into(rhs, self%damping_vector, work_vector)
+               self%dissipated_damping = self%dissipated_damping + dt*dot_product(rhs, self%damping_vector)
+            end if
+            if (abs(theta - 0.5_dp) > 0) then
+               rhs = v_next - v
+               call band_matvec(self%mass, rhs, work_vector)
+               self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)*dot_product(rhs, work_vector)
+               rhs = u_new - u
+               call band_matvec(self%stiffness, rhs, work_vector)
+               self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)* &
+                                           (dot_product(rhs, work_vector) - impulse_power)
+            end if
+            if (self%contacts%springs%count > 0) call self%compliant_energy(u_new)
+         end associate
+      end subroutine complete
    end subroutine step
 
    !> Step 3 with compliant stops: V^{n+1} from Newton's method on
@@ -225,4 +285,13 @@ contains
    end subroutine compliant_step
 
 
+
+   !> Exchange two allocated vectors of the same size (descriptors only).
+   subroutine swap(a, b)
+      real(dp), allocatable, intent(inout) :: a(:), b(:)
+      real(dp), allocatable :: held(:)
+      call move_alloc(a, held)
+      call move_alloc(b, a)
+      call move_alloc(held, b)
+   end subroutine swap
 end module vibrobeam_velocity_stepper

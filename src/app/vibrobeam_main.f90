@@ -10,7 +10,7 @@ program vibrobeam_main
    use vibrobeam_status, only: exit_ok, exit_other_error, exit_invalid_input, exit_numerical_failure, &
                                exit_interrupted, message_length, stat_numerical_failure
    use vibrobeam_version, only: version_string
-   use vibrobeam_scene, only: scene_type, validate_scene, format_scene
+   use vibrobeam_scene, only: scene_type, validate_scene, format_scene, is_unset
    use vibrobeam_input, only: read_scene, namelist_groups_text
    use vibrobeam_output_target, only: check_output_target
    use vibrobeam_check_report, only: check_report, make_check_report, check_report_text, scene_warnings
@@ -189,6 +189,18 @@ contains
       write (output_unit, '(a,i0,a,i0,a)') 'discrete model: ', model%elements, ' '//trim(model%basis)// &
          ' elements, ', model%unknowns, ' unknowns'
       write (output_unit, '(a,i0)') 'contact points: ', contacts%count
+      if (prepared%reduced) then
+         associate (reduction => prepared%reduction)
+            write (output_unit, '(a,i0,a,i0,a,i0,a)') 'reduced model (craig-bampton): ', &
+               reduction%boundary + reduction%modes, ' unknowns (', reduction%boundary, ' contact displacements, ', &
+               reduction%modes, ' fixed-interface modes)'
+            if (reduction%modes > 0) write (output_unit, '(a,es12.5,a)') '  highest fixed-interface mode kept: ', &
+               reduction%omega(reduction%modes), ' rad/s'
+            if (reduction%cutoff > 0) write (output_unit, '(a,es12.5,a)') '  cut-off: ', reduction%cutoff, &
+               ' rad/s'//merge(' (default)', '          ', &
+               is_unset(scene%reduction_frequency))
+         end associate
+      end if
       call make_check_report(scene, model, report, stat, errmsg)
       if (stat /= 0) call fail(exit_numerical_failure, errmsg)
       write (output_unit, '(a)', advance='no') check_report_text(scene, report)
