@@ -143,6 +143,12 @@ contains
                           report, tally, stat, errmsg)
    end subroutine newton_project
 
+   !> The largest |finite bound| (0 if none).
+   pure real(dp) function bound_scale(lower, upper)
+      real(dp), intent(in) :: lower(:), upper(:)
+      bound_scale = max(maxval(abs(lower), lower > -no_bound), maxval(abs(upper), upper < no_bound), 0.0_dp)
+   end function bound_scale
+
    !> The largest |H x_free|, |finite bound| (never 0).
    pure function problem_scale(free_value, lower, upper) result(scale)
       real(dp), intent(in) :: free_value(:), lower(:), upper(:)
@@ -167,7 +173,7 @@ contains
       character(len=*), intent(out) :: errmsg
       integer, intent(out), optional :: changes   !! points that changed side
       logical :: held(size(points)), wrong(size(points)), enter_lower(size(points)), enter_upper(size(points))
-      real(dp) :: target(size(points)), accuracy, tolerance, error_estimate
+      real(dp) :: target(size(points)), accuracy, tolerance, error_estimate, value_scale, abs_x(size(x))
       integer :: k
       converged = .false.
       if (present(changes)) changes = 0
@@ -175,11 +181,14 @@ contains
       target = merge(lower, upper, side >= 0)
       call system%solve_held(x_free, w_x_free, points, held, target, x, multiplier, error_estimate, tally, stat, errmsg)
       if (stat /= 0) return
+      value_scale = bound_scale(lower, upper)
+      abs_x = abs(x)
       do k = 1, size(points)
          value(k) = contact_value(system%contacts, points(k), x)
+         value_scale = max(value_scale, contact_value(system%contacts, points(k), abs_x))
       end do
       accuracy = max(maxval(abs(value - target), held), 0.0_dp)
-      tolerance = gap_factor*epsilon(1.0_dp)*max(scale, maxval(abs(value))) + accuracy + 2*error_estimate
+      tolerance = gap_factor*epsilon(1.0_dp)*value_scale + accuracy + 2*error_estimate
       wrong = held .and. side*multiplier < 0
       enter_lower = .not. held .and. value < lower - tolerance
       enter_upper = .not. held .and. value > upper + tolerance
@@ -249,11 +258,12 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       logical :: has_lower(size(points)), has_upper(size(points)), converged, round_off, round_off_tried
-      real(dp), dimension(size(points)) :: s, t, y, z, g, weight, stiffness, r_lower, r_upper, r_sy, r_tz, &
+      real(dp), dimension(size(points)) :: s, t, y, z, g, weight, r_lower, r_upper, r_sy, r_tz, &
                                            ds, dt, dy, dz, dg, y_gain, z_gain
       real(dp), dimension(size(x_free)) :: xi, r_dual, dx
       real(dp) :: mu, mu0, mu_affine, sigma, alpha, slack_floor, metric_norm
-      integer :: indicated(size(points)), previous(size(points)), pairs, iteration, polish
+      integer :: indicated(size(points)), previous(size(points)), failed(size(points)), pairs, iteration, polish, &
+                 changes, previous_changes
       stat = 0
       errmsg = ''
       has_lower = lower > -no_bound
@@ -269,9 +279,9 @@ contains
       t = merge(max(upper - g, slack_floor), 1.0_dp, has_upper)
       y = merge(mu0/s, 0.0_dp, has_lower)
       z = merge(mu0/t, 0.0_dp, has_upper)
-      stiffness = system%row_stiffness(points)
       mu = mu0
       previous = 2
+      failed = 2
       metric_norm = maxval(sum(abs(system%metric%lower), dim=1))   ! |W|_inf, within a factor 2
       round_off_tried = .false.
       do iteration = 1, interior_limit
@@ -309,8 +319,8 @@ contains
          r_sy = -s*y
          r_tz = -t*z
          call newton_direction()
-         y_gain = (y + dy) - stiffness*(s + ds)
-         z_gain = (z + dz) - stiffness*(t + dt)
+         y_gain = (y + dy)/merge(y, 1.0_dp, has_lower) - 0.5_dp
+         z_gain = (z + dz)/merge(z, 1.0_dp, has_upper) - 0.5_dp
          alpha = min(1.0_dp, step_to_boundary())
          mu_affine = (sum((s + alpha*ds)*(y + alpha*dy), has_lower) + sum((t + alpha*dt)*(z + alpha*dz), has_upper))/pairs
          sigma = (max(mu_affine, 0.0_dp)/mu)**3
@@ -332,17 +342,21 @@ contains
          indicated = 0
          where (has_lower .and. y_gain > 0) indicated = 1
          where (has_upper .and. z_gain > 0 .and. (indicated == 0 .or. z_gain > y_gain)) indicated = -1
-         if ((mu <= crossover_reduction*mu0 .and. all(indicated == previous)) .or. &
-             (round_off .and. .not. round_off_tried)) then
+         if (((mu <= crossover_reduction*mu0 .and. all(indicated == previous)) .or. &
+              (round_off .and. .not. round_off_tried)) .and. any(indicated /= failed)) then
             round_off_tried = round_off_tried .or. round_off
             report%crossovers = report%crossovers + 1
             side = indicated
-            do polish = 1, polish_limit
+            changes = huge(1)
+            do polish = 1, warm_limit
                report%active_set_iterations = report%active_set_iterations + 1
+               previous_changes = changes
                call active_set_step(system, x_free, w_x_free, points, lower, upper, scale, side, x, multiplier, value, &
-                                    converged, tally, stat, errmsg)
+                                    converged, tally, stat, errmsg, changes)
                if (stat /= 0 .or. converged) return
+               if (polish >= polish_limit .and. changes >= previous_changes) exit
             end do
+            failed = indicated   ! the iteration from a set is deterministic: do not retry it
          end if
          previous = indicated
          if (.not. (mu > 0 .and. alpha > 0)) exit   ! nothing left to reduce
