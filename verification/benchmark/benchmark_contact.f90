@@ -26,7 +26,8 @@
 !!    on the press and the bouncing slap, N = 4 ... 128 (contact points = N), median time
 !!    per step.
 !!
-!! Usage: benchmark_contact STRESS_DIRECTORY [TABLE_FILE] ['quick' | 'regimes' | 'static']
+!! Usage: benchmark_contact STRESS_DIRECTORY [TABLE_FILE] ['quick' | 'slap' | 'regimes' | 'static']
+!! ('slap', 'static', 'regimes': part A, C or D alone)
 program benchmark_contact
    use vibrobeam_kinds, only: dp, int64, output_unit, error_unit
    use vibrobeam_scene, only: scene_type
@@ -90,6 +91,8 @@ program benchmark_contact
       call part_regimes(unit)
    case ('static')
       call part_static(unit)
+   case ('slap')
+      call part_slap(unit)
    case default
       call part_slap(unit)
       call part_stress(unit)
