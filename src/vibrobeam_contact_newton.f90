@@ -26,9 +26,10 @@
 !!    once, so its iterations do not depend on how many points change side; each factors
 !!    the band matrix W + H^T D H once (dpbtrf) and solves it twice. It ends either by a
 !!    crossover (the active-set iteration restarted from the set the interior point
-!!    indicates, `polish_limit` iterations at most, exact) or, when the complementarity
-!!    products reach round-off, by the interior-point finish (P = y - z, x recomputed
-!!    from P). Details at `interior_point`.
+!!    indicates point by point, at least `polish_limit` iterations and on while they
+!!    make progress, exact) or, when the complementarity products reach round-off, by
+!!    the interior-point finish (P = y - z, x recomputed from P). Details at
+!!    `interior_point`.
 !! 3. If neither happens within `interior_limit` iterations, stat = 1 and the caller falls
 !!    back on principal pivoting.
 !!
@@ -59,14 +60,16 @@ module vibrobeam_contact_newton
    !! side decreases (a start far from the solution, e.g. statics from x_free, needs a few,
    !! each of which shrinks the changes; a cycling or creeping iteration does not).
    integer, parameter :: warm_minimum = 4, warm_limit = 40
-   !> Active-set iterations of one crossover.
+   !> Active-set iterations of one crossover at least (at most warm_limit, while the changes shrink).
    integer, parameter :: polish_limit = 3
    !> Interior-point iterations before the fall-back.
    integer, parameter :: interior_limit = 100
    !> A free point may violate its bound by gap_factor eps scale + (largest |H x - bound|
    !! on the held points) + 2 (error estimate of the solve, `solve_held`), scale = the
-   !! largest |H x|, |bound| of the problem: the round-off of evaluating H x (at most 3
-   !! products and sums, 3 eps |H||x|) with a margin, plus what the solve itself achieves.
+   !! largest |H_k| |x| and |finite bound| of the iterate x: the round-off of evaluating
+   !! H x (at most 3 products and sums, 3 eps |H||x|) with a margin, plus what the solve
+   !! itself achieves. (The scale of x, not of x_free: in statics x_free = K^-1 F is some
+   !! 10^10 times the solution and would let a contact zone keep holes.)
    real(dp), parameter :: gap_factor = 64
    !> Residual check of the exact finish: |H_k x - bound_k| on the held points must not
    !! exceed residual_limit * scale (a solve that loses all but 8 digits has failed).
@@ -226,16 +229,21 @@ contains
    !! on every free point; their sum moves the beam far from the bounds and cost 2-3 times
    !! more iterations in the slap.)
    !!
-   !! Crossover: the indicated set is {y_k + dy_k > c_k (s_k + ds_k)} (lower; likewise
-   !! upper) at the affine-scaling (predictor) point, with c_k = H_k W H_k^T the stiffness
-   !! the point sees when every other unknown is held: the semismooth-Newton criterion
-   !! applied to the Newton prediction of the solution. (With a global scale, largest
-   !! multiplier over largest value, for c_k, points with a small gap next to a stiff
-   !! neighbourhood were indicated held, and holding them cost multipliers of the wrong
-   !! sign of 2-8 % of the largest.) The active-set iteration restarts from it (at most
-   !! polish_limit iterations) once mu <= crossover_reduction mu_0 and the indicated set
-   !! did not change in the last iteration, and once every product is below the round-off
-   !! of the complementarity (round_factor eps P_max scale).
+   !! Crossover: the indicated set is {(y_k + dy_k)/y_k > 1/2} (lower; likewise upper) at the
+   !! affine-scaling (predictor) direction, the indicator of El-Bakry, Tapia, Tsuchiya &
+   !! Zhang (J. Optim. Theory Appl. 89 (1996) 507-541): since s dy + y ds = -s y, it is the
+   !! same as (s_k + ds_k)/s_k < 1/2, i.e. the predictor removes more than half of the
+   !! point's own gap. It compares each point with itself, in the scale of its own gap and
+   !! multiplier. (The earlier y + dy > c_k (s + ds), c_k = H_k W H_k^T, asks for gaps
+   !! below |P_k|/c_k ~ |q| h^4/24 in statics, under the round-off of the positions from
+   !! N ~ 10^4: the crossover never succeeded there and the interior-point finish left
+   !! reactions of up to 4 % of |q| h on lifted nodes.) The active-set iteration restarts
+   !! from it once mu <= crossover_reduction mu_0 and the indicated set did not change in
+   !! the last iteration, and once every product is below the round-off of the
+   !! complementarity (round_factor eps P_max scale); it runs at least polish_limit
+   !! iterations and continues while the number of points that change side decreases
+   !! (as the warm start does). A set from which it failed is not tried again (the
+   !! iteration from a set is deterministic).
    !!
    !! Interior-point finish, if that crossover fails: once the products have reached
    !! round-off and so have the residuals (|W x - b - H^T P| <= round_factor eps
