@@ -388,7 +388,7 @@ contains
       f = scene%point_force
       ei = prepared%model%ei
       h = prepared%model%length/n
-      lifted = h*count(u(1:2*n:2) > 0 .and. reaction == 0)
+      lifted = h*count(u(1:2*n:2) > 0 .and. .not. abs(reaction) > 0)
       largest = maxval([reaction, 0.0_dp], mask=[u(1:2*n:2) > 0, .true.])
       if (tip) then
          continuum = 2*f/q
