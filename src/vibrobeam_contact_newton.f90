@@ -231,7 +231,7 @@ contains
    !!
    !! Crossover: the indicated set is {(y_k + dy_k)/y_k > 1/2} (lower; likewise upper) at the
    !! affine-scaling (predictor) direction, the indicator of El-Bakry, Tapia &
-   !! Zhang, SIAM Review 36 (1994) 45-72): since s dy + y ds = -s y, it is the
+   !! Zhang (SIAM Review 36 (1994) 45-72): since s dy + y ds = -s y, it is the
    !! same as (s_k + ds_k)/s_k < 1/2, i.e. the predictor removes more than half of the
    !! point's own gap. It compares each point with itself, in the scale of its own gap and
    !! multiplier. (The earlier y + dy > c_k (s + ds), c_k = H_k W H_k^T, asks for gaps
