@@ -26,9 +26,10 @@
 !!    once, so its iterations do not depend on how many points change side; each factors
 !!    the band matrix W + H^T D H once (dpbtrf) and solves it twice. It ends either by a
 !!    crossover (the active-set iteration restarted from the set the interior point
-!!    indicates, `polish_limit` iterations at most, exact) or, when the complementarity
-!!    products reach round-off, by the interior-point finish (P = y - z, x recomputed
-!!    from P). Details at `interior_point`.
+!!    indicates point by point, at least `polish_limit` iterations and on while they
+!!    make progress, exact) or, when the complementarity products reach round-off, by
+!!    the interior-point finish (P = y - z, x recomputed from P). Details at
+!!    `interior_point`.
 !! 3. If neither happens within `interior_limit` iterations, stat = stat_no_convergence and the caller falls
 !!    back on principal pivoting.
 !!
@@ -60,14 +61,16 @@ module vibrobeam_contact_newton
    !! side decreases (a start far from the solution, e.g. statics from x_free, needs a few,
    !! each of which shrinks the changes; a cycling or creeping iteration does not).
    integer, parameter :: warm_minimum = 4, warm_limit = 40
-   !> Active-set iterations of one crossover.
+   !> Active-set iterations of one crossover at least (at most warm_limit, while the changes shrink).
    integer, parameter :: polish_limit = 3
    !> Interior-point iterations before the fall-back.
    integer, parameter :: interior_limit = 100
    !> A free point may violate its bound by gap_factor eps scale + (largest |H x - bound|
    !! on the held points) + 2 (error estimate of the solve, `solve_held`), scale = the
-   !! largest |H x|, |bound| of the problem: the round-off of evaluating H x (at most 3
-   !! products and sums, 3 eps |H||x|) with a margin, plus what the solve itself achieves.
+   !! largest |H_k| |x| and |finite bound| of the iterate x: the round-off of evaluating
+   !! H x (at most 3 products and sums, 3 eps |H||x|) with a margin, plus what the solve
+   !! itself achieves. (The scale of x, not of x_free: in statics x_free = K^-1 F is some
+   !! 10^10 times the solution and would let a contact zone keep holes.)
    real(dp), parameter :: gap_factor = 64
    !> Residual check of the exact finish: |H_k x - bound_k| on the held points must not
    !! exceed residual_limit * scale (a solve that loses all but 8 digits has failed).
@@ -145,6 +148,12 @@ contains
                           report, tally, stat, errmsg)
    end subroutine newton_project
 
+   !> The largest |finite bound| (0 if none).
+   pure real(dp) function bound_scale(lower, upper)
+      real(dp), intent(in) :: lower(:), upper(:)
+      bound_scale = max(maxval(abs(lower), lower > -no_bound), maxval(abs(upper), upper < no_bound), 0.0_dp)
+   end function bound_scale
+
    !> The largest |H x_free|, |finite bound| (never 0).
    pure function problem_scale(free_value, lower, upper) result(scale)
       real(dp), intent(in) :: free_value(:), lower(:), upper(:)
@@ -169,7 +178,7 @@ contains
       character(len=*), intent(out) :: errmsg
       integer, intent(out), optional :: changes   !! points that changed side
       logical :: held(size(points)), wrong(size(points)), enter_lower(size(points)), enter_upper(size(points))
-      real(dp) :: target(size(points)), accuracy, tolerance, error_estimate
+      real(dp) :: target(size(points)), accuracy, tolerance, error_estimate, value_scale, abs_x(size(x))
       integer :: k
       converged = .false.
       if (present(changes)) changes = 0
@@ -177,11 +186,14 @@ contains
       target = merge(lower, upper, side >= 0)
       call system%solve_held(x_free, w_x_free, points, held, target, x, multiplier, error_estimate, tally, stat, errmsg)
       if (stat /= 0) return
+      value_scale = bound_scale(lower, upper)
+      abs_x = abs(x)
       do k = 1, size(points)
          value(k) = contact_value(system%contacts, points(k), x)
+         value_scale = max(value_scale, contact_value(system%contacts, points(k), abs_x))
       end do
       accuracy = max(maxval(abs(value - target), held), 0.0_dp)
-      tolerance = gap_factor*epsilon(1.0_dp)*max(scale, maxval(abs(value))) + accuracy + 2*error_estimate
+      tolerance = gap_factor*epsilon(1.0_dp)*value_scale + accuracy + 2*error_estimate
       wrong = held .and. side*multiplier < 0
       enter_lower = .not. held .and. value < lower - tolerance
       enter_upper = .not. held .and. value > upper + tolerance
@@ -219,16 +231,21 @@ contains
    !! on every free point; their sum moves the beam far from the bounds and cost 2-3 times
    !! more iterations in the slap.)
    !!
-   !! Crossover: the indicated set is {y_k + dy_k > c_k (s_k + ds_k)} (lower; likewise
-   !! upper) at the affine-scaling (predictor) point, with c_k = H_k W H_k^T the stiffness
-   !! the point sees when every other unknown is held: the semismooth-Newton criterion
-   !! applied to the Newton prediction of the solution. (With a global scale, largest
-   !! multiplier over largest value, for c_k, points with a small gap next to a stiff
-   !! neighbourhood were indicated held, and holding them cost multipliers of the wrong
-   !! sign of 2-8 % of the largest.) The active-set iteration restarts from it (at most
-   !! polish_limit iterations) once mu <= crossover_reduction mu_0 and the indicated set
-   !! did not change in the last iteration, and once every product is below the round-off
-   !! of the complementarity (round_factor eps P_max scale).
+   !! Crossover: the indicated set is {(y_k + dy_k)/y_k > 1/2} (lower; likewise upper) at the
+   !! affine-scaling (predictor) direction, the indicator of El-Bakry, Tapia &
+   !! Zhang (SIAM Review 36 (1994) 45-72): since s dy + y ds = -s y, it is the
+   !! same as (s_k + ds_k)/s_k < 1/2, i.e. the predictor removes more than half of the
+   !! point's own gap. It compares each point with itself, in the scale of its own gap and
+   !! multiplier. (The earlier y + dy > c_k (s + ds), c_k = H_k W H_k^T, asks for gaps
+   !! below |P_k|/c_k ~ |q| h^4/24 in statics, under the round-off of the positions from
+   !! N ~ 10^4: the crossover never succeeded there and the interior-point finish left
+   !! reactions of up to 4 % of |q| h on lifted nodes.) The active-set iteration restarts
+   !! from it once mu <= crossover_reduction mu_0 and the indicated set did not change in
+   !! the last iteration, and once every product is below the round-off of the
+   !! complementarity (round_factor eps P_max scale); it runs at least polish_limit
+   !! iterations and continues while the number of points that change side decreases
+   !! (as the warm start does). A set from which it failed is not tried again (the
+   !! iteration from a set is deterministic).
    !!
    !! Interior-point finish, if that crossover fails: once the products have reached
    !! round-off and so have the residuals (|W x - b - H^T P| <= round_factor eps
@@ -251,11 +268,12 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       logical :: has_lower(size(points)), has_upper(size(points)), converged, round_off, round_off_tried
-      real(dp), dimension(size(points)) :: s, t, y, z, g, weight, stiffness, r_lower, r_upper, r_sy, r_tz, &
+      real(dp), dimension(size(points)) :: s, t, y, z, g, weight, r_lower, r_upper, r_sy, r_tz, &
                                            ds, dt, dy, dz, dg, y_gain, z_gain
       real(dp), dimension(size(x_free)) :: xi, r_dual, dx
       real(dp) :: mu, mu0, mu_affine, sigma, alpha, slack_floor, metric_norm
-      integer :: indicated(size(points)), previous(size(points)), pairs, iteration, polish
+      integer :: indicated(size(points)), previous(size(points)), failed(size(points)), pairs, iteration, polish, &
+                 changes, previous_changes
       stat = 0
       errmsg = ''
       has_lower = lower > -no_bound
@@ -271,9 +289,9 @@ contains
       t = merge(max(upper - g, slack_floor), 1.0_dp, has_upper)
       y = merge(mu0/s, 0.0_dp, has_lower)
       z = merge(mu0/t, 0.0_dp, has_upper)
-      stiffness = system%row_stiffness(points)
       mu = mu0
       previous = 2
+      failed = 2
       metric_norm = maxval(sum(abs(system%metric%lower), dim=1))   ! |W|_inf, within a factor 2
       round_off_tried = .false.
       do iteration = 1, interior_limit
@@ -311,8 +329,8 @@ contains
          r_sy = -s*y
          r_tz = -t*z
          call newton_direction()
-         y_gain = (y + dy) - stiffness*(s + ds)
-         z_gain = (z + dz) - stiffness*(t + dt)
+         y_gain = (y + dy)/merge(y, 1.0_dp, has_lower) - 0.5_dp
+         z_gain = (z + dz)/merge(z, 1.0_dp, has_upper) - 0.5_dp
          alpha = min(1.0_dp, step_to_boundary())
          mu_affine = (sum((s + alpha*ds)*(y + alpha*dy), has_lower) + sum((t + alpha*dt)*(z + alpha*dz), has_upper))/pairs
          sigma = (max(mu_affine, 0.0_dp)/mu)**3
@@ -334,17 +352,21 @@ contains
          indicated = 0
          where (has_lower .and. y_gain > 0) indicated = 1
          where (has_upper .and. z_gain > 0 .and. (indicated == 0 .or. z_gain > y_gain)) indicated = -1
-         if ((mu <= crossover_reduction*mu0 .and. all(indicated == previous)) .or. &
-             (round_off .and. .not. round_off_tried)) then
+         if (((mu <= crossover_reduction*mu0 .and. all(indicated == previous)) .or. &
+              (round_off .and. .not. round_off_tried)) .and. any(indicated /= failed)) then
             round_off_tried = round_off_tried .or. round_off
             report%crossovers = report%crossovers + 1
             side = indicated
-            do polish = 1, polish_limit
+            changes = huge(1)
+            do polish = 1, warm_limit
                report%active_set_iterations = report%active_set_iterations + 1
+               previous_changes = changes
                call active_set_step(system, x_free, w_x_free, points, lower, upper, scale, side, x, multiplier, value, &
-                                    converged, tally, stat, errmsg)
+                                    converged, tally, stat, errmsg, changes)
                if (stat /= 0 .or. converged) return
+               if (polish >= polish_limit .and. changes >= previous_changes) exit
             end do
+            failed = indicated   ! the iteration from a set is deterministic: do not retry it
          end if
          previous = indicated
          if (.not. (mu > 0 .and. alpha > 0)) exit   ! nothing left to reduce

@@ -26,7 +26,8 @@
 !!    on the press and the bouncing slap, N = 4 ... 128 (contact points = N), median time
 !!    per step.
 !!
-!! Usage: benchmark_contact STRESS_DIRECTORY [TABLE_FILE] ['quick' | 'regimes' | 'static']
+!! Usage: benchmark_contact STRESS_DIRECTORY [TABLE_FILE] ['quick' | 'slap' | 'regimes' | 'static']
+!! ('slap', 'static', 'regimes': part A, C or D alone)
 program benchmark_contact
    use vibrobeam_kinds, only: dp, int64, output_unit, error_unit
    use vibrobeam_scene, only: scene_type
@@ -90,6 +91,8 @@ program benchmark_contact
       call part_regimes(unit)
    case ('static')
       call part_static(unit)
+   case ('slap')
+      call part_slap(unit)
    case default
       call part_slap(unit)
       call part_stress(unit)
@@ -331,12 +334,21 @@ contains
       real(dp), allocatable :: u(:), reaction(:)
       integer(int64) :: start, finish, rate
       integer :: i, k, method, stat, iterations
+      real(dp) :: lifted, continuum, deflection_error, largest
       character(len=512) :: errmsg
       character(len=8), parameter :: methods(2) = [character(len=8) :: 'pivoting', 'newton']
       character(len=*), parameter :: static_scenes(2) = [character(len=20) :: 'liftoff_tip_static', 'liftoff_static']
       write (unit, '(a)') '#'
       write (unit, '(a)') '# C. static lift-off at the tip and at mid-span, regime band; pivoting limited to 2000 pivots'
-      write (unit, '(a)') '# scene                    N  method    status  wall_s  iterations  points_in_contact  sum_of_reactions'
+      write (unit, '(a)') '#   lifted_length: h x (nodes with w > 0 and R = 0) (+ h at mid-span: both touchdown nodes'// &
+         ' are held), against the continuum 2F/|q| (tip), 3F/(2|q|) (mid-span, 2b);'
+      write (unit, '(a)') '#   deflection_error: w(L) / ((2/3) F^4/(|q|^3 EI)) - 1 (tip), w(L/2) / (|q| b^4/(72 EI)) - 1,'// &
+         ' b = 3F/(4|q|) (mid-span); the exact discrete difference is (h/a)^3/sqrt(3) when a/h is an integer'
+      write (unit, '(a)') '#   (9.0e-3, 9.0e-6, 9.0e-9 at N = 1e3, 1e4, 1e5; mid-span ~ (sqrt(3)/2)(h/b)^3:'// &
+         ' 7.6e-8, 7.6e-11), verification/stress/test_liftoff_closed_form.f90;'
+      write (unit, '(a)') '#   max_R_lifted: largest reaction on a node with w > 0 (|q| h = 1/N)'
+      write (unit, '(a)') '# scene                    N  method    status  wall_s  iterations  points_in_contact' // &
+         '  sum_of_reactions  lifted_length  continuum  deflection_error  max_R_lifted'
       do k = 1, size(static_scenes)
       do i = 1, size(static_sizes)
          if (k == 2 .and. static_sizes(i) > 10000) cycle   ! ill-conditioned beyond (docs/method.md)
@@ -348,9 +360,10 @@ contains
             call system_clock(start, rate)
             call static_solve(prepared, methods(method), u, reaction, iterations, stat, errmsg)
             call system_clock(finish)
-            write (unit, '(a20,i9,2x,a8,2x,a6,f8.2,i12,i19,es18.8)') static_scenes(k), static_sizes(i), methods(method), &
-               merge('ok    ', 'failed', stat == 0), real(finish - start, dp)/rate, iterations, count(abs(reaction) > 0), &
-               sum(reaction)
+            call liftoff_measures(scene, prepared, u, reaction, k == 1, lifted, continuum, deflection_error, largest)
+            write (unit, '(a20,i9,2x,a8,2x,a6,f8.2,i12,i19,es18.8,f15.6,f11.6,es18.3,es14.2)') static_scenes(k), &
+               static_sizes(i), methods(method), merge('ok    ', 'failed', stat == 0), real(finish - start, dp)/rate, &
+               iterations, count(abs(reaction) > 0), sum(reaction), lifted, continuum, deflection_error, largest
             if (stat /= 0) write (unit, '(a)') '#   '//trim(errmsg)
             flush (unit)
             deallocate (u, reaction)
@@ -358,6 +371,35 @@ contains
       end do
       end do
    end subroutine part_static
+
+   !> Lifted length and its continuum value, deflection error against the continuum closed
+   !! form, largest reaction on a lifted node (Hermite: w_i = u(2i - 1), contact point i at
+   !! node i) of the tip (`tip`) or mid-span lift-off.
+   subroutine liftoff_measures(scene, prepared, u, reaction, tip, lifted, continuum, deflection_error, largest)
+      type(scene_type), intent(in) :: scene
+      type(prepared_scene), intent(in) :: prepared
+      real(dp), intent(in) :: u(:), reaction(:)
+      logical, intent(in) :: tip
+      real(dp), intent(out) :: lifted, continuum, deflection_error, largest
+      real(dp) :: q, f, ei, h, b
+      integer :: n
+      n = scene%elements
+      q = -scene%distributed
+      f = scene%point_force
+      ei = prepared%model%ei
+      h = prepared%model%length/n
+      lifted = h*count(u(1:2*n:2) > 0 .and. .not. abs(reaction) > 0)
+      largest = maxval([reaction, 0.0_dp], mask=[u(1:2*n:2) > 0, .true.])
+      if (tip) then
+         continuum = 2*f/q
+         deflection_error = u(2*n - 1)/(2*f**4/(3*q**3*ei)) - 1
+      else
+         b = 3*f/(4*q)
+         lifted = lifted + h
+         continuum = 2*b
+         deflection_error = u(n - 1)/(q*b**4/(72*ei)) - 1
+      end if
+   end subroutine liftoff_measures
 
    !> solve_static, with the pivoting limited to 2000 pivots.
    subroutine static_solve(prepared, method, u, reaction, iterations, stat, errmsg)
