@@ -1,4 +1,4 @@
-!> Cubic B-splines on a uniform open knot vector (SPEC §2, the paper's second family).
+!> Cubic B-splines on a uniform open knot vector (theory §2, the paper's second family).
 !!
 !! Knots t_1..t_{N+7}: four at 0, the interior nodes h, 2h, ..., (N-1)h, four at L. The
 !! N+3 basis functions B_1..B_{N+3} (B_i supported on [t_i, t_{i+4}]) are C^2 piecewise

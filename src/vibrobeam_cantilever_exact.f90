@@ -1,4 +1,4 @@
-!> Closed-form free vibration of an Euler-Bernoulli cantilever (SPEC §6).
+!> Closed-form free vibration of an Euler-Bernoulli cantilever (theory §7).
 !!
 !! Used for initial data in a natural mode and as the independent reference of the
 !! verification tests. The frequency equation of a beam clamped at 0 and free at L is

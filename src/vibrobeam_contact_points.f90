@@ -1,4 +1,4 @@
-!> From obstacles to discrete constraints (SPEC §2, "Discrete constraints" K_h).
+!> From obstacles to discrete constraints (theory §2, "Discrete constraints" K_h).
 !!
 !! A node that an obstacle covers becomes a contact point c with bounds
 !! lower(c) <= u_h(x_c) <= upper(c). Only covered nodes become contact points: a scene with

@@ -1,4 +1,4 @@
-!> Hermite cubic beam element (SPEC §2): shape functions and element matrices.
+!> Hermite cubic beam element (theory §2): shape functions and element matrices.
 !!
 !! On an element [x_e, x_e + h] with local coordinate xi = (x - x_e)/h in [0, 1], the four
 !! degrees of freedom are (w_left, theta_left, w_right, theta_right), w the displacement
@@ -28,7 +28,7 @@ contains
       end select
    end function hermite_shape
 
-   !> Consistent element mass matrix for rho S = 1 (SPEC §2): h/420 [156 22h 54 -13h; ...].
+   !> Consistent element mass matrix for rho S = 1 (theory §2): h/420 [156 22h 54 -13h; ...].
    pure function hermite_element_mass(h) result(m)
       real(dp), intent(in) :: h   !! element length (m)
       real(dp) :: m(4, 4)
@@ -38,7 +38,7 @@ contains
                    -13*h**2, -3*h**3, -22*h**2, 4*h**3], [4, 4])/420.0_dp
    end function hermite_element_mass
 
-   !> Element stiffness matrix for E I = 1 (SPEC §2): 1/h^3 [12 6h -12 6h; ...].
+   !> Element stiffness matrix for E I = 1 (theory §2): 1/h^3 [12 6h -12 6h; ...].
    pure function hermite_element_stiffness(h) result(k)
       real(dp), intent(in) :: h   !! element length (m)
       real(dp) :: k(4, 4)

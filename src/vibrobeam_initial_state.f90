@@ -1,6 +1,6 @@
-!> Initial displacement and velocity of a dynamics run (INTERFACE.md `&initial`).
+!> Initial displacement and velocity of a dynamics run (docs/input.md `&initial`).
 !!
-!! 'mode' data are the closed-form cantilever mode shapes (SPEC §6), scaled so that the
+!! 'mode' data are the closed-form cantilever mode shapes (theory §7), scaled so that the
 !! tip value is the given amplitude, and interpolated on the mesh (Hermite: nodal values
 !! and slopes; B-splines: the spline through the nodal values with the tip slope).
 !! 'uniform' velocity is a rigid translation at `amplitude` everywhere but next to the

@@ -5,7 +5,7 @@
 !!     w = A z + q,   z >= 0,   w >= 0,   z_i w_i = 0  (i = 1..n).
 !!
 !! In vibrobeam A is the Delassus matrix H_I W^-1 H_I^T of the contact projection
-!! (SPEC §3, step 3), symmetric positive definite and small (n = number of active contact
+!! (theory §3, step 3), symmetric positive definite and small (n = number of active contact
 !! points). For such a matrix (a P-matrix) the LCP has exactly one solution.
 !!
 !! Method: block principal pivoting in the form of Júdice & Pires ("A block principal

@@ -1,4 +1,4 @@
-!> External loads of a scene as a function of time (INTERFACE.md `&load`, SPEC §1).
+!> External loads of a scene as a function of time (docs/input.md `&load`, theory §1).
 !!
 !! F(t) = q(t) F_q + P(t) F_p + rho S A Omega_b^2 sin(Omega_b t) F_q, where F_q is the
 !! consistent load vector of a unit uniform load, F_p that of a unit point force, q(t) =

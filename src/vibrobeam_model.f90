@@ -1,4 +1,4 @@
-!> The discrete beam model (SPEC §2): mesh, unknowns, banded mass and stiffness matrices,
+!> The discrete beam model (theory §2): mesh, unknowns, banded mass and stiffness matrices,
 !! load vectors and the map from unknowns to the displacement at a point.
 !!
 !! Two bases, both with M and K of 3 sub-diagonals kept in LAPACK band storage
@@ -164,7 +164,7 @@ contains
 
    !> The displacement at node i (1..N) as a combination of unknowns, like `point_row`
    !! but exact at the node: for Hermite elements u_h(x_i) = w_i is an unknown itself
-   !! (SPEC §2); for B-splines it is the value of the element ending at x_i.
+   !! (theory §2); for B-splines it is the value of the element ending at x_i.
    pure subroutine node_row(model, node, dofs, weights)
       type(beam_model), intent(in) :: model
       integer, intent(in) :: node

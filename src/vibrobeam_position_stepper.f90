@@ -1,11 +1,11 @@
 !> The position-based scheme of Paoli and Schatzman used by Dumont & Paoli (2006)
-!! (SPEC §4), for comparison with the velocity-based one:
+!! (theory §4), for comparison with the velocity-based one:
 !!
 !!   M (U^{n+1} - 2U^n + U^{n-1})/dt^2 + C (U^{n+1} - U^{n-1})/(2 dt)
 !!     + K (theta U^{n+1} + (1 - 2 theta) U^n + theta U^{n-1}) = F^n + H^T r^n,
 !!   (U^{n+1} + e U^{n-1})/(1 + e) = Proj_{K_h}^W ((U_free^{n+1} + e U^{n-1})/(1 + e)),
 !!
-!! W = M + dt/2 C + theta dt^2 K (SPEC §4's M + theta dt^2 K when C = 0), U_free the
+!! W = M + dt/2 C + theta dt^2 K (theory §4's M + theta dt^2 K when C = 0), U_free the
 !! solution without reaction. The projection onto the whole admissible set K_h uses
 !! `contact_projector%project_admissible`. With e = 0 every computed position is
 !! admissible (to the solver's round-off); with e > 0 the law reflects U^{n-1} about the

@@ -185,7 +185,7 @@ contains
    end subroutine resume_from_file
 
    !> The initial displacement of a dynamics run (zero, a mode, or the static equilibrium
-   !! under the loads at t = 0); it must satisfy every obstacle (SPEC §1: u0 in K).
+   !! under the loads at t = 0); it must satisfy every obstacle (theory §1: u0 in K).
    subroutine initial_displacement(scene, prepared, stat, errmsg)
       type(scene_type), intent(in) :: scene
       type(prepared_scene), intent(inout) :: prepared

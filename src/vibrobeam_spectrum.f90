@@ -1,4 +1,4 @@
-!> Amplitude spectrum of a uniformly sampled response (SPEC §5: "the spectrum (FFT) of a
+!> Amplitude spectrum of a uniformly sampled response (docs/output.md: "the spectrum (FFT) of a
 !! point's response"), through FFTW's real-to-complex transform (`fftw3.f03` interface).
 !!
 !! Conventions. A record x_j = x(j dt), j = 0..n-1, of n >= 2 samples with step dt (s).

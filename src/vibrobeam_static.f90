@@ -1,4 +1,4 @@
-!> Static equilibrium against the obstacles (SPEC §6 "Static contact", &analysis kind =
+!> Static equilibrium against the obstacles (theory §7 "Static contact", &analysis kind =
 !! 'static' and &initial displacement = 'static'):
 !!
 !!     U = argmin 1/2 U^T K U - F^T U   subject to   g1(x_c) <= H_c U <= g2(x_c),

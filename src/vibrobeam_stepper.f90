@@ -1,6 +1,6 @@
 !> What every time stepper of vibrobeam holds and offers (STYLE.md: the one-step
 !! integrator, separate from the system and from the contact solver). The velocity-based
-!! scheme (SPEC §3, `vibrobeam_velocity_stepper`) and the position-based one (SPEC §4,
+!! scheme (theory §3, `vibrobeam_velocity_stepper`) and the position-based one (theory §4,
 !! `vibrobeam_position_stepper`) extend it; the recorder and the run loop see only this.
 module vibrobeam_stepper
    use vibrobeam_kinds, only: dp, int64

@@ -1,4 +1,4 @@
-!> The velocity-based time stepper (SPEC §3), one step at a time.
+!> The velocity-based time stepper (theory §3), one step at a time.
 !!
 !! With W = M + theta^2 dt^2 K + theta dt C (factored once), each step does
 !!  1. free velocity  V_free = V^n + W^-1 dt [F^{n+theta} - K (U^n + theta dt V^n) - C V^n],
@@ -41,7 +41,7 @@ module vibrobeam_velocity_stepper
       real(dp) :: gamma = 0.5_dp                   !! activation at U^n + gamma dt V^n
       real(dp) :: activation_tolerance = 0         !! 1e-12 L (m): round-off allowance of the activation test
       !> restitution of an active point already moving away from its obstacle: 1 (our
-      !! remedy, default) or `restitution` (the plain law of SPEC §3, for comparison)
+      !! remedy, default) or `restitution` (the plain law of theory §3, for comparison)
       real(dp) :: separating_restitution = 1
       real(dp), allocatable :: force(:)            !! F(t_n)
       !> work space of `step` (J each), allocated once by `init`: a step allocates nothing

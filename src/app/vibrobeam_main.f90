@@ -1,6 +1,6 @@
 !> vibrobeam: dynamics of a clamped-free Euler-Bernoulli beam between rigid obstacles.
 !!
-!! Command line (INTERFACE.md): `vibrobeam INPUT.nml`, `vibrobeam --check INPUT.nml`,
+!! Command line (docs/output.md, "Exit status"): `vibrobeam INPUT.nml`, `vibrobeam --check INPUT.nml`,
 !! `vibrobeam --text RESULT.h5`, `vibrobeam --help`, `vibrobeam --version`. This program
 !! is the only place where an error becomes a message on stderr and an exit status
 !! (docs/output.md, "Exit status").

@@ -1,4 +1,4 @@
-!> Benchmark of the velocity-based time stepper (SPEC §3): wall-clock time per step
+!> Benchmark of the velocity-based time stepper (theory §3): wall-clock time per step
 !! against the number of elements N = 16 .. 1024 (Hermite elements, J = 2N unknowns,
 !! k2 = 1, L = 1, dt = 1e-4 s, theta = gamma = 1/2). A study, not a test: it checks
 !! nothing against a tolerance and is not run by ctest.

@@ -16,7 +16,7 @@
 #   C. the energy lost by T = 25 ms for N = 8 ... 128 with omega_max dt = 0.06, e = 0.8, 0
 #      and 1: how much the impacts dissipate as the mesh is refined (e = 0.8: the mean of
 #      five runs with the initial velocity changed by up to 1e-3, as the loss jumps);
-#   D. the position scheme (SPEC §4) on four joint paths (dt0, N0), reference (dt0/16, 4 N0);
+#   D. the position scheme (theory §4) on four joint paths (dt0, N0), reference (dt0/16, 4 N0);
 #   E. the sensitivity to the data: the initial velocity perturbed by a relative 1e-10 ... 1e-5.
 # (D and E are printed before C, which holds the longest runs.)
 #
@@ -168,7 +168,7 @@ for e in 0.8 1; do
   echo
 done
 
-echo "## D. the position scheme (SPEC §4) on joint paths dt = dt0/2^k, N = nint(N0 2^(k/2)), reference (dt0/16, 4 N0), e = 0.8"
+echo "## D. the position scheme (theory §4) on joint paths dt = dt0/2^k, N = nint(N0 2^(k/2)), reference (dt0/16, 4 N0), e = 0.8"
 for path in "2e-5 16" "4e-5 16" "1e-5 16" "1e-5 32"; do
   set -- $path
   dt0=$1; n0=$2

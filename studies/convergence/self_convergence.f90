@@ -1,4 +1,4 @@
-!> Self-convergence study of the velocity-based stepper (SPEC §3) on the two-stop
+!> Self-convergence study of the velocity-based stepper (theory §3) on the two-stop
 !! looseness scene (inputs/looseness_tip_stops.nml): a steel cantilever whose tip rattles
 !! between rigid stops at +-1 mm. Results and discussion: studies/convergence/REPORT.md.
 !!
@@ -88,7 +88,7 @@ program self_convergence
       'for '//scene_file, '# one block per study; gnuplot selects one by the start of its first comment '// &
       'line: index ''name''', '', ''
 
-   call emit('Self-convergence of the velocity-based stepper (SPEC 3) on '//scene_file)
+   call emit('Self-convergence of the velocity-based stepper (theory §3) on '//scene_file)
    call emit('(studies/convergence/self_convergence.f90; discussion in studies/convergence/REPORT.md)')
    call emit('')
 

@@ -1,11 +1,11 @@
 !> Work-precision study (issue 4): error against CPU time for every combination of
-!! {Hermite, B-spline} x {velocity (SPEC §3), position (SPEC §4)} x {theta = 1/2, 1}
+!! {Hermite, B-spline} x {velocity (theory §3), position (theory §4)} x {theta = 1/2, 1}
 !! over a sweep of N and dt, on two scenes (studies/work_precision/REPORT.md):
 !!
 !! - `free`: free vibration of the normalized cantilever (k2 = 1, L = 1, no obstacle)
 !!   released with a mode-1 velocity (tip 1) and a mode-2 displacement (tip 0.05), over
 !!   t in [0, 8] (4.5 periods of mode 1). Error: max over the sample times t_k = k/32 of
-!!   |u_h(L, t_k) - u(L, t_k)| / max_k |u(L, t_k)|, u the closed form of SPEC §6,
+!!   |u_h(L, t_k) - u(L, t_k)| / max_k |u(L, t_k)|, u the closed form of theory §7,
 !!   u(L, t) = v1 sin(omega_1 t)/omega_1 + a2 cos(omega_2 t) (mode shapes of tip value 1).
 !! - `impacts`: inputs/looseness_tip_stops.nml over t in [0, 10 ms] (two contact episodes).
 !!   Error: max over the sample times t_k = k 20 us of |u_h(L, t_k) - u_ref(L, t_k)| /
@@ -142,7 +142,7 @@ contains
       integer(int64) :: study_start, study_end, rate
       call system_clock(study_start, rate)
       scene = read_test_scene(path)
-      ! the normalized beam of SPEC §6, whatever the file says
+      ! the normalized beam of theory §7, whatever the file says
       scene%length = 1
       scene%k2 = 1
       scene%youngs_modulus = unset
@@ -170,7 +170,7 @@ contains
       allocate (exact_tip(samples))
       do k = 1, samples
          t = k*sample_interval
-         ! SPEC §6: each mode evolves on its own; the shapes have tip value 1
+         ! theory §7: each mode evolves on its own; the shapes have tip value 1
          exact_tip(k) = cantilever_mode_shape(1, scene%length, scene%length, 0)*velocity_amplitude* &
                         sin(omega1*t)/omega1 + &
                         cantilever_mode_shape(2, scene%length, scene%length, 0)*displacement_amplitude*cos(omega2*t)
@@ -199,7 +199,7 @@ contains
       call system_clock(study_end)
 
       open (newunit=unit, file=directory//'/work_precision_free.txt', status='replace', action='write')
-      write (unit, '(a)') '# Work-precision study (a): free vibration against the closed form (SPEC §6)'
+      write (unit, '(a)') '# Work-precision study (a): free vibration against the closed form (theory §7)'
       write (unit, '(a)') '# program studies/work_precision/work_precision.f90, run by studies/work_precision/work_precision.sh'
       write (unit, '(a)') '# beam: L = 1, k2 = 1, clamped-free, no obstacle, no load, no damping'
       write (unit, '(a,f5.2,a,f5.2,a)') '# initial data: mode-1 velocity (tip ', velocity_amplitude, &

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A numerical failure (INTERFACE.md): exit status 3, a message naming the step, and a
+# A numerical failure (docs/output.md, "Exit status"): exit status 3, a message naming the step, and a
 # complete HDF5 file whose /run status is 'failed' and whose histories stop before t_end.
 # usage: run_numerical_failure.sh VIBROBEAM INPUT.nml
 # (The failure is a contact solver without convergence, so Debug builds run it too.)

@@ -165,7 +165,7 @@ program test_energy
             end if
          end if
          call t%check_true('some impacts happen', r%impacts > 0)
-         ! SPEC §4: with e = 0 every position of the position scheme is admissible
+         ! theory §4: with e = 0 every position of the position scheme is admissible
          if (scene%scheme == 'position' .and. scene%restitution <= 0) &
             call t%check_close('penetration of the position scheme with e = 0 / its round-off bound', &
                                r%penetration_ratio, 0.0_dp, 1.0_dp, 1.0_dp)

@@ -5,7 +5,7 @@
 !!     the error at t = 2 must decrease like dt^2: order between dt = 1/400 and 1/3200 in
 !!     [1.9, 2.1] (coarser steps are pre-asymptotic for mode 2: omega_2 dt > 0.05);
 !! (2) the closed-form continuum solution u = v0 phi_1(x) sin(omega_1 t)/omega_1 for
-!!     mode-1 velocity data (SPEC §6), at N = 32 and a small dt, within the spatial error
+!!     mode-1 velocity data (theory §7), at N = 32 and a small dt, within the spatial error
 !!     (relative error of omega_1 at N = 32 is 8e-9, so 1e-6 relative at the tip).
 program test_free_flight
    use vibrobeam_kinds, only: dp, output_unit

@@ -1,4 +1,4 @@
-!> Verification of static contact (SPEC §6, issue 3):
+!> Verification of static contact (theory §7, issue 3):
 !! 1. static_tip.nml: tip reaction R = 3EI(qL^4/(8EI) - g)/L^3 for N = 1, 2, 16, 64, with
 !!    both contact solvers: with a consistent load vector, Hermite cubic elements give the
 !!    exact nodal values of a beam (the exact solution, a quartic, is matched at the
@@ -6,7 +6,7 @@
 !! 2. static_longitudinal.nml: beam pressed onto a flat obstacle along its length, N = 40,
 !!    80, 160: reactions >= 0, no node penetrates, the nodes with a reaction span an
 !!    interval that ends at the tip; inside it the beam may lift off between reacting
-!!    nodes (only nodes are constrained, SPEC §2), by an amount that must vanish as h -> 0;
+!!    nodes (only nodes are constrained, theory §2), by an amount that must vanish as h -> 0;
 !!    the 'delassus' and 'band' solvers agree.
 !! An optional second argument 'bspline' runs every case with cubic B-splines.
 !! 3. static_longitudinal_pieces.nml: the same obstacle as pieces listed out of order:

@@ -1,5 +1,5 @@
 !> Verification driver: reads /modes/frequency and /modes/shape from a vibrobeam result
-!! file and compares them with the closed-form cantilever (SPEC §6) for the beam given on
+!! file and compares them with the closed-form cantilever (theory §7) for the beam given on
 !! the command line:  check_modes_file FILE L E RHO AREA INERTIA FREQUENCY_TOLERANCE SHAPE_TOLERANCE
 !! Frequencies are compared in Hz; shapes at the nodes (tip value 1) with the closed form.
 program check_modes_file

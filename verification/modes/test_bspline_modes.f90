@@ -1,5 +1,5 @@
 !> Verification (issue 4): natural frequencies with cubic B-splines (k2 = 1, L = 1) against
-!! the closed form of SPEC §6.
+!! the closed form of theory §7.
 !! 1. Convergence: for a 4th-order problem and splines of degree p = 3, the eigenvalue
 !!    error is O(h^(2(p-1))) = O(h^4) (Strang & Fix, An Analysis of the Finite Element
 !!    Method, ch. 6); observed order of modes 1-4 fitted over N >= 16 where the error

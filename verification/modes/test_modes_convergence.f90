@@ -1,5 +1,5 @@
 !> Verification: natural frequencies of a cantilever (k2 = 1, L = 1) from the Hermite model
-!! against the closed form omega_n = (beta_n L)^2 sqrt(k2)/L^2 with the beta_n L of SPEC §6
+!! against the closed form omega_n = (beta_n L)^2 sqrt(k2)/L^2 with the beta_n L of theory §7
 !! (quoted to 11 digits, so the reference is good to ~1e-10 relative).
 !! Acceptance (issue 2): relative error of mode 1 below 1e-7 at N = 32; observed order of
 !! convergence between 3.7 and 4.3 for modes 1-4, fitted by least squares on log(error)

@@ -1,5 +1,5 @@
-!> Unit test of the closed-form references (SPEC §6): the roots of 1 + cos b cosh b = 0
-!! and tan b = tanh b against the published values quoted in SPEC §6, and the mode shapes
+!> Unit test of the closed-form references (theory §7): the roots of 1 + cos b cosh b = 0
+!! and tan b = tanh b against the published values quoted in theory §7, and the mode shapes
 !! against their boundary conditions (clamped at 0, free at L), tip value 1, the beam
 !! equation phi'''' = beta^4 phi (checked by a central difference of phi''') and
 !! orthogonality (midpoint rule written here).

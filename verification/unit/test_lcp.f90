@@ -1,4 +1,4 @@
-!> Unit test of `vibrobeam_lcp` (SPEC §3, step 3: the contact LCP with an SPD Delassus
+!> Unit test of `vibrobeam_lcp` (theory §3, step 3: the contact LCP with an SPD Delassus
 !! matrix).
 !!
 !! Reference: brute-force enumeration of all 2^n complementary index sets I. For each I the

@@ -1,4 +1,4 @@
-!> Unit test of vibrobeam_spectrum (SPEC §5, the spectrum of a point's response) on
+!> Unit test of vibrobeam_spectrum (docs/output.md, the spectrum of a point's response) on
 !! synthetic signals with closed-form spectra:
 !! (1) three sines exactly on bins plus a constant, window 'none', even and odd n: peaks at
 !!     the right bins, amplitudes to 1e-10, every other bin below 1e-10 of the largest;
