@@ -145,9 +145,10 @@ full_disk)
     [ $method = tmpfs ] && { umount disk; mount -t tmpfs -o size=256m tmpfs disk; }
     earlier disk/run.h5
     if [ $method = tmpfs ] && [ $moment != start ]; then
-      if [ $moment = stepping ]; then   # a long run with few outputs: still stepping after 1 s
-        scene disk/run.h5 run 40 0.8 .true. 0.2
-        sed -i 's/every = 3, field_every = 20/every = 300, field_every = 3000/' run.nml
+      if [ $moment = stepping ]; then   # a long run with few outputs: still stepping after 1 s (and
+                                        # far longer: it ends at the first flush after the disk is full)
+        scene disk/run.h5 run 400 0.8 .true. 0.2
+        sed -i 's/every = 3, field_every = 20/every = 3000, field_every = 30000/' run.nml
         start_until run '%  t =' 60 || exit 1
       else                              # many outputs: the text takes seconds to derive
         scene disk/run.h5 run 1.0 0.8 .true. 0.2
