@@ -30,6 +30,9 @@ module vibrobeam_contact_points
       real(dp), allocatable :: upper(:)      !! g2(x_c) (m), +no_bound if no obstacle above
       integer, allocatable :: dofs(:,:)      !! (4, count) unknowns of row H_c (0 = none)
       real(dp), allocatable :: weights(:,:)  !! (4, count) coefficients of row H_c
+      !> (count) the obstacle (index in &obstacles) that gives `lower`, `upper`; 0: none.
+      !! An impulse upwards comes from the lower one, downwards from the upper one.
+      integer, allocatable :: lower_obstacle(:), upper_obstacle(:)
    end type contact_set
 
 contains
@@ -116,7 +119,8 @@ contains
       contacts%count = count(lower(1:) > -no_bound .or. upper(1:) < no_bound)
       allocate (contacts%node(contacts%count), contacts%x(contacts%count), contacts%lower(contacts%count), &
                 contacts%upper(contacts%count), contacts%dofs(4, contacts%count), &
-                contacts%weights(4, contacts%count))
+                contacts%weights(4, contacts%count), contacts%lower_obstacle(contacts%count), &
+                contacts%upper_obstacle(contacts%count))
       c = 0
       do i = 1, model%elements
          if (lower(i) <= -no_bound .and. upper(i) >= no_bound) cycle
@@ -125,6 +129,8 @@ contains
          contacts%x(c) = model%x(i + 1)
          contacts%lower(c) = lower(i)
          contacts%upper(c) = upper(i)
+         contacts%lower_obstacle(c) = lower_source(i)
+         contacts%upper_obstacle(c) = upper_source(i)
          call node_row(model, i, contacts%dofs(:, c), contacts%weights(:, c))
       end do
    end subroutine build_contact_points

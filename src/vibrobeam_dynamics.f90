@@ -65,6 +65,7 @@ contains
       real(dp) :: flush_interval
       integer :: step_stat
       character(len=512) :: step_message
+      character(len=:), allocatable :: warning
 
       call meter%init(scene%progress)
       call system_clock(start, rate)
@@ -85,6 +86,8 @@ contains
             return
          end if
       end if
+      call recorder%start_statistics(stepper, warning)
+      if (len(warning) > 0) write (error_unit, '(a)') 'vibrobeam: warning: '//warning
 
       ! every dataset exists before the file enters SWMR mode
       call files%open(scene, prepared%model, stat, errmsg)
@@ -106,7 +109,7 @@ contains
          call files%h5%start_swmr(stat, errmsg)
          if (stat /= 0) exit run
          if (.not. prepared%resuming) then
-            call recorder%sample(stepper, prepared%model, stat, errmsg)
+            call recorder%sample(stepper, stat, errmsg)
             if (stat == 0) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
             if (stat /= 0) exit run
          end if
@@ -125,7 +128,7 @@ contains
                exit
             end if
             call recorder%after_step(stepper, stat, errmsg)
-            if (stat == 0 .and. recorder%output_due(n)) call recorder%sample(stepper, prepared%model, stat, errmsg)
+            if (stat == 0 .and. recorder%output_due(n)) call recorder%sample(stepper, stat, errmsg)
             if (stat == 0 .and. recorder%field_due(n)) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
             if (stat /= 0) exit run
             if (interrupt_requested()) then
@@ -148,7 +151,7 @@ contains
          end do
 
          ! the result ends with a sample of the last (good) state
-         call recorder%sample(stepper, prepared%model, stat, errmsg)
+         call recorder%sample(stepper, stat, errmsg)
          if (stat == 0) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
          if (stat /= 0) exit run
          call save_state()

@@ -360,9 +360,9 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp) :: distributed, distributed_frequency, distributed_phase
-      real(dp) :: point_force, point_position, point_frequency, base_amplitude, base_frequency
+      real(dp) :: point_force, point_position, point_frequency, base_amplitude, base_frequency, base_acceleration
       namelist /load/ distributed, distributed_frequency, distributed_phase, point_force, &
-         point_position, point_frequency, base_amplitude, base_frequency
+         point_position, point_frequency, base_amplitude, base_frequency, base_acceleration
       character(len=:), allocatable :: record
       integer :: ios, k
       character(len=256) :: iomsg
@@ -370,6 +370,7 @@ contains
       distributed_phase = scene%distributed_phase; point_force = scene%point_force
       point_position = scene%length; point_frequency = scene%point_frequency   ! default: the tip
       base_amplitude = scene%base_amplitude; base_frequency = scene%base_frequency
+      base_acceleration = scene%base_acceleration
       stat = 0
       errmsg = ''
       do k = 1, size(scanned%items)
@@ -382,6 +383,7 @@ contains
       scene%distributed_phase = distributed_phase; scene%point_force = point_force
       scene%point_position = point_position; scene%point_frequency = point_frequency
       scene%base_amplitude = base_amplitude; scene%base_frequency = base_frequency
+      scene%base_acceleration = base_acceleration
    end subroutine read_load
 
    subroutine read_solver(scanned, scene, stat, errmsg)
@@ -419,14 +421,16 @@ contains
       integer :: every, field_every
       logical :: text, progress
       real(dp) :: points(max_points), measure_from, checkpoint_seconds, episode_gap
+      character(len=keyword_length) :: poincare_load
       namelist /output/ file, every, text, progress, field_every, points, measure_from, checkpoint_seconds, &
-         episode_gap
+         episode_gap, poincare_load
       character(len=:), allocatable :: record
       integer :: ios, k, count_points
       character(len=256) :: iomsg
       file = scene%file; every = scene%every; text = scene%text; progress = scene%progress
       field_every = scene%field_every; measure_from = scene%measure_from
       checkpoint_seconds = scene%checkpoint_seconds; episode_gap = scene%episode_gap
+      poincare_load = scene%poincare_load
       points = 0
       stat = 0
       errmsg = ''
@@ -439,6 +443,7 @@ contains
       scene%file = file; scene%every = every; scene%text = text; scene%progress = progress
       scene%field_every = field_every; scene%measure_from = measure_from
       scene%checkpoint_seconds = checkpoint_seconds; scene%episode_gap = episode_gap
+      scene%poincare_load = lowercase(poincare_load)
       count_points = 0
       do while (count_points < max_points)
          if (.not. scanned%is_given('output', 'points', count_points + 1)) exit
