@@ -111,6 +111,7 @@ module vibrobeam_recorder
       procedure :: restore_state
       procedure :: observe
       procedure :: start_statistics
+      procedure :: restart_statistics
       procedure :: window_statistics
    end type dynamics_recorder
 
@@ -226,6 +227,17 @@ contains
       call self%observe(stepper)
       call self%statistics%observe_start(stepper, self%events%observed)
    end subroutine start_statistics
+
+   !> A new statistics window from step `first_step` on (a sweep measures window after
+   !! window): it starts now when the stepper is at that step.
+   subroutine restart_statistics(self, stepper, first_step)
+      class(dynamics_recorder), intent(inout) :: self
+      class(time_stepper), intent(in) :: stepper
+      integer(int64), intent(in) :: first_step
+      call self%statistics%begin_window(first_step)
+      call self%observe(stepper)
+      call self%statistics%observe_start(stepper, self%events%observed)
+   end subroutine restart_statistics
 
    !> The statistics of the window so far (docs/statistics.md).
    function window_statistics(self, stepper) result(outcome)

@@ -23,10 +23,12 @@ module vibrobeam_scene
    public :: scene_type, obstacle_type, scene_entry, max_obstacles, max_points, unset
    public :: validate_scene, scene_entries, format_scene, rho_s_of, ei_of, is_unset
    public :: scene_variables, path_length, keyword_length, max_steps, step_count, unknowns_of
-   public :: forcing_of, base_load_amplitude
+   public :: forcing_of, base_load_amplitude, max_sweep_values, parameter_length
 
    integer, parameter :: max_obstacles = 32       !! most obstacles a scene may hold
    integer, parameter :: max_points = 64          !! most observation points (&output points)
+   integer, parameter :: max_sweep_values = 1000  !! most explicit values of a sweep axis (&sweep values)
+   integer, parameter :: parameter_length = 64    !! longest &sweep parameter name
    real(dp), parameter :: unset = -huge(1.0_dp)   !! marks a real the user did not give
    integer, parameter :: name_length = 64
    integer, parameter :: path_length = 4096       !! longest file name (&output file, &initial from_file)
@@ -202,7 +204,27 @@ contains
          real_variable('output', 'measure_from', 0.0_dp, 1e12_dp, 's'), &
          real_variable('output', 'checkpoint_seconds', 0.0_dp, 1e9_dp, 's'), &
          real_variable('output', 'episode_gap', 1e-18_dp, 1e12_dp, 's'), &
-         keyword_variable('output', 'poincare_load', 'auto|base|point|distributed')]
+         keyword_variable('output', 'poincare_load', 'auto|base|point|distributed'), &
+         ! &sweep (docs/sweeps.md): checked against the scene by vibrobeam_sweep_settings
+         name_variable('sweep', 'parameter'), &
+         real_variable('sweep', 'values', -1e30_dp, 1e30_dp, '', max_sweep_values), &
+         real_variable('sweep', 'from', -1e30_dp, 1e30_dp, ''), &
+         real_variable('sweep', 'to', -1e30_dp, 1e30_dp, ''), &
+         integer_variable('sweep', 'count', 1, 100000), &
+         keyword_variable('sweep', 'spacing', 'linear|log'), &
+         keyword_variable('sweep', 'mode', 'independent|up|down|up-down'), &
+         name_variable('sweep', 'parameter2'), &
+         real_variable('sweep', 'values2', -1e30_dp, 1e30_dp, '', max_sweep_values), &
+         real_variable('sweep', 'from2', -1e30_dp, 1e30_dp, ''), &
+         real_variable('sweep', 'to2', -1e30_dp, 1e30_dp, ''), &
+         integer_variable('sweep', 'count2', 1, 100000), &
+         keyword_variable('sweep', 'spacing2', 'linear|log'), &
+         real_variable('sweep', 'settle', 0.0_dp, 1e12_dp, 's'), &
+         real_variable('sweep', 'measure', 0.0_dp, 1e12_dp, 's'), &
+         real_variable('sweep', 'settle_periods', 0.0_dp, 1e9_dp, ''), &
+         real_variable('sweep', 'measure_periods', 0.0_dp, 1e9_dp, ''), &
+         real_variable('sweep', 'steady_tolerance', 0.0_dp, 1.0_dp, ''), &
+         logical_variable('sweep', 'keep_runs')]
    contains
       pure function real_variable(group, name, lowest, highest, unit, extent) result(variable)
          character(len=*), intent(in) :: group, name, unit
@@ -232,6 +254,11 @@ contains
          type(namelist_variable) :: variable
          variable = namelist_variable(group=group, name=name, kind=kind_string, max_length=path_length)
       end function path_variable
+      pure function name_variable(group, name) result(variable)
+         character(len=*), intent(in) :: group, name
+         type(namelist_variable) :: variable
+         variable = namelist_variable(group=group, name=name, kind=kind_string, max_length=parameter_length)
+      end function name_variable
       pure function logical_variable(group, name) result(variable)
          character(len=*), intent(in) :: group, name
          type(namelist_variable) :: variable
