@@ -8,6 +8,10 @@
 #   threads  the same sweeps (independent points; a 2-D map of up-down lines) with 1 and
 #            2 OpenMP threads
 #   mpi      the same with 1 and 2 MPI ranks (mpirun --oversubscribe -n 2), one thread each
+#   failure  a point whose contact solver fails is marked failed, the sweep goes on and
+#            exits with status 3 (independent points, and a continuation branch)
+#   interrupt SIGINT during a sweep: exit status 4, the sweep file published with /run
+#            status 'interrupted' and the points not finished marked
 set -uo pipefail
 mode=$1; vibrobeam=$2; compare=$3; mpirun=${4:-mpirun}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -77,6 +81,51 @@ threads|mpi)
     echo "$name:"
     "$compare" same ${name}_1.h5 ${name}_2.h5 || failed=1
   done
+  ;;
+failure)
+  # the scene of verification/dynamics/numerical_failure.nml: a contact solver allowed
+  # one pivoting iteration fails once the load presses the beam onto its floor
+  for sweep_mode in independent down; do
+    cat > failure.nml <<END
+&beam      length = 1.0, k2 = 1.0 /
+&mesh      elements = 8 /
+&obstacles count = 1, side(1) = 'below', x_from(1) = 0.0, x_to(1) = 1.0, level_from(1) = -1e-3 /
+&time      dt = 1e-2 /
+&load      distributed = -10.0 /
+&solver    contact_max_iterations = 1 /
+&output    file = 'failure.h5', text = .false. /
+&sweep     parameter = 'load.distributed', values = -0.0005, -10.0, -0.001, mode = '$sweep_mode', measure = 10.0 /
+END
+    "$vibrobeam" failure.nml > failure.out 2> failure.err
+    status=$?
+    statuses=$(h5dump -A 0 -d /sweep/status failure.h5 | sed -n "s/.*(0): *\\(.*\\)/\\1/p" | tr -d " ")
+    echo "$sweep_mode: exit status $status, /sweep/status $statuses"
+    if [ $status -ne 3 ]; then echo "FAIL exit status $status, expected 3"; cat failure.err; failed=1; fi
+    case $sweep_mode in
+      independent) expected=0,1,0 ;;   # the order given
+      down) expected=0,0,1 ;;          # -0.0005, -0.001, -10
+    esac
+    if [ "$statuses" != "$expected" ]; then echo "FAIL /sweep/status $statuses, expected $expected"; failed=1; fi
+    grep -q "point [0-9]: numerical failure at step" failure.err || { echo "FAIL no failure message"; cat failure.err; failed=1; }
+  done
+  ;;
+interrupt)
+  scene long 200 velocity "" "" \
+    "\&sweep parameter = 'load.point_frequency', from = 150, to = 250, count = 6, settle = 20, measure = 20 /"
+  "$vibrobeam" long.nml > long.out 2> long.err &
+  pid=$!
+  sleep 1
+  kill -INT $pid
+  wait $pid
+  status=$?
+  echo "exit status $status"
+  if [ $status -ne 4 ]; then echo "FAIL exit status $status, expected 4"; cat long.err; failed=1; fi
+  h5dump -a /run/status long.h5 | grep -q '"interrupted"' || { echo "FAIL /run status is not 'interrupted'"; failed=1; }
+  statuses=$(h5dump -A 0 -d /sweep/status long.h5 | sed -n "s/.*(0): *\\(.*\\)/\\1/p" | tr -d " ")
+  echo "/sweep/status $statuses"
+  case ",$statuses," in *,2,*) ;; *) echo "FAIL no point marked interrupted"; failed=1 ;; esac
+  case ",$statuses," in *,3,*) ;; *) echo "FAIL no point marked not run"; failed=1 ;; esac
+  ls long.h5.*.tmp > /dev/null 2>&1 && { echo "FAIL a temporary file is left"; failed=1; }
   ;;
 *)
   echo "unknown mode $mode"; exit 2 ;;
