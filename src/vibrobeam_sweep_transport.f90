@@ -8,7 +8,6 @@ module vibrobeam_sweep_transport
    implicit none
    private
    public :: transport_start, transport_stop, transport_rank, transport_ranks, gather_results, owns_task
-   public :: transport_agree
 
 contains
 
@@ -49,10 +48,4 @@ contains
       errmsg = ''
       if (.false.) print *, size(task_of), size(results)
    end subroutine gather_results
-
-   !> The largest `value` over the ranks (an error status every rank must act on).
-   integer function transport_agree(value)
-      integer, intent(in) :: value
-      transport_agree = value
-   end function transport_agree
 end module vibrobeam_sweep_transport
