@@ -1,16 +1,25 @@
-!> Symmetric band matrices in LAPACK lower band storage, and the LAPACK/BLAS calls on them.
+!> Symmetric band matrices in LAPACK lower band storage: assembly, products, Cholesky
+!! factorization and solves.
 !!
 !! Storage convention (Reference-LAPACK, UPLO = 'L'): the entry A(i,j), j <= i <= j+kd, is
 !! held in `lower(1+i-j, j)`; `lower` has kd+1 rows and n columns. The mass, stiffness and
-!! iteration matrices of vibrobeam (SPEC §2, §3) all live in this form; no dense n x n
+!! iteration matrices of vibrobeam (theory §2, §3) all live in this form; no dense n x n
 !! matrix is ever formed from them.
+!!
+!! Products, factorizations and solves of bandwidth 3 (every matrix of the model) go to the
+!! specialised kernels of `vibrobeam_band_kernel`; any other bandwidth to LAPACK/BLAS
+!! (dsbmv, dpbtrf, dpbtrs), which also serve as the kernels' test oracle. Neither
+!! `band_solve` nor `band_matvec` allocates (for contiguous arguments).
 module vibrobeam_band
    use vibrobeam_kinds, only: dp
+   use vibrobeam_band_kernel, only: kernel_bandwidth, ldl_factor_kd3, ldl_solve_kd3, band_matvec_kd3, &
+                                    ldl_residual_solve_kd3
+   use vibrobeam_band_lapack, only: dpbtrf, dpbtrs, dsbmv
    implicit none
    private
    public :: symmetric_band, band_cholesky
    public :: band_allocate, band_add, band_entry, band_matvec, band_combination
-   public :: band_factor, band_solve
+   public :: band_factor, band_solve, band_residual_solve
 
    !> A symmetric n x n matrix with kd sub-diagonals, lower band storage.
    type :: symmetric_band
@@ -19,39 +28,15 @@ module vibrobeam_band
       real(dp), allocatable :: lower(:,:)  !! (kd+1, n) lower band storage
    end type symmetric_band
 
-   !> Cholesky factor L (A = L L^T) of a symmetric positive definite band matrix, as
-   !! returned by LAPACK dpbtrf with UPLO = 'L'.
+   !> Cholesky factorization of a symmetric positive definite band matrix. For kd = 3 the
+   !! square-root-free form A = L D L^T of `ldl_factor_kd3` (unit L, reciprocal pivots
+   !! 1/d_j on the first row); for any other kd LAPACK dpbtrf's A = L L^T (UPLO = 'L').
    type :: band_cholesky
       integer :: n = 0
       integer :: kd = 0
-      real(dp), allocatable :: factor(:,:)  !! (kd+1, n)
+      real(dp), allocatable :: factor(:,:)  !! (kd+1, n), in the form kd selects
    end type band_cholesky
 
-   interface
-      subroutine dpbtrf(uplo, n, kd, ab, ldab, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, kd, ldab
-         real(dp), intent(inout) :: ab(ldab, *)
-         integer, intent(out) :: info
-      end subroutine dpbtrf
-      subroutine dpbtrs(uplo, n, kd, nrhs, ab, ldab, b, ldb, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, kd, nrhs, ldab, ldb
-         real(dp), intent(in) :: ab(ldab, *)
-         real(dp), intent(inout) :: b(ldb, *)
-         integer, intent(out) :: info
-      end subroutine dpbtrs
-      subroutine dsbmv(uplo, n, k, alpha, a, lda, x, incx, beta, y, incy)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, k, lda, incx, incy
-         real(dp), intent(in) :: alpha, beta
-         real(dp), intent(in) :: a(lda, *), x(*)
-         real(dp), intent(inout) :: y(*)
-      end subroutine dsbmv
-   end interface
 
 contains
 
@@ -86,14 +71,17 @@ contains
       end if
    end function band_entry
 
-   !> y = A x through BLAS dsbmv.
+   !> y = A x (kd = 3: `band_matvec_kd3`; otherwise BLAS dsbmv).
    subroutine band_matvec(a, x, y)
       type(symmetric_band), intent(in) :: a
       real(dp), intent(in) :: x(:)   !! (n)
       real(dp), intent(out) :: y(:)  !! (n)
-      y = 0.0_dp
       if (a%n == 0) return
-      call dsbmv('L', a%n, a%kd, 1.0_dp, a%lower, a%kd + 1, x, 1, 0.0_dp, y, 1)
+      if (a%kd == kernel_bandwidth) then
+         call band_matvec_kd3(a%n, a%lower, x, y)
+      else
+         call dsbmv('L', a%n, a%kd, 1.0_dp, a%lower, a%kd + 1, x, 1, 0.0_dp, y, 1)
+      end if
    end subroutine band_matvec
 
    !> c = alpha a + beta b for two band matrices of the same order (the band of c is the
@@ -107,8 +95,9 @@ contains
       c%lower(1:b%kd + 1, :) = c%lower(1:b%kd + 1, :) + beta*b%lower
    end function band_combination
 
-   !> Cholesky factorization A = L L^T through LAPACK dpbtrf. stat = 0 on success,
-   !! stat = k > 0 if the leading minor of order k is not positive definite.
+   !> Cholesky factorization of A (kd = 3: `ldl_factor_kd3`; otherwise LAPACK dpbtrf).
+   !! stat = 0 on success, stat = k > 0 if the leading minor of order k is not positive
+   !! definite (both forms report the same k).
    subroutine band_factor(a, chol, stat, errmsg)
       type(symmetric_band), intent(in) :: a
       type(band_cholesky), intent(out) :: chol
@@ -120,7 +109,11 @@ contains
       errmsg = ''
       stat = 0
       if (a%n == 0) return
-      call dpbtrf('L', a%n, a%kd, chol%factor, a%kd + 1, stat)
+      if (a%kd == kernel_bandwidth) then
+         call ldl_factor_kd3(a%n, chol%factor, stat)
+      else
+         call dpbtrf('L', a%n, a%kd, chol%factor, a%kd + 1, stat)
+      end if
       if (stat > 0) then
          write (errmsg, '(a,i0,a)') 'band Cholesky factorization failed: leading minor of order ', &
             stat, ' is not positive definite'
@@ -129,12 +122,41 @@ contains
       end if
    end subroutine band_factor
 
-   !> Overwrite x with A^{-1} x, given the Cholesky factor of A (LAPACK dpbtrs).
+   !> Overwrite x with A^{-1} x, given the factorization of A (kd = 3: `ldl_solve_kd3`;
+   !! otherwise LAPACK dpbtrs).
    subroutine band_solve(chol, x)
       type(band_cholesky), intent(in) :: chol
       real(dp), intent(inout) :: x(:)  !! (n) right-hand side in, solution out
       integer :: info
       if (chol%n == 0) return
-      call dpbtrs('L', chol%n, chol%kd, 1, chol%factor, chol%kd + 1, x, chol%n, info)
+      if (chol%kd == kernel_bandwidth) then
+         call ldl_solve_kd3(chol%n, chol%factor, x)
+      else
+         call dpbtrs('L', chol%n, chol%kd, 1, chol%factor, chol%kd + 1, x, chol%n, info)
+      end if
    end subroutine band_solve
+
+   !> y = W^-1 (b - A x), W given by its factorization `chol`: the solve of a step of the
+   !! velocity scheme (theory §3) with its product by K. With both bandwidths 3 one fused
+   !! pass (`ldl_residual_solve_kd3`, the same operations as band_matvec, a subtraction and
+   !! band_solve); otherwise BLAS dsbmv then LAPACK dpbtrs. No allocation.
+   subroutine band_residual_solve(chol, a, x, b, y)
+      type(band_cholesky), intent(in) :: chol   !! factorization of W (n x n)
+      type(symmetric_band), intent(in) :: a     !! A (n x n)
+      real(dp), intent(in) :: x(:), b(:)        !! (n)
+      real(dp), intent(out) :: y(:)             !! (n), not overlapping x or b
+      integer :: info
+      if (chol%n == 0) return
+      if (chol%kd == kernel_bandwidth .and. a%kd == kernel_bandwidth) then
+         call ldl_residual_solve_kd3(chol%n, chol%factor, a%lower, x, b, y)
+      else
+         y = b
+         call dsbmv('L', a%n, a%kd, -1.0_dp, a%lower, a%kd + 1, x, 1, 1.0_dp, y, 1)
+         if (chol%kd == kernel_bandwidth) then
+            call ldl_solve_kd3(chol%n, chol%factor, y)
+         else
+            call dpbtrs('L', chol%n, chol%kd, 1, chol%factor, chol%kd + 1, y, chol%n, info)
+         end if
+      end if
+   end subroutine band_residual_solve
 end module vibrobeam_band

@@ -3,9 +3,14 @@
 !! 'mode' data are the closed-form cantilever mode shapes (SPEC §6), scaled so that the
 !! tip value is the given amplitude, and interpolated on the mesh (Hermite: nodal values
 !! and slopes; B-splines: the spline through the nodal values with the tip slope).
-!! 'uniform' velocity is v = amplitude at every node with zero slope rate (Hermite: zero
-!! rotation rates; B-splines: zero slope rate at the tip), a rigid translation everywhere
-!! but next to the clamp.
+!! 'uniform' velocity is a rigid translation at `amplitude` everywhere but next to the
+!! clamp, ramping monotonically from 0 there: Hermite, v = amplitude at every node with zero
+!! rotation rates (the ramp is the first element); B-splines, every coefficient equal to
+!! the amplitude, v = amplitude (1 - B_1 - B_2) by the partition of unity (the ramp spans
+!! the first two elements, v(h) = 3/4 amplitude). Interpolating the nodal values instead,
+!! as for mode data, overshoots: the spline through 0 (value and slope) at the clamp and
+!! the amplitude at every node reaches 1.137 times the amplitude at x = 1.38 h, for every N
+!! (a cubic spline's response to the clamp's jump, decaying by 2 - sqrt(3) per element).
 module vibrobeam_initial_state
    use vibrobeam_kinds, only: dp
    use vibrobeam_scene, only: scene_type
@@ -42,8 +47,12 @@ contains
       case ('mode')
          v = mode_field(model, scene%velocity_mode, scene%velocity_amplitude)
       case ('uniform')
-         v = interpolate_field(model, [(scene%velocity_amplitude, i=1, model%elements)], &
-                               [(0.0_dp, i=1, model%elements)])
+         if (model%basis == 'bspline') then
+            v = scene%velocity_amplitude   ! B-spline coefficients: bounded by them, no overshoot
+         else
+            v = interpolate_field(model, [(scene%velocity_amplitude, i=1, model%elements)], &
+                                  [(0.0_dp, i=1, model%elements)])
+         end if
       case default
          v = 0
       end select

@@ -410,13 +410,14 @@ contains
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      character(len=keyword_length) :: contact_solver
+      character(len=keyword_length) :: contact_solver, contact_method
       integer :: contact_max_iterations
-      namelist /solver/ contact_solver, contact_max_iterations
+      namelist /solver/ contact_solver, contact_method, contact_max_iterations
       character(len=:), allocatable :: record
       integer :: ios, k
       character(len=256) :: iomsg
       contact_solver = scene%contact_solver
+      contact_method = scene%contact_method
       contact_max_iterations = scene%contact_max_iterations
       stat = 0
       errmsg = ''
@@ -427,6 +428,7 @@ contains
          if (read_failed(ios, iomsg, scanned%label(k), stat, errmsg)) return
       end do
       scene%contact_solver = lowercase(contact_solver)
+      scene%contact_method = lowercase(contact_method)
       scene%contact_max_iterations = contact_max_iterations
    end subroutine read_solver
 

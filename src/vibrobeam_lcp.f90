@@ -32,6 +32,7 @@
 module vibrobeam_lcp
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
+   use vibrobeam_lapack, only: dpotrf, dpotrs
    implicit none
    private
    public :: solve_lcp, lcp_residual
@@ -47,23 +48,6 @@ module vibrobeam_lcp
    !> Length of the local message buffer; `errmsg` receives it truncated to its length.
    integer, parameter :: buffer_length = 512
 
-   interface
-      subroutine dpotrf(uplo, n, a, lda, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, lda
-         real(dp), intent(inout) :: a(lda, *)
-         integer, intent(out) :: info
-      end subroutine dpotrf
-      subroutine dpotrs(uplo, n, nrhs, a, lda, b, ldb, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, nrhs, lda, ldb
-         real(dp), intent(in) :: a(lda, *)
-         real(dp), intent(inout) :: b(ldb, *)
-         integer, intent(out) :: info
-      end subroutine dpotrs
-   end interface
 
 contains
 

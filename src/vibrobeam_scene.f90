@@ -84,6 +84,7 @@ module vibrobeam_scene
       real(dp) :: base_acceleration = 0       !! amplitude of the support's acceleration (m/s^2), instead of base_amplitude
       ! &solver (vibrobeam extension)
       character(len=keyword_length) :: contact_solver = 'auto'
+      character(len=keyword_length) :: contact_method = 'newton'   !! 'newton' | 'pivoting'
       integer :: contact_max_iterations = 0
       ! &output
       character(len=path_length) :: file = 'results/vibrobeam.h5'
@@ -194,6 +195,7 @@ contains
          real_variable('load', 'base_frequency', 0.0_dp, 1e15_dp, 'rad/s'), &
          real_variable('load', 'base_acceleration', -1e15_dp, 1e15_dp, 'm/s^2'), &
          keyword_variable('solver', 'contact_solver', 'auto|delassus|band'), &
+         keyword_variable('solver', 'contact_method', 'newton|pivoting'), &
          integer_variable('solver', 'contact_max_iterations', 0, many), &
          path_variable('output', 'file'), &
          integer_variable('output', 'every', 1, many), &
@@ -423,6 +425,7 @@ contains
 
       ! &solver
       call check_keyword('solver', 'contact_solver', scene%contact_solver)
+      call check_keyword('solver', 'contact_method', scene%contact_method)
       call check_integer('solver', 'contact_max_iterations', scene%contact_max_iterations)
       ! &output
       if (len_trim(scene%file) == 0) call fail('&output file = '''' is empty: give a file name such as ''results/run.h5''')
@@ -606,6 +609,7 @@ contains
       call add_real('load.base_frequency', scene%base_frequency, 'rad/s')
       call add_real('load.base_acceleration', scene%base_acceleration, 'm/s^2')
       call add_string('solver.contact_solver', scene%contact_solver)
+      call add_string('solver.contact_method', scene%contact_method)
       call add_integer('solver.contact_max_iterations', scene%contact_max_iterations)
       call add_string('output.file', scene%file)
       call add_integer('output.every', scene%every)

@@ -15,6 +15,7 @@ module vibrobeam_setup
    use vibrobeam_position_stepper, only: position_stepper
    use vibrobeam_state_record, only: state_record
    use vibrobeam_checkpoint, only: read_checkpoint, check_compatible
+   use vibrobeam_contact_solver, only: contact_method_code
    implicit none
    private
    public :: prepared_scene, prepare_scene, start_stepper, start_time_stepper
@@ -140,7 +141,8 @@ contains
          case ('static')
             allocate (reaction(contacts%count))
             call solve_static(model%stiffness, contacts, prepared%loads%at(0.0_dp), scene%contact_solver, &
-                              prepared%u0, reaction, iterations, stat, errmsg, scene%contact_max_iterations)
+                              prepared%u0, reaction, iterations, stat, errmsg, scene%contact_max_iterations, &
+                              trim(scene%contact_method))
             if (stat /= 0) then
                errmsg = '&initial displacement = ''static'': '//trim(errmsg)
                stat = setup_numerical_failure
@@ -175,6 +177,7 @@ contains
                         scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
                         prepared%u0, prepared%v0, stat, errmsg)
       stepper%projector%max_iterations = scene%contact_max_iterations
+      stepper%projector%method = contact_method_code(trim(scene%contact_method))
       if (scene%separating_points == 'restitution') stepper%separating_restitution = scene%restitution
    end subroutine start_stepper
 
@@ -194,6 +197,7 @@ contains
                             scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
                             prepared%u0, prepared%v0, stat, errmsg)
          position%projector%max_iterations = scene%contact_max_iterations
+         position%projector%method = contact_method_code(trim(scene%contact_method))
          if (stat == 0 .and. allocated(prepared%u_previous0)) then
             ! the state of an earlier run carried on (docs/sweeps.md, "Continuation")
             position%u_previous = prepared%u_previous0

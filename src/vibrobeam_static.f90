@@ -19,7 +19,7 @@ module vibrobeam_static
 contains
 
    subroutine solve_static(stiffness, contacts, force, contact_regime, u, reaction, iterations, stat, errmsg, &
-                           max_iterations)
+                           max_iterations, contact_method)
       type(symmetric_band), intent(in) :: stiffness
       type(contact_set), intent(in) :: contacts
       real(dp), intent(in) :: force(:)                 !! F (J)
@@ -29,6 +29,7 @@ contains
       integer, intent(out) :: iterations, stat
       character(len=*), intent(out) :: errmsg
       integer, intent(in), optional :: max_iterations  !! pivots allowed per projection (&solver contact_max_iterations; 0: default)
+      character(len=*), intent(in), optional :: contact_method   !! 'newton' (default) | 'pivoting'
       type(band_cholesky) :: factor
       type(contact_projector) :: projector
       real(dp) :: u_free(size(force))
@@ -40,8 +41,12 @@ contains
       call band_solve(factor, u_free)
       u = u_free
       if (contacts%count == 0) return
-      call projector%setup(stiffness, factor, contacts, contact_regime)
+      if (present(contact_method)) then
+         call projector%setup(stiffness, factor, contacts, contact_regime, contact_method)
+      else
+         call projector%setup(stiffness, factor, contacts, contact_regime)
+      end if
       if (present(max_iterations)) projector%max_iterations = max_iterations
-      call projector%project_admissible(u_free, u, reaction, iterations, stat, errmsg)
+      call projector%project_admissible(u_free, u, reaction, iterations, stat, errmsg, force)
    end subroutine solve_static
 end module vibrobeam_static

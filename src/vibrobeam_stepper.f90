@@ -41,7 +41,8 @@ module vibrobeam_stepper
       real(dp) :: work = 0                   !! work of the loads (J)
       real(dp) :: dissipated_impacts = 0     !! energy taken by impacts (J)
       real(dp) :: dissipated_damping = 0     !! energy taken by Rayleigh damping (J)
-      real(dp) :: dissipated_numerical = 0   !! energy taken by the theta-method itself, theta > 1/2 (J)
+      real(dp) :: dissipated_numerical = 0   !! energy taken by the theta-method itself (J): velocity scheme,
+                                             !! 0 for theta = 1/2; 0 for the position scheme
    contains
       procedure(step_interface), deferred :: step
       procedure :: kinetic_energy

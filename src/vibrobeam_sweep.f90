@@ -4,9 +4,8 @@
 !! over the ranks; rank 0 gathers the results and writes the sweep file
 !! (`vibrobeam_sweep_file`). The answers do not depend on the number of threads or ranks:
 !! each point's computation depends only on its task's earlier points, never on how tasks
-!! are shared out, and a sweep runs the BLAS single-threaded (`vb_blas_single_thread`).
+!! are shared out, and the program asks the BLAS for one thread (`limit_blas_threads`).
 module vibrobeam_sweep
-   use, intrinsic :: iso_c_binding, only: c_int
    !$ use omp_lib, only: omp_get_max_threads
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
@@ -35,13 +34,6 @@ module vibrobeam_sweep
       character(len=2048) :: failures = ''     !! the first failed points and their reasons
    end type sweep_outcome
 
-   interface
-      function c_blas_single_thread() result(called) bind(C, name='vb_blas_single_thread')
-         import :: c_int
-         integer(c_int) :: called
-      end function c_blas_single_thread
-   end interface
-
 contains
 
    !> Threads each process runs tasks on: OMP_NUM_THREADS, or every core (1 without OpenMP).
@@ -68,14 +60,12 @@ contains
       type(scene_type) :: first_scene
       character(len=:), allocatable :: warnings
       integer :: task, tasks, rank, ranks, done, k
-      integer(c_int) :: ignored
       call meter%init(scene%progress)
       rank = transport_rank()
       ranks = transport_ranks()
       if (rank /= 0) meter%enabled = .false.
       outcome%threads = sweep_threads()
       outcome%ranks = ranks
-      ignored = c_blas_single_thread()
       allocate (points, source=sweep_points(settings))
       outcome%points = size(points)
       tasks = task_count(points)

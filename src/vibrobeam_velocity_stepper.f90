@@ -11,9 +11,11 @@
 !!
 !! Restitution per point (our remedy, docs/method.md): e_c = e for an active point that
 !! approaches its obstacle (s_c H_c V^n <= 0) and e_c = 1 for one that already moves away.
-!! The work of the impulses is 1/2 sum_c (1 - e_c) P_c H_c V^n (for theta = 1/2); with
-!! e_c = e everywhere a separating active point gives it the wrong sign and the energy can
-!! grow; with e_c = 1 there its term vanishes, so impacts only dissipate.
+!! For every theta the impacts take -P.H (V^{n+1} + V^n)/2 = -1/2 sum_c (1 - e_c) P_c H_c V^n
+!! (Newton's law P_c H_c V^{n+1} = -e_c P_c H_c V^n); with e_c = e everywhere a separating
+!! active point gives it the wrong sign and the energy can grow; with e_c = 1 there its
+!! term vanishes, so impacts only dissipate. The rest of the energy change that is not
+!! work or damping is the theta-method's own, `dissipated_numerical` (see `step`).
 module vibrobeam_velocity_stepper
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
@@ -35,7 +37,9 @@ module vibrobeam_velocity_stepper
       real(dp) :: separating_restitution = 1
       real(dp), allocatable :: force(:)            !! F(t_n)
       ! u = U^n, v = V^n; work = sum F^{n+theta}.(U^{n+1} - U^n),
-      ! dissipated_impacts = -sum P.H V^{n+theta}, dissipated_damping = sum dt V^{n+theta}.C V^{n+theta}
+      ! dissipated_impacts = -sum P.H (V^{n+1} + V^n)/2,
+      ! dissipated_damping = sum dt V^{n+theta}.C V^{n+theta},
+      ! dissipated_numerical = sum (theta - 1/2) (dV.M dV + dU.K dU - P.H dV)
    contains
       procedure :: init
       procedure :: step
@@ -85,7 +89,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp), dimension(size(self%u)) :: rhs, work_vector, v_free, v_new, u_new, force_new, force_theta, v_theta
-      real(dp) :: predicted, e_c
+      real(dp) :: predicted, e_c, impulse_power
       real(dp) :: signs(self%contacts%count), offsets(self%contacts%count)
       integer :: c, m, k
       associate (dt => self%dt, theta => self%theta)
@@ -123,6 +127,8 @@ contains
          ! 3. projection
          call self%projector%project(v_free, self%active(1:m), signs(1:m), offsets(1:m), v_new, &
                                      self%impulse(1:m), self%iterations, stat, errmsg)
+         self%linear_solves = self%projector%linear_solves
+         self%used_fallback = self%projector%used_fallback
          if (stat /= 0) return
          ! 4. positions
          v_theta = theta*v_new + (1 - theta)*self%v
@@ -132,15 +138,30 @@ contains
             write (errmsg, '(a,es12.5,a)') 'the solution is no longer finite at t = ', self%t + dt, ' s'
             return
          end if
-         ! energy bookkeeping
+         ! energy bookkeeping (docs/method.md "Energies"; theory §6). With dV = V^{n+1} - V^n,
+         ! dU = U^{n+1} - U^n = dt V^{n+theta}, the step equations give exactly
+         !   E^{n+1} - E^n = F^{n+theta}.dU - dt V^{n+theta}.C V^{n+theta}
+         !                   + P.H (V^{n+1} + V^n)/2 - (theta - 1/2) (dV.M dV + dU.K dU - P.H dV),
+         ! so the impacts take -P.H (V^{n+1} + V^n)/2 (>= 0 by Newton's law with e_c <= 1 on
+         ! approaching points and e_c = 1 on separating ones) and the theta-method the last
+         ! term (0 for theta = 1/2; >= 0 in every step without impulses for theta > 1/2).
          if (self%loads%present) self%work = self%work + dot_product(force_theta, u_new - self%u)
+         impulse_power = 0
          do k = 1, m
             self%velocity_after(k) = contact_value(self%contacts, self%active(k), v_new)
-            self%dissipated_impacts = self%dissipated_impacts - self%impulse(k)* &
-                                      contact_value(self%contacts, self%active(k), v_theta)
+            self%dissipated_impacts = self%dissipated_impacts - 0.5_dp*self%impulse(k)* &
+                                      (self%velocity_after(k) + self%velocity_before(k))
+            impulse_power = impulse_power + self%impulse(k)*(self%velocity_after(k) - self%velocity_before(k))
          end do
          if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) &
             self%dissipated_damping = self%dissipated_damping + dt*dot_product(v_theta, self%damping_times(v_theta))
+         if (abs(theta - 0.5_dp) > 0) then
+            call band_matvec(self%mass, v_new - self%v, work_vector)
+            self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)*dot_product(v_new - self%v, work_vector)
+            call band_matvec(self%stiffness, u_new - self%u, work_vector)
+            self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)* &
+                                        (dot_product(u_new - self%u, work_vector) - impulse_power)
+         end if
          self%u = u_new
          self%v = v_new
          self%force = force_new

@@ -1,18 +1,29 @@
 !> Shared checks of the vibrobeam test programs: each check prints one line on failure
 !! naming the quantity, its value, the reference and the tolerance; `finish` prints
-!! 'NAME: N passed, M failed' and exits non-zero when anything failed.
+!! 'NAME: N passed, M failed' and exits non-zero when anything failed, and the largest
+!! ratio |value - reference| / allowed difference over the `check_close` calls (how much
+!! room each tolerance leaves; the CI prints it for every library it runs on).
 module vibrobeam_test_support
    use vibrobeam_kinds, only: dp, error_unit, output_unit
    use vibrobeam_scene, only: scene_type, validate_scene
    use vibrobeam_input, only: read_scene
    use vibrobeam_setup, only: prepared_scene, prepare_scene
+   use vibrobeam_blas_threads, only: limit_blas_threads
+   use vibrobeam_band, only: symmetric_band, band_cholesky, band_entry, band_factor, band_solve
+   use vibrobeam_lapack, only: dpbcon, dpbtrf, dpotrf, dpotrs
+   use vibrobeam_band_kernel, only: kernel_bandwidth
+   use vibrobeam_contact_points, only: contact_set, contact_value, no_bound
+   use vibrobeam_lcp, only: solve_lcp
    implicit none
    private
-   public :: test_counter, read_test_scene, prepare_test_scene, fitted_order
+   public :: test_counter, read_test_scene, prepare_test_scene, fitted_order, band_abs_times, band_condition, abs_factor_times
+   public :: dense_lcp_reference
 
    type, public :: test_counter
       integer :: passed = 0
       integer :: failed = 0
+      real(dp) :: worst_ratio = 0                !! largest |value - reference| / allowed difference
+      character(len=120) :: worst_check = ''     !! the check where it occurred
    contains
       procedure :: check_close     !! |value - reference| <= tolerance * max(|reference|, scale)
       procedure :: check_true
@@ -29,6 +40,14 @@ contains
       real(dp) :: size
       size = abs(reference)
       if (present(scale)) size = max(size, scale)
+      if (tolerance*size > 0) then
+         if (report_every_check()) write (output_unit, '(a,es10.3,a)') 'ratio ', &
+            abs(value - reference)/(tolerance*size), ' '//name
+         if (abs(value - reference)/(tolerance*size) >= self%worst_ratio) then
+            self%worst_ratio = abs(value - reference)/(tolerance*size)
+            self%worst_check = name
+         end if
+      end if
       if (abs(value - reference) <= tolerance*size) then
          self%passed = self%passed + 1
       else
@@ -38,6 +57,13 @@ contains
             ', tolerance ', tolerance
       end if
    end subroutine check_close
+
+   !> VIBROBEAM_CHECK_RATIOS set: print the ratio of every check (for margin studies).
+   logical function report_every_check()
+      integer :: length
+      call get_environment_variable('VIBROBEAM_CHECK_RATIOS', length=length)
+      report_every_check = length > 0
+   end function report_every_check
 
    subroutine check_true(self, name, condition, detail)
       class(test_counter), intent(inout) :: self
@@ -59,6 +85,8 @@ contains
    subroutine finish(self, program_name)
       class(test_counter), intent(in) :: self
       character(len=*), intent(in) :: program_name
+      if (len_trim(self%worst_check) > 0) write (output_unit, '(a,es10.3,a)') program_name// &
+         ': largest |value - reference| / tolerance ', self%worst_ratio, ' ('//trim(self%worst_check)//')'
       write (output_unit, '(a,i0,a,i0,a)') program_name//': ', self%passed, ' passed, ', self%failed, ' failed'
       if (self%failed > 0) error stop 1
    end subroutine finish
@@ -93,13 +121,16 @@ contains
       end if
    end function read_test_scene
 
-   !> prepare_scene, stopping the test on failure.
+   !> prepare_scene, stopping the test on failure; the BLAS thread policy of the program
+   !! (`limit_blas_threads`) applies to every driver that steps a scene.
    subroutine prepare_test_scene(scene, prepared)
       type(scene_type), intent(in) :: scene
       type(prepared_scene), intent(out) :: prepared
       character(len=:), allocatable :: warnings
       integer :: stat
       character(len=512) :: errmsg
+      call limit_blas_threads(warnings)
+      if (len(warnings) > 0) write (error_unit, '(a)') 'warning: '//warnings
       warnings = ''
       call prepare_scene(scene, prepared, warnings, stat, errmsg)
       if (stat /= 0) then
@@ -107,4 +138,141 @@ contains
          error stop 1
       end if
    end subroutine prepare_test_scene
+
+   !> |A| |v| for a symmetric band matrix in lower band storage (the scale of A v's rounding).
+   pure function band_abs_times(a, v) result(y)
+      type(symmetric_band), intent(in) :: a
+      real(dp), intent(in) :: v(:)
+      real(dp) :: y(size(v))
+      integer :: i, j
+      y = 0
+      do j = 1, a%n
+         y(j) = y(j) + abs(a%lower(1, j))*abs(v(j))
+         do i = j + 1, min(a%n, j + a%kd)
+            y(i) = y(i) + abs(a%lower(1 + i - j, j))*abs(v(j))
+            y(j) = y(j) + abs(a%lower(1 + i - j, j))*abs(v(i))
+         end do
+      end do
+   end function band_abs_times
+
+   !> LAPACK dpbcon's estimate of the 1-norm condition number of the SPD band matrix a.
+   !! dpbcon needs LAPACK's Cholesky factor, so a is factored here by dpbtrf whatever form
+   !! `factor` has (the kd = 3 kernel stores L D L^T); `factor` is kept in the interface for
+   !! the callers that hold one and is not read.
+   function band_condition(a, factor) result(condition)
+      type(symmetric_band), intent(in) :: a
+      type(band_cholesky), intent(in) :: factor
+      real(dp) :: condition
+      real(dp) :: rcond, work(3*a%n), ones(a%n), cholesky(a%kd + 1, a%n)
+      integer :: iwork(a%n), info
+      if (.false.) condition = factor%factor(1, 1)   ! interface only
+      ones = 1
+      cholesky = a%lower
+      call dpbtrf('L', a%n, a%kd, cholesky, a%kd + 1, info)
+      if (info /= 0) then
+         condition = huge(1.0_dp)
+         return
+      end if
+      call dpbcon('L', a%n, a%kd, cholesky, a%kd + 1, maxval(band_abs_times(a, ones)), rcond, work, iwork, info)
+      condition = 1/max(rcond, tiny(1.0_dp))
+   end function band_condition
+
+   !> |L| |D| |L^T| |x| for a band factorization as `band_factor` leaves it: for kd = 3 the
+   !! kernel's L D L^T (column j holds 1/d_j, then the unit-lower entries below the
+   !! diagonal), otherwise dpbtrf's Cholesky factor R (D = I, L = R). Both forms give the
+   !! same matrix, since |R| |R^T| = |L| D |L^T| for R = L D^(1/2): the componentwise
+   !! backward error bound of the factorization and solve (Higham, Thm 9.3 and 10.3).
+   pure function abs_factor_times(chol, x) result(y)
+      type(band_cholesky), intent(in) :: chol
+      real(dp), intent(in) :: x(:)
+      real(dp) :: y(size(x)), z(size(x))
+      integer :: i, j
+      logical :: ldl
+      ldl = chol%kd == kernel_bandwidth
+      z = 0   ! D |L^T| |x|: z_j = d_j sum_{i >= j} |L_ij| |x_i|
+      do j = 1, chol%n
+         if (ldl) then
+            z(j) = abs(x(j))
+            do i = j + 1, min(chol%n, j + chol%kd)
+               z(j) = z(j) + abs(chol%factor(1 + i - j, j)*x(i))
+            end do
+            z(j) = z(j)/abs(chol%factor(1, j))
+         else
+            do i = j, min(chol%n, j + chol%kd)
+               z(j) = z(j) + abs(chol%factor(1 + i - j, j)*x(i))
+            end do
+         end if
+      end do
+      y = 0   ! |L| z
+      do j = 1, chol%n
+         if (ldl) then
+            y(j) = y(j) + z(j)
+         else
+            y(j) = y(j) + abs(chol%factor(1, j))*z(j)
+         end if
+         do i = j + 1, min(chol%n, j + chol%kd)
+            y(i) = y(i) + abs(chol%factor(1 + i - j, j))*z(j)
+         end do
+      end do
+   end function abs_factor_times
+
+   !> A reference projection for one-sided bounds (s_k = +1: H_k x >= lower_k, -1:
+   !! H_k x <= upper_k), independent of the contact solver: the dense LCP of the explicitly
+   !! formed Delassus matrix A = S H W^-1 H^T S, q = S (H x_free - bound), solved by
+   !! `solve_lcp` (block principal pivoting, tested against enumeration); P = S z,
+   !! x = x_free + W^-1 H^T P. W^-1 H^T by dense Cholesky (dpotrf/dpotrs) for J <= 600, by
+   !! band solves beyond. With `load` instead of `x_free`, x_free = W^-1 load by the same
+   !! factor. stat /= 0 (with errmsg) when solve_lcp fails.
+   subroutine dense_lcp_reference(w, contacts, s, x_ref, p_ref, stat, errmsg, x_free, load)
+      type(symmetric_band), intent(in) :: w
+      type(contact_set), intent(in) :: contacts
+      real(dp), intent(in) :: s(:)
+      real(dp), intent(out) :: x_ref(:), p_ref(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp), intent(in), optional :: x_free(:), load(:)
+      real(dp), allocatable :: columns(:, :), dense(:, :), a(:, :), q(:), z(:), wz(:)
+      type(band_cholesky) :: factor
+      integer :: m, n, c, l, i, j, info, iterations
+      m = contacts%count
+      n = w%n
+      allocate (columns(n, m + 1), a(m, m), q(m), z(m), wz(m))
+      columns = 0
+      do c = 1, m
+         do l = 1, 4
+            if (contacts%dofs(l, c) /= 0) columns(contacts%dofs(l, c), c) = contacts%weights(l, c)
+         end do
+      end do
+      if (present(load)) then
+         columns(:, m + 1) = load
+      else
+         columns(:, m + 1) = 0
+      end if
+      if (n <= 600) then
+         allocate (dense(n, n))
+         do j = 1, n
+            do i = 1, n
+               dense(i, j) = band_entry(w, i, j)
+            end do
+         end do
+         call dpotrf('L', n, dense, n, info)
+         call dpotrs('L', n, m + 1, dense, n, columns, n, info)
+      else
+         call band_factor(w, factor, stat, errmsg)
+         do c = 1, m + 1
+            call band_solve(factor, columns(:, c))
+         end do
+      end if
+      if (present(x_free)) columns(:, m + 1) = x_free
+      do l = 1, m
+         do c = 1, m
+            a(c, l) = s(c)*s(l)*contact_value(contacts, c, columns(:, l))
+         end do
+         q(l) = s(l)*(contact_value(contacts, l, columns(:, m + 1)) - merge(contacts%lower(l), contacts%upper(l), s(l) > 0))
+      end do
+      a = 0.5_dp*(a + transpose(a))
+      call solve_lcp(a, q, z, wz, iterations, stat, errmsg)
+      p_ref = s*z
+      x_ref = columns(:, m + 1) + matmul(columns(:, 1:m), p_ref)
+   end subroutine dense_lcp_reference
 end module vibrobeam_test_support

@@ -28,13 +28,14 @@ program vibrobeam_main
    use vibrobeam_sweep, only: run_sweep, sweep_outcome, sweep_threads
    use vibrobeam_sweep_check, only: sweep_check_text
    use vibrobeam_sweep_transport, only: transport_start, transport_stop, transport_rank, transport_ranks
+   use vibrobeam_blas_threads, only: limit_blas_threads
    implicit none
 
    type(scene_type) :: scene
    type(prepared_scene) :: prepared
    type(sweep_settings) :: sweep
    character(len=message_length) :: errmsg
-   character(len=:), allocatable :: input_file, warnings
+   character(len=:), allocatable :: input_file, warnings, blas_warning
    logical :: check_only, text_only
    integer :: stat
 
@@ -53,6 +54,10 @@ program vibrobeam_main
    end if
    call check_output_target(scene, input_file, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
+   ! one BLAS thread unless VIBROBEAM_BLAS_THREADS says otherwise; a sweep's tasks share the
+   ! cores themselves (docs/sweeps.md, "Parallel runs")
+   call limit_blas_threads(blas_warning)
+   if (len(blas_warning) > 0) warnings = warnings//blas_warning//new_line('a')
    if (sweep%present) then
       ! a sweep prepares each point itself; here the first one, for its warnings
       associate (points => sweep_points(sweep))
@@ -259,7 +264,7 @@ contains
       call meter%init(scene%progress)
       allocate (u(model%unknowns), reaction(contacts%count))
       call solve_static(model%stiffness, contacts, loads%at(0.0_dp), scene%contact_solver, u, reaction, &
-                        iterations, stat, errmsg, scene%contact_max_iterations)
+                        iterations, stat, errmsg, scene%contact_max_iterations, trim(scene%contact_method))
       if (stat /= 0) call fail(exit_numerical_failure, errmsg)
       call files%open(scene, model, stat, errmsg)
       if (stat == 0) call files%write_static(nodal_displacement(model, u), contacts%x, reaction, stat, errmsg)

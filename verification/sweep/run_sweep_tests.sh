@@ -84,7 +84,7 @@ threads|mpi)
   ;;
 failure)
   # the scene of verification/dynamics/numerical_failure.nml: a contact solver allowed
-  # one pivoting iteration fails once the load presses the beam onto its floor
+  # one pivoting iteration ('pivoting') fails once the load presses the beam onto its floor
   for sweep_mode in independent down; do
     cat > failure.nml <<END
 &beam      length = 1.0, k2 = 1.0 /
@@ -92,7 +92,7 @@ failure)
 &obstacles count = 1, side(1) = 'below', x_from(1) = 0.0, x_to(1) = 1.0, level_from(1) = -1e-3 /
 &time      dt = 1e-2 /
 &load      distributed = -10.0 /
-&solver    contact_max_iterations = 1 /
+&solver    contact_method = 'pivoting', contact_max_iterations = 1 /
 &output    file = 'failure.h5', text = .false. /
 &sweep     parameter = 'load.distributed', values = -0.0005, -10.0, -0.001, mode = '$sweep_mode', measure = 10.0 /
 END

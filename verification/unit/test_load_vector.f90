@@ -1,6 +1,13 @@
 !> Unit test: consistent load vectors. For U the Hermite interpolant of a cubic p(x) (exact:
 !! Hermite cubics reproduce cubics), F(q)^T U = integral of q(x) p(x) dx, computed here in
 !! closed form; the point-load vector at x_p gives F^T U = p(x_p).
+!! Round-off (u = eps/2, gamma_n = n u/(1 - n u)): every Hermite shape function keeps one
+!! sign on an element, so for a load of one sign the quadrature terms of each F_j share
+!! its sign and F_j is off by at most gamma_20 |F_j| (4 Gauss terms per element, 2
+!! elements, each term 12 roundings: the profile, the shape polynomial, the products); the
+!! interpolant's entries x_i^p and p x_i^(p-1) by gamma_3; the dot product of J terms by
+!! gamma_J: |F.U - exact| <= gamma_{J+23} sum |F_j U_j| + gamma_3 |exact| (the closed
+!! forms L - h/2, L^3/3, L^5/5, x_p^3 round 3 times).
 module load_profiles
    use vibrobeam_kinds, only: dp
    implicit none
@@ -46,6 +53,7 @@ end module load_profiles
 program test_load_vector
    use vibrobeam_kinds, only: dp
    use vibrobeam_model, only: beam_model, build_model, load_vector, point_load_vector, interpolate_field
+   use vibrobeam_roundoff_bounds, only: gamma_n
    use vibrobeam_test_support, only: test_counter
    use load_profiles
    implicit none
@@ -70,14 +78,22 @@ program test_load_vector
       cube = interpolate_field(model, [(x_cubed(model%x(i)), i=2, size(model%x))], &
                                [(three_x_squared(model%x(i)), i=2, size(model%x))])
       f = load_vector(model, one)
-      call t%check_close(trim(label)//' uniform q=1: F.1 = L - h/2', dot_product(f, ones), length - h/2, 1e-14_dp)
-      call t%check_close(trim(label)//' uniform q=1: F.x^2 = L^3/3', dot_product(f, square), length**3/3, 1e-14_dp)
+      call check_dot(trim(label)//' uniform q=1: F.1 = L - h/2', f, ones, length - h/2)
+      call check_dot(trim(label)//' uniform q=1: F.x^2 = L^3/3', f, square, length**3/3)
       f = load_vector(model, linear)
-      call t%check_close(trim(label)//' q=x: F.x^3 = L^5/5', dot_product(f, cube), length**5/5, 1e-14_dp)
+      call check_dot(trim(label)//' q=x: F.x^3 = L^5/5', f, cube, length**5/5)
       f = point_load_vector(model, 0.7_dp*length)
-      call t%check_close(trim(label)//' point load at 0.7L: F.x^3', dot_product(f, cube), (0.7_dp*length)**3, 1e-13_dp)
+      call check_dot(trim(label)//' point load at 0.7L: F.x^3', f, cube, (0.7_dp*length)**3)
       f = point_load_vector(model, length)
-      call t%check_close(trim(label)//' point load at tip: F.x^2', dot_product(f, square), length**2, 1e-14_dp)
+      call check_dot(trim(label)//' point load at tip: F.x^2', f, square, length**2)
    end do
    call t%finish('test_load_vector')
+contains
+   !> F.U against its closed form, to the round-off bound of the module comment.
+   subroutine check_dot(name, f, u, exact)
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: f(:), u(:), exact
+      call t%check_close(name, abs(dot_product(f, u) - exact), 0.0_dp, 1.0_dp, &
+                         gamma_n(size(f) + 23)*sum(abs(f*u)) + gamma_n(3)*abs(exact))
+   end subroutine check_dot
 end program test_load_vector

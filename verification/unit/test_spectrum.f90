@@ -11,11 +11,23 @@
 !! (4) an arbitrary signal against a direct O(n^2) DFT written here (independent of FFTW);
 !! (5) the error paths (n = 0, 1, dt <= 0, non-finite sample, unknown window), n = 2, and
 !!     the edge cases of spectral_peaks.
+!! Round-off allowances (u = eps/2, gamma_n = n u/(1 - n u)), derived, not chosen:
+!! - a frequency k/(n dt) and its reference each round twice: gamma_4 relative;
+!! - an amplitude a_k = c |X_k|/sum(w): an error |dx_j| <= E in every sample moves it by
+!!   at most 2E (w >= 0); the FFT by at most 2/sum(w) gamma_{4 log2(n) + 8} sqrt(n) ||w (x -
+!!   mean)||_2 (the O(u log n) normwise bound of a fast transform, Higham, Accuracy and
+!!   Stability of Numerical Algorithms, 2002, §24.1, with 8 roundings more for FFTW's
+!!   mixed-radix codelets); a window value, (1 - cos(2 pi j/n))/2, is off by (2 pi gamma_4
+!!   + gamma_2)/2, which moves a_k by 4 times that times max |x - mean|; the final
+!!   abs, division and doubling by gamma_4 a_k (`amplitude_bound`);
+!! - a sample sin(2 pi b j/n + phi) is off by gamma_5 times its argument (up to 2 pi b)
+!!   plus gamma_2: at bin 251 the samples themselves carry 1e-12 A, the largest term.
 program test_spectrum
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use vibrobeam_kinds, only: dp, pi
    use vibrobeam_text, only: integer_text, real_text
    use vibrobeam_spectrum, only: amplitude_spectrum, spectral_peaks, bin_width
+   use vibrobeam_roundoff_bounds, only: gamma_n
    use vibrobeam_test_support, only: test_counter
    implicit none
    type(test_counter) :: t
@@ -55,21 +67,23 @@ contains
       integer :: stat, j, m
       character(len=256) :: errmsg
       character(len=64) :: title
+      real(dp) :: sample_error
       write (title, '(a,i0,a)') 'on-bin sines, n = ', n, ', window '//window
       allocate (signal(n))
       allocate (peaks(0))   ! gfortran 12 -fcheck=bounds: else a false -Wmaybe-uninitialized on peaks = ...
       do j = 0, n - 1
          signal(j + 1) = 3.7_dp + sum(amplitudes*sin(2*pi*bins*j/n + phases))
       end do
+      sample_error = sum(amplitudes*(gamma_n(5)*(2*pi*bins + abs(phases)) + gamma_n(6))) + gamma_n(4)*(3.7_dp + sum(amplitudes))
       call amplitude_spectrum(signal, dt, frequency, amplitude, stat, errmsg, window)
       call t%check_true(trim(title)//': stat', stat == 0, trim(errmsg))
       if (stat /= 0) return
       call t%check_true(trim(title)//': number of bins n/2+1', size(frequency) == n/2 + 1 .and. &
                         size(amplitude) == n/2 + 1)
-      call t%check_close(trim(title)//': bin width = frequency(2)', frequency(2), 1/(n*dt), 1e-14_dp)
+      call t%check_close(trim(title)//': bin width = frequency(2)', frequency(2), 1/(n*dt), gamma_n(4))
       call t%check_close(trim(title)//': last frequency floor(n/2)/(n dt)', frequency(size(frequency)), &
-                         (n/2)/(n*dt), 1e-14_dp)
-      call t%check_close(trim(title)//': bin_width(n, dt)', bin_width(n, dt), 1/(n*dt), 1e-15_dp)
+                         (n/2)/(n*dt), gamma_n(4))
+      call t%check_close(trim(title)//': bin_width(n, dt)', bin_width(n, dt), 1/(n*dt), gamma_n(4))
       peaks = spectral_peaks(frequency, amplitude, 3, 1e-3_dp)
       call t%check_true(trim(title)//': three peaks found', size(peaks) == 3)
       if (size(peaks) /= 3) return
@@ -79,15 +93,15 @@ contains
          call t%check_true(trim(title)//': peak '//char(48 + m)//' at its bin', peaks(m) == bins(m) + 1, &
                            'index '//integer_text(peaks(m))//', expected '//integer_text(bins(m) + 1))
          call t%check_close(trim(title)//': peak '//char(48 + m)//' frequency', frequency(peaks(m)), &
-                            bins(m)/(n*dt), 1e-14_dp)
-         call t%check_close(trim(title)//': peak '//char(48 + m)//' amplitude', amplitude(bins(m) + 1), &
-                            amplitudes(m), 1e-10_dp)
+                            bins(m)/(n*dt), gamma_n(4))
+         call t%check_close(trim(title)//': peak '//char(48 + m)//' amplitude', abs(amplitude(bins(m) + 1) - &
+                            amplitudes(m)), 0.0_dp, 1.0_dp, amplitude_bound(signal, window, sample_error, amplitudes(m)))
          other(bins(m) + 1) = .false.
          ! the Hann window spreads each sine over its two neighbouring bins
          if (window == 'hann') other(bins(m):bins(m) + 2) = .false.
       end do
       call t%check_close(trim(title)//': largest amplitude off the sines (mean removed)', &
-                         maxval(amplitude, mask=other), 0.0_dp, 1.0_dp, 1e-10_dp*amplitudes(1))
+                         maxval(amplitude, mask=other), 0.0_dp, 1.0_dp, amplitude_bound(signal, window, sample_error, 0.0_dp))
    end subroutine on_bin_sines
 
    !> Sines at (k + delta)/(n dt) with delta = 0.5, 0.3, -0.25, window 'hann'.
@@ -117,8 +131,8 @@ contains
       do m = 1, 3
          write (label, '(a,a,i0,a,f5.2,a)') trim(title), ': sine ', m, ' (', positions(m), ' bins)'
          f_true = positions(m)/(n*dt)
-         call t%check_close(trim(label)//' peak frequency within one bin', frequency(peaks(m)), f_true, &
-                            1.0_dp, width/f_true)
+         call t%check_close(trim(label)//' peak frequency within one bin', abs(frequency(peaks(m)) - f_true), &
+                            0.0_dp, 1.0_dp, width)
          ! amplitude in [8/(3 pi), 1] A, 1% allowed for leakage of the other components
          call t%check_true(trim(label)//' peak amplitude within the Hann scalloping loss', &
                            amplitude(peaks(m)) >= (1 - tolerance)*hann_worst_scalloping*amplitudes(m) .and. &
@@ -144,8 +158,11 @@ contains
       call amplitude_spectrum(signal, dt, frequency, amplitude, stat, errmsg, window)
       call t%check_true(trim(title)//': stat', stat == 0, trim(errmsg))
       if (stat /= 0) return
+      ! the computed mean is off by at most gamma_n 3.7 and x_j - mean is then exact
+      ! (Sterbenz): a constant c, |c| <= gamma_n 3.7, whose amplitude is |c| in bin 0 (and
+      ! bin 1 with Hann); the FFT of a constant adds a relative gamma_{4 log2(n) + 8}
       call t%check_close(trim(title)//': largest amplitude (mean removed)', maxval(amplitude), 0.0_dp, 1.0_dp, &
-                         1e-14_dp*3.7_dp)
+                         gamma_n(n)*3.7_dp*(1 + gamma_n(4*ceiling(log(real(n, dp))/log(2.0_dp)) + 8)))
    end subroutine constant_signal
 
    !> An arbitrary signal against the definition (module documentation) evaluated by a
@@ -176,8 +193,11 @@ contains
          end do
          reference = abs(sum_k)/sum(weights)
          if (k > 0 .and. 2*k /= n) reference = 2*reference
-         call t%check_close(trim(title)//': amplitude of bin '//integer_text(k), amplitude(k + 1), reference, &
-                            1e-12_dp, maxval(amplitude))
+         ! the direct sum: each phase 2 pi j k/n (< pi n) rounds 4 times, each complex term
+         ! and the sum of n add gamma_{n+8}; scaled like an amplitude (2/sum(w))
+         call t%check_close(trim(title)//': amplitude of bin '//integer_text(k), abs(amplitude(k + 1) - reference), &
+                            0.0_dp, 1.0_dp, 2/sum(weights)*sum(abs(weights*centred))*(gamma_n(4)*pi*n + gamma_n(n + 8)) &
+                            + amplitude_bound(signal, window, 0.0_dp, reference))
       end do
    end subroutine against_direct_dft
 
@@ -192,10 +212,31 @@ contains
       if (stat /= 0) return
       call t%check_true('n = 2: two bins', size(frequency) == 2)
       if (size(frequency) /= 2) return
-      call t%check_close('n = 2: Nyquist frequency 1/(2 dt)', frequency(2), 1/(2*dt), 1e-15_dp)
-      call t%check_close('n = 2: Nyquist amplitude', amplitude(2), 1.0_dp, 1e-15_dp)
-      call t%check_close('n = 2: zero-frequency amplitude', amplitude(1), 0.0_dp, 1.0_dp, 1e-15_dp)
+      ! every operation on [1, -1] is exact (mean 0, X_1 = 2, 2/2 = 1); the frequency
+      ! k/(n dt) and 1/(2 dt) round twice each
+      call t%check_close('n = 2: Nyquist frequency 1/(2 dt)', frequency(2), 1/(2*dt), gamma_n(4))
+      call t%check_close('n = 2: Nyquist amplitude', amplitude(2), 1.0_dp, gamma_n(2))
+      call t%check_close('n = 2: zero-frequency amplitude', amplitude(1), 0.0_dp, 1.0_dp, gamma_n(2))
    end subroutine two_samples
+
+   !> Round-off bound of an amplitude a (module comment): samples off by sample_error,
+   !! the window's values, the FFT, and the final scaling.
+   function amplitude_bound(signal, window, sample_error, a) result(bound)
+      real(dp), intent(in) :: signal(:), sample_error, a
+      character(len=*), intent(in) :: window
+      real(dp) :: bound, weights(size(signal)), centred(size(signal)), window_error
+      integer :: n, j
+      n = size(signal)
+      weights = 1
+      window_error = 0
+      if (window == 'hann') then
+         weights = [(0.5_dp - 0.5_dp*cos(2*pi*j/n), j=0, n - 1)]
+         window_error = (2*pi*gamma_n(4) + gamma_n(2))/2
+      end if
+      centred = signal - sum(signal)/n
+      bound = 2*sample_error + 2/sum(weights)*gamma_n(4*ceiling(log(real(n, dp))/log(2.0_dp)) + 8)*sqrt(real(n, dp))* &
+              norm2(weights*centred) + 4*window_error*maxval(abs(centred)) + gamma_n(4)*a
+   end function amplitude_bound
 
    subroutine error_paths()
       real(dp), allocatable :: frequency(:), amplitude(:)
