@@ -382,6 +382,7 @@ contains
                                   values(:, :), errors(:, :), column(:), sample_point(:), sample_direction(:), &
                                   sample_parameter(:), sample_parameter2(:), sample_time(:), u(:), v(:)
          integer :: n, k, j, observation, samples
+         character(len=:), allocatable :: first_label, second_label
          call file%read_reals('/sweep/parameter', parameter, stat, errmsg)
          if (stat /= 0) return
          n = size(parameter)
@@ -417,8 +418,13 @@ contains
             if (stat /= 0) return
             errors(:, k) = column
          end do
-         call open_sink(sink, 'sweep', 'point  line  direction (+1 up, -1 down, 0 independent)  parameter  '// &
-                        'parameter2  status (0 ok)  settled (1, 0, -1 not asked)  transient (s)  then value and '// &
+         call axis_label('/sweep/parameter', first_label)
+         second_label = 'none'
+         if (file%exists('/sweep/parameter2')) call axis_label('/sweep/parameter2', second_label)
+         if (stat /= 0) return
+         call open_sink(sink, 'sweep', 'point  line  direction (+1 up, -1 down, 0 independent)  parameter: '// &
+                        first_label//'  parameter2: '//second_label//'  status (0 ok)  settled (1, 0, -1 not '// &
+                        'asked)  transient (s)  then value and '// &
                         'standard error of: RMS tip displacement (m)  largest tip displacement (m)  impact rate (1/s)'// &
                         '  episode rate (1/s)  mean impulse per episode (N s)  largest impulse per episode (N s)  '// &
                         'contact force (N)  power of the loads (W)  power dissipated at the stops (W)  by damping (W)'// &
@@ -445,7 +451,8 @@ contains
          if (stat == 0) call file%read_reals('/sweep/poincare/displacement', u, stat, errmsg)
          if (stat == 0) call file%read_reals('/sweep/poincare/velocity', v, stat, errmsg)
          if (stat /= 0) return
-         call open_sink(sink, 'poincare', 'parameter  parameter2  direction  point  time in the point''s run (s)  '// &
+         call open_sink(sink, 'poincare', 'parameter: '//first_label//'  parameter2: '//second_label// &
+                        '  direction  point  time in the point''s run (s)  '// &
                         'tip displacement (m)  tip velocity (m/s), at phase 0 of the forcing')
          do k = 1, samples
             call put_row(sink, 'wide', [sample_parameter(k), sample_parameter2(k), sample_direction(k), &
@@ -454,6 +461,19 @@ contains
          end do
          call close_sink(sink)
       end subroutine sweep_files
+
+      !> 'load.base_frequency (rad/s)': the name and unit attributes of an axis.
+      subroutine axis_label(path, label)
+         character(len=*), intent(in) :: path
+         character(len=:), allocatable, intent(out) :: label
+         character(len=:), allocatable :: name, unit
+         label = ''
+         call file%attr_string(path, 'name', name, stat, errmsg)
+         if (stat == 0) call file%attr_string(path, 'unit', unit, stat, errmsg)
+         if (stat /= 0) return
+         if (len(unit) == 0) unit = '1'
+         label = name//' ('//unit//')'
+      end subroutine axis_label
 
    end subroutine derive_text_files
 
