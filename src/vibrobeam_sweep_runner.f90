@@ -217,20 +217,29 @@ contains
          end do
       end subroutine step_to
 
-      !> Without keep_runs and steady-state detection: settle, measure, statistics.
-      subroutine run_without_file()
-         class(time_stepper), allocatable :: stepper
-         type(dynamics_recorder) :: recorder
+      !> A stepper at the point's start and a recorder that writes nothing, for at most
+      !! `last` steps, its statistics window open; result%status ok, or failed.
+      subroutine start_without_file(stepper, recorder, last)
+         class(time_stepper), allocatable, intent(out) :: stepper
+         type(dynamics_recorder), intent(out) :: recorder
+         integer(int64), intent(in) :: last
          character(len=:), allocatable :: ignored
          call start_time_stepper(local, prepared, stepper, stat, errmsg)
          if (stat /= 0) then
             call failed(errmsg)
             return
          end if
-         call recorder%init(local, stepper, prepared%model, prepared%v0, transient + result%measure_steps, &
-                            write_rows=.false.)
+         call recorder%init(local, stepper, prepared%model, prepared%v0, last, write_rows=.false.)
          call recorder%start_statistics(stepper, ignored)
          result%status = status_ok
+      end subroutine start_without_file
+
+      !> Without keep_runs and steady-state detection: settle, measure, statistics.
+      subroutine run_without_file()
+         class(time_stepper), allocatable :: stepper
+         type(dynamics_recorder) :: recorder
+         call start_without_file(stepper, recorder, transient + result%measure_steps)
+         if (result%status /= status_ok) return
          call step_to(stepper, recorder, transient + result%measure_steps)
          result%statistics = recorder%window_statistics(stepper)
          call keep_final(stepper)
@@ -244,16 +253,8 @@ contains
          class(time_stepper), allocatable :: stepper
          type(dynamics_recorder) :: recorder
          type(statistics_result) :: previous, current
-         character(len=:), allocatable :: ignored
-         call start_time_stepper(local, prepared, stepper, stat, errmsg)
-         if (stat /= 0) then
-            call failed(errmsg)
-            return
-         end if
-         call recorder%init(local, stepper, prepared%model, prepared%v0, &
-                            result%settle_steps + max_settle_windows*result%measure_steps, write_rows=.false.)
-         call recorder%start_statistics(stepper, ignored)
-         result%status = status_ok
+         call start_without_file(stepper, recorder, result%settle_steps + max_settle_windows*result%measure_steps)
+         if (result%status /= status_ok) return
          result%settled = 0
          do windows = 1, max_settle_windows
             transient = result%settle_steps + (windows - 1)*result%measure_steps
