@@ -444,6 +444,13 @@ contains
    subroutine close_to(name, value, reference, tolerance)
       character(len=*), intent(in) :: name
       real(dp), intent(in) :: value, reference, tolerance
+      ! the room left, as every test reports it (largest |value - reference| / tolerance)
+      if (tolerance > 0 .and. ieee_is_finite(value)) then
+         if (abs(value - reference)/tolerance >= t%worst_ratio) then
+            t%worst_ratio = abs(value - reference)/tolerance
+            t%worst_check = name
+         end if
+      end if
       if (ieee_is_finite(value) .and. abs(value - reference) <= tolerance) then
          t%passed = t%passed + 1
       else
