@@ -1,7 +1,7 @@
 # Sourced by the study scripts (not run on its own): build_release BUILD_DIR TARGET...
-# configures BUILD_DIR as a Release build (the project's Release flags; an existing build
-# directory is switched to Release), builds the targets and, if that fails, prints the
-# build log and exits 1. The log is kept in BUILD_DIR/<first target>_build.log.
+# configures BUILD_DIR as a Release build with the study programs (the project's Release
+# flags, VIBROBEAM_STUDIES=ON; an existing build directory is switched to both), builds
+# the targets and, if that fails, prints the build log and exits 1. The log is kept in BUILD_DIR/<first target>_build.log.
 build_release() {
   local tree=$1
   shift
@@ -9,7 +9,7 @@ build_release() {
   rm -f "$log"
   local source_dir
   source_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-  if ! cmake -S "$source_dir" -B "$tree" -DCMAKE_BUILD_TYPE=Release > /dev/null; then
+  if ! cmake -S "$source_dir" -B "$tree" -DCMAKE_BUILD_TYPE=Release -DVIBROBEAM_STUDIES=ON > /dev/null; then
     echo "$(basename "$0"): configuring $tree failed (cmake's message above)" >&2
     exit 1
   fi

@@ -4,7 +4,7 @@
 # The .dat files are derived from RESULT.h5: when one is missing or names another run
 # than RESULT.h5's /run run_id (an earlier run's, or none with &output text = .false.),
 # they are derived again with `vibrobeam --text RESULT.h5` (vibrobeam from $VIBROBEAM,
-# the PATH, or build/ of this repository).
+# the PATH, the installation this script belongs to, or build/ of this repository).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 result=${1:?usage: plot_results.sh RESULT.h5}
@@ -27,7 +27,10 @@ if [ -n "$run_id" ]; then
   h5dump -n "$result" 2> /dev/null | grep -q ' /static/displacement$' && [ ! -f "${stem}_static.dat" ] && stale=2
 fi
 if [ "$stale" = 2 ]; then
-  vibrobeam=${VIBROBEAM:-$(command -v vibrobeam || echo "$here/../build/vibrobeam")}
+  # installed, this script is PREFIX/share/vibrobeam/plot/plot_results.sh
+  vibrobeam=${VIBROBEAM:-$(command -v vibrobeam || { [ -x "$here/../../../bin/vibrobeam" ] &&
+                                                      echo "$here/../../../bin/vibrobeam"; } ||
+                           echo "$here/../build/vibrobeam")}
   [ -x "$vibrobeam" ] || { echo "plot_results: the .dat files of $result are missing or stale and no vibrobeam" \
                                 "program was found to derive them (set VIBROBEAM)" >&2; exit 1; }
   echo "plot_results: deriving the text files of $result"

@@ -12,9 +12,10 @@
 !! `band_solve` nor `band_matvec` allocates (for contiguous arguments).
 module vibrobeam_band
    use vibrobeam_kinds, only: dp
+   use vibrobeam_status, only: stat_linear_solver_failure
    use vibrobeam_band_kernel, only: kernel_bandwidth, ldl_factor_kd3, ldl_solve_kd3, band_matvec_kd3, &
                                     ldl_residual_solve_kd3
-   use vibrobeam_band_lapack, only: dpbtrf, dpbtrs, dsbmv
+   use vibrobeam_lapack, only: dpbtrf, dpbtrs, dsbmv, poison_failed_solve
    implicit none
    private
    public :: symmetric_band, band_cholesky
@@ -96,8 +97,8 @@ contains
    end function band_combination
 
    !> Cholesky factorization of A (kd = 3: `ldl_factor_kd3`; otherwise LAPACK dpbtrf).
-   !! stat = 0 on success, stat = k > 0 if the leading minor of order k is not positive
-   !! definite (both forms report the same k).
+   !! stat = 0 on success, stat_linear_solver_failure if the leading minor of order k is not
+   !! positive definite (errmsg names k; both forms find the same k).
    subroutine band_factor(a, chol, stat, errmsg)
       type(symmetric_band), intent(in) :: a
       type(band_cholesky), intent(out) :: chol
@@ -117,8 +118,10 @@ contains
       if (stat > 0) then
          write (errmsg, '(a,i0,a)') 'band Cholesky factorization failed: leading minor of order ', &
             stat, ' is not positive definite'
+         stat = stat_linear_solver_failure
       else if (stat < 0) then
          write (errmsg, '(a,i0)') 'dpbtrf rejected argument ', -stat
+         stat = stat_linear_solver_failure
       end if
    end subroutine band_factor
 
@@ -133,6 +136,7 @@ contains
          call ldl_solve_kd3(chol%n, chol%factor, x)
       else
          call dpbtrs('L', chol%n, chol%kd, 1, chol%factor, chol%kd + 1, x, chol%n, info)
+         call poison_failed_solve(info, x)
       end if
    end subroutine band_solve
 
@@ -156,6 +160,7 @@ contains
             call ldl_solve_kd3(chol%n, chol%factor, y)
          else
             call dpbtrs('L', chol%n, chol%kd, 1, chol%factor, chol%kd + 1, y, chol%n, info)
+            call poison_failed_solve(info, y)
          end if
       end if
    end subroutine band_residual_solve

@@ -29,7 +29,7 @@
 !!    indicates, `polish_limit` iterations at most, exact) or, when the complementarity
 !!    products reach round-off, by the interior-point finish (P = y - z, x recomputed
 !!    from P). Details at `interior_point`.
-!! 3. If neither happens within `interior_limit` iterations, stat = 1 and the caller falls
+!! 3. If neither happens within `interior_limit` iterations, stat = stat_no_convergence and the caller falls
 !!    back on principal pivoting.
 !!
 !! Consistency: whichever way it ends, x = x_free + W^-1 H^T P to the round-off of a band
@@ -40,6 +40,7 @@
 !! satisfy their bounds to the tolerance below.
 module vibrobeam_contact_newton
    use vibrobeam_kinds, only: dp
+   use vibrobeam_status, only: stat_no_convergence, stat_residual_check_failed
    use vibrobeam_contact_points, only: contact_value, no_bound
    use vibrobeam_band, only: band_matvec
    use vibrobeam_contact_system, only: contact_system, solve_tally, scatter_rows
@@ -85,8 +86,9 @@ module vibrobeam_contact_newton
 contains
 
    !> Solve the projection (module comment). side(k): in, the warm start (+1 lower held,
-   !! -1 upper held, 0 free); out, the final held set. stat: 0 ok; 1 no convergence (fall
-   !! back); 2 a factorization failed; 3 the residual check of the exact finish failed.
+   !! -1 upper held, 0 free); out, the final held set. stat: stat_ok; stat_no_convergence
+   !! (fall back); stat_linear_solver_failure (a factorization failed);
+   !! stat_residual_check_failed (the residual check of the exact finish).
    subroutine newton_project(system, x_free, points, lower, upper, side, x, multiplier, report, tally, stat, errmsg, &
                              w_x_free_given)
       type(contact_system), intent(inout) :: system
@@ -190,7 +192,7 @@ contains
             k = maxloc(abs(value - target), dim=1, mask=held)
             write (errmsg, '(a,i0,a,es10.3,a,es10.3)') 'contact projection: residual check failed at contact point ', &
                points(k), ': |H x - bound| = ', abs(value(k) - target(k)), ', scale ', scale
-            stat = 3
+            stat = stat_residual_check_failed
          end if
          return
       end if
@@ -347,7 +349,7 @@ contains
          previous = indicated
          if (.not. (mu > 0 .and. alpha > 0)) exit   ! nothing left to reduce
       end do
-      stat = 1
+      stat = stat_no_convergence
       write (errmsg, '(a,i0,a,es9.2,a)') 'contact projection: no solution after ', report%interior_iterations, &
          ' interior-point iterations (mu/mu0 = ', mu/mu0, ')'
    contains

@@ -15,6 +15,7 @@
 !! impulses of round-off size and the wrong sign are clipped after x is computed.
 module vibrobeam_contact_pivoting
    use vibrobeam_kinds, only: dp
+   use vibrobeam_status, only: stat_no_convergence, stat_invalid_argument, stat_linear_solver_failure, stat_residual_check_failed
    use vibrobeam_band, only: band_matvec
    use vibrobeam_contact_points, only: contact_value, no_bound
    use vibrobeam_contact_system, only: contact_system, solve_tally, regime_delassus
@@ -29,8 +30,8 @@ module vibrobeam_contact_pivoting
 contains
 
    !> Projection onto {s_k (H_k x - b_k) >= 0} for the points `active` (see module).
-   !! stat: 0 ok; 1 no convergence within max_iterations (0: the default of each regime);
-   !! 2 linear solver failure; 3 residual check failed.
+   !! stat: stat_ok; stat_no_convergence within max_iterations (0: the default of each
+   !! regime); stat_linear_solver_failure; stat_residual_check_failed.
    subroutine pivot_project(system, x_free, active, s, b, max_iterations, x, impulse, iterations, tally, stat, errmsg)
       type(contact_system), intent(inout) :: system
       real(dp), intent(in) :: x_free(:), s(:), b(:)
@@ -110,7 +111,7 @@ contains
             multiplier(active) = impulse
          end do
       end associate
-      stat = 1
+      stat = stat_no_convergence
       errmsg = 'contact projection: the candidate contact set did not settle'
    end subroutine pivot_admissible
 
@@ -140,7 +141,7 @@ contains
       ! one dense Cholesky solve per pivot and the first trial set
       tally%linear_solves = tally%linear_solves + iterations + 1
       tally%factorizations = tally%factorizations + iterations + 1
-      if (stat == 4) stat = 2
+      if (stat == stat_invalid_argument) stat = stat_linear_solver_failure
       impulse = s*z
       x = x_free
       do l = 1, m
@@ -189,7 +190,7 @@ contains
          count_infeasible = count(infeasible)
          if (count_infeasible == 0) exit
          if (iterations >= limit) then
-            stat = 1
+            stat = stat_no_convergence
             write (errmsg, '(a,i0,a,i0,a)') 'band contact solver did not converge in ', limit, &
                ' pivoting iterations (', count_infeasible, ' infeasible constraints left)'
             return
@@ -212,7 +213,7 @@ contains
       do k = 1, m
          if (.not. in_set(k)) cycle
          if (abs(contact_value(system%contacts, active(k), x) - b(k)) > 1e-8_dp*gap_scale) then
-            stat = 3
+            stat = stat_residual_check_failed
             write (errmsg, '(a,i0,a,es10.3)') 'band contact solver: residual check failed at contact point ', &
                active(k), ', |H x - b| = ', abs(contact_value(system%contacts, active(k), x) - b(k))
             return

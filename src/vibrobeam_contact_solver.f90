@@ -38,7 +38,7 @@ module vibrobeam_contact_solver
 
    integer, parameter :: method_newton = 1, method_pivoting = 2
    !> Largest number of contact points for which 'auto' caches the Delassus columns
-   !! (measured, verification/benchmark/REPORT.md).
+   !! (measured, studies/benchmark/REPORT.md).
    integer, parameter :: delassus_limit = 16
    !> Pivots of the fall-back per projection when `max_iterations` is 0: the pivoting's own
    !! default, max(100, 10 m), would let a projection of 10^5 points run for hours.
@@ -112,7 +112,8 @@ contains
 
    !> Projection for the constraints k = 1..m on contact points active(k) with signs s(k)
    !! (+1: from below, -1: from above) and offsets b(k): s_k (H_k x - b_k) >= 0.
-   !! stat: 0 ok; 1 no convergence; 2 linear solver failure; 3 residual check failed.
+   !! stat: stat_ok; stat_no_convergence; stat_linear_solver_failure; stat_residual_check_failed
+   !! (vibrobeam_status).
    subroutine project(self, x_free, active, s, b, x, impulse, iterations, stat, errmsg)
       class(contact_projector), intent(inout) :: self
       real(dp), intent(in) :: x_free(:)     !! (J) unconstrained solution

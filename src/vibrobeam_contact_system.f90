@@ -26,7 +26,8 @@
 !! Multipliers are signed: P_k >= 0 pushes H_k x up (a lower bound), P_k <= 0 down.
 module vibrobeam_contact_system
    use vibrobeam_kinds, only: dp
-   use vibrobeam_lapack, only: dpbtrf, dpbtrs, dpotrf, dpotrs
+   use vibrobeam_status, only: stat_linear_solver_failure
+   use vibrobeam_lapack, only: dpbtrf, dpbtrs, dpotrf, dpotrs, poison_failed_solve
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_solve, band_matvec, band_entry
    use vibrobeam_contact_points, only: contact_set, contact_value
    use vibrobeam_saddle_band, only: saddle_factor
@@ -123,7 +124,7 @@ contains
    !! by one step of iterative refinement with the same factors (the residual of the held
    !! problem computed by products with W, the correction applied); `error_estimate` =
    !! max_k |H_k correction| over all `points` estimates the remaining error of the values
-   !! H_k x (it bounds it while cond eps < 1). stat = 2 when a factorization fails.
+   !! H_k x (it bounds it while cond eps < 1). stat = stat_linear_solver_failure when a factorization fails.
    subroutine solve_held(self, x_free, w_x_free, points, held, target, x, multiplier, error_estimate, tally, &
                          stat, errmsg)
       class(contact_system), intent(inout) :: self
@@ -223,7 +224,7 @@ contains
       end if
       if (stat /= 0) then
          write (errmsg, '(a,i0)') 'Delassus block factorization (dpotrf) failed: info = ', stat
-         stat = 2
+         stat = stat_linear_solver_failure
          return
       end if
       multiplier = multiplier + residual
@@ -271,7 +272,7 @@ contains
                                          self%reduced_kd + 1, reduced_rhs, free_count, stat)
          if (stat /= 0) then
             write (errmsg, '(a,i0)') 'reduced band solve (dpbtrs) failed: info = ', stat
-            stat = 2
+            stat = stat_linear_solver_failure
             return
          end if
          do i = 1, self%unknowns
@@ -330,7 +331,7 @@ contains
       if (free_count > 0) call dpbtrf('L', free_count, self%reduced_kd, self%reduced_factor, self%reduced_kd + 1, stat)
       if (stat /= 0) then
          write (errmsg, '(a,i0)') 'reduced band factorization (dpbtrf) failed: info = ', stat
-         stat = 2
+         stat = stat_linear_solver_failure
          deallocate (self%reduced_factor)
          return
       end if
@@ -369,7 +370,7 @@ contains
       call dpbtrf('L', self%unknowns, kd, self%barrier_factor, kd + 1, stat)
       if (stat /= 0) then
          write (errmsg, '(a,i0)') 'interior-point band factorization (dpbtrf) failed: info = ', stat
-         stat = 2
+         stat = stat_linear_solver_failure
       end if
    end subroutine factor_barrier
 
@@ -382,6 +383,7 @@ contains
       tally%linear_solves = tally%linear_solves + 1
       call dpbtrs('L', self%unknowns, self%barrier_kd, 1, self%barrier_factor, self%barrier_kd + 1, v, &
                   self%unknowns, info)
+      call poison_failed_solve(info, v)
    end subroutine solve_barrier
 
    !> v = v + sum_k H_{points(k)}^T value(k).

@@ -33,7 +33,7 @@
 !! c_i = c_(i-1) + d_i (t_(i+3) - t_i)/3, d_2 = 0.
 module vibrobeam_flexibility
    use vibrobeam_kinds, only: dp
-   use vibrobeam_band_lapack, only: dpttrf, dpttrs
+   use vibrobeam_lapack, only: dpttrf, dpttrs, poison_failed_solve
    use vibrobeam_model, only: beam_model
    implicit none
    private
@@ -112,6 +112,7 @@ contains
       end if
       call dpttrs(self%unknowns, 1, self%curvature_pivots, self%curvature_multipliers, self%curvature, &
                   self%unknowns, info)
+      call poison_failed_solve(info, self%curvature)
       if (self%hermite) then
          call hermite_integrate(self%elements, self%h, self%curvature, x)
       else

@@ -10,7 +10,7 @@
 !! `discard` deletes the temporary file and leaves `<final>` untouched.
 !!
 !! Crash safety of the temporary file. The file is created in the HDF5 1.10 format
-!! (libver bounds 'latest') with a metadata cache that never evicts (src/vibrobeam_posix.c:
+!! (libver bounds 'latest') with a metadata cache that never evicts (src/vibrobeam_hdf5_swmr.c:
 !! `vb_h5_disable_evictions`), so HDF5 writes metadata only when the file is flushed.
 !! After every object is created, `start_swmr` puts the file in SWMR write mode, in which
 !! HDF5 orders the metadata writes of a flush so that a reader always finds a consistent
@@ -66,7 +66,7 @@ module vibrobeam_hdf5
    public :: h5_path_exists
 
    interface
-      !> int vb_h5_disable_evictions(hid_t fapl);  (src/vibrobeam_posix.c)
+      !> int vb_h5_disable_evictions(hid_t fapl);  (src/vibrobeam_hdf5_swmr.c)
       function c_h5_disable_evictions(file_access_list) result(error) bind(C, name='vb_h5_disable_evictions')
          import :: c_int, c_int64_t
          integer(c_int64_t), value, intent(in) :: file_access_list

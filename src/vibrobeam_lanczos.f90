@@ -11,6 +11,7 @@
 !! Lehoucq, Sorensen & Yang, ARPACK Users' Guide, SIAM 1998, ch. 4).
 module vibrobeam_lanczos
    use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_status, only: stat_failure, stat_invalid_argument
    use vibrobeam_band, only: band_matvec
    use vibrobeam_model, only: beam_model
    use vibrobeam_flexibility, only: cantilever_flexibility
@@ -77,7 +78,7 @@ contains
       stat = 0
       errmsg = ''
       if (count < 1 .or. count >= n) then
-         stat = 1
+         stat = stat_invalid_argument
          write (errmsg, '(a,i0,a,i0,a)') 'Lanczos: number of modes ', count, ' is outside [1, ', n - 1, ']'
          return
       end if
@@ -86,7 +87,7 @@ contains
       ncv = lanczos_basis_size(n, count)
       ! ARPACK's work length ncv (ncv + 8) is a default integer
       if (int(ncv, int64)*(ncv + 8) > huge(ncv)) then
-         stat = 1
+         stat = stat_invalid_argument
          write (errmsg, '(a,i0,a)') 'Lanczos: ', count, ' modes need a work array longer than ARPACK can index'
          return
       end if
@@ -125,20 +126,20 @@ contains
          case (99)
             exit
          case default
-            stat = 1
+            stat = stat_failure
             write (errmsg, '(a,i0)') 'Lanczos: ARPACK dsaupd made an unexpected request, ido = ', ido
             return
          end select
       end do
       if (info /= 0 .or. iparam(5) < count) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'Lanczos: '//arpack_message('dsaupd', info, iparam(5), count, ncv)
          return
       end if
       call dseupd(.true., 'A', select, eigenvalues, vectors, n, 0.0_dp, 'G', n, 'LM', count, tolerance, resid, &
                   ncv, lanczos_vectors, n, iparam, ipntr, workd, workl, size(workl), info)
       if (info /= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'Lanczos: '//arpack_message('dseupd', info, iparam(5), count, ncv)
       end if
    end subroutine lanczos_modes

@@ -1,13 +1,23 @@
-!> Explicit interfaces of the LAPACK routines the contact projection and its tests call
-!! (Reference-LAPACK argument conventions), declared once.
+!> Explicit interfaces of every LAPACK and BLAS routine vibrobeam calls (Reference-LAPACK
+!! argument conventions), declared once: the symmetric band routines (the fall-back of
+!! `vibrobeam_band` for bandwidths other than 3 and the oracle its kernels are tested
+!! against), the generalized band eigensolver of the dense modes path, the tridiagonal
+!! routines of `vibrobeam_flexibility`, the dense and general band routines of the contact
+!! projection and of the B-spline interpolation, and those the tests use as references.
+!! Every caller checks `info`.
 module vibrobeam_lapack
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use vibrobeam_kinds, only: dp
    implicit none
    private
-   public :: dpbtrf, dpbtrs, dpbcon, dpotrf, dpotrs, dgbtrf, dgbtrs, dgesv
+   public :: poison_failed_solve
+   public :: dpbtrf, dpbtrs, dpbcon, dsbmv, dsbgvx, dpttrf, dpttrs
+   public :: dpotrf, dpotrs, dgbtrf, dgbtrs, dgbsv, dgesv, dlamch
+   public :: dgetrf, dgeqrf, dorgqr, dsyev, dsygv   ! the tests' dense references
 
    interface
-      !> Cholesky factorization of a symmetric positive definite band matrix.
+      !> Cholesky factorization A = L L^T (UPLO = 'L'); info = k > 0: the leading minor of
+      !! order k is not positive definite.
       subroutine dpbtrf(uplo, n, kd, ab, ldab, info)
          import :: dp
          character, intent(in) :: uplo
@@ -15,7 +25,7 @@ module vibrobeam_lapack
          real(dp), intent(inout) :: ab(ldab, *)
          integer, intent(out) :: info
       end subroutine dpbtrf
-      !> Solve with the factor of dpbtrf.
+      !> Solve A X = B with the factor of dpbtrf.
       subroutine dpbtrs(uplo, n, kd, nrhs, ab, ldab, b, ldb, info)
          import :: dp
          character, intent(in) :: uplo
@@ -33,6 +43,43 @@ module vibrobeam_lapack
          real(dp), intent(out) :: rcond, work(*)
          integer, intent(out) :: iwork(*), info
       end subroutine dpbcon
+      !> y = alpha A x + beta y.
+      subroutine dsbmv(uplo, n, k, alpha, a, lda, x, incx, beta, y, incy)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, k, lda, incx, incy
+         real(dp), intent(in) :: alpha, beta
+         real(dp), intent(in) :: a(lda, *), x(*)
+         real(dp), intent(inout) :: y(*)
+      end subroutine dsbmv
+      !> Selected eigenvalues (and vectors) of the band pencil A x = lambda B x, B positive
+      !! definite (it forms an n x n transformation when vectors are asked).
+      subroutine dsbgvx(jobz, range, uplo, n, ka, kb, ab, ldab, bb, ldbb, q, ldq, vl, vu, &
+                        il, iu, abstol, m, w, z, ldz, work, iwork, ifail, info)
+         import :: dp
+         character, intent(in) :: jobz, range, uplo
+         integer, intent(in) :: n, ka, kb, ldab, ldbb, ldq, il, iu, ldz
+         real(dp), intent(inout) :: ab(ldab, *), bb(ldbb, *)
+         real(dp), intent(out) :: q(ldq, *), w(*), z(ldz, *), work(*)
+         real(dp), intent(in) :: vl, vu, abstol
+         integer, intent(out) :: m, iwork(*), ifail(*), info
+      end subroutine dsbgvx
+      !> L D L^T factorization of a symmetric positive definite tridiagonal matrix (diagonal
+      !! d, off-diagonal e); info = k > 0: the leading minor of order k is not positive definite.
+      subroutine dpttrf(n, d, e, info)
+         import :: dp
+         integer, intent(in) :: n
+         real(dp), intent(inout) :: d(*), e(*)
+         integer, intent(out) :: info
+      end subroutine dpttrf
+      !> Solve A X = B with the factor of dpttrf.
+      subroutine dpttrs(n, nrhs, d, e, b, ldb, info)
+         import :: dp
+         integer, intent(in) :: n, nrhs, ldb
+         real(dp), intent(in) :: d(*), e(*)
+         real(dp), intent(inout) :: b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dpttrs
       !> Dense Cholesky factorization.
       subroutine dpotrf(uplo, n, a, lda, info)
          import :: dp
@@ -67,6 +114,14 @@ module vibrobeam_lapack
          real(dp), intent(inout) :: rhs(ldb, *)
          integer, intent(out) :: info
       end subroutine dgbtrs
+      !> Solve a general band system A X = B by LU with partial pivoting (dgbtrf + dgbtrs);
+      !! info = k > 0: U(k, k) is exactly zero, A is singular.
+      subroutine dgbsv(n, kl, ku, nrhs, ab, ldab, ipiv, b, ldb, info)
+         import :: dp
+         integer, intent(in) :: n, kl, ku, nrhs, ldab, ldb
+         real(dp), intent(inout) :: ab(ldab, *), b(ldb, *)
+         integer, intent(out) :: ipiv(*), info
+      end subroutine dgbsv
       !> Dense LU solve.
       subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
          import :: dp
@@ -74,5 +129,66 @@ module vibrobeam_lapack
          real(dp), intent(inout) :: a(lda, *), b(ldb, *)
          integer, intent(out) :: ipiv(*), info
       end subroutine dgesv
+      !> LU factorization of a general matrix with partial pivoting (tests).
+      subroutine dgetrf(m, n, a, lda, ipiv, info)
+         import :: dp
+         integer, intent(in) :: m, n, lda
+         real(dp), intent(inout) :: a(lda, *)
+         integer, intent(out) :: ipiv(*), info
+      end subroutine dgetrf
+      !> QR factorization of a general matrix (tests).
+      subroutine dgeqrf(m, n, a, lda, tau, work, lwork, info)
+         import :: dp
+         integer, intent(in) :: m, n, lda, lwork
+         real(dp), intent(inout) :: a(lda, *)
+         real(dp), intent(out) :: tau(*), work(*)
+         integer, intent(out) :: info
+      end subroutine dgeqrf
+      !> The orthogonal factor Q of dgeqrf (tests).
+      subroutine dorgqr(m, n, k, a, lda, tau, work, lwork, info)
+         import :: dp
+         integer, intent(in) :: m, n, k, lda, lwork
+         real(dp), intent(inout) :: a(lda, *)
+         real(dp), intent(in) :: tau(*)
+         real(dp), intent(out) :: work(*)
+         integer, intent(out) :: info
+      end subroutine dorgqr
+      !> Eigenvalues (and vectors) of a dense symmetric matrix (tests).
+      subroutine dsyev(jobz, uplo, n, a, lda, w, work, lwork, info)
+         import :: dp
+         character, intent(in) :: jobz, uplo
+         integer, intent(in) :: n, lda, lwork
+         real(dp), intent(inout) :: a(lda, *)
+         real(dp), intent(out) :: w(*), work(*)
+         integer, intent(out) :: info
+      end subroutine dsyev
+      !> Eigenvalues (and vectors) of a dense symmetric-definite pencil (tests).
+      subroutine dsygv(itype, jobz, uplo, n, a, lda, b, ldb, w, work, lwork, info)
+         import :: dp
+         integer, intent(in) :: itype, n, lda, ldb, lwork
+         character, intent(in) :: jobz, uplo
+         real(dp), intent(inout) :: a(lda, *), b(ldb, *)
+         real(dp), intent(out) :: w(*), work(*)
+         integer, intent(out) :: info
+      end subroutine dsygv
+      !> Machine parameters ('S': the safe minimum, 1/huge not overflowing).
+      function dlamch(cmach) result(value)
+         import :: dp
+         character, intent(in) :: cmach
+         real(dp) :: value
+      end function dlamch
    end interface
+
+contains
+
+   !> For the solves that return no stat (a band or tridiagonal solve inside a time step,
+   !! where the factor was checked when it was made): a nonzero `info` from the LAPACK solve
+   !! (only possible for invalid arguments) turns the whole result into NaN, which the
+   !! callers' finiteness checks report (stat_not_finite, exit status 3), instead of a
+   !! plausible wrong answer.
+   pure subroutine poison_failed_solve(info, x)
+      integer, intent(in) :: info       !! LAPACK's info of the solve
+      real(dp), intent(inout) :: x(:)   !! the solution
+      if (info /= 0) x = ieee_value(1.0_dp, ieee_quiet_nan)
+   end subroutine poison_failed_solve
 end module vibrobeam_lapack

@@ -32,6 +32,7 @@
 module vibrobeam_lcp
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
+   use vibrobeam_status, only: stat_invalid_argument, stat_no_convergence, stat_residual_check_failed, stat_linear_solver_failure
    use vibrobeam_lapack, only: dpotrf, dpotrs
    implicit none
    private
@@ -54,17 +55,17 @@ contains
    !> Solve LCP(A, q) for a symmetric positive definite A by block principal pivoting
    !! with Murty's least-index fallback (see the module documentation).
    !!
-   !! Status codes (`errmsg` is empty when `stat` = 0, otherwise one sentence):
+   !! Status codes (vibrobeam_status; `errmsg` is empty when `stat` = 0, otherwise one sentence):
    !!
-   !! * 0: converged; z >= 0 and w >= 0 hold exactly, z_i w_i = 0 exactly (w_i = 0 on the
+   !! * stat_ok (0): converged; z >= 0 and w >= 0 hold exactly, z_i w_i = 0 exactly (w_i = 0 on the
    !!   final set I, z_i = 0 off it), and `lcp_residual(a, q, z) <= tolerance`.
-   !! * 1: no feasible set within `max_iterations` pivots; z, w hold the last trial
+   !! * stat_no_convergence: no feasible set within `max_iterations` pivots; z, w hold the last trial
    !!   solution (not feasible).
-   !! * 2: the Cholesky factorization of a principal submatrix A_II failed (A is not
+   !! * stat_linear_solver_failure: the Cholesky factorization of a principal submatrix A_II failed (A is not
    !!   numerically positive definite) or LAPACK reported an argument error; z = w = 0.
-   !! * 3: a feasible set was found but the residual check failed (round-off dominates,
+   !! * stat_residual_check_failed: a feasible set was found but the residual check failed (round-off dominates,
    !!   e.g. A far too ill-conditioned for `tolerance`); z, w hold that solution.
-   !! * 4: invalid arguments: inconsistent sizes, `max_iterations` < 0, `tolerance` not a
+   !! * stat_invalid_argument: invalid arguments: inconsistent sizes, `max_iterations` < 0, `tolerance` not a
    !!   positive finite number, or a non-finite entry in a or q; z = w = 0.
    !!
    !! Feasibility test of a trial solution: index i is infeasible when
@@ -109,11 +110,11 @@ contains
       errmsg = ''
       message = ''
 
-      ! Argument checks (stat = 4).
+      ! Argument checks (stat_invalid_argument).
       if (size(a, 1) /= n .or. size(a, 2) /= n .or. size(z) /= n .or. size(w) /= n) then
          write (message, '(a, 5(i0, a))') 'solve_lcp: inconsistent sizes: a is ', size(a, 1), &
             ' x ', size(a, 2), ', q has ', n, ', z has ', size(z), ', w has ', size(w), ' entries.'
-         call fail(4, message, stat, errmsg)
+         call fail(stat_invalid_argument, message, stat, errmsg)
          return
       end if
       iteration_limit = max(100, n*n)
@@ -121,7 +122,7 @@ contains
          if (max_iterations < 0) then
             write (message, '(a, i0, a)') 'solve_lcp: max_iterations = ', max_iterations, &
                ' is negative.'
-            call fail(4, message, stat, errmsg)
+            call fail(stat_invalid_argument, message, stat, errmsg)
             return
          end if
          iteration_limit = max_iterations
@@ -129,19 +130,19 @@ contains
       residual_tolerance = default_tolerance
       if (present(tolerance)) then
          if (.not. ieee_is_finite(tolerance)) then
-            call fail(4, 'solve_lcp: tolerance is not a finite number.', stat, errmsg)
+            call fail(stat_invalid_argument, 'solve_lcp: tolerance is not a finite number.', stat, errmsg)
             return
          end if
          if (tolerance <= 0.0_dp) then
             write (message, '(a, es10.3, a)') 'solve_lcp: tolerance = ', tolerance, &
                ' is not positive.'
-            call fail(4, message, stat, errmsg)
+            call fail(stat_invalid_argument, message, stat, errmsg)
             return
          end if
          residual_tolerance = tolerance
       end if
       if (.not. (all(ieee_is_finite(a)) .and. all(ieee_is_finite(q)))) then
-         call fail(4, 'solve_lcp: a or q has a NaN or infinite entry.', stat, errmsg)
+         call fail(stat_invalid_argument, 'solve_lcp: a or q has a NaN or infinite entry.', stat, errmsg)
          return
       end if
 
@@ -176,7 +177,7 @@ contains
             write (message, '(a, i0, a, i0, a)') &
                'solve_lcp: no feasible complementary set after ', iterations, &
                ' pivots (the iteration limit); ', n_infeasible, ' indices still infeasible.'
-            call fail(1, message, stat, errmsg)
+            call fail(stat_no_convergence, message, stat, errmsg)
             return
          end if
 
@@ -209,7 +210,7 @@ contains
          write (message, '(a, es10.3, a, es10.3, a, i0, a)') 'solve_lcp: residual ', residual, &
             ' of the computed solution exceeds the tolerance ', residual_tolerance, &
             ' (n = ', n, '; A may be too ill-conditioned).'
-         call fail(3, message, stat, errmsg)
+         call fail(stat_residual_check_failed, message, stat, errmsg)
       end if
    end subroutine solve_lcp
 
@@ -244,7 +245,7 @@ contains
 
    !> Complementary solution of the trial set I (Júdice & Pires, step 1):
    !! A_II z_I = -q_I by Cholesky (dpotrf/dpotrs, lower triangle of A_II), z_J = 0,
-   !! w = A z + q with w_I = 0 exactly. stat = 2 if the factorization or solve fails.
+   !! w = A z + q with w_I = 0 exactly. stat = stat_linear_solver_failure if the factorization or solve fails.
    subroutine complementary_solution(a, q, in_set, z, w, stat, errmsg)
       real(dp), intent(in) :: a(:, :), q(:)
       logical, intent(in) :: in_set(:)
@@ -276,17 +277,17 @@ contains
                'solve_lcp: the principal submatrix of A on a trial set of ', m, &
                ' indices is not positive definite (dpotrf: leading minor ', info, &
                ' not positive); A must be symmetric positive definite.'
-            call fail(2, message, stat, errmsg)
+            call fail(stat_linear_solver_failure, message, stat, errmsg)
             return
          else if (info < 0) then
             write (message, '(a, i0, a)') 'solve_lcp: LAPACK dpotrf rejected argument ', -info, '.'
-            call fail(2, message, stat, errmsg)
+            call fail(stat_linear_solver_failure, message, stat, errmsg)
             return
          end if
          call dpotrs('L', m, 1, submatrix, m, rhs, m, info)
          if (info /= 0) then
             write (message, '(a, i0, a)') 'solve_lcp: LAPACK dpotrs rejected argument ', -info, '.'
-            call fail(2, message, stat, errmsg)
+            call fail(stat_linear_solver_failure, message, stat, errmsg)
             return
          end if
          z(set_index) = rhs(:, 1)

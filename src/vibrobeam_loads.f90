@@ -10,7 +10,7 @@
 module vibrobeam_loads
    use vibrobeam_kinds, only: dp
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_model, only: beam_model, load_vector, point_load_vector
+   use vibrobeam_model, only: beam_model, load_vector, point_load_vector, unit_profile
    implicit none
    private
    public :: load_set, build_loads
@@ -53,12 +53,6 @@ contains
          allocate (loads%point(model%unknowns), source=0.0_dp)
       end if
    end subroutine build_loads
-
-   pure function unit_profile(x) result(value)
-      real(dp), intent(in) :: x
-      real(dp) :: value
-      value = 1 + 0*x
-   end function unit_profile
 
    !> F(t) (N per unknown; per unit mass when the beam is given by k2).
    pure function load_at(self, t) result(f)

@@ -13,10 +13,11 @@ module vibrobeam_model
    use vibrobeam_band, only: symmetric_band, band_allocate, band_add
    use vibrobeam_hermite, only: hermite_shape, hermite_element_mass, hermite_element_stiffness
    use vibrobeam_bspline, only: bspline_knots, bspline_shape
+   use vibrobeam_lapack, only: dgbsv, poison_failed_solve
    implicit none
    private
    public :: beam_model, build_model, point_row, node_row, nodal_displacement
-   public :: load_vector, point_load_vector, interpolate_field, space_profile, energy_integrals
+   public :: load_vector, point_load_vector, interpolate_field, space_profile, unit_profile, energy_integrals
 
    integer, parameter :: bandwidth = 3   !! sub-diagonals of M and K for both bases
 
@@ -249,6 +250,13 @@ contains
       end do
    end function load_vector
 
+   !> The profile of a uniform load: 1 along the whole beam.
+   pure function unit_profile(x) result(value)
+      real(dp), intent(in) :: x
+      real(dp) :: value
+      value = 1 + 0*x
+   end function unit_profile
+
    !> Load vector of a unit point force at x (the virtual work of the force: the row of
    !! `point_row`).
    pure function point_load_vector(model, x) result(f)
@@ -273,14 +281,6 @@ contains
       real(dp), intent(in) :: value(:)   !! (N) u(x_i), i = 1..N (m)
       real(dp), intent(in) :: slope(:)   !! (N) u_x(x_i)
       real(dp) :: u(model%unknowns)
-      interface
-         subroutine dgbsv(n, kl, ku, nrhs, ab, ldab, ipiv, b, ldb, info)
-            import :: dp
-            integer, intent(in) :: n, kl, ku, nrhs, ldab, ldb
-            real(dp), intent(inout) :: ab(ldab, *), b(ldb, *)
-            integer, intent(out) :: ipiv(*), info
-         end subroutine dgbsv
-      end interface
       integer, parameter :: kl = 3, ku = 3
       real(dp) :: ab(2*kl + ku + 1, model%unknowns), weights(4)
       integer :: ipiv(model%unknowns), i, a, dofs(4), info, n
@@ -304,5 +304,6 @@ contains
       u(1:model%elements) = value
       u(n) = slope(model%elements)
       call dgbsv(n, kl, ku, 1, ab, 2*kl + ku + 1, ipiv, u, n, info)
+      call poison_failed_solve(info, u)   ! nonsingular for distinct nodes (Schoenberg-Whitney)
    end function interpolate_field
 end module vibrobeam_model

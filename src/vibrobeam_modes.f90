@@ -15,9 +15,10 @@
 !! Each mode is normalized to tip displacement 1.
 module vibrobeam_modes
    use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_model, only: beam_model, nodal_displacement, energy_integrals
    use vibrobeam_lanczos, only: lanczos_modes
-   use vibrobeam_band_lapack, only: dsbgvx
+   use vibrobeam_lapack, only: dsbgvx, dlamch
    implicit none
    private
    public :: compute_modes, dense_is_cheaper
@@ -26,13 +27,6 @@ module vibrobeam_modes
    !! unknowns, or for more than J/dense_fraction modes.
    integer, parameter :: dense_unknowns = 16, dense_fraction = 4
 
-   interface
-      function dlamch(cmach) result(value)
-         import :: dp
-         character, intent(in) :: cmach
-         real(dp) :: value
-      end function dlamch
-   end interface
 
 contains
 
@@ -138,7 +132,7 @@ contains
       if (stat /= 0 .or. found /= count) then
          write (errmsg, '(a,i0,a,i0,a,i0)') 'eigenvalue solver dsbgvx failed: info = ', stat, &
             ', found ', found, ' of ', count
-         if (stat == 0) stat = 1
+         stat = stat_failure
          return
       end if
       errmsg = ''

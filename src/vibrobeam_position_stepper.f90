@@ -24,6 +24,7 @@
 module vibrobeam_position_stepper
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
+   use vibrobeam_status, only: stat_not_finite
    use vibrobeam_band, only: band_cholesky, band_factor, band_solve, band_matvec
    use vibrobeam_model, only: beam_model
    use vibrobeam_contact_points, only: contact_set, contact_value
@@ -102,7 +103,7 @@ contains
          if (stat /= 0) return
          u_new = (1 + e)*z - e*u_old
          if (.not. ieee_is_finite(sum(u_new))) then
-            stat = 4
+            stat = stat_not_finite
             write (errmsg, '(a,es12.5,a)') 'the solution is no longer finite at t = ', self%t + dt, ' s'
             return
          end if

@@ -13,6 +13,7 @@
 !! on F, so the factors are kept and reused while F does not change.
 module vibrobeam_saddle_band
    use vibrobeam_kinds, only: dp
+   use vibrobeam_status, only: stat_linear_solver_failure
    use vibrobeam_lapack, only: dgbtrf, dgbtrs
    use vibrobeam_band, only: symmetric_band
    use vibrobeam_contact_points, only: contact_set
@@ -57,7 +58,7 @@ contains
    end subroutine forget
 
    !> Order, assemble and LU-factor the saddle-point matrix of the contact points
-   !! `points` (the set F) and keep the factors. stat = 2 when dgbtrf fails.
+   !! `points` (the set F) and keep the factors. stat = stat_linear_solver_failure when dgbtrf fails.
    subroutine factor(self, metric, contacts, points, stat, errmsg)
       class(saddle_factor), intent(inout) :: self
       type(symmetric_band), intent(in) :: metric     !! W
@@ -142,7 +143,7 @@ contains
       call dgbtrf(total, total, width, width, self%lu, 3*width + 1, self%pivots, stat)
       if (stat /= 0) then
          write (errmsg, '(a,i0)') 'band saddle-point factorization (dgbtrf) failed: info = ', stat
-         stat = 2
+         stat = stat_linear_solver_failure
          deallocate (self%lu)   ! no valid factors: the next call factors again
          return
       end if
@@ -156,7 +157,7 @@ contains
    end subroutine factor
 
    !> Solve the factored system for the right-hand side (r_x, r_P): r_x (J) on the rows of
-   !! W, r_P (|F|) on the constraint rows in the order of `points`. stat = 2 on failure.
+   !! W, r_P (|F|) on the constraint rows in the order of `points`. stat = stat_linear_solver_failure on failure.
    subroutine solve(self, rhs_dofs, rhs_multipliers, x, multipliers, stat, errmsg)
       class(saddle_factor), intent(in) :: self
       real(dp), intent(in) :: rhs_dofs(:), rhs_multipliers(:)
@@ -173,7 +174,7 @@ contains
       call dgbtrs('N', total, self%width, self%width, 1, self%lu, 3*self%width + 1, self%pivots, rhs, total, stat)
       if (stat /= 0) then
          write (errmsg, '(a,i0)') 'band saddle-point solve (dgbtrs) failed: info = ', stat
-         stat = 2
+         stat = stat_linear_solver_failure
          return
       end if
       x = rhs(self%dof_position)

@@ -2,7 +2,9 @@
 !! discrete model): the beam model, its contact points, its loads and its initial state.
 !! Used by the program and by the verification drivers, so both run the same set-up.
 module vibrobeam_setup
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_status, only: stat_failure, stat_numerical_failure
    use vibrobeam_text, only: real_text
    use vibrobeam_scene, only: scene_type, rho_s_of, ei_of, step_count
    use vibrobeam_model, only: beam_model, build_model
@@ -19,10 +21,6 @@ module vibrobeam_setup
    implicit none
    private
    public :: prepared_scene, prepare_scene, start_stepper, start_time_stepper
-   public :: setup_invalid, setup_numerical_failure
-
-   integer, parameter :: setup_invalid = 1             !! stat of an inconsistent scene
-   integer, parameter :: setup_numerical_failure = 3   !! stat of a failed static solve
 
    type :: prepared_scene
       type(beam_model) :: model
@@ -41,10 +39,10 @@ module vibrobeam_setup
 contains
 
    !> Build model, contact points, loads and initial state of `scene` (already validated).
-   !! stat = `setup_invalid` with a message naming the input when the scene is
+   !! stat = `stat_failure` with a message naming the input when the scene is
    !! inconsistent (obstacles that contradict each other, an initial displacement outside
    !! the obstacles, a checkpoint of &initial from_file that does not match);
-   !! `setup_numerical_failure` when the static solve of `&initial displacement = 'static'`
+   !! `stat_numerical_failure` when the static solve of `&initial displacement = 'static'`
    !! fails; `warnings` collects one line per warning.
    subroutine prepare_scene(scene, prepared, warnings, stat, errmsg)
       type(scene_type), intent(in) :: scene
@@ -65,6 +63,11 @@ contains
       call initial_displacement(scene, prepared, stat, errmsg)
       if (stat /= 0) return
       prepared%v0 = initial_velocity(scene, prepared%model)
+      ! a failed interpolation of the initial fields returns NaN (vibrobeam_lapack)
+      if (.not. all(ieee_is_finite(prepared%u0)) .or. .not. all(ieee_is_finite(prepared%v0))) then
+         stat = stat_numerical_failure
+         errmsg = '&initial: the initial displacement or velocity is not finite (interpolation on the mesh failed)'
+      end if
    end subroutine prepare_scene
 
    !> The initial state of a run that continues the checkpoint of &initial from_file
@@ -99,7 +102,7 @@ contains
             return
          end if
          if (step_count(scene) <= steps) then
-            stat = setup_invalid
+            stat = stat_failure
             errmsg = '&time t_end = '//real_text(scene%t_end)//' s is not after the checkpoint of '''//file// &
                      ''' at t = '//real_text(steps*scene%dt)//' s (t_end is the end time of the continued run)'
             return
@@ -110,7 +113,7 @@ contains
             value = contact_value(contacts, c, prepared%u0)
             if (value + 1e-12_dp*(abs(value) + prepared%model%length) < contacts%lower(c) .or. &
                 value - 1e-12_dp*(abs(value) + prepared%model%length) > contacts%upper(c)) then
-               stat = setup_invalid
+               stat = stat_failure
                errmsg = '&initial from_file = '''//file//''': the beam is at u = '//real_text(value)//' m at x = '// &
                         real_text(contacts%x(c))//' m, outside the changed obstacles there ['// &
                         real_text(contacts%lower(c))//', '//real_text(contacts%upper(c))//'] m'
@@ -145,7 +148,7 @@ contains
                               trim(scene%contact_method))
             if (stat /= 0) then
                errmsg = '&initial displacement = ''static'': '//trim(errmsg)
-               stat = setup_numerical_failure
+               stat = stat_numerical_failure
                return
             end if
          end select
@@ -159,7 +162,7 @@ contains
                   scene%displacement_amplitude, ' puts the beam at u = ', value, ' m at x = ', contacts%x(c), &
                   ' m, outside the obstacles there [', contacts%lower(c), ', '
                write (errmsg, '(a,g0.6,a)') trim(errmsg), contacts%upper(c), '] m'
-               stat = 1
+               stat = stat_failure
                return
             end if
          end do

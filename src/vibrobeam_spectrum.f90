@@ -30,6 +30,7 @@ module vibrobeam_spectrum
    use, intrinsic :: iso_c_binding
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp, pi
+   use vibrobeam_status, only: stat_failure, stat_invalid_argument
    implicit none
    private
    public :: amplitude_spectrum, spectral_peaks, bin_width
@@ -52,9 +53,9 @@ contains
    !! removing its mean and applying `window` (module documentation: frequencies, scaling,
    !! windows). One FFTW real-to-complex transform of size n = size(signal).
    !!
-   !! stat = 1 with a message when n < 2, dt is not a positive finite number, the signal
-   !! holds a non-finite value, or the window is unknown; stat = 2 when FFTW cannot make a
-   !! plan. On failure `frequency` and `amplitude` are allocated with size 0, so a caller
+   !! stat = stat_invalid_argument with a message when n < 2, dt is not a positive finite number, the signal
+   !! holds a non-finite value, or the window is unknown; stat = stat_failure when FFTW cannot
+   !! make a plan. On failure `frequency` and `amplitude` are allocated with size 0, so a caller
    !! may write them as empty results.
    subroutine amplitude_spectrum(signal, dt, frequency, amplitude, stat, errmsg, window)
       real(dp), intent(in) :: signal(:)                 !! samples x(j dt), j = 0..n-1 (any unit)
@@ -80,17 +81,17 @@ contains
       window_name = 'hann'
       if (present(window)) window_name = trim(adjustl(window))
       if (n < 2) then
-         stat = 1
+         stat = stat_invalid_argument
          write (errmsg, '(a,i0,a)') 'amplitude spectrum: the signal has ', n, ' sample(s); at least 2 are needed'
          return
       end if
       if (.not. (ieee_is_finite(dt) .and. dt > 0)) then
-         stat = 1
+         stat = stat_invalid_argument
          write (errmsg, '(a,g0,a)') 'amplitude spectrum: sampling step dt = ', dt, ' s is not a positive finite number'
          return
       end if
       if (.not. all(ieee_is_finite(signal))) then
-         stat = 1
+         stat = stat_invalid_argument
          write (errmsg, '(a,i0,a)') 'amplitude spectrum: sample ', findloc(ieee_is_finite(signal), .false., dim=1), &
             ' of the signal is not finite'
          return
@@ -103,7 +104,7 @@ contains
       case ('none')
          weights = 1
       case default
-         stat = 1
+         stat = stat_invalid_argument
          errmsg = 'amplitude spectrum: unknown window '''//window_name//''' (expected ''hann'' or ''none'')'
          return
       end select
@@ -124,7 +125,7 @@ contains
       plan = fftw_plan_dft_r2c_1d(int(n, c_int), windowed, transform, FFTW_ESTIMATE)
       !$omp end critical (vibrobeam_fftw_planner)
       if (.not. c_associated(plan)) then
-         stat = 2
+         stat = stat_failure
          write (errmsg, '(a,i0)') 'amplitude spectrum: FFTW could not plan a real-to-complex transform of size ', n
          call fftw_free(windowed_memory)
          call fftw_free(transform_memory)

@@ -1,17 +1,44 @@
-!> Exit codes of the vibrobeam executable (INTERFACE.md, "Command line").
+!> Exit statuses of the vibrobeam executable and the status codes (`stat`) that library
+!! procedures return, one table of named constants (docs/output.md, "Exit status" and
+!! "Status codes of the library").
 !!
-!! Library procedures return a `stat` and an `errmsg`; only the main program turns them
-!! into one of these codes.
+!! Library procedures return a `stat` and an `errmsg` (empty when stat = stat_ok, else one
+!! sentence saying what failed); only the main program turns them into one of the exit
+!! statuses. Compare a `stat` with these names, never with a bare number.
 module vibrobeam_status
    implicit none
    private
    public :: exit_ok, exit_other_error, exit_invalid_input, exit_numerical_failure, exit_interrupted
+   public :: stat_ok, stat_failure, stat_linear_solver_failure, stat_residual_check_failed
+   public :: stat_invalid_argument, stat_no_convergence, stat_not_finite, stat_numerical_failure
    public :: message_length
 
+   ! exit statuses of the executable (public: scripts and batch systems rely on them)
    integer, parameter :: exit_ok = 0                !! success
    integer, parameter :: exit_other_error = 1       !! I/O error (earlier results untouched), anything else
    integer, parameter :: exit_invalid_input = 2     !! invalid input, nothing written
    integer, parameter :: exit_numerical_failure = 3 !! NaN/Inf or contact solver failure
    integer, parameter :: exit_interrupted = 4       !! SIGINT/SIGTERM: result published, marked 'interrupted'
+
+   ! status codes of library procedures
+   integer, parameter :: stat_ok = 0                    !! success
+   !> the request cannot be carried out: invalid input or data, an I/O error, a library
+   !! (HDF5, FFTW, ARPACK) refusing; errmsg says which
+   integer, parameter :: stat_failure = 1
+   !> a factorization or a linear solve failed (a matrix not numerically positive
+   !! definite or singular, LAPACK info /= 0)
+   integer, parameter :: stat_linear_solver_failure = 2
+   !> a solution was found but does not satisfy its equations to the required accuracy
+   integer, parameter :: stat_residual_check_failed = 3
+   !> a procedure was called with arguments outside its contract (sizes, limits, NaN)
+   integer, parameter :: stat_invalid_argument = 4
+   !> an iterative method did not converge within its iteration limit
+   integer, parameter :: stat_no_convergence = 5
+   !> the computed state is no longer finite (NaN or Inf)
+   integer, parameter :: stat_not_finite = 6
+   !> a computation needed to prepare the run failed (the static equilibrium of
+   !! `&initial displacement = 'static'`); the main program exits with exit_numerical_failure
+   integer, parameter :: stat_numerical_failure = 7
+
    integer, parameter :: message_length = 512       !! length of `errmsg` buffers
 end module vibrobeam_status

@@ -54,7 +54,7 @@ module vibrobeam_stepper
    end type time_stepper
 
    abstract interface
-      !> Advance one step. stat: 0 ok; 1..3 contact solver failure; 4 not finite.
+      !> Advance one step. stat: stat_ok; a contact solver failure; stat_not_finite.
       subroutine step_interface(self, stat, errmsg)
          import :: time_stepper
          class(time_stepper), intent(inout) :: self

@@ -19,6 +19,7 @@
 module vibrobeam_velocity_stepper
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
+   use vibrobeam_status, only: stat_not_finite
    use vibrobeam_band, only: band_solve, band_matvec
    use vibrobeam_model, only: beam_model
    use vibrobeam_contact_points, only: contact_set, contact_value
@@ -82,8 +83,8 @@ contains
       self%force = self%loads%at(self%steps*self%dt)
    end subroutine restore_state
 
-   !> Advance from t_n to t_{n+1}. stat: 0 ok; 1..3 contact solver failure (errmsg says);
-   !! 4 the state is no longer finite.
+   !> Advance from t_n to t_{n+1}. stat: stat_ok; a contact solver failure (its code,
+   !! errmsg says); stat_not_finite when the state is no longer finite.
    subroutine step(self, stat, errmsg)
       class(velocity_stepper), intent(inout) :: self
       integer, intent(out) :: stat
@@ -134,7 +135,7 @@ contains
          v_theta = theta*v_new + (1 - theta)*self%v
          u_new = self%u + dt*v_theta
          if (.not. ieee_is_finite(sum(v_new)) .or. .not. ieee_is_finite(sum(u_new))) then
-            stat = 4
+            stat = stat_not_finite
             write (errmsg, '(a,es12.5,a)') 'the solution is no longer finite at t = ', self%t + dt, ' s'
             return
          end if

@@ -8,7 +8,7 @@ program vibrobeam_main
    use, intrinsic :: iso_c_binding, only: c_int
    use vibrobeam_kinds, only: dp, error_unit, output_unit
    use vibrobeam_status, only: exit_ok, exit_other_error, exit_invalid_input, exit_numerical_failure, &
-                               exit_interrupted, message_length
+                               exit_interrupted, message_length, stat_numerical_failure
    use vibrobeam_version, only: version_string
    use vibrobeam_scene, only: scene_type, validate_scene, format_scene
    use vibrobeam_input, only: read_scene, namelist_groups_text
@@ -17,7 +17,7 @@ program vibrobeam_main
    use vibrobeam_model, only: nodal_displacement
    use vibrobeam_modes, only: compute_modes
    use vibrobeam_static, only: solve_static
-   use vibrobeam_setup, only: prepared_scene, prepare_scene, setup_numerical_failure
+   use vibrobeam_setup, only: prepared_scene, prepare_scene
    use vibrobeam_dynamics, only: run_dynamics, run_outcome
    use vibrobeam_results, only: result_files, run_summary, publish_files
    use vibrobeam_text_output, only: derived_file, derive_text_files
@@ -63,10 +63,10 @@ program vibrobeam_main
       associate (points => sweep_points(sweep))
          call prepare_scene(point_scene(scene, sweep, points(1)), prepared, warnings, stat, errmsg)
       end associate
-      if (stat /= 0 .and. stat /= setup_numerical_failure) call fail(exit_invalid_input, '&sweep point 1: '//errmsg)
+      if (stat /= 0 .and. stat /= stat_numerical_failure) call fail(exit_invalid_input, '&sweep point 1: '//errmsg)
    else
       call prepare_scene(scene, prepared, warnings, stat, errmsg)
-      if (stat == setup_numerical_failure) call fail(exit_numerical_failure, errmsg)
+      if (stat == stat_numerical_failure) call fail(exit_numerical_failure, errmsg)
       if (stat /= 0) call fail(exit_invalid_input, errmsg)
    end if
    warnings = warnings//scene_warnings(scene)

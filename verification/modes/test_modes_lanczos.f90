@@ -78,7 +78,7 @@ program test_modes_lanczos
    use vibrobeam_modes, only: compute_modes, dense_is_cheaper
    use vibrobeam_cantilever_exact, only: cantilever_root, cantilever_mode_shape
    use vibrobeam_test_support, only: test_counter
-   use vibrobeam_band_lapack, only: dsbgvx
+   use vibrobeam_lapack, only: dsbgvx
    use test_modes_lanczos_exact, only: ramp, deflection_ramp, slope_ramp, deflection_tip
    implicit none
    real(dp), parameter :: u = epsilon(1.0_dp)/2

@@ -7,27 +7,13 @@
 !! units of u = eps/2 and gamma_n = n u/(1 - n u) (`vibrobeam_roundoff_bounds`).
 program test_band_assembly
    use vibrobeam_kinds, only: dp
+   use vibrobeam_lapack, only: dgesv, dpotrf
    use vibrobeam_band, only: band_entry, band_matvec, band_factor, band_solve, band_cholesky
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_roundoff_bounds, only: gamma_n, abs_factor_times
    use vibrobeam_static_bounds, only: dense_inverse, permuted_lu_times
    use vibrobeam_test_support, only: test_counter
    implicit none
-   interface
-      subroutine dpotrf(uplo, n, a, lda, info)
-         import :: dp
-         character, intent(in) :: uplo
-         integer, intent(in) :: n, lda
-         real(dp), intent(inout) :: a(lda, *)
-         integer, intent(out) :: info
-      end subroutine dpotrf
-      subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
-         import :: dp
-         integer, intent(in) :: n, nrhs, lda, ldb
-         real(dp), intent(inout) :: a(lda, *), b(ldb, *)
-         integer, intent(out) :: ipiv(*), info
-      end subroutine dgesv
-   end interface
    type(test_counter) :: t
    integer, parameter :: meshes(5) = [1, 2, 3, 7, 40]
    integer :: k

@@ -30,15 +30,16 @@
 !! has 3) for n = 1 ... 1000, one of them ill-conditioned (a pivot of R at 1e-6: kappa
 !! about 1e12); the model's W = M + (theta dt)^2 K and K itself for both bases at
 !! N = 10 ... 10000 and dt = 1e-2 ... 1e-6 s. The failure path: making the m-th pivot -1
-!! must give stat = m, as dpbtrf's info; a NaN there too (where invalid operations do not
+!! must fail with stat_linear_solver_failure and a message naming m, dpbtrf's info; a NaN there too (where invalid operations do not
 !! trap), which dpbtrf lets through. Bandwidths 2 and 5 take the LAPACK
 !! path and must give the same residual bound.
 program test_band_kernel
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_get_halting_mode, ieee_invalid
    use vibrobeam_kinds, only: dp
+   use vibrobeam_status, only: stat_linear_solver_failure
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_allocate, band_combination, &
                              band_factor, band_solve, band_matvec, band_residual_solve
-   use vibrobeam_band_lapack, only: dpbtrf, dpbtrs, dsbmv
+   use vibrobeam_lapack, only: dpbtrf, dpbtrs, dsbmv
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_test_support, only: test_counter
    implicit none
@@ -269,7 +270,7 @@ contains
 
    !> Make the m-th pivot of A = R R^T equal to -1 (a_mm -= R(m,m)^2 + 1: the leading
    !! minors of order < m are untouched, the one of order m is negative), then NaN;
-   !! both must fail with stat = m and the message naming m, like dpbtrf.
+   !! both must fail (stat_linear_solver_failure) with the message naming m, dpbtrf's info.
    subroutine check_failure(m)
       integer, intent(in) :: m
       integer, parameter :: n = 200
@@ -296,7 +297,7 @@ contains
          lapack_factor = a%lower
          call dpbtrf('L', n, kd, lapack_factor, kd + 1, info)
          write (label, '(a,i0,a)') 'pivot ', m, merge(' = -1 ', ' = NaN', attempt == 1)
-         call t%check_true(trim(label)//': stat = m', stat == m, errmsg)
+         call t%check_true(trim(label)//': stat_linear_solver_failure', stat == stat_linear_solver_failure, errmsg)
          ! dpbtrf's unblocked dpbtf2 only tests a_jj <= 0, so it lets a NaN pivot through;
          ! the kernel stops there (its test is "not > 0")
          if (attempt == 1) call t%check_true(trim(label)//': dpbtrf info = m', info == m)

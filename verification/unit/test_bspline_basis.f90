@@ -18,6 +18,7 @@
 !! and all values are >= 0; a derivative adds the 3 roundings of its own level (gamma_21).
 program test_bspline_basis
    use vibrobeam_kinds, only: dp
+   use vibrobeam_lapack, only: dgetrf
    use vibrobeam_bspline, only: bspline_knots, bspline_shape
    use vibrobeam_model, only: beam_model, build_model, point_row, node_row, interpolate_field
    use vibrobeam_roundoff_bounds, only: gamma_n
@@ -26,14 +27,6 @@ program test_bspline_basis
    use vibrobeam_initial_state, only: initial_velocity
    use vibrobeam_test_support, only: test_counter
    implicit none
-   interface
-      subroutine dgetrf(m, n, a, lda, ipiv, info)
-         import :: dp
-         integer, intent(in) :: m, n, lda
-         real(dp), intent(inout) :: a(lda, *)
-         integer, intent(out) :: ipiv(*), info
-      end subroutine dgetrf
-   end interface
    type(test_counter) :: t
    integer, parameter :: meshes(4) = [1, 2, 3, 7]
    integer :: k

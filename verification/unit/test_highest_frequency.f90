@@ -15,39 +15,12 @@
 !! and by J for the accumulation: 8 (kd + 1) J eps cond_scaled(M), at most 5e-11 here.
 program test_highest_frequency
    use vibrobeam_kinds, only: dp
+   use vibrobeam_lapack, only: dsbgvx, dsyev, dsygv
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_band, only: band_entry
    use vibrobeam_highest_frequency, only: highest_frequency
    use vibrobeam_test_support, only: test_counter
    implicit none
-   interface
-      subroutine dsbgvx(jobz, range, uplo, n, ka, kb, ab, ldab, bb, ldbb, q, ldq, vl, vu, &
-                        il, iu, abstol, m, w, z, ldz, work, iwork, ifail, info)
-         import :: dp
-         character, intent(in) :: jobz, range, uplo
-         integer, intent(in) :: n, ka, kb, ldab, ldbb, ldq, il, iu, ldz
-         real(dp), intent(inout) :: ab(ldab, *), bb(ldbb, *)
-         real(dp), intent(out) :: q(ldq, *), w(*), z(ldz, *), work(*)
-         real(dp), intent(in) :: vl, vu, abstol
-         integer, intent(out) :: m, iwork(*), ifail(*), info
-      end subroutine dsbgvx
-      subroutine dsygv(itype, jobz, uplo, n, a, lda, b, ldb, w, work, lwork, info)
-         import :: dp
-         integer, intent(in) :: itype, n, lda, ldb, lwork
-         character, intent(in) :: jobz, uplo
-         real(dp), intent(inout) :: a(lda, *), b(ldb, *)
-         real(dp), intent(out) :: w(*), work(*)
-         integer, intent(out) :: info
-      end subroutine dsygv
-      subroutine dsyev(jobz, uplo, n, a, lda, w, work, lwork, info)
-         import :: dp
-         character, intent(in) :: jobz, uplo
-         integer, intent(in) :: n, lda, lwork
-         real(dp), intent(inout) :: a(lda, *)
-         real(dp), intent(out) :: w(*), work(*)
-         integer, intent(out) :: info
-      end subroutine dsyev
-   end interface
    type(test_counter) :: t
    type(beam_model) :: model
    character(len=7), parameter :: bases(2) = ['hermite', 'bspline']

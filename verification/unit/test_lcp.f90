@@ -15,7 +15,10 @@
 program test_lcp
    use vibrobeam_roundoff_bounds, only: gamma_n
    use vibrobeam_kinds, only: dp, int64, error_unit, output_unit
+   use vibrobeam_lapack, only: dgeqrf, dgesv, dorgqr, dsyev
    use vibrobeam_lcp, only: solve_lcp, lcp_residual
+   use vibrobeam_status, only: stat_no_convergence, stat_linear_solver_failure, stat_residual_check_failed, &
+                               stat_invalid_argument
    implicit none
 
    !> Counts of passed and failed checks.
@@ -36,37 +39,6 @@ program test_lcp
       integer :: max_iterations = 0
    end type group_record
 
-   interface
-      subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
-         import :: dp
-         integer, intent(in) :: n, nrhs, lda, ldb
-         real(dp), intent(inout) :: a(lda, *), b(ldb, *)
-         integer, intent(out) :: ipiv(*), info
-      end subroutine dgesv
-      subroutine dgeqrf(m, n, a, lda, tau, work, lwork, info)
-         import :: dp
-         integer, intent(in) :: m, n, lda, lwork
-         real(dp), intent(inout) :: a(lda, *)
-         real(dp), intent(out) :: tau(*), work(*)
-         integer, intent(out) :: info
-      end subroutine dgeqrf
-      subroutine dorgqr(m, n, k, a, lda, tau, work, lwork, info)
-         import :: dp
-         integer, intent(in) :: m, n, k, lda, lwork
-         real(dp), intent(inout) :: a(lda, *)
-         real(dp), intent(in) :: tau(*)
-         real(dp), intent(out) :: work(*)
-         integer, intent(out) :: info
-      end subroutine dorgqr
-      subroutine dsyev(jobz, uplo, n, a, lda, w, work, lwork, info)
-         import :: dp
-         character, intent(in) :: jobz, uplo
-         integer, intent(in) :: n, lda, lwork
-         real(dp), intent(inout) :: a(lda, *)
-         real(dp), intent(out) :: w(*), work(*)
-         integer, intent(out) :: info
-      end subroutine dsyev
-   end interface
 
    !> Default tolerance of solve_lcp's residual check, and the relative z tolerance for
    !! well-conditioned problems.
@@ -427,7 +399,8 @@ contains
       ! pivot to I = {1} gives z = (1, 0), w = (0, 0.4).
       a2 = reshape([1.0_dp, 0.9_dp, 0.9_dp, 1.0_dp], [2, 2])
       call solve_lcp(a2, [-1.0_dp, -0.5_dp], z2, w2, iterations, stat, errmsg, max_iterations=0)
-      call check_int(stat == 1, 'max_iterations=0', 2, 'stat', stat, 1, '==', tally)
+      call check_int(stat == stat_no_convergence, 'max_iterations=0', 2, 'stat', stat, &
+                     stat_no_convergence, '==', tally)
       call check_int(len_trim(errmsg) > 0, 'max_iterations=0', 2, 'len_trim(errmsg)', &
                      len_trim(errmsg), 0, '>', tally)
       call solve_lcp(a2, [-1.0_dp, -0.5_dp], z2, w2, iterations, stat, errmsg, max_iterations=1)
@@ -444,37 +417,43 @@ contains
       ! A short errmsg is filled, truncated, without a runtime error.
       call solve_lcp(a2, [-1.0_dp, -0.5_dp], z2, w2, iterations, stat, short_message, &
                      max_iterations=0)
-      call check_int(stat == 1, 'short errmsg', 2, 'stat', stat, 1, '==', tally)
+      call check_int(stat == stat_no_convergence, 'short errmsg', 2, 'stat', stat, &
+                     stat_no_convergence, '==', tally)
 
-      ! Indefinite A: the Cholesky factor of A_II fails -> stat 2.
+      ! Indefinite A: the Cholesky factor of A_II fails -> stat_linear_solver_failure.
       a2 = reshape([1.0_dp, 2.0_dp, 2.0_dp, 1.0_dp], [2, 2])
       call solve_lcp(a2, [-1.0_dp, -1.0_dp], z2, w2, iterations, stat, errmsg)
-      call check_int(stat == 2, 'indefinite', 2, 'stat', stat, 2, '==', tally)
+      call check_int(stat == stat_linear_solver_failure, 'indefinite', 2, 'stat', stat, &
+                     stat_linear_solver_failure, '==', tally)
       call check_int(len_trim(errmsg) > 0, 'indefinite', 2, 'len_trim(errmsg)', len_trim(errmsg), &
                      0, '>', tally)
 
-      ! A tolerance below round-off makes the residual check fail -> stat 3.
+      ! A tolerance below round-off makes the residual check fail -> stat_residual_check_failed.
       a = random_spd(8, 0.5_dp, rng_state)
       q = random_vector(8, -1.0_dp, 1.0_dp, rng_state)
       allocate (z(8), w(8))
       call solve_lcp(a, q, z, w, iterations, stat, errmsg)
       residual = lcp_residual(a, q, z)
       call check_real(residual > 0.0_dp, 'tight tolerance', 8, &
-                      'lcp_residual (must be > 0 for this case to test stat 3)', residual, 0.0_dp, &
+                      'lcp_residual (must be > 0 for this case to test stat_residual_check_failed)', residual, 0.0_dp, &
                       0.0_dp, tally)
       call solve_lcp(a, q, z, w, iterations, stat, errmsg, tolerance=0.5_dp*residual)
-      call check_int(stat == 3, 'tight tolerance', 8, 'stat', stat, 3, '==', tally)
+      call check_int(stat == stat_residual_check_failed, 'tight tolerance', 8, 'stat', stat, &
+                     stat_residual_check_failed, '==', tally)
       call solve_lcp(a, q, z, w, iterations, stat, errmsg, tolerance=1.0e-6_dp)
       call check_int(stat == 0, 'loose tolerance', 8, 'stat', stat, 0, '==', tally)
 
-      ! Invalid arguments -> stat 4.
+      ! Invalid arguments -> stat_invalid_argument.
       call solve_lcp(a2, [-1.0_dp, -1.0_dp], z3, w2, iterations, stat, errmsg)
-      call check_int(stat == 4, 'size mismatch', 2, 'stat', stat, 4, '==', tally)
+      call check_int(stat == stat_invalid_argument, 'size mismatch', 2, 'stat', stat, &
+                     stat_invalid_argument, '==', tally)
       a2 = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
       call solve_lcp(a2, [-1.0_dp, -1.0_dp], z2, w2, iterations, stat, errmsg, max_iterations=-1)
-      call check_int(stat == 4, 'max_iterations=-1', 2, 'stat', stat, 4, '==', tally)
+      call check_int(stat == stat_invalid_argument, 'max_iterations=-1', 2, 'stat', stat, &
+                     stat_invalid_argument, '==', tally)
       call solve_lcp(a2, [-1.0_dp, -1.0_dp], z2, w2, iterations, stat, errmsg, tolerance=0.0_dp)
-      call check_int(stat == 4, 'tolerance=0', 2, 'stat', stat, 4, '==', tally)
+      call check_int(stat == stat_invalid_argument, 'tolerance=0', 2, 'stat', stat, &
+                     stat_invalid_argument, '==', tally)
    end subroutine check_status_paths
 
    !> Record a check on a real quantity; on failure write the case, the size, the quantity,

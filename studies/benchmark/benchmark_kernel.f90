@@ -1,0 +1,337 @@
+!> Benchmark of the band kernel and of the natural modes (KERNEL_REPORT.md beside this
+!! file; studies/benchmark/benchmark_kernel.sh runs every part under both BLAS libraries).
+!!
+!!   benchmark_kernel kernel                      wall-clock table, J = 40 ... 1e5
+!!   benchmark_kernel count WORKLOAD J CALLS      CALLS calls of one workload, for
+!!                                                callgrind and memcheck (lapack | kernel |
+!!                                                fused | step)
+!!   benchmark_kernel modes METHOD BASIS N COUNT  one compute_modes (lanczos | dense), timed
+!!   benchmark_kernel crossover                   dense against Lanczos for J and count
+!!
+!! Workloads, on the Hermite model of N = J/2 elements (k2 = 1, L = 1 m), W = M + (theta
+!! dt)^2 K with theta = 1/2, dt = 1e-4 s, and a fixed vector x:
+!! - lapack: y = K x by BLAS dsbmv, then y <- W^-1 y by LAPACK dpbtrs (W factored by
+!!   dpbtrf): the "LAPACK floor" of a step of the velocity scheme (theory §3);
+!! - kernel: the same through band_matvec and band_solve (the kd = 3 kernels);
+!! - fused: y = W^-1 (b - K x) by band_residual_solve, the product inside the solve's
+!!   forward loop (one more subtraction than the two above);
+!! - step: one step of the velocity stepper in free flight (mode-1 velocity, tip 0.1 m/s,
+!!   a stop 1 m below the tip that is never reached), set up as the main program does;
+!! - the solve and the product alone, each way.
+!! Timing: each workload runs in batches of at least `min_batch_seconds` (sized once), the
+!! batches of all workloads in turn, `repetitions` times; medians of the time per call, the
+!! spread (max - min)/median and the smallest CPU/wall ratio say how noisy a row was.
+!! Ratios are medians of the paired per-repetition ratios.
+program benchmark_kernel
+   use vibrobeam_kinds, only: dp, int64, output_unit, error_unit
+   use vibrobeam_band, only: symmetric_band, band_cholesky, band_combination, band_factor, band_solve, &
+                             band_matvec, band_residual_solve
+   use vibrobeam_lapack, only: dpbtrf, dpbtrs, dsbmv
+   use vibrobeam_model, only: beam_model, build_model
+   use vibrobeam_modes, only: compute_modes
+   use vibrobeam_scene, only: scene_type, obstacle_type, validate_scene
+   use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper
+   use vibrobeam_stepper, only: time_stepper
+   implicit none
+
+   integer, parameter :: sizes(*) = [40, 200, 400, 2000, 10000, 100000]   !! J
+   integer, parameter :: repetitions = 7
+   real(dp), parameter :: min_batch_seconds = 0.05_dp
+   real(dp), parameter :: time_step = 1e-4_dp, theta = 0.5_dp
+   integer, parameter :: workload_lapack = 1, workload_kernel = 2, workload_fused = 3, workload_step = 4, &
+                         workload_dpbtrs = 5, workload_solve = 6, workload_dsbmv = 7, workload_matvec = 8
+   character(len=*), parameter :: workload_names(8) = [character(len=14) :: 'dpbtrs+dsbmv', 'solve+matvec', &
+                                                       'fused', 'step', 'dpbtrs', 'solve (kd=3)', 'dsbmv', &
+                                                       'matvec (kd=3)']
+
+   !> Everything a workload works on.
+   type :: bench_case
+      type(beam_model) :: model
+      type(symmetric_band) :: iteration_matrix          !! W
+      type(band_cholesky) :: kernel_factor              !! band_factor(W)
+      real(dp), allocatable :: lapack_factor(:,:)       !! dpbtrf(W)
+      real(dp), allocatable :: x(:), y(:), b(:)
+      class(time_stepper), allocatable :: stepper
+   end type bench_case
+
+   character(len=32) :: command
+   call get_command_argument(1, command)
+   select case (command)
+   case ('kernel')
+      call kernel_table()
+   case ('count')
+      call count_calls()
+   case ('modes')
+      call time_modes()
+   case ('crossover')
+      call crossover_table()
+   case default
+      write (error_unit, '(a)') 'usage: benchmark_kernel kernel | count WORKLOAD J CALLS | '// &
+         'modes METHOD BASIS N COUNT | crossover'
+      error stop 2
+   end select
+
+contains
+
+   subroutine fail(what, stat, errmsg)
+      character(len=*), intent(in) :: what, errmsg
+      integer, intent(in) :: stat
+      write (error_unit, '(a,i0,a)') 'benchmark_kernel: '//what//' failed (stat ', stat, '): '//trim(errmsg)
+      error stop 1
+   end subroutine fail
+
+   integer function integer_argument(position) result(value)
+      integer, intent(in) :: position
+      character(len=64) :: text
+      integer :: ios
+      call get_command_argument(position, text)
+      read (text, *, iostat=ios) value
+      if (ios /= 0) call fail('reading argument '//trim(text), ios, 'not an integer')
+   end function integer_argument
+
+   !> The case of J unknowns (Hermite, N = J/2).
+   subroutine set_up(unknowns, case)
+      integer, intent(in) :: unknowns
+      type(bench_case), intent(out) :: case
+      type(scene_type) :: scene
+      type(prepared_scene) :: prepared
+      character(len=:), allocatable :: warnings
+      character(len=512) :: errmsg
+      integer :: stat, i
+      scene%elements = unknowns/2
+      scene%point_position = scene%length   ! the reader's default (no point force here)
+      scene%dt = time_step
+      scene%theta = theta
+      scene%obstacles = [obstacle_type(side='below', x_from=1.0_dp, x_to=1.0_dp, level_from=-1.0_dp, &
+                                       level_to=-1.0_dp)]
+      scene%velocity = 'mode'
+      scene%velocity_mode = 1
+      scene%velocity_amplitude = 0.1_dp
+      call validate_scene(scene, stat, errmsg)
+      if (stat /= 0) call fail('validate_scene', stat, errmsg)
+      warnings = ''
+      call prepare_scene(scene, prepared, warnings, stat, errmsg)
+      if (stat /= 0) call fail('prepare_scene', stat, errmsg)
+      call start_time_stepper(scene, prepared, case%stepper, stat, errmsg)
+      if (stat /= 0) call fail('start_time_stepper', stat, errmsg)
+      case%model = prepared%model
+      case%iteration_matrix = band_combination(1.0_dp, case%model%mass, (theta*time_step)**2, case%model%stiffness)
+      call band_factor(case%iteration_matrix, case%kernel_factor, stat, errmsg)
+      if (stat /= 0) call fail('band_factor', stat, errmsg)
+      case%lapack_factor = case%iteration_matrix%lower
+      call dpbtrf('L', unknowns, 3, case%lapack_factor, 4, stat)
+      if (stat /= 0) call fail('dpbtrf', stat, '')
+      case%x = [(sin(0.01_dp*i), i=1, unknowns)]
+      case%b = [(cos(0.02_dp*i), i=1, unknowns)]
+      allocate (case%y(unknowns))
+   end subroutine set_up
+
+   !> `calls` calls of one workload.
+   subroutine run(case, workload, calls)
+      type(bench_case), intent(inout) :: case
+      integer, intent(in) :: workload
+      integer(int64), intent(in) :: calls
+      integer(int64) :: c
+      integer :: n, info, stat
+      character(len=256) :: errmsg
+      n = case%model%unknowns
+      do c = 1, calls
+         select case (workload)
+         case (workload_lapack)
+            call dsbmv('L', n, 3, 1.0_dp, case%model%stiffness%lower, 4, case%x, 1, 0.0_dp, case%y, 1)
+            call dpbtrs('L', n, 3, 1, case%lapack_factor, 4, case%y, n, info)
+         case (workload_kernel)
+            call band_matvec(case%model%stiffness, case%x, case%y)
+            call band_solve(case%kernel_factor, case%y)
+         case (workload_fused)
+            call band_residual_solve(case%kernel_factor, case%model%stiffness, case%x, case%b, case%y)
+         case (workload_step)
+            call case%stepper%step(stat, errmsg)
+            if (stat /= 0) call fail('step', stat, errmsg)
+            if (case%stepper%active_count /= 0) call fail('free flight', 1, 'a contact point became active')
+         case (workload_dpbtrs)
+            case%y = case%x
+            call dpbtrs('L', n, 3, 1, case%lapack_factor, 4, case%y, n, info)
+         case (workload_solve)
+            case%y = case%x
+            call band_solve(case%kernel_factor, case%y)
+         case (workload_dsbmv)
+            call dsbmv('L', n, 3, 1.0_dp, case%model%stiffness%lower, 4, case%x, 1, 0.0_dp, case%y, 1)
+         case (workload_matvec)
+            call band_matvec(case%model%stiffness, case%x, case%y)
+         end select
+      end do
+   end subroutine run
+
+   !> Wall and CPU seconds of `calls` calls.
+   subroutine timed(case, workload, calls, wall, cpu)
+      type(bench_case), intent(inout) :: case
+      integer, intent(in) :: workload
+      integer(int64), intent(in) :: calls
+      real(dp), intent(out) :: wall, cpu
+      integer(int64) :: start, finish, rate
+      real(dp) :: cpu_start, cpu_finish
+      call cpu_time(cpu_start)
+      call system_clock(start, rate)
+      call run(case, workload, calls)
+      call system_clock(finish)
+      call cpu_time(cpu_finish)
+      wall = real(finish - start, dp)/rate
+      cpu = cpu_finish - cpu_start
+   end subroutine timed
+
+   pure function median(values) result(m)
+      real(dp), intent(in) :: values(:)
+      real(dp) :: m, sorted(size(values)), swap
+      integer :: i, j
+      sorted = values
+      do i = 2, size(sorted)
+         do j = i, 2, -1
+            if (sorted(j - 1) <= sorted(j)) exit
+            swap = sorted(j)
+            sorted(j) = sorted(j - 1)
+            sorted(j - 1) = swap
+         end do
+      end do
+      m = sorted((size(sorted) + 1)/2)
+      if (mod(size(sorted), 2) == 0) m = (sorted(size(sorted)/2) + sorted(size(sorted)/2 + 1))/2
+   end function median
+
+   !> The wall-clock table: per J, each workload's median time per call, its spread, the
+   !! ratios kernel/LAPACK and step/LAPACK.
+   subroutine kernel_table()
+      integer, parameter :: workloads(*) = [workload_lapack, workload_kernel, workload_fused, workload_step, &
+                                            workload_dpbtrs, workload_solve, workload_dsbmv, workload_matvec]
+      type(bench_case) :: case
+      real(dp) :: per_call(repetitions, size(workloads)), wall, cpu, cpu_fraction
+      integer(int64) :: calls(size(workloads))
+      integer :: s, w, k
+      write (output_unit, '(a)') '# time per call (microseconds): median of 7 interleaved batches of >= 0.05 s; '// &
+         'spread = (max - min)/median'
+      write (output_unit, '(a)') '# ratios to dpbtrs+dsbmv of solve+matvec, fused and step: medians of the paired '// &
+         'ratios; cpu/wall = smallest CPU/wall ratio of a batch'
+      write (output_unit, '(a8,8a24,3a14,a10)') 'J', (trim(workload_names(w))//' (spread)', w=1, size(workloads)), &
+         'ratio kernel', 'ratio fused', 'ratio step', 'cpu/wall'
+      do s = 1, size(sizes)
+         call set_up(sizes(s), case)
+         do w = 1, size(workloads)
+            calls(w) = 1
+            do
+               call timed(case, workloads(w), calls(w), wall, cpu)
+               if (wall >= min_batch_seconds) exit
+               calls(w) = 2*calls(w)
+            end do
+         end do
+         cpu_fraction = 1
+         do k = 1, repetitions
+            do w = 1, size(workloads)
+               call timed(case, workloads(w), calls(w), wall, cpu)
+               per_call(k, w) = wall/calls(w)
+               cpu_fraction = min(cpu_fraction, cpu/wall)
+            end do
+         end do
+         write (output_unit, '(i8,8(f14.3,a2,f5.2,a3),3f14.3,f10.2)') sizes(s), &
+            (1e6_dp*median(per_call(:, w)), ' (', (maxval(per_call(:, w)) - minval(per_call(:, w)))/ &
+             median(per_call(:, w)), ') ', w=1, size(workloads)), &
+            (median(per_call(:, w)/per_call(:, 1)), w=2, 4), cpu_fraction
+         flush (output_unit)
+      end do
+   end subroutine kernel_table
+
+   !> benchmark_kernel count WORKLOAD J CALLS
+   subroutine count_calls()
+      type(bench_case) :: case
+      character(len=16) :: name
+      integer :: workload
+      call get_command_argument(2, name)
+      select case (name)
+      case ('lapack')
+         workload = workload_lapack
+      case ('kernel')
+         workload = workload_kernel
+      case ('fused')
+         workload = workload_fused
+      case ('step')
+         workload = workload_step
+      case default
+         call fail('count: workload '''//trim(name)//'''', 2, 'expected lapack | kernel | fused | step')
+      end select
+      call set_up(integer_argument(3), case)
+      call run(case, workload, int(integer_argument(4), int64))
+   end subroutine count_calls
+
+   !> benchmark_kernel modes METHOD BASIS N COUNT: one compute_modes, wall seconds printed.
+   subroutine time_modes()
+      type(beam_model) :: model
+      real(dp), allocatable :: omega(:), shapes(:,:), vectors(:,:)
+      character(len=16) :: method, basis
+      integer(int64) :: start, finish, rate
+      integer :: stat
+      character(len=512) :: errmsg
+      call get_command_argument(2, method)
+      call get_command_argument(3, basis)
+      call build_model(trim(basis), integer_argument(4), 1.0_dp, 1.0_dp, 1.0_dp, model, stat, errmsg)
+      if (stat /= 0) call fail('build_model', stat, errmsg)
+      call system_clock(start, rate)
+      call compute_modes(model, integer_argument(5), omega, shapes, vectors, stat, errmsg, trim(method))
+      call system_clock(finish)
+      if (stat /= 0) call fail('compute_modes', stat, errmsg)
+      write (output_unit, '(a,f10.4,a,es22.15)') 'compute_modes seconds ', real(finish - start, dp)/rate, &
+         ' omega_1 ', omega(1)
+   end subroutine time_modes
+
+   !> Smallest of 3 wall times of compute_modes, dense and Lanczos, for J = 8 ... 1024
+   !! (Hermite) and 1, 6, J/8, J/4, J/2 modes.
+   subroutine crossover_table()
+      integer, parameter :: elements(*) = [4, 8, 16, 32, 64, 128, 256, 512]
+      type(beam_model) :: model
+      integer :: e, c, counts(5), stat
+      real(dp) :: dense(5), lanczos(5)
+      character(len=256) :: errmsg
+      write (output_unit, '(a)') '# compute_modes wall seconds (smallest of 3), Hermite, J = 2N; '// &
+         '"-" where Lanczos does not apply (count = J)'
+      write (output_unit, '(a6,a8,5a10,5a10)') 'J', 'path', 'count', '', '', '', '', 'seconds', '', '', '', ''
+      do e = 1, size(elements)
+         call build_model('hermite', elements(e), 1.0_dp, 1.0_dp, 1.0_dp, model, stat, errmsg)
+         counts = [1, 6, max(1, model%unknowns/8), max(1, model%unknowns/4), max(1, model%unknowns/2)]
+         do c = 1, size(counts)
+            dense(c) = fastest(model, counts(c), 'dense')
+            lanczos(c) = -1
+            if (counts(c) < model%unknowns) lanczos(c) = fastest(model, counts(c), 'lanczos')
+         end do
+         write (output_unit, '(i6,a8,5i10,5es10.2)') model%unknowns, 'dense', counts, dense
+         write (output_unit, '(i6,a8,5i10,5es10.2)') model%unknowns, 'lanczos', counts, lanczos
+      end do
+   end subroutine crossover_table
+
+   real(dp) function fastest(model, count, method)
+      type(beam_model), intent(in) :: model
+      integer, intent(in) :: count
+      character(len=*), intent(in) :: method
+      real(dp), allocatable :: omega(:), shapes(:,:), vectors(:,:)
+      integer(int64) :: start, finish, rate, calls, c
+      integer :: attempt, stat
+      character(len=256) :: errmsg
+      ! batches of at least 0.02 s for the small cases
+      calls = 1
+      do
+         call system_clock(start, rate)
+         do c = 1, calls
+            call compute_modes(model, count, omega, shapes, vectors, stat, errmsg, method)
+            if (stat /= 0) call fail('compute_modes '//method, stat, errmsg)
+         end do
+         call system_clock(finish)
+         if (real(finish - start, dp)/rate >= 0.02_dp) exit
+         calls = 2*calls
+      end do
+      fastest = real(finish - start, dp)/rate/calls
+      do attempt = 1, 2
+         call system_clock(start, rate)
+         do c = 1, calls
+            call compute_modes(model, count, omega, shapes, vectors, stat, errmsg, method)
+         end do
+         call system_clock(finish)
+         fastest = min(fastest, real(finish - start, dp)/rate/calls)
+      end do
+   end function fastest
+end program benchmark_kernel
