@@ -230,8 +230,13 @@ contains
                                                                               scene%length, k2_of(scene)), &
                        'a free oscillation of the initial displacement (displacement_amplitude x omega_'// &
                        integer_text(scene%displacement_mode)//')')
-      call consider(abs(scene%base_amplitude)*scene%base_frequency, &
-                    'the base excitation (&load base_amplitude x base_frequency)')
+      if (abs(scene%base_acceleration) > 0) then
+         call consider(abs(scene%base_acceleration)/scene%base_frequency, &
+                       'the base excitation (&load base_acceleration / base_frequency)')
+      else
+         call consider(abs(scene%base_amplitude)*scene%base_frequency, &
+                       'the base excitation (&load base_amplitude x base_frequency)')
+      end if
       ei = ei_of(scene)   ! N m^2; k2 when the beam is given by k2 (loads are then per unit mass)
       length = scene%length
       a = scene%point_position

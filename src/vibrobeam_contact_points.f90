@@ -38,6 +38,9 @@ module vibrobeam_contact_points
       integer, allocatable :: dofs(:,:)      !! (4, count) unknowns of row H_c (0 = none)
       real(dp), allocatable :: weights(:,:)  !! (4, count) coefficients of row H_c
       type(spring_set) :: springs            !! the compliant stops (none: rigid obstacles only)
+      !> (count) the obstacle (index in &obstacles) that gives `lower`, `upper`; 0: none.
+      !! An impulse upwards comes from the lower one, downwards from the upper one.
+      integer, allocatable :: lower_obstacle(:), upper_obstacle(:)
    end type contact_set
 
 contains
@@ -147,7 +150,8 @@ contains
       contacts%count = count(lower(1:) > -no_bound .or. upper(1:) < no_bound .or. covered(1:))
       allocate (contacts%node(contacts%count), contacts%x(contacts%count), contacts%lower(contacts%count), &
                 contacts%upper(contacts%count), contacts%dofs(4, contacts%count), &
-                contacts%weights(4, contacts%count))
+                contacts%weights(4, contacts%count), contacts%lower_obstacle(contacts%count), &
+                contacts%upper_obstacle(contacts%count))
       c = 0
       do i = 1, model%elements
          if (lower(i) <= -no_bound .and. upper(i) >= no_bound .and. .not. covered(i)) cycle
@@ -156,6 +160,8 @@ contains
          contacts%x(c) = model%x(i + 1)
          contacts%lower(c) = lower(i)
          contacts%upper(c) = upper(i)
+         contacts%lower_obstacle(c) = lower_source(i)
+         contacts%upper_obstacle(c) = upper_source(i)
          call node_row(model, i, contacts%dofs(:, c), contacts%weights(:, c))
       end do
       associate (springs => contacts%springs)

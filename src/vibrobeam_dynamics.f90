@@ -24,6 +24,7 @@ module vibrobeam_dynamics
    use vibrobeam_state_record, only: state_record
    use vibrobeam_progress, only: progress_meter
    use vibrobeam_signals, only: interrupt_requested
+   use vibrobeam_statistics, only: statistics_result
    implicit none
    private
    public :: run_dynamics, run_outcome, flush_seconds
@@ -48,12 +49,21 @@ contains
    !> Run the scene and publish its result. stat /= 0 (with errmsg) for failures that
    !! prevented a result (I/O: nothing is published, earlier results are untouched); a
    !! numerical failure or an interruption is reported in `outcome`.
-   subroutine run_dynamics(scene, prepared, outcome, stat, errmsg)
+   !!
+   !! A sweep runs its points' result files through here (&sweep keep_runs, possibly from
+   !! several threads): `quiet` turns the progress reports off, `statistics` and
+   !! `final_state` hand back the window's statistics and the last state (a checkpoint
+   !! record), and every call that may touch HDF5 (not thread-safe) is in the critical
+   !! section `vibrobeam_hdf5`.
+   subroutine run_dynamics(scene, prepared, outcome, stat, errmsg, quiet, statistics, final_state)
       type(scene_type), intent(in) :: scene
       type(prepared_scene), intent(in) :: prepared
       type(run_outcome), intent(out) :: outcome
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      logical, intent(in), optional :: quiet
+      type(statistics_result), intent(out), optional :: statistics
+      type(state_record), intent(out), optional :: final_state
       class(time_stepper), allocatable :: stepper
       type(dynamics_recorder) :: recorder
       type(result_files) :: files
@@ -65,8 +75,12 @@ contains
       real(dp) :: flush_interval
       integer :: step_stat
       character(len=512) :: step_message
+      character(len=:), allocatable :: warning
 
       call meter%init(scene%progress)
+      if (present(quiet)) then
+         if (quiet) meter%enabled = .false.
+      end if
       call system_clock(start, rate)
       last = step_count(scene)
       ! (n dt rounds to the nearest double of t_end: allow a few of its ulps)
@@ -78,7 +92,7 @@ contains
       if (stat /= 0) return
       summary%start_step = stepper%steps
       if (prepared%reduced) then
-         call recorder%init(scene, stepper, prepared%model, stepper%v, last, prepared%reduction)
+         call recorder%init(scene, stepper, prepared%model, stepper%v, last, reduction=prepared%reduction)
       else
          call recorder%init(scene, stepper, prepared%model, prepared%v0, last)
       end if
@@ -89,33 +103,13 @@ contains
             return
          end if
       end if
+      call recorder%start_statistics(stepper, warning)
+      if (len(warning) > 0) write (error_unit, '(a)') 'vibrobeam: warning: '//warning
 
       ! every dataset exists before the file enters SWMR mode
-      call files%open(scene, prepared%model, stat, errmsg)
-      outcome%run_id = files%run_id
-      if (stat /= 0) then
-         call files%discard()
-         return
-      end if
+      call open_result()
+      if (stat /= 0) return
       run: block
-         call recorder%create_datasets(files%h5, stepper, prepared%model, stat, errmsg)
-         if (stat /= 0) exit run
-         call save_state()
-         call slots%create(files%h5, record, merge(2, 1, scene%checkpoint_seconds > 0), stat, errmsg)
-         if (stat /= 0) exit run
-         if (len_trim(scene%from_file) > 0) then
-            call files%h5%attr_string('/run', 'continued_from', trim(scene%from_file), stat, errmsg)
-            if (stat /= 0) exit run
-         end if
-         call files%h5%start_swmr(stat, errmsg)
-         if (stat /= 0) exit run
-         if (.not. prepared%resuming) then
-            call recorder%sample(stepper, prepared%model, stat, errmsg)
-            if (stat == 0) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
-            if (stat /= 0) exit run
-         end if
-         call flush_all()
-         if (stat /= 0) exit run
          call system_clock(last_flush)
          last_checkpoint = last_flush
          flush_interval = flush_seconds
@@ -128,9 +122,7 @@ contains
                write (outcome%failure, '(a,i0,a,es14.7,a)') 'step ', n, ' (t = ', n*scene%dt, ' s): '//trim(step_message)
                exit
             end if
-            call recorder%after_step(stepper, stat, errmsg)
-            if (stat == 0 .and. recorder%output_due(n)) call recorder%sample(stepper, prepared%model, stat, errmsg)
-            if (stat == 0 .and. recorder%field_due(n)) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
+            call record_step(n)
             if (stat /= 0) exit run
             if (interrupt_requested()) then
                outcome%status = 'interrupted'
@@ -138,54 +130,108 @@ contains
             end if
             call system_clock(now)
             if (now - last_flush >= flush_interval*rate) then
-               call flush_all()
+               call flush_and_checkpoint(now)
                if (stat /= 0) exit run
                last_flush = now
-               if (scene%checkpoint_seconds > 0 .and. now - last_checkpoint >= scene%checkpoint_seconds*rate) then
-                  call save_state()
-                  call slots%write(files%h5, record, stepper%steps, stepper%t, stat, errmsg)
-                  if (stat /= 0) exit run
-                  last_checkpoint = now
-               end if
             end if
             if (meter%due()) call meter%report(progress_text(n))
          end do
 
-         ! the result ends with a sample of the last (good) state
-         call recorder%sample(stepper, prepared%model, stat, errmsg)
-         if (stat == 0) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
-         if (stat /= 0) exit run
-         call save_state()
-         call recorder%finish(files%h5, stepper, stat, errmsg)
-         if (stat == 0) call slots%write(files%h5, record, stepper%steps, stepper%t, stat, errmsg)
-         if (stat /= 0) exit run
-         call slots%close()
-         outcome%steps = stepper%steps
-         outcome%impacts = recorder%impacts
-         outcome%max_penetration = recorder%max_penetration
-         summary%status = outcome%status
-         summary%steps = stepper%steps
-         summary%wall_seconds = meter%elapsed()
-         summary%iterations_total = recorder%iterations_total
-         summary%iterations_max = recorder%iterations_max
-         summary%linear_solves_total = recorder%linear_solves_total
-         summary%linear_solves_max = recorder%linear_solves_max
-         summary%fallback_steps = recorder%fallback_steps
-         call files%set_flushed(stepper%steps, recorder%rows(), stat, errmsg)
-         if (stat == 0) call files%set_run(summary, stat, errmsg)
-         if (stat /= 0) exit run
-         call files%publish(meter, outcome%status /= 'interrupted', outcome%text_skipped, stat, errmsg)
+         call finish_result()
          if (stat /= 0) exit run
          outcome%wall_seconds = meter%elapsed()
          call meter%end_line()
+         if (present(statistics)) statistics = recorder%window_statistics(stepper)
+         if (present(final_state)) final_state = record
          return
       end block run
       ! an I/O failure: nothing is published
       call meter%end_line()
+      !$omp critical (vibrobeam_hdf5)
       call files%discard()
+      !$omp end critical (vibrobeam_hdf5)
       if (stat == 0) stat = 1
 
    contains
+
+      !> Create the result file, every dataset, the checkpoint slots, enter SWMR mode, take
+      !! the first sample and flush; on failure nothing is left (stat /= 0).
+      subroutine open_result()
+         !$omp critical (vibrobeam_hdf5)
+         call files%open(scene, prepared%model, stat, errmsg)
+         outcome%run_id = files%run_id
+         if (stat == 0) call recorder%create_datasets(files%h5, stepper, prepared%model, stat, errmsg)
+         if (stat == 0) then
+            call save_state()
+            call slots%create(files%h5, record, merge(2, 1, scene%checkpoint_seconds > 0), stat, errmsg)
+         end if
+         if (stat == 0 .and. len_trim(scene%from_file) > 0) &
+            call files%h5%attr_string('/run', 'continued_from', trim(scene%from_file), stat, errmsg)
+         if (stat == 0) call files%h5%start_swmr(stat, errmsg)
+         if (stat == 0 .and. .not. prepared%resuming) then
+            call recorder%sample(stepper, stat, errmsg)
+            if (stat == 0) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
+         end if
+         if (stat == 0) call flush_all()
+         if (stat /= 0) call files%discard()
+         !$omp end critical (vibrobeam_hdf5)
+         if (stat /= 0) call meter%end_line()
+      end subroutine open_result
+
+      !> The recorder's work after step n (impacts, episodes, statistics, the samples due).
+      subroutine record_step(step)
+         integer(int64), intent(in) :: step
+         !$omp critical (vibrobeam_hdf5)
+         call recorder%after_step(stepper, stat, errmsg)
+         if (stat == 0 .and. recorder%output_due(step)) call recorder%sample(stepper, stat, errmsg)
+         if (stat == 0 .and. recorder%field_due(step)) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
+         !$omp end critical (vibrobeam_hdf5)
+      end subroutine record_step
+
+      !> A flush, and a checkpoint when `checkpoint_seconds` have passed since the last.
+      subroutine flush_and_checkpoint(now)
+         integer(int64), intent(in) :: now
+         !$omp critical (vibrobeam_hdf5)
+         call flush_all()
+         if (stat == 0 .and. scene%checkpoint_seconds > 0 .and. &
+             now - last_checkpoint >= scene%checkpoint_seconds*rate) then
+            call save_state()
+            call slots%write(files%h5, record, stepper%steps, stepper%t, stat, errmsg)
+            if (stat == 0) last_checkpoint = now
+         end if
+         !$omp end critical (vibrobeam_hdf5)
+      end subroutine flush_and_checkpoint
+
+      !> The last sample, the final statistics and checkpoint, /run, and publication.
+      subroutine finish_result()
+         !$omp critical (vibrobeam_hdf5)
+         ! the result ends with a sample of the last (good) state
+         call recorder%sample(stepper, stat, errmsg)
+         if (stat == 0) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
+         if (stat == 0) then
+            call save_state()
+            call recorder%finish(files%h5, stepper, stat, errmsg)
+         end if
+         if (stat == 0) call slots%write(files%h5, record, stepper%steps, stepper%t, stat, errmsg)
+         if (stat == 0) then
+            call slots%close()
+            outcome%steps = stepper%steps
+            outcome%impacts = recorder%impacts
+            outcome%max_penetration = recorder%max_penetration
+            summary%status = outcome%status
+            summary%steps = stepper%steps
+            summary%wall_seconds = meter%elapsed()
+            summary%iterations_total = recorder%iterations_total
+            summary%iterations_max = recorder%iterations_max
+            summary%linear_solves_total = recorder%linear_solves_total
+            summary%linear_solves_max = recorder%linear_solves_max
+            summary%fallback_steps = recorder%fallback_steps
+            call files%set_flushed(stepper%steps, recorder%rows(), stat, errmsg)
+         end if
+         if (stat == 0) call files%set_run(summary, stat, errmsg)
+         if (stat == 0) call files%publish(meter, outcome%status /= 'interrupted', outcome%text_skipped, stat, errmsg)
+         !$omp end critical (vibrobeam_hdf5)
+      end subroutine finish_result
 
       !> The state of stepper and recorder, as a checkpoint holds it.
       subroutine save_state()

@@ -43,6 +43,12 @@ module vibrobeam_episodes
       real(dp), allocatable :: start(:), last_impulse(:), last_impact(:), impulse(:), approach(:)
       integer(int64), allocatable :: impacts(:)
       integer(int64) :: written = 0                !! episodes closed (rows of /episodes)
+      logical :: write_rows = .true.               !! append rows to /episodes (false: count only)
+      ! what the last step did: episodes closed (point, total impulse) and opened
+      integer :: closed_count = 0
+      integer, allocatable :: closed_point(:)
+      real(dp), allocatable :: closed_impulse(:)
+      logical, allocatable :: opened(:)
       type(h5_series) :: series(episode_columns)
    contains
       procedure :: init
@@ -62,14 +68,21 @@ module vibrobeam_episodes
 
 contains
 
-   !> Start with no episode open at the points `x` (m); `gap` (s) as in the rule.
-   subroutine init(self, x, gap)
+   !> Start with no episode open at the points `x` (m); `gap` (s) as in the rule. With
+   !! `write_rows` false nothing goes to a file (a sweep's statistics need only the
+   !! grouping).
+   subroutine init(self, x, gap, write_rows)
       class(episode_tracker), intent(inout) :: self
       real(dp), intent(in) :: x(:), gap
+      logical, intent(in), optional :: write_rows
       integer :: n
       n = size(x)
       self%gap = gap
       self%x = x
+      if (present(write_rows)) self%write_rows = write_rows
+      allocate (self%closed_point(n), self%closed_impulse(n), self%opened(n))
+      self%closed_count = 0
+      self%opened = .false.
       allocate (self%open(n), self%touched(n), source=.false.)
       allocate (self%start(n), self%last_impulse(n), self%last_impact(n), self%impulse(n), self%approach(n), &
                 source=0.0_dp)
@@ -106,6 +119,8 @@ contains
       t = stepper%impulse_time
       associate (touched => self%touched)
       touched = .false.
+      self%closed_count = 0
+      self%opened = .false.
       do k = 1, stepper%active_count
          c = stepper%active(k)
          if (abs(stepper%impulse(k)) <= 0) cycle
@@ -117,6 +132,7 @@ contains
             end if
             if (.not. self%open(c)) then
                self%open(c) = .true.
+               self%opened(c) = .true.
                self%start(c) = t
                self%impulse(c) = 0
                self%approach(c) = 0
@@ -166,6 +182,9 @@ contains
          logical, intent(in) :: still_open
          call append_row(self, point, still_open, stat, errmsg)
          self%open(point) = .false.
+         self%closed_count = self%closed_count + 1
+         self%closed_point(self%closed_count) = point
+         self%closed_impulse(self%closed_count) = self%impulse(point)
       end subroutine close_episode
    end subroutine observe_step
 
@@ -178,13 +197,16 @@ contains
       character(len=*), intent(out) :: errmsg
       real(dp) :: row(episode_columns)
       integer :: k
+      stat = 0
+      errmsg = ''
+      if (.not. still_open) self%written = self%written + 1
+      if (.not. self%write_rows) return
       row = [self%x(point), self%start(point), self%last_impulse(point), self%impulse(point), &
              self%approach(point), real(self%impacts(point), dp), merge(1.0_dp, 0.0_dp, still_open)]
       do k = 1, episode_columns
          call self%series(k)%append(row(k:k), stat, errmsg)
          if (stat /= 0) return
       end do
-      if (.not. still_open) self%written = self%written + 1
    end subroutine append_row
 
    subroutine write_buffers(self, stat, errmsg)
@@ -192,6 +214,9 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: k
+      stat = 0
+      errmsg = ''
+      if (.not. self%write_rows) return
       do k = 1, episode_columns
          call self%series(k)%write(stat, errmsg)
          if (stat /= 0) return

@@ -16,6 +16,8 @@ module vibrobeam_input
    use vibrobeam_namelist_tokens, only: lowercase
    use vibrobeam_namelist_values, only: namelist_variable, range_text, variable_index
    use vibrobeam_namelist_scan, only: scanned_file, scan_namelist_file
+   use vibrobeam_scene, only: max_sweep_values, parameter_length
+   use vibrobeam_sweep_settings, only: sweep_settings
    implicit none
    private
    public :: read_scene, namelist_groups_text
@@ -29,12 +31,15 @@ contains
    !! success, 1 with a message naming the line, group and variable otherwise. Validation
    !! of the values against each other is `validate_scene`'s job. `warnings` (optional)
    !! receives one line per given value the analysis ignores.
-   subroutine read_scene(filename, scene, stat, errmsg, warnings)
+   subroutine read_scene(filename, scene, stat, errmsg, warnings, sweep)
       character(len=*), intent(in) :: filename
       type(scene_type), intent(out) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       character(len=:), allocatable, intent(inout), optional :: warnings
+      !> the &sweep group as written (`resolve_sweep` checks it against the scene);
+      !! sweep%present is false without one
+      type(sweep_settings), intent(out), optional :: sweep
       type(scanned_file) :: scanned
       allocate (scene%obstacles(0), scene%points(0))
       call scan_namelist_file(filename, scene_variables(), scanned, stat, errmsg)
@@ -50,6 +55,20 @@ contains
       if (stat == 0) call read_solver(scanned, scene, stat, errmsg)
       if (stat == 0) call read_output(scanned, scene, stat, errmsg)
       if (stat /= 0) return
+      if (present(sweep)) then
+         call read_sweep(scanned, sweep, stat, errmsg)
+         if (stat /= 0) return
+         if (sweep%present .and. present(warnings)) then
+            if (scanned%is_given('time', 't_end')) warnings = warnings//'&time t_end is ignored by a sweep: '// &
+               'each point runs for its settle and measure windows'//new_line('a')
+            if (scanned%is_given('output', 'measure_from')) warnings = warnings//'&output measure_from is '// &
+               'ignored by a sweep: each point measures after its settle window'//new_line('a')
+         end if
+      else if (scanned%group_given('sweep')) then
+         stat = 1
+         errmsg = '&sweep: this program reads a single run''s scene (a sweep is run by vibrobeam itself)'
+         return
+      end if
       ! the default number of modes applies only to kind = 'modes', and never beyond J
       if (scene%kind == 'modes' .and. .not. scanned%is_given('analysis', 'modes') .and. scene%elements >= 1) &
          scene%modes = min(default_modes, unknowns_of(scene))
@@ -372,9 +391,9 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp) :: distributed, distributed_frequency, distributed_phase
-      real(dp) :: point_force, point_position, point_frequency, base_amplitude, base_frequency
+      real(dp) :: point_force, point_position, point_frequency, base_amplitude, base_frequency, base_acceleration
       namelist /load/ distributed, distributed_frequency, distributed_phase, point_force, &
-         point_position, point_frequency, base_amplitude, base_frequency
+         point_position, point_frequency, base_amplitude, base_frequency, base_acceleration
       character(len=:), allocatable :: record
       integer :: ios, k
       character(len=256) :: iomsg
@@ -382,6 +401,7 @@ contains
       distributed_phase = scene%distributed_phase; point_force = scene%point_force
       point_position = scene%length; point_frequency = scene%point_frequency   ! default: the tip
       base_amplitude = scene%base_amplitude; base_frequency = scene%base_frequency
+      base_acceleration = scene%base_acceleration
       stat = 0
       errmsg = ''
       do k = 1, size(scanned%items)
@@ -394,6 +414,7 @@ contains
       scene%distributed_phase = distributed_phase; scene%point_force = point_force
       scene%point_position = point_position; scene%point_frequency = point_frequency
       scene%base_amplitude = base_amplitude; scene%base_frequency = base_frequency
+      scene%base_acceleration = base_acceleration
    end subroutine read_load
 
    subroutine read_solver(scanned, scene, stat, errmsg)
@@ -433,14 +454,16 @@ contains
       integer :: every, field_every
       logical :: text, progress
       real(dp) :: points(max_points), measure_from, checkpoint_seconds, episode_gap
+      character(len=keyword_length) :: poincare_load
       namelist /output/ file, every, text, progress, field_every, points, measure_from, checkpoint_seconds, &
-         episode_gap
+         episode_gap, poincare_load
       character(len=:), allocatable :: record
       integer :: ios, k, count_points
       character(len=256) :: iomsg
       file = scene%file; every = scene%every; text = scene%text; progress = scene%progress
       field_every = scene%field_every; measure_from = scene%measure_from
       checkpoint_seconds = scene%checkpoint_seconds; episode_gap = scene%episode_gap
+      poincare_load = scene%poincare_load
       points = 0
       stat = 0
       errmsg = ''
@@ -453,6 +476,7 @@ contains
       scene%file = file; scene%every = every; scene%text = text; scene%progress = progress
       scene%field_every = field_every; scene%measure_from = measure_from
       scene%checkpoint_seconds = checkpoint_seconds; scene%episode_gap = episode_gap
+      scene%poincare_load = lowercase(poincare_load)
       count_points = 0
       do while (count_points < max_points)
          if (.not. scanned%is_given('output', 'points', count_points + 1)) exit
@@ -468,4 +492,91 @@ contains
       end do
       scene%points = points(1:count_points)
    end subroutine read_output
+   !> &sweep as written, and which inputs whose default follows another were given
+   !! (docs/sweeps.md, "The parameter").
+   subroutine read_sweep(scanned, settings, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
+      type(sweep_settings), intent(out) :: settings
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=parameter_length) :: parameter, parameter2
+      real(dp) :: values(max_sweep_values), values2(max_sweep_values), from, to, from2, to2
+      real(dp) :: settle, measure, settle_periods, measure_periods, steady_tolerance
+      integer :: count, count2
+      character(len=keyword_length) :: spacing, spacing2, mode
+      logical :: keep_runs
+      namelist /sweep/ parameter, values, from, to, count, spacing, mode, parameter2, values2, from2, to2, count2, &
+         spacing2, settle, measure, settle_periods, measure_periods, steady_tolerance, keep_runs
+      character(len=:), allocatable :: record
+      integer :: ios, k, i
+      character(len=256) :: iomsg
+      stat = 0
+      errmsg = ''
+      settings%present = scanned%group_given('sweep')
+      if (.not. settings%present) return
+      parameter = ''; parameter2 = ''
+      values = 0; values2 = 0; from = 0; to = 0; from2 = 0; to2 = 0; count = 0; count2 = 0
+      spacing = settings%axis(1)%spacing; spacing2 = settings%axis(2)%spacing; mode = settings%mode
+      settle = 0; measure = 0; settle_periods = 0; measure_periods = 0; steady_tolerance = 0
+      keep_runs = .false.
+      do k = 1, size(scanned%items)
+         if (.not. scanned%in_group(k, 'sweep')) cycle
+         record = scanned%record(k)
+         read (record, nml=sweep, iostat=ios, iomsg=iomsg)
+         if (read_failed(ios, iomsg, scanned%label(k), stat, errmsg)) return
+      end do
+      settings%axis(1)%parameter = parameter
+      settings%axis(2)%parameter = parameter2
+      call axis_values(1, values, from, to, count, spacing, '')
+      if (stat == 0) call axis_values(2, values2, from2, to2, count2, spacing2, '2')
+      if (stat /= 0) return
+      settings%mode = lowercase(mode)
+      settings%settle = settle
+      settings%measure = measure
+      settings%settle_periods = settle_periods
+      settings%measure_periods = measure_periods
+      settings%steady_tolerance = steady_tolerance
+      settings%keep_runs = keep_runs
+      settings%point_position_given = scanned%is_given('load', 'point_position')
+      do i = 1, max_obstacles
+         settings%x_from_given(i) = scanned%is_given('obstacles', 'x_from', i)
+         settings%x_to_given(i) = scanned%is_given('obstacles', 'x_to', i)
+         settings%level_to_given(i) = scanned%is_given('obstacles', 'level_to', i)
+      end do
+   contains
+      !> The leading elements given of values (without gaps), or the range.
+      subroutine axis_values(a, list, first, last, number, kind, suffix)
+         integer, intent(in) :: a, number
+         real(dp), intent(in) :: list(:), first, last
+         character(len=*), intent(in) :: kind, suffix
+         integer :: given, j
+         given = 0
+         do while (given < max_sweep_values)
+            if (.not. scanned%is_given('sweep', 'values'//suffix, given + 1)) exit
+            given = given + 1
+         end do
+         do j = given + 1, max_sweep_values
+            if (scanned%is_given('sweep', 'values'//suffix, j)) then
+               stat = 1
+               errmsg = '&sweep values'//suffix//'('//integer_text(j)//') is given but values'//suffix//'('// &
+                        integer_text(given + 1)//') is not: list the values from values'//suffix//'(1) on, without gaps'
+               return
+            end if
+         end do
+         if (given > 0) settings%axis(a)%given_values = list(1:given)
+         settings%axis(a)%range_given = scanned%is_given('sweep', 'from'//suffix) .or. &
+                                        scanned%is_given('sweep', 'to'//suffix) .or. &
+                                        scanned%is_given('sweep', 'count'//suffix)
+         if (settings%axis(a)%range_given .and. .not. (scanned%is_given('sweep', 'from'//suffix) .and. &
+                                                       scanned%is_given('sweep', 'to'//suffix))) then
+            stat = 1
+            errmsg = '&sweep: a range needs from'//suffix//' and to'//suffix//' (and count'//suffix//')'
+            return
+         end if
+         settings%axis(a)%from = first
+         settings%axis(a)%to = last
+         settings%axis(a)%count = number
+         settings%axis(a)%spacing = lowercase(kind)
+      end subroutine axis_values
+   end subroutine read_sweep
 end module vibrobeam_input

@@ -1,6 +1,7 @@
 !> External loads of a scene as a function of time (docs/input.md `&load`, theory §1).
 !!
-!! F(t) = q(t) F_q + P(t) F_p + rho S A Omega_b^2 sin(Omega_b t) F_q, where F_q is the
+!! F(t) = q(t) F_q + P(t) F_p + rho S A Omega_b^2 sin(Omega_b t) F_q (A Omega_b^2 given as
+!! &load base_acceleration, or from base_amplitude A), where F_q is the
 !! consistent load vector of a unit uniform load, F_p that of a unit point force, q(t) =
 !! distributed cos(Omega t + phi) and P(t) = point_force cos(Omega_p t). The last term is
 !! base excitation: in the frame of the support s(t) = A sin(Omega_b t) the beam feels the
@@ -39,7 +40,11 @@ contains
       loads%distributed_phase = scene%distributed_phase
       loads%point_force = scene%point_force
       loads%point_frequency = scene%point_frequency
-      loads%base_load = rho_s*scene%base_amplitude*scene%base_frequency**2
+      if (abs(scene%base_acceleration) > 0) then
+         loads%base_load = rho_s*scene%base_acceleration
+      else
+         loads%base_load = rho_s*scene%base_amplitude*scene%base_frequency**2
+      end if
       loads%base_frequency = scene%base_frequency
       loads%present = abs(loads%distributed) > 0 .or. abs(loads%point_force) > 0 .or. abs(loads%base_load) > 0
       loads%uniform = load_vector(model, unit_profile)

@@ -16,12 +16,18 @@
 !! value per contact or observation point.
 !!
 !! Everything a continued run needs to go on as if uninterrupted goes into a checkpoint
-!! (`save_state`/`restore_state`). Accumulators that observe every step (episodes now,
-!! statistics later) extend `step_observer` and are called from here, so the time loop
-!! does not change when one is added.
+!! (`save_state`/`restore_state`). Accumulators that observe every step (episodes, the
+!! statistics over the window of &output measure_from, `vibrobeam_statistics`) extend
+!! `step_observer` and are called from here, so the time loop does not change when one
+!! is added.
+!!
+!! Without a file (`init` with write_rows = .false., a sweep's points) the recorder only
+!! decides impacts and episodes and feeds the statistics; `sample` and the dataset
+!! procedures are then not called.
 module vibrobeam_recorder
    use vibrobeam_kinds, only: dp, int64
-   use vibrobeam_scene, only: scene_type, is_unset
+   use vibrobeam_text, only: real_text
+   use vibrobeam_scene, only: scene_type, is_unset, forcing_of
    use vibrobeam_model, only: beam_model, nodal_displacement, point_row, node_row
    use vibrobeam_reduction, only: reduced_basis
    use vibrobeam_contact_points, only: contact_value
@@ -33,6 +39,8 @@ module vibrobeam_recorder
    use vibrobeam_step_observer, only: step_events
    use vibrobeam_episodes, only: episode_tracker
    use vibrobeam_welch, only: welch_estimator
+   use vibrobeam_statistics, only: run_statistics, statistics_result, window_first_step
+   use vibrobeam_statistics_output, only: statistics_datasets
    implicit none
    private
    public :: dynamics_recorder, default_episode_gap, history_paths
@@ -74,13 +82,20 @@ module vibrobeam_recorder
       real(dp), allocatable :: point_x(:)
       integer, allocatable :: point_dofs(:, :)       !! (4, points)
       real(dp), allocatable :: point_weights(:, :)   !! (4, points)
+      !> rows of the tip (1) and of the observation points (2..): (4, 1 + points)
+      integer, allocatable :: observed_dofs(:, :)
+      real(dp), allocatable :: observed_weights(:, :)
       real(dp) :: length = 0
+      real(dp) :: measure_from = 0                   !! &output measure_from (s)
+      character(len=16) :: forcing = 'none'          !! the load whose phase times the Poincare samples
+      logical :: write_rows = .true.                 !! a result file receives the histories
       ! a reduced model (&mesh reduction): the stepper's unknowns are q, U = T q
       type(reduced_basis), allocatable :: reduction   !! T, for field snapshots
-      real(dp), allocatable :: tip_row(:)            !! (r) u_h(L) = tip_row . q
-      real(dp), allocatable :: point_rows(:, :)      !! (r, points) u_h(x_p) = point_rows(:, p) . q
+      real(dp), allocatable :: observed_rows(:, :)   !! (r, 1 + points) u_h at the tip and points = row . q
       type(welch_estimator) :: spectrum
       type(episode_tracker) :: episodes
+      type(run_statistics) :: statistics
+      type(statistics_datasets) :: statistics_files
       type(step_events) :: events
       ! streamed datasets
       type(h5_series) :: histories(history_count), point_u, point_v, field_time, field, impact_columns(5)
@@ -104,6 +119,10 @@ module vibrobeam_recorder
       procedure :: finish
       procedure :: save_state
       procedure :: restore_state
+      procedure :: observe
+      procedure :: start_statistics
+      procedure :: restart_statistics
+      procedure :: window_statistics
    end type dynamics_recorder
 
 contains
@@ -123,17 +142,20 @@ contains
    !! With `reduction` the stepper runs a reduced model (its u, v are q, dq/dt, and its
    !! contact rows act on q): tip and observation points are read through rows of T
    !! (r products per value) and U = T q is formed only for a field snapshot.
-   subroutine recorder_init(self, scene, stepper, model, v0, last_step, reduction)
+   subroutine recorder_init(self, scene, stepper, model, v0, last_step, write_rows, reduction)
       class(dynamics_recorder), intent(inout) :: self
       type(scene_type), intent(in) :: scene
       class(time_stepper), intent(in) :: stepper
       type(beam_model), intent(in) :: model
       real(dp), intent(in) :: v0(:)   !! in the stepper's unknowns
       integer(int64), intent(in) :: last_step
+      logical, intent(in), optional :: write_rows   !! default .true.; .false.: no result file
+      real(dp) :: value, speed, tolerance, gap, omega, phase
+      integer :: c, p, contacts
+      character(len=:), allocatable :: forcing
       type(reduced_basis), intent(in), optional :: reduction
-      real(dp) :: value, speed, tolerance, gap, weights(4)
-      integer :: c, p, contacts, dofs(4)
       contacts = stepper%contacts%count
+      if (present(write_rows)) self%write_rows = write_rows
       self%every = scene%every
       self%field_every = scene%every
       if (scene%field_every > 0) self%field_every = scene%field_every
@@ -160,19 +182,30 @@ contains
       do p = 1, size(self%point_x)
          call point_row(model, self%point_x(p), self%point_dofs(:, p), self%point_weights(:, p))
       end do
-      if (present(reduction)) then
-         self%reduction = reduction
-         call node_row(model, model%elements, dofs, weights)
-         self%tip_row = reduced_row(dofs, weights)
-         allocate (self%point_rows(reduction%boundary + reduction%modes, size(self%point_x)))
-         do p = 1, size(self%point_x)
-            self%point_rows(:, p) = reduced_row(self%point_dofs(:, p), self%point_weights(:, p))
-         end do
-      end if
+      ! the tip is node N: the same row as /field/displacement's last node
+      allocate (self%observed_dofs(4, 1 + size(self%point_x)), self%observed_weights(4, 1 + size(self%point_x)))
+      call node_row(model, model%elements, self%observed_dofs(:, 1), self%observed_weights(:, 1))
+      self%observed_dofs(:, 2:) = self%point_dofs
+      self%observed_weights(:, 2:) = self%point_weights
+      allocate (self%events%observed(1 + size(self%point_x), 2))
       call self%spectrum%init(self%every*scene%dt, last_step/self%every + 1)
       gap = scene%episode_gap
       if (is_unset(gap)) gap = default_episode_gap(model%length, model%ei/model%rho_s)
-      call self%episodes%init(stepper%contacts%x, gap)
+      call self%episodes%init(stepper%contacts%x, gap, self%write_rows)
+      allocate (self%events%closed_point(contacts), self%events%closed_impulse(contacts), self%events%opened(contacts))
+      forcing = forcing_of(scene, omega, phase)
+      self%forcing = forcing
+      self%measure_from = scene%measure_from
+      call self%statistics%init(window_first_step(scene%measure_from, scene%dt), last_step, scene%dt, &
+                                1 + size(self%point_x), stepper%contacts%lower_obstacle, &
+                                stepper%contacts%upper_obstacle, size(scene%obstacles), omega, phase)
+      if (present(reduction)) then
+         self%reduction = reduction
+         allocate (self%observed_rows(reduction%boundary + reduction%modes, size(self%observed_dofs, 2)))
+         do p = 1, size(self%observed_dofs, 2)
+            self%observed_rows(:, p) = reduced_row(self%observed_dofs(:, p), self%observed_weights(:, p))
+         end do
+      end if
    contains
       !> The row sum_a weights(a) T(dofs(a), :) of a value of U.
       function reduced_row(dofs, weights) result(row)
@@ -186,6 +219,75 @@ contains
          end do
       end function reduced_row
    end subroutine recorder_init
+
+   !> u and v at the tip and at the observation points into events%observed (the same
+   !! combinations of unknowns as /tip and /points).
+   subroutine observe(self, stepper)
+      class(dynamics_recorder), intent(inout) :: self
+      class(time_stepper), intent(in) :: stepper
+      integer :: p
+      if (allocated(self%observed_rows)) then   ! a reduced model: rows of T times q
+         do p = 1, size(self%observed_rows, 2)
+            self%events%observed(p, 1) = dot_product(self%observed_rows(:, p), stepper%u)
+            self%events%observed(p, 2) = dot_product(self%observed_rows(:, p), stepper%v)
+         end do
+         return
+      end if
+      do p = 1, size(self%observed_dofs, 2)
+         self%events%observed(p, 1) = combination(self%observed_dofs(:, p), self%observed_weights(:, p), stepper%u)
+         self%events%observed(p, 2) = combination(self%observed_dofs(:, p), self%observed_weights(:, p), stepper%v)
+      end do
+   end subroutine observe
+
+   !> sum_a weights(a) unknowns(dofs(a)) over the dofs /= 0, in order.
+   pure real(dp) function combination(dofs, weights, unknowns)
+      integer, intent(in) :: dofs(4)
+      real(dp), intent(in) :: weights(4), unknowns(:)
+      integer :: a
+      combination = 0
+      do a = 1, 4
+         if (dofs(a) /= 0) combination = combination + weights(a)*unknowns(dofs(a))
+      end do
+   end function combination
+
+   !> Once the starting state is known (after `restore_state` for a continued run): the
+   !! window starts now when it starts at this step. A continued run whose checkpoint lies
+   !! past the window's start but holds no statistics of that window (another
+   !! measure_from, other points) starts the window at the checkpoint; `warning` says so.
+   subroutine start_statistics(self, stepper, warning)
+      class(dynamics_recorder), intent(inout) :: self
+      class(time_stepper), intent(in) :: stepper
+      character(len=:), allocatable, intent(out) :: warning
+      warning = ''
+      if (.not. self%statistics%active .or. self%statistics%started) return
+      if (stepper%steps > self%statistics%first_step) then
+         warning = 'the checkpoint holds no statistics of the window from &output measure_from = '// &
+                   real_text(self%measure_from)//' s: the statistics window starts at the checkpoint, t = '// &
+                   real_text(stepper%t)//' s'
+         call self%statistics%begin_window(stepper%steps)
+      end if
+      call self%observe(stepper)
+      call self%statistics%observe_start(stepper, self%events%observed)
+   end subroutine start_statistics
+
+   !> A new statistics window from step `first_step` on (a sweep measures window after
+   !! window): it starts now when the stepper is at that step.
+   subroutine restart_statistics(self, stepper, first_step)
+      class(dynamics_recorder), intent(inout) :: self
+      class(time_stepper), intent(in) :: stepper
+      integer(int64), intent(in) :: first_step
+      call self%statistics%begin_window(first_step)
+      call self%observe(stepper)
+      call self%statistics%observe_start(stepper, self%events%observed)
+   end subroutine restart_statistics
+
+   !> The statistics of the window so far (docs/statistics.md).
+   function window_statistics(self, stepper) result(outcome)
+      class(dynamics_recorder), intent(in) :: self
+      class(time_stepper), intent(in) :: stepper
+      type(statistics_result) :: outcome
+      outcome = self%statistics%result(stepper, self%episodes%open, self%episodes%impulse)
+   end function window_statistics
 
    !> Create every dataset of the run (before the file enters SWMR mode) and write what is
    !! known from the start: /contact/x, /contact/lower, /contact/upper, /points/x.
@@ -242,6 +344,11 @@ contains
                                                           .false., stat, errmsg)
          if (stat == 0) call writer%attr_string('/contact/peak_force', 'unit', 'N', stat, errmsg)
       end if
+      if (stat == 0 .and. self%statistics%active) &
+         call self%statistics_files%create(writer, self%statistics%layout, [self%length, self%point_x], &
+                                           stepper%contacts%x, stepper%contacts%lower_obstacle, &
+                                           stepper%contacts%upper_obstacle, self%measure_from, trim(self%forcing), &
+                                           self%statistics%poincare%omega, self%statistics%poincare%phase, stat, errmsg)
    end subroutine create_datasets
 
    !> Largest penetration of the current positions into an obstacle (m, >= 0).
@@ -278,8 +385,8 @@ contains
          if (.not. self%in_contact(c) .and. stepper%approaching(k)) then
             self%events%impact(k) = .true.
             self%impacts = self%impacts + 1
-            call append_impact([stepper%impulse_time, stepper%contacts%x(c), stepper%impulse(k), &
-                                stepper%velocity_before(k), stepper%velocity_after(k)])
+            if (self%write_rows) call append_impact([stepper%impulse_time, stepper%contacts%x(c), stepper%impulse(k), &
+                                                     stepper%velocity_before(k), stepper%velocity_after(k)])
             if (stat /= 0) return
          end if
          if (c == self%tip_contact) self%tip_impulse = self%tip_impulse + stepper%impulse(k)
@@ -307,6 +414,22 @@ contains
       self%linear_solves_max = max(self%linear_solves_max, stepper%linear_solves)
       if (stepper%used_fallback) self%fallback_steps = self%fallback_steps + 1
       call self%episodes%observe_step(stepper, self%events, stat, errmsg)
+      if (stat /= 0 .or. .not. self%statistics%active) return
+      ! what the episodes decided, and the observed values, for the statistics
+      self%events%closed_count = self%episodes%closed_count
+      self%events%closed_point = self%episodes%closed_point
+      self%events%closed_impulse = self%episodes%closed_impulse
+      self%events%opened = self%episodes%opened
+      call self%observe(stepper)
+      call self%statistics%observe_step(stepper, self%events, stat, errmsg)
+      if (stat /= 0) then
+         errmsg = 'statistics: '//trim(errmsg)
+         return
+      end if
+      if (self%write_rows .and. self%statistics%poincare_found > 0) &
+         call self%statistics_files%append_poincare(self%statistics%sample_times(1:self%statistics%poincare_found), &
+                                                    self%statistics%sample_values(:, 1:self%statistics%poincare_found), &
+                                                    stat, errmsg)
    contains
       subroutine append_impact(row)
          real(dp), intent(in) :: row(5)
@@ -334,22 +457,21 @@ contains
 
    !> One row of every history at the stepper's present time (a no-op when this step was
    !! sampled already).
-   subroutine sample(self, stepper, model, stat, errmsg)
+   subroutine sample(self, stepper, stat, errmsg)
       class(dynamics_recorder), intent(inout) :: self
       class(time_stepper), intent(in) :: stepper
-      type(beam_model), intent(in) :: model
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp) :: row(history_count), interval, potential
-      real(dp) :: values(size(self%point_x)), speeds(size(self%point_x))
       integer :: k
       stat = 0
       errmsg = ''
       if (stepper%steps == self%last_output_step) return
       interval = stepper%t - self%last_output_time
+      call self%observe(stepper)
       row(h_time) = stepper%t
-      row(h_tip_u) = tip_value(stepper%u)
-      row(h_tip_v) = tip_value(stepper%v)
+      row(h_tip_u) = self%events%observed(1, 1)
+      row(h_tip_v) = self%events%observed(1, 2)
       row(h_tip_impulse) = self%tip_impulse
       row(h_tip_reaction) = 0
       if (interval > 0) row(h_tip_reaction) = self%tip_impulse/interval
@@ -378,12 +500,8 @@ contains
          if (stat /= 0) return
       end do
       if (size(self%point_x) > 0) then
-         do k = 1, size(self%point_x)
-            values(k) = point_value(k, stepper%u)
-            speeds(k) = point_value(k, stepper%v)
-         end do
-         call self%point_u%append(values, stat, errmsg)
-         if (stat == 0) call self%point_v%append(speeds, stat, errmsg)
+         call self%point_u%append(self%events%observed(2:, 1), stat, errmsg)
+         if (stat == 0) call self%point_v%append(self%events%observed(2:, 2), stat, errmsg)
          if (stat /= 0) return
       end if
       ! the spectrum takes the uniformly spaced rows only (not a last row off the grid)
@@ -392,35 +510,6 @@ contains
       self%tip_impulse = 0
       self%last_output_step = stepper%steps
       self%last_output_time = stepper%t
-   contains
-      !> u_h(L) (the tip is a node: exact for both bases).
-      real(dp) function tip_value(unknowns)
-         real(dp), intent(in) :: unknowns(:)
-         real(dp) :: nodes(model%elements + 1)
-         if (allocated(self%tip_row)) then
-            tip_value = dot_product(self%tip_row, unknowns)
-         else if (model%basis == 'hermite') then
-            tip_value = unknowns(model%unknowns - 1)
-         else
-            nodes = nodal_displacement(model, unknowns)
-            tip_value = nodes(model%elements + 1)
-         end if
-      end function tip_value
-      !> u_h(x_p) from the shape functions of the element holding observation point p.
-      real(dp) function point_value(p, unknowns)
-         integer, intent(in) :: p
-         real(dp), intent(in) :: unknowns(:)
-         integer :: a
-         if (allocated(self%point_rows)) then
-            point_value = dot_product(self%point_rows(:, p), unknowns)
-            return
-         end if
-         point_value = 0
-         do a = 1, 4
-            if (self%point_dofs(a, p) /= 0) point_value = point_value + self%point_weights(a, p)* &
-                                                          unknowns(self%point_dofs(a, p))
-         end do
-      end function point_value
    end subroutine sample
 
    !> One field snapshot at the stepper's present time (a no-op when taken already).
@@ -464,6 +553,7 @@ contains
       if (stat == 0 .and. self%compliant) call self%contact_potential%write(stat, errmsg)
       if (stat == 0 .and. self%compliant) call self%contact_damping%write(stat, errmsg)
       if (stat == 0 .and. self%compliant) call self%contact_force%write(stat, errmsg)
+      if (stat == 0) call self%statistics_files%write_buffers(stat, errmsg)
    end subroutine write_buffers
 
    !> Rows so far: [outputs, field snapshots, impacts, episodes].
@@ -486,7 +576,8 @@ contains
       integer(int64) :: segments
       real(dp) :: width
       integer :: k
-      call self%episodes%finish(writer, stat, errmsg)
+      call self%statistics_files%finish(writer, self%window_statistics(stepper), stat, errmsg)
+      if (stat == 0) call self%episodes%finish(writer, stat, errmsg)
       if (stat == 0) call self%write_buffers(stat, errmsg)
       if (stat /= 0) return
       call self%fraction%write_reals(self%contact_time/max(stepper%t, tiny(1.0_dp)), stat, errmsg)
@@ -546,6 +637,7 @@ contains
       if (self%compliant) call record%put_reals('recorder.peak_force', self%peak_force)
       call self%spectrum%save_state(record)
       call self%episodes%save_state(record)
+      call self%statistics%save_state(record)
    end subroutine save_state
 
    !> Take back what `save_state` put into `record`.
@@ -563,6 +655,7 @@ contains
       if (stat == 0 .and. self%compliant) call record%get_reals('recorder.peak_force', self%peak_force, stat, errmsg)
       if (stat == 0) call self%spectrum%restore_state(record, stat, errmsg)
       if (stat == 0) call self%episodes%restore_state(record, stat, errmsg)
+      if (stat == 0) call self%statistics%restore_state(record, stat, errmsg)
       if (stat /= 0) return
       self%last_output_step = counts(1)
       self%last_field_step = counts(2)

@@ -23,9 +23,12 @@ module vibrobeam_scene
    public :: scene_type, obstacle_type, scene_entry, max_obstacles, max_points, unset
    public :: validate_scene, scene_entries, format_scene, rho_s_of, ei_of, is_unset
    public :: scene_variables, path_length, keyword_length, max_steps, step_count, unknowns_of
+   public :: forcing_of, base_load_amplitude, max_sweep_values, parameter_length
 
    integer, parameter :: max_obstacles = 32       !! most obstacles a scene may hold
    integer, parameter :: max_points = 64          !! most observation points (&output points)
+   integer, parameter :: max_sweep_values = 1000  !! most explicit values of a sweep axis (&sweep values)
+   integer, parameter :: parameter_length = 64    !! longest &sweep parameter name
    real(dp), parameter :: unset = -huge(1.0_dp)   !! marks a real the user did not give
    integer, parameter :: name_length = 64
    integer, parameter :: path_length = 4096       !! longest file name (&output file, &initial from_file)
@@ -90,6 +93,7 @@ module vibrobeam_scene
       real(dp) :: distributed = 0, distributed_frequency = 0, distributed_phase = 0
       real(dp) :: point_force = 0, point_position = unset, point_frequency = 0
       real(dp) :: base_amplitude = 0, base_frequency = 0
+      real(dp) :: base_acceleration = 0       !! amplitude of the support's acceleration (m/s^2), instead of base_amplitude
       ! &solver (vibrobeam extension)
       character(len=keyword_length) :: contact_solver = 'auto'
       character(len=keyword_length) :: contact_method = 'newton'   !! 'newton' | 'pivoting'
@@ -104,6 +108,7 @@ module vibrobeam_scene
       real(dp) :: measure_from = 0            !! start of the statistics window (s)
       real(dp) :: checkpoint_seconds = 0      !! > 0: restartable checkpoint this often (wall s)
       real(dp) :: episode_gap = unset         !! impacts closer than this form one episode (s); unset: default
+      character(len=keyword_length) :: poincare_load = 'auto'   !! whose phase times the Poincare samples
    end type scene_type
 
    !> One resolved input value with its unit, for printing and for HDF5 attributes.
@@ -207,6 +212,7 @@ contains
          real_variable('load', 'point_frequency', 0.0_dp, 1e15_dp, 'rad/s'), &
          real_variable('load', 'base_amplitude', -1e6_dp, 1e6_dp, 'm'), &
          real_variable('load', 'base_frequency', 0.0_dp, 1e15_dp, 'rad/s'), &
+         real_variable('load', 'base_acceleration', -1e15_dp, 1e15_dp, 'm/s^2'), &
          keyword_variable('solver', 'contact_solver', 'auto|delassus|band'), &
          keyword_variable('solver', 'contact_method', 'newton|pivoting'), &
          integer_variable('solver', 'contact_max_iterations', 0, many), &
@@ -218,7 +224,28 @@ contains
          real_variable('output', 'points', 0.0_dp, 1e6_dp, 'm', max_points), &
          real_variable('output', 'measure_from', 0.0_dp, 1e12_dp, 's'), &
          real_variable('output', 'checkpoint_seconds', 0.0_dp, 1e9_dp, 's'), &
-         real_variable('output', 'episode_gap', 1e-18_dp, 1e12_dp, 's')]
+         real_variable('output', 'episode_gap', 1e-18_dp, 1e12_dp, 's'), &
+         keyword_variable('output', 'poincare_load', 'auto|base|point|distributed'), &
+         ! &sweep (docs/sweeps.md): checked against the scene by vibrobeam_sweep_settings
+         name_variable('sweep', 'parameter'), &
+         real_variable('sweep', 'values', -1e30_dp, 1e30_dp, '', max_sweep_values), &
+         real_variable('sweep', 'from', -1e30_dp, 1e30_dp, ''), &
+         real_variable('sweep', 'to', -1e30_dp, 1e30_dp, ''), &
+         integer_variable('sweep', 'count', 1, 100000), &
+         keyword_variable('sweep', 'spacing', 'linear|log'), &
+         keyword_variable('sweep', 'mode', 'independent|up|down|up-down'), &
+         name_variable('sweep', 'parameter2'), &
+         real_variable('sweep', 'values2', -1e30_dp, 1e30_dp, '', max_sweep_values), &
+         real_variable('sweep', 'from2', -1e30_dp, 1e30_dp, ''), &
+         real_variable('sweep', 'to2', -1e30_dp, 1e30_dp, ''), &
+         integer_variable('sweep', 'count2', 1, 100000), &
+         keyword_variable('sweep', 'spacing2', 'linear|log'), &
+         real_variable('sweep', 'settle', 0.0_dp, 1e12_dp, 's'), &
+         real_variable('sweep', 'measure', 0.0_dp, 1e12_dp, 's'), &
+         real_variable('sweep', 'settle_periods', 0.0_dp, 1e9_dp, ''), &
+         real_variable('sweep', 'measure_periods', 0.0_dp, 1e9_dp, ''), &
+         real_variable('sweep', 'steady_tolerance', 0.0_dp, 1.0_dp, ''), &
+         logical_variable('sweep', 'keep_runs')]
    contains
       pure function real_variable(group, name, lowest, highest, unit, extent) result(variable)
          character(len=*), intent(in) :: group, name, unit
@@ -248,12 +275,64 @@ contains
          type(namelist_variable) :: variable
          variable = namelist_variable(group=group, name=name, kind=kind_string, max_length=path_length)
       end function path_variable
+      pure function name_variable(group, name) result(variable)
+         character(len=*), intent(in) :: group, name
+         type(namelist_variable) :: variable
+         variable = namelist_variable(group=group, name=name, kind=kind_string, max_length=parameter_length)
+      end function name_variable
       pure function logical_variable(group, name) result(variable)
          character(len=*), intent(in) :: group, name
          type(namelist_variable) :: variable
          variable = namelist_variable(group=group, name=name, kind=kind_logical)
       end function logical_variable
    end function scene_variables
+
+   !> Amplitude of the support's acceleration, A Omega_b^2 or &load base_acceleration
+   !! (m/s^2): the base excitation loads the beam with rho S times this, sin(Omega_b t).
+   pure real(dp) function base_load_amplitude(scene)
+      type(scene_type), intent(in) :: scene
+      if (abs(scene%base_acceleration) > 0) then
+         base_load_amplitude = scene%base_acceleration
+      else
+         base_load_amplitude = scene%base_amplitude*scene%base_frequency**2
+      end if
+   end function base_load_amplitude
+
+   !> The harmonic load whose phase times the Poincare samples (docs/statistics.md): the
+   !! one &output poincare_load names, or with 'auto' the first harmonic load (non-zero
+   !! amplitude and frequency) of base excitation, point force, distributed load; 'none'
+   !! when there is none. `omega` (rad/s) and `phase` (rad): the phase of the load is
+   !! omega t + phase (base: s(t) ~ sin(Omega_b t); point: cos(Omega_p t); distributed:
+   !! cos(Omega t + phi)).
+   function forcing_of(scene, omega, phase) result(kind)
+      type(scene_type), intent(in) :: scene
+      real(dp), intent(out), optional :: omega, phase
+      character(len=:), allocatable :: kind
+      logical :: harmonic(3)
+      character(len=*), parameter :: names(3) = [character(len=11) :: 'base', 'point', 'distributed']
+      integer :: k
+      harmonic = [abs(base_load_amplitude(scene)) > 0 .and. scene%base_frequency > 0, &
+                  abs(scene%point_force) > 0 .and. scene%point_frequency > 0, &
+                  abs(scene%distributed) > 0 .and. scene%distributed_frequency > 0]
+      kind = 'none'
+      do k = 1, 3
+         if (.not. harmonic(k)) cycle
+         if (scene%poincare_load /= 'auto' .and. scene%poincare_load /= names(k)) cycle
+         kind = trim(names(k))
+         exit
+      end do
+      if (present(omega)) omega = 0
+      if (present(phase)) phase = 0
+      select case (kind)
+      case ('base')
+         if (present(omega)) omega = scene%base_frequency
+      case ('point')
+         if (present(omega)) omega = scene%point_frequency
+      case ('distributed')
+         if (present(omega)) omega = scene%distributed_frequency
+         if (present(phase)) phase = scene%distributed_phase
+      end select
+   end function forcing_of
 
    !> Unknowns J of the mesh: 2N (Hermite) or N + 1 (B-splines).
    pure integer function unknowns_of(scene)
@@ -376,6 +455,14 @@ contains
       call check_real('load', 'point_frequency', scene%point_frequency)
       call check_real('load', 'base_amplitude', scene%base_amplitude)
       call check_real('load', 'base_frequency', scene%base_frequency)
+      call check_real('load', 'base_acceleration', scene%base_acceleration)
+      if (abs(scene%base_acceleration) > 0 .and. abs(scene%base_amplitude) > 0) &
+         call fail('&load base_acceleration = '//real_text(scene%base_acceleration)//' and base_amplitude = '// &
+                   real_text(scene%base_amplitude)//' are both given: give one of them (a = A Omega^2)')
+      if (abs(scene%base_acceleration) > 0 .and. scene%base_frequency <= 0) &
+         call fail('&load base_acceleration = '//real_text(scene%base_acceleration)// &
+                   ' needs base_frequency > 0 (the support moves as (a/Omega^2) sin(Omega t))')
+
       ! &solver
       call check_keyword('solver', 'contact_solver', scene%contact_solver)
       call check_keyword('solver', 'contact_method', scene%contact_method)
@@ -397,6 +484,12 @@ contains
       call check_real('output', 'measure_from', scene%measure_from)
       call check_real('output', 'checkpoint_seconds', scene%checkpoint_seconds)
       if (.not. is_unset(scene%episode_gap)) call check_real('output', 'episode_gap', scene%episode_gap)
+      call check_keyword('output', 'poincare_load', scene%poincare_load)
+      if (stat == 0 .and. scene%poincare_load /= 'auto') then
+         if (forcing_of(scene) /= scene%poincare_load) &
+            call fail('&output poincare_load = '''//trim(scene%poincare_load)//''' names no harmonic load: give '// &
+                      'that load a non-zero amplitude and frequency, or write ''auto''')
+      end if
 
    contains
 
@@ -562,6 +655,7 @@ contains
       call add_real('load.point_frequency', scene%point_frequency, 'rad/s')
       call add_real('load.base_amplitude', scene%base_amplitude, 'm')
       call add_real('load.base_frequency', scene%base_frequency, 'rad/s')
+      call add_real('load.base_acceleration', scene%base_acceleration, 'm/s^2')
       call add_string('solver.contact_solver', scene%contact_solver)
       call add_string('solver.contact_method', scene%contact_method)
       call add_integer('solver.contact_max_iterations', scene%contact_max_iterations)
@@ -579,6 +673,7 @@ contains
       call add_real('output.measure_from', scene%measure_from, 's')
       call add_real('output.checkpoint_seconds', scene%checkpoint_seconds, 's')
       if (.not. is_unset(scene%episode_gap)) call add_real('output.episode_gap', scene%episode_gap, 's')
+      call add_string('output.poincare_load', scene%poincare_load)
    contains
       pure subroutine add_real(name, value, unit)
          character(len=*), intent(in) :: name, unit

@@ -31,6 +31,9 @@ module vibrobeam_setup
       type(load_set) :: loads
       real(dp), allocatable :: u0(:)   !! initial displacement unknowns (dynamics)
       real(dp), allocatable :: v0(:)   !! initial velocity unknowns (dynamics)
+      !> U^{-1} of the position scheme when the start continues an earlier state (a sweep's
+      !! continuation); not allocated: the scheme's second-order start from u0, v0
+      real(dp), allocatable :: u_previous0(:)
       logical :: resuming = .false.    !! continues the checkpoint of &initial from_file
       type(state_record) :: resume     !! that checkpoint
       real(dp) :: resume_time = 0      !! its time (s)
@@ -278,6 +281,11 @@ contains
          position%projector%max_iterations = scene%contact_max_iterations
          position%projector%method = contact_method_code(trim(scene%contact_method))
          position%compliant%method = trim(scene%contact_method)
+         if (stat == 0 .and. allocated(prepared%u_previous0)) then
+            ! the state of an earlier run carried on (docs/sweeps.md, "Continuation")
+            position%u_previous = prepared%u_previous0
+            position%v = (position%u - position%u_previous)/scene%dt
+         end if
          call move_alloc(position, stepper)
       else
          allocate (velocity)

@@ -66,8 +66,9 @@ contains
       character(len=*), intent(out) :: errmsg           !! reason of the failure, blank on success
       character(len=*), intent(in), optional :: window  !! 'hann' (default) or 'none'
       character(len=:), allocatable :: window_name
-      real(c_double), allocatable :: windowed(:)
-      complex(c_double_complex), allocatable :: transform(:)
+      real(c_double), pointer :: windowed(:)
+      complex(c_double_complex), pointer :: transform(:)
+      type(c_ptr) :: windowed_memory, transform_memory
       real(dp), allocatable :: weights(:)
       real(dp) :: mean, weight_sum
       type(c_ptr) :: plan
@@ -110,19 +111,32 @@ contains
       weight_sum = sum(weights)
 
       bins = n/2 + 1
-      allocate (windowed(n), transform(bins))
+      ! FFTW's own allocation: always aligned for its SIMD code, so the plan (and the
+      ! rounding of the transform) never depends on where the arrays happen to lie; a
+      ! sweep's results do not depend on its threads (docs/sweeps.md)
+      windowed_memory = fftw_alloc_real(int(n, c_size_t))
+      transform_memory = fftw_alloc_complex(int(bins, c_size_t))
+      call c_f_pointer(windowed_memory, windowed, [n])
+      call c_f_pointer(transform_memory, transform, [bins])
       ! Plan before filling the input: the planner may use the arrays as scratch space
       ! (their interface declares them intent(out)); FFTW_ESTIMATE does not time transforms.
+      ! The planner is not thread-safe (FFTW manual, "Thread safety"): one thread at a time.
+      !$omp critical (vibrobeam_fftw_planner)
       plan = fftw_plan_dft_r2c_1d(int(n, c_int), windowed, transform, FFTW_ESTIMATE)
+      !$omp end critical (vibrobeam_fftw_planner)
       if (.not. c_associated(plan)) then
          stat = stat_failure
          write (errmsg, '(a,i0)') 'amplitude spectrum: FFTW could not plan a real-to-complex transform of size ', n
+         call fftw_free(windowed_memory)
+         call fftw_free(transform_memory)
          return
       end if
       mean = sum(signal)/n
       windowed = real(weights*(signal - mean), c_double)
       call fftw_execute_dft_r2c(plan, windowed, transform)
+      !$omp critical (vibrobeam_fftw_planner)
       call fftw_destroy_plan(plan)
+      !$omp end critical (vibrobeam_fftw_planner)
 
       deallocate (frequency, amplitude)
       allocate (frequency(bins), amplitude(bins))
@@ -132,6 +146,8 @@ contains
          ! negative frequencies fold onto positive ones, except at 0 and at Nyquist (n even)
          if (k > 0 .and. 2*k /= n) amplitude(k + 1) = 2*amplitude(k + 1)
       end do
+      call fftw_free(windowed_memory)
+      call fftw_free(transform_memory)
    end subroutine amplitude_spectrum
 
    !> Indices into `amplitude` of the `count` largest local maxima whose amplitude is

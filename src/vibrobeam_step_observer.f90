@@ -1,8 +1,8 @@
 !> What an accumulator of a dynamics run sees (docs/output.md, "Streaming"): the recorder
 !! calls each observer after every step, at every history output, when buffers are
 !! written and at the end, and puts each one's state into the checkpoint. Contact
-!! episodes (`vibrobeam_episodes`) are one; statistics over a window are meant to be
-!! another, added to the recorder's list without touching the time loop.
+!! episodes (`vibrobeam_episodes`) are one, the statistics over a window
+!! (`vibrobeam_statistics`) another, which sees what the episodes decided in the step.
 !!
 !! Datasets must be created in `create_datasets` (the file then enters SWMR mode, where
 !! no object or attribute can be created; `finish` writes into what exists).
@@ -20,6 +20,16 @@ module vibrobeam_step_observer
       !> (contact points) entry k of the stepper's active list is a new impact
       !! (docs/method.md, "Impacts and contact statistics")
       logical, allocatable :: impact(:)
+      !> (observation points, 2) u and v at the tip (1) and at each &output points x,
+      !! after the step (when an observer needs them)
+      real(dp), allocatable :: observed(:, :)
+      !> contact episodes that closed in the step: at closed_point(1:closed_count), of total
+      !! impulse closed_impulse (N s)
+      integer :: closed_count = 0
+      integer, allocatable :: closed_point(:)
+      real(dp), allocatable :: closed_impulse(:)
+      !> (contact points) an episode opened at the point in the step
+      logical, allocatable :: opened(:)
    end type step_events
 
    type, abstract :: step_observer

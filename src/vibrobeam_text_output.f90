@@ -24,9 +24,9 @@ module vibrobeam_text_output
    integer, parameter :: path_length = 1024
 
    !> Every suffix a result's .dat files can have.
-   character(len=*), parameter :: text_suffixes(14) = [character(len=16) :: 'modes', 'shapes', 'static', &
+   character(len=*), parameter :: text_suffixes(16) = [character(len=16) :: 'modes', 'shapes', 'static', &
       'reactions', 'tip', 'energy', 'impacts', 'episodes', 'points', 'field', 'spectrum', 'obstacles', 'contact', &
-      'force']
+      'force', 'sweep', 'poincare']
 
    !> Most values read from the HDF5 file at once (8 MiB).
    integer, parameter :: block_values = 2**20
@@ -106,6 +106,8 @@ contains
             if (stat /= 0 .or. interrupted) exit derive
          end if
          if (file%exists('/time')) call dynamics_files()
+         if (stat /= 0 .or. interrupted) exit derive
+         if (file%exists('/sweep/parameter')) call sweep_files()
       end block derive
       call file%close()
       if (stat /= 0 .or. interrupted) then
@@ -378,6 +380,111 @@ contains
          end do
          call close_sink(sink)
       end subroutine dynamics_files
+
+      !> A sweep file (docs/output.md, "Sweep file"): STEM_sweep.dat, one row per point,
+      !! and STEM_poincare.dat, one row per kept Poincare sample.
+      subroutine sweep_files()
+         character(len=*), parameter :: pairs(10) = [character(len=40) :: 'beam/impact_rate', 'beam/episode_rate', &
+            'beam/episode_impulse_mean', 'beam/episode_impulse_max', 'beam/contact_force', 'energy/power_input', &
+            'energy/power_impacts', 'energy/power_damping', 'energy/power_dissipated', '']
+         type(text_sink) :: sink
+         real(dp), allocatable :: parameter(:), parameter2(:), direction(:), line(:), status(:), settled(:), &
+                                  transient(:), rms(:), rms_error(:), largest(:), largest_error(:), frequency(:), &
+                                  values(:, :), errors(:, :), column(:), sample_point(:), sample_direction(:), &
+                                  sample_parameter(:), sample_parameter2(:), sample_time(:), u(:), v(:)
+         integer :: n, k, j, observation, samples
+         character(len=:), allocatable :: first_label, second_label
+         call file%read_reals('/sweep/parameter', parameter, stat, errmsg)
+         if (stat /= 0) return
+         n = size(parameter)
+         allocate (parameter2(n), source=0.0_dp)
+         if (file%exists('/sweep/parameter2')) call file%read_reals('/sweep/parameter2', parameter2, stat, errmsg)
+         if (stat == 0) call file%read_reals('/sweep/direction', direction, stat, errmsg)
+         if (stat == 0) call file%read_reals('/sweep/line', line, stat, errmsg)
+         if (stat == 0) call file%read_reals('/sweep/status', status, stat, errmsg)
+         if (stat == 0) call file%read_reals('/sweep/settled', settled, stat, errmsg)
+         if (stat == 0) call file%read_reals('/sweep/transient', transient, stat, errmsg)
+         if (stat == 0) call file%read_reals('/sweep/statistics/points/x', column, stat, errmsg)
+         if (stat /= 0) return
+         observation = size(column)
+         allocate (rms(n), rms_error(n), largest(n), largest_error(n), frequency(n))
+         ! the tip is the first observation point of each row
+         call file%read_reals('/sweep/statistics/points/displacement_rms', column, stat, errmsg)
+         if (stat == 0) rms(:) = column(1::observation)
+         if (stat == 0) call file%read_reals('/sweep/statistics/points/displacement_rms_error', column, stat, errmsg)
+         if (stat == 0) rms_error(:) = column(1::observation)
+         if (stat == 0) call file%read_reals('/sweep/statistics/points/displacement_max', column, stat, errmsg)
+         if (stat == 0) largest(:) = column(1::observation)
+         if (stat == 0) call file%read_reals('/sweep/statistics/points/displacement_max_error', column, stat, errmsg)
+         if (stat == 0) largest_error(:) = column(1::observation)
+         if (stat == 0) call file%read_reals('/sweep/statistics/spectrum/peak_frequency', column, stat, errmsg)
+         if (stat /= 0) return
+         frequency(:) = column(1::max(1, size(column)/max(1, n)))
+         allocate (values(n, size(pairs) - 1), errors(n, size(pairs) - 1))
+         do k = 1, size(pairs) - 1
+            call file%read_reals('/sweep/statistics/'//trim(pairs(k)), column, stat, errmsg)
+            if (stat /= 0) return
+            values(:, k) = column
+            call file%read_reals('/sweep/statistics/'//trim(pairs(k))//'_error', column, stat, errmsg)
+            if (stat /= 0) return
+            errors(:, k) = column
+         end do
+         call axis_label('/sweep/parameter', first_label)
+         second_label = 'none'
+         if (file%exists('/sweep/parameter2')) call axis_label('/sweep/parameter2', second_label)
+         if (stat /= 0) return
+         call open_sink(sink, 'sweep', 'point  line  direction (+1 up, -1 down, 0 independent)  parameter: '// &
+                        first_label//'  parameter2: '//second_label//'  status (0 ok)  settled (1, 0, -1 not '// &
+                        'asked)  transient (s)  then value and '// &
+                        'standard error of: RMS tip displacement (m)  largest tip displacement (m)  impact rate (1/s)'// &
+                        '  episode rate (1/s)  mean impulse per episode (N s)  largest impulse per episode (N s)  '// &
+                        'contact force (N)  power of the loads (W)  power dissipated at the stops (W)  by damping (W)'// &
+                        '  in all (W); then the first dominant frequency (Hz)')
+         do k = 1, n
+            if (k > 1) then
+               if (nint(line(k)) /= nint(line(k - 1))) call put_line(sink, '')
+            end if
+            call put_row(sink, 'wide', [real(k, dp), line(k), direction(k), parameter(k), parameter2(k), status(k), &
+                                        settled(k), transient(k), rms(k), rms_error(k), largest(k), largest_error(k), &
+                                        (values(k, j), errors(k, j), j = 1, size(pairs) - 1), frequency(k)])
+         end do
+         call close_sink(sink)
+         if (stat /= 0) return
+         samples = int(rows_of('/sweep/poincare/time'))
+         if (stat /= 0) return
+         call file%read_reals('/sweep/poincare/point', sample_point, stat, errmsg)
+         if (stat == 0) call file%read_reals('/sweep/poincare/direction', sample_direction, stat, errmsg)
+         if (stat == 0) call file%read_reals('/sweep/poincare/parameter', sample_parameter, stat, errmsg)
+         allocate (sample_parameter2(samples), source=0.0_dp)
+         if (stat == 0 .and. file%exists('/sweep/poincare/parameter2')) &
+            call file%read_reals('/sweep/poincare/parameter2', sample_parameter2, stat, errmsg)
+         if (stat == 0) call file%read_reals('/sweep/poincare/time', sample_time, stat, errmsg)
+         if (stat == 0) call file%read_reals('/sweep/poincare/displacement', u, stat, errmsg)
+         if (stat == 0) call file%read_reals('/sweep/poincare/velocity', v, stat, errmsg)
+         if (stat /= 0) return
+         call open_sink(sink, 'poincare', 'parameter: '//first_label//'  parameter2: '//second_label// &
+                        '  direction  point  time in the point''s run (s)  '// &
+                        'tip displacement (m)  tip velocity (m/s), at phase 0 of the forcing')
+         do k = 1, samples
+            call put_row(sink, 'wide', [sample_parameter(k), sample_parameter2(k), sample_direction(k), &
+                                        sample_point(k), sample_time(k), u((k - 1)*observation + 1), &
+                                        v((k - 1)*observation + 1)])
+         end do
+         call close_sink(sink)
+      end subroutine sweep_files
+
+      !> 'load.base_frequency (rad/s)': the name and unit attributes of an axis.
+      subroutine axis_label(path, label)
+         character(len=*), intent(in) :: path
+         character(len=:), allocatable, intent(out) :: label
+         character(len=:), allocatable :: name, unit
+         label = ''
+         call file%attr_string(path, 'name', name, stat, errmsg)
+         if (stat == 0) call file%attr_string(path, 'unit', unit, stat, errmsg)
+         if (stat /= 0) return
+         if (len(unit) == 0) unit = '1'
+         label = name//' ('//unit//')'
+      end subroutine axis_label
 
    end subroutine derive_text_files
 

@@ -151,29 +151,38 @@ contains
       amplitude = sqrt(self%power/self%segments)
    end subroutine spectrum
 
-   !> The estimator's state (sizes fixed for a run: see `init`).
-   subroutine save_state(self, record)
+   !> The estimator's state (sizes fixed for a run: see `init`), under names starting with
+   !! `prefix` (default 'spectrum': the recorder's whole-run spectrum).
+   subroutine save_state(self, record, prefix)
       class(welch_estimator), intent(in) :: self
       type(state_record), intent(inout) :: record
-      call record%put_int64s('spectrum.counts', [int(self%filled, int64), self%samples, self%segments])
-      call record%put_reals('spectrum.buffer', self%buffer)
-      call record%put_reals('spectrum.power', self%power)
+      character(len=*), intent(in), optional :: prefix
+      character(len=:), allocatable :: name
+      name = 'spectrum'
+      if (present(prefix)) name = prefix
+      call record%put_int64s(name//'.counts', [int(self%filled, int64), self%samples, self%segments])
+      call record%put_reals(name//'.buffer', self%buffer)
+      call record%put_reals(name//'.power', self%power)
    end subroutine save_state
 
    !> Take back a saved state; the buffer keeps at least its present size (`init`).
-   subroutine restore_state(self, record, stat, errmsg)
+   subroutine restore_state(self, record, stat, errmsg, prefix)
       class(welch_estimator), intent(inout) :: self
       type(state_record), intent(in) :: record
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      character(len=*), intent(in), optional :: prefix
       integer(int64) :: counts(3)
       integer :: k, saved
-      call record%get_int64s('spectrum.counts', counts, stat, errmsg)
+      character(len=:), allocatable :: name
+      name = 'spectrum'
+      if (present(prefix)) name = prefix
+      call record%get_int64s(name//'.counts', counts, stat, errmsg)
       if (stat /= 0) return
-      k = record%find('spectrum.buffer')
+      k = record%find(name//'.buffer')
       if (k == 0) then
          stat = 1
-         errmsg = 'the checkpoint has no ''spectrum.buffer'''
+         errmsg = 'the checkpoint has no '''//name//'.buffer'''
          return
       end if
       saved = size(record%items(k)%reals)
@@ -191,6 +200,6 @@ contains
       self%samples = counts(2)
       self%segments = counts(3)
       self%buffer(1:self%filled) = record%items(k)%reals(1:self%filled)
-      if (self%segments > 0) call record%get_reals('spectrum.power', self%power, stat, errmsg)
+      if (self%segments > 0) call record%get_reals(name//'.power', self%power, stat, errmsg)
    end subroutine restore_state
 end module vibrobeam_welch

@@ -24,41 +24,70 @@ program vibrobeam_main
    use vibrobeam_hdf5_base, only: close_library
    use vibrobeam_progress, only: progress_meter
    use vibrobeam_signals, only: watch_signals, interrupt_requested, interrupt_name
+   use vibrobeam_sweep_settings, only: sweep_settings, resolve_sweep, sweep_points, point_scene
+   use vibrobeam_sweep, only: run_sweep, sweep_outcome, sweep_threads
+   use vibrobeam_sweep_check, only: sweep_check_text
+   use vibrobeam_sweep_transport, only: transport_start, transport_stop, transport_rank, transport_ranks
    use vibrobeam_blas_threads, only: limit_blas_threads
    implicit none
 
    type(scene_type) :: scene
    type(prepared_scene) :: prepared
+   type(sweep_settings) :: sweep
    character(len=message_length) :: errmsg
    character(len=:), allocatable :: input_file, warnings, blas_warning
    logical :: check_only, text_only
    integer :: stat
 
+   call transport_start(stat, errmsg)
+   if (stat /= 0) call fail(exit_other_error, errmsg)
    call parse_command_line(input_file, check_only, text_only)
    if (text_only) call run_text(input_file)
    warnings = ''
-   call read_scene(input_file, scene, stat, errmsg, warnings)
+   call read_scene(input_file, scene, stat, errmsg, warnings, sweep)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    call validate_scene(scene, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
+   if (sweep%present) then
+      call resolve_sweep(sweep, scene, stat, errmsg)
+      if (stat /= 0) call fail(exit_invalid_input, errmsg)
+   end if
    call check_output_target(scene, input_file, stat, errmsg)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
-   call limit_blas_threads(blas_warning)   ! one BLAS thread unless VIBROBEAM_BLAS_THREADS says otherwise
+   ! one BLAS thread unless VIBROBEAM_BLAS_THREADS says otherwise; a sweep's tasks share the
+   ! cores themselves (docs/sweeps.md, "Parallel runs")
+   call limit_blas_threads(blas_warning)
    if (len(blas_warning) > 0) warnings = warnings//blas_warning//new_line('a')
-   call prepare_scene(scene, prepared, warnings, stat, errmsg)
-   if (stat == stat_numerical_failure) call fail(exit_numerical_failure, errmsg)
-   if (stat /= 0) call fail(exit_invalid_input, errmsg)
+   if (sweep%present) then
+      ! a sweep prepares each point itself; here the first one, for its warnings
+      associate (points => sweep_points(sweep))
+         call prepare_scene(point_scene(scene, sweep, points(1)), prepared, warnings, stat, errmsg)
+      end associate
+      if (stat /= 0 .and. stat /= stat_numerical_failure) call fail(exit_invalid_input, '&sweep point 1: '//errmsg)
+   else
+      call prepare_scene(scene, prepared, warnings, stat, errmsg)
+      if (stat == stat_numerical_failure) call fail(exit_numerical_failure, errmsg)
+      if (stat /= 0) call fail(exit_invalid_input, errmsg)
+   end if
    warnings = warnings//scene_warnings(scene)
-   if (len(warnings) > 0) write (error_unit, '(a)', advance='no') prefixed(warnings, 'vibrobeam: warning: ')
+   if (len(warnings) > 0 .and. transport_rank() == 0) &
+      write (error_unit, '(a)', advance='no') prefixed(warnings, 'vibrobeam: warning: ')
 
    if (check_only) then
-      call print_resolved_scene()
-      stop exit_ok, quiet=.true.
+      if (transport_rank() == 0) then
+         call print_resolved_scene()
+         if (sweep%present) write (output_unit, '(a)', advance='no') &
+            sweep_check_text(scene, sweep, sweep_threads(), transport_ranks())
+      end if
+      call finish(exit_ok)
    end if
 
    ! from here on files are written: a signal finishes the work in progress (docs/output.md)
    call watch_signals(stat, errmsg)
    if (stat /= 0) call fail(exit_other_error, errmsg)
+   if (sweep%present) call run_sweep_input()
+   ! a single run is rank 0's alone (under mpirun the other ranks have nothing to do)
+   if (transport_rank() /= 0) call finish(exit_ok)
    select case (scene%kind)
    case ('modes')
       call run_modes()
@@ -76,6 +105,8 @@ contains
    subroutine fail(code, message)
       integer, intent(in) :: code
       character(len=*), intent(in) :: message
+      ! under mpirun every rank reads the same input and fails alike: rank 0 speaks
+      if (transport_rank() /= 0) call finish(code)
       write (error_unit, '(a)') 'vibrobeam: '//trim(message)
       select case (code)
       case (exit_invalid_input)
@@ -98,6 +129,7 @@ contains
          end subroutine c_exit
       end interface
       call close_library()
+      call transport_stop()
       flush (output_unit)
       flush (error_unit)
       call c_exit(int(code, c_int))
@@ -287,6 +319,38 @@ contains
       call stop_if_interrupted(outcome%text_skipped)
       call finish(exit_ok)
    end subroutine run_dynamics_scene
+
+   !> A sweep (docs/sweeps.md): every point, the sweep file, and the exit status: 0, 3 when
+   !! a point failed (the sweep file is published, the failed points marked), 4 when
+   !! interrupted.
+   subroutine run_sweep_input()
+      type(sweep_outcome) :: outcome
+      call run_sweep(scene, sweep, outcome, stat, errmsg)
+      if (stat == 2) call fail(exit_invalid_input, errmsg)
+      if (stat /= 0) call fail(exit_other_error, errmsg)
+      if (transport_rank() /= 0) then
+         if (outcome%status == 'interrupted') call finish(exit_interrupted)
+         if (outcome%failed > 0) call finish(exit_numerical_failure)
+         call finish(exit_ok)
+      end if
+      write (output_unit, '(a,i0,a,i0,a,i0,a,f0.2,a,i0,a,i0,a)') 'vibrobeam: sweep of ', outcome%points, ' points (', &
+         outcome%failed, ' failed, ', outcome%interrupted, ' interrupted), ', outcome%wall_seconds, ' s on ', &
+         outcome%threads, ' threads x ', outcome%ranks, ' processes; written to '//trim(scene%file)
+      if (outcome%status == 'interrupted') then
+         write (error_unit, '(a)') 'vibrobeam: interrupted by '//interrupt_name()//'; the points done are in '// &
+            trim(scene%file)//' (/run status = ''interrupted'')'
+         call stop_if_interrupted(outcome%text_skipped)
+         call finish(exit_interrupted)
+      end if
+      if (outcome%failed > 0) then
+         write (error_unit, '(a)', advance='no') prefixed(trim(outcome%failures), 'vibrobeam: failed: ')
+         write (error_unit, '(a,i0,a)') 'vibrobeam: ', outcome%failed, ' points failed (marked in /sweep/status)'
+         call stop_if_interrupted(outcome%text_skipped)
+         call finish(exit_numerical_failure)
+      end if
+      call stop_if_interrupted(outcome%text_skipped)
+      call finish(exit_ok)
+   end subroutine run_sweep_input
 
    !> After publication: a signal that arrived meanwhile ends the program with status 4
    !! (the published result is complete; the text files are missing when `text_skipped`).

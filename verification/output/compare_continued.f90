@@ -3,7 +3,9 @@
 !! - every history of CONTINUED.h5 (one row per output time, field snapshot, impact,
 !!   episode) with the last rows of the same history in FULL.h5 (the continued run writes
 !!   only what follows its checkpoint);
-!! - the tip spectrum and the contact fractions, which cover the whole run in both;
+!! - the tip spectrum and the contact fractions, which cover the whole run in both, and
+!!   every statistic of /statistics (the window starts before the checkpoint) with its
+!!   standard error;
 !! - the final states (every item of the final checkpoint) and the step counts.
 !! The reference is the uninterrupted run itself: no tolerance, equality of bit patterns.
 !! usage: compare_continued FULL.h5 CONTINUED.h5
@@ -14,6 +16,7 @@ program compare_continued
    use vibrobeam_state_record, only: state_record
    use vibrobeam_checkpoint, only: read_checkpoint
    use vibrobeam_test_support, only: test_counter
+   use vibrobeam_statistics_layout, only: statistics_layout
    implicit none
    character(len=*), parameter :: histories(*) = [character(len=40) :: '/time', '/tip/displacement', &
       '/tip/velocity', '/tip/reaction', '/tip/impulse', '/energy/kinetic', '/energy/elastic', '/energy/total', &
@@ -22,7 +25,8 @@ program compare_continued
       '/points/velocity', '/field/time', '/field/displacement', '/impacts/time', '/impacts/x', &
       '/impacts/impulse', '/impacts/velocity_before', '/impacts/velocity_after', '/episodes/x', &
       '/episodes/start', '/episodes/end', '/episodes/impulse', '/episodes/approach_speed', '/episodes/impacts', &
-      '/episodes/open_at_end']
+      '/episodes/open_at_end', '/statistics/poincare/time', '/statistics/poincare/displacement', &
+      '/statistics/poincare/velocity']
    character(len=*), parameter :: wholes(*) = [character(len=40) :: '/spectrum/frequency', &
       '/spectrum/tip_amplitude', '/contact/fraction']
    type(test_counter) :: t
@@ -33,6 +37,7 @@ program compare_continued
    real(dp) :: time
    integer(int64) :: full_steps, continued_steps, rows_compared
    integer :: k, stat
+   type(statistics_layout) :: layout
 
    call get_command_argument(1, full_name)
    call get_command_argument(2, continued_name)
@@ -46,11 +51,13 @@ program compare_continued
       call compare_tail(trim(histories(k)))
    end do
    do k = 1, size(wholes)
-      call full%read_reals(trim(wholes(k)), a, stat, errmsg)
-      if (stat == 0) call continued%read_reals(trim(wholes(k)), b, stat, errmsg)
-      call t%check_true('read '//trim(wholes(k)), stat == 0, errmsg)
-      if (stat == 0) call t%check_true(trim(wholes(k))//' equals that of the uninterrupted run', &
-                                       same_bits(a, b), 'differs')
+      call compare_whole(trim(wholes(k)))
+   end do
+   ! the statistics of the scene of restart.nml.in: tip and 2 points, 1 contact point, 2 stops
+   call layout%init(3, 1, 2)
+   do k = 1, size(layout%entries)
+      call compare_whole('/statistics/'//layout%path(k, .false.))
+      if (layout%entries(k)%has_error) call compare_whole('/statistics/'//layout%path(k, .true.))
    end do
    call full%attr_int64('/run', 'steps', full_steps, stat, errmsg)
    if (stat == 0) call continued%attr_int64('/run', 'steps', continued_steps, stat, errmsg)
@@ -84,6 +91,15 @@ program compare_continued
    call t%finish('compare_continued')
 
 contains
+
+   !> Dataset `path` is the same in both files.
+   subroutine compare_whole(path)
+      character(len=*), intent(in) :: path
+      call full%read_reals(path, a, stat, errmsg)
+      if (stat == 0) call continued%read_reals(path, b, stat, errmsg)
+      call t%check_true('read '//path, stat == 0, errmsg)
+      if (stat == 0) call t%check_true(path//' equals that of the uninterrupted run', same_bits(a, b), 'differs')
+   end subroutine compare_whole
 
    !> The rows of `path` in the continued run equal the last rows of the full run.
    subroutine compare_tail(path)

@@ -1,0 +1,123 @@
+!> The statistics of a run as named vectors (docs/statistics.md): which statistics there
+!! are, their unit, their length and where they sit in the flat vector of values that the
+!! statistics module computes, the result file stores under /statistics and the sweep
+!! file under /sweep/statistics (one row per sweep point).
+!!
+!! Groups and lengths: 'points' (the tip, then each &output points x), 'contacts' (the
+!! contact points), 'obstacles' (each obstacle of &obstacles), 'beam' (all contact points
+!! together; 1), 'energy' (1), 'spectrum' (the `peak_count` largest peaks). Every
+!! statistic has a standard error beside it (`<name>_error`) except the spectrum's.
+module vibrobeam_statistics_layout
+   implicit none
+   private
+   public :: statistics_layout, statistic_entry, peak_count
+   public :: group_points, group_contacts, group_obstacles, group_beam, group_energy, group_spectrum
+
+   integer, parameter :: peak_count = 3   !! dominant response frequencies reported
+   integer, parameter :: group_points = 1, group_contacts = 2, group_obstacles = 3, group_beam = 4, &
+                         group_energy = 5, group_spectrum = 6
+   character(len=*), parameter :: group_names(6) = [character(len=9) :: 'points', 'contacts', 'obstacles', &
+                                                    'beam', 'energy', 'spectrum']
+
+   !> One statistic: a vector of `length` values.
+   type :: statistic_entry
+      character(len=32) :: name = ''    !! e.g. 'displacement_rms'
+      character(len=8) :: unit = ''
+      integer :: group = 0              !! group_points, ...
+      integer :: length = 0
+      integer :: offset = 0             !! values(offset + 1 : offset + length)
+      logical :: has_error = .true.
+   end type statistic_entry
+
+   !> Every statistic of a scene with the given numbers of observation points, contact
+   !! points and obstacles.
+   type :: statistics_layout
+      integer :: observation_points = 0, contact_points = 0, obstacles = 0
+      integer :: size = 0                         !! length of the flat vector
+      type(statistic_entry), allocatable :: entries(:)
+   contains
+      procedure :: init
+      procedure :: find
+      procedure :: path
+   end type statistics_layout
+
+   !> Statistics of the observation points (m for displacement, m/s for velocity).
+   character(len=*), parameter :: point_names(8) = [character(len=32) :: 'displacement_mean', &
+      'displacement_rms', 'displacement_min', 'displacement_max', 'velocity_mean', 'velocity_rms', &
+      'velocity_min', 'velocity_max']
+   !> Contact statistics of each contact point, each obstacle and the beam.
+   character(len=*), parameter :: contact_names(7) = [character(len=32) :: 'impact_rate', 'episode_rate', &
+      'episode_impulse_mean', 'episode_impulse_max', 'episode_impulse_rms', 'contact_fraction', 'contact_force']
+   character(len=*), parameter :: contact_units(7) = [character(len=8) :: '1/s', '1/s', 'N s', 'N s', 'N s', '1', 'N']
+   character(len=*), parameter :: energy_names(6) = [character(len=32) :: 'power_input', 'power_impacts', &
+      'power_damping', 'power_numerical', 'power_dissipated', 'balance_residual']
+
+contains
+
+   subroutine init(self, observation_points, contact_points, obstacles)
+      class(statistics_layout), intent(inout) :: self
+      integer, intent(in) :: observation_points, contact_points, obstacles
+      integer :: k, group, lengths(3)
+      self%observation_points = observation_points
+      self%contact_points = contact_points
+      self%obstacles = obstacles
+      self%size = 0
+      if (allocated(self%entries)) deallocate (self%entries)
+      allocate (self%entries(0))
+      do k = 1, size(point_names)
+         call add(point_names(k), merge('m  ', 'm/s', k <= 4), group_points, observation_points, .true.)
+      end do
+      lengths = [contact_points, obstacles, 1]
+      do group = group_contacts, group_beam
+         do k = 1, size(contact_names)
+            call add(contact_names(k), contact_units(k), group, lengths(group - group_contacts + 1), .true.)
+         end do
+      end do
+      do k = 1, size(energy_names)
+         call add(energy_names(k), 'W', group_energy, 1, .true.)
+      end do
+      call add('peak_frequency', 'Hz', group_spectrum, peak_count, .false.)
+      call add('peak_amplitude', 'm', group_spectrum, peak_count, .false.)
+   contains
+      subroutine add(name, unit, group, length, has_error)
+         character(len=*), intent(in) :: name, unit
+         integer, intent(in) :: group, length
+         logical, intent(in) :: has_error
+         type(statistic_entry) :: item
+         item%name = name
+         item%unit = unit
+         item%group = group
+         item%length = length
+         item%offset = self%size
+         item%has_error = has_error
+         self%entries = [self%entries, item]
+         self%size = self%size + length
+      end subroutine add
+   end subroutine init
+
+   !> Index of the statistic `name` of `group`, 0 when there is none.
+   pure integer function find(self, group, name)
+      class(statistics_layout), intent(in) :: self
+      integer, intent(in) :: group
+      character(len=*), intent(in) :: name
+      integer :: k
+      find = 0
+      do k = 1, size(self%entries)
+         if (self%entries(k)%group == group .and. self%entries(k)%name == name) then
+            find = k
+            return
+         end if
+      end do
+   end function find
+
+   !> 'group/name' of entry k (e.g. 'points/displacement_rms'), '_error' appended when
+   !! `error`; the caller prefixes '/statistics/' or '/sweep/statistics/'.
+   pure function path(self, k, error) result(text)
+      class(statistics_layout), intent(in) :: self
+      integer, intent(in) :: k
+      logical, intent(in) :: error
+      character(len=:), allocatable :: text
+      text = trim(group_names(self%entries(k)%group))//'/'//trim(self%entries(k)%name)
+      if (error) text = text//'_error'
+   end function path
+end module vibrobeam_statistics_layout

@@ -1,0 +1,348 @@
+!> Running the points of a sweep (docs/sweeps.md): each task (one point in 'independent'
+!! mode, one line of points otherwise) runs its points in order, each from the scene's
+!! initial state or from the final state of the point before it; tasks are independent
+!! and run in parallel, on the threads of this process (OpenMP) and, in an MPI build, over
+!! the ranks (`vibrobeam_sweep_transport`).
+!!
+!! A point: its scene (`point_scene`) is prepared like a single run's; it starts from the
+!! scene's initial state or from the state (U, V and, for the position scheme, U^{n-1}) a
+!! point before it ended in, at t = 0; it runs its transient, then its measurement window
+!! (with steady_tolerance > 0, window after window until two consecutive ones agree), and
+!! its statistics are those of a single run with the same scene and window
+!! (`run_statistics`). Without keep_runs nothing is written: the recorder only decides
+!! impacts and episodes and feeds the statistics. With keep_runs the point's full result
+!! is written by `run_dynamics` (the same loop as a single run).
+!!
+!! A point that fails (contact solver, non-finite state, a start its scene refuses) is
+!! marked failed with the reason; the next point of its task starts from the last point
+!! that succeeded (the scene's initial state if none did). After SIGINT/SIGTERM the point
+!! in progress stops (status 'interrupted', its statistics so far) and the points not
+!! started are 'not run'.
+module vibrobeam_sweep_runner
+   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_text, only: real_text, integer_text
+   use vibrobeam_scene, only: scene_type
+   use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper
+   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_recorder, only: dynamics_recorder
+   use vibrobeam_dynamics, only: run_dynamics, run_outcome
+   use vibrobeam_state_record, only: state_record
+   use vibrobeam_contact_points, only: contact_value
+   use vibrobeam_statistics, only: statistics_result
+   use vibrobeam_statistics_layout, only: group_points, group_beam
+   use vibrobeam_signals, only: interrupt_requested
+   use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, point_scene, point_windows, max_settle_windows
+   implicit none
+   private
+   public :: point_result, start_state, run_task, point_file_name
+   public :: status_ok, status_failed, status_interrupted, status_not_run, status_names
+
+   integer, parameter :: status_ok = 0, status_failed = 1, status_interrupted = 2, status_not_run = 3
+   character(len=*), parameter :: status_names = '0 ok, 1 failed, 2 interrupted, 3 not run'
+
+   !> A state to start a point from (time restarts at 0).
+   type :: start_state
+      logical :: given = .false.
+      real(dp), allocatable :: u(:), v(:)
+      real(dp), allocatable :: u_previous(:)     !! position scheme only
+   end type start_state
+
+   !> What a point reached.
+   type :: point_result
+      integer :: status = status_not_run
+      character(len=512) :: message = ''
+      integer :: settled = -1                    !! 1 settled, 0 not settled, -1 not tested (steady_tolerance = 0)
+      integer :: start_point = 0                 !! the point whose final state it started from (0: the scene's)
+      integer(int64) :: settle_steps = 0         !! transient used (steps)
+      integer(int64) :: measure_steps = 0        !! window (steps)
+      real(dp) :: dt = 0
+      real(dp) :: wall_seconds = 0
+      type(statistics_result) :: statistics
+   end type point_result
+
+contains
+
+   !> The result file of point k with keep_runs: '<stem>_point<k>.h5' beside the sweep
+   !! file '<stem>.h5', k with at least 4 digits.
+   pure function point_file_name(sweep_file, k) result(name)
+      character(len=*), intent(in) :: sweep_file
+      integer, intent(in) :: k
+      character(len=:), allocatable :: name
+      character(len=16) :: digits
+      integer :: n
+      n = len_trim(sweep_file)
+      if (n > 3) then
+         if (sweep_file(n - 2:n) == '.h5') n = n - 3
+      end if
+      write (digits, '(i4.4)') k
+      name = sweep_file(1:n)//'_point'//trim(adjustl(digits))//'.h5'
+   end function point_file_name
+
+   !> Run the points of task `task` in order into results(:) (indexed like `points`).
+   !! `base` is the start state of &initial from_file (given = .false. without one).
+   subroutine run_task(scene, settings, points, task, base, results)
+      type(scene_type), intent(in) :: scene
+      type(sweep_settings), intent(in) :: settings
+      type(sweep_point), intent(in) :: points(:)
+      integer, intent(in) :: task
+      type(start_state), intent(in) :: base
+      type(point_result), intent(inout) :: results(:)
+      type(start_state) :: last_good, final
+      integer :: k, last_good_point
+      last_good_point = 0
+      do k = 1, size(points)
+         if (points(k)%task /= task) cycle
+         if (interrupt_requested()) then
+            results(k)%status = status_not_run
+            results(k)%message = 'not run: the sweep was interrupted'
+            cycle
+         end if
+         if (points(k)%start_point == 0 .or. last_good_point == 0) then
+            call run_point(scene, settings, k, points(k), base, 0, results(k), final)
+         else
+            call run_point(scene, settings, k, points(k), last_good, last_good_point, results(k), final)
+         end if
+         if (results(k)%status == status_ok) then
+            call move_state(final, last_good)
+            last_good_point = k
+         end if
+      end do
+   end subroutine run_task
+
+   subroutine move_state(from, to)
+      type(start_state), intent(inout) :: from, to
+      to%given = from%given
+      if (allocated(to%u)) deallocate (to%u)
+      if (allocated(to%v)) deallocate (to%v)
+      if (allocated(to%u_previous)) deallocate (to%u_previous)
+      if (allocated(from%u)) call move_alloc(from%u, to%u)
+      if (allocated(from%v)) call move_alloc(from%v, to%v)
+      if (allocated(from%u_previous)) call move_alloc(from%u_previous, to%u_previous)
+   end subroutine move_state
+
+   !> One point (module documentation): its result, and its final state in `final`.
+   subroutine run_point(scene, settings, k, point, start, start_point, result, final)
+      type(scene_type), intent(in) :: scene
+      type(sweep_settings), intent(in) :: settings
+      integer, intent(in) :: k, start_point
+      type(sweep_point), intent(in) :: point
+      type(start_state), intent(in) :: start
+      type(point_result), intent(inout) :: result
+      type(start_state), intent(out) :: final
+      type(scene_type) :: local
+      type(prepared_scene) :: prepared
+      character(len=:), allocatable :: warnings
+      character(len=512) :: errmsg
+      integer(int64) :: clock_start, clock_end, rate, transient
+      integer :: stat, windows
+      call system_clock(clock_start, rate)
+      local = point_scene(scene, settings, point)
+      local%progress = .false.
+      result%dt = local%dt
+      result%start_point = start_point
+      call point_windows(settings, local, result%settle_steps, result%measure_steps, stat, errmsg)
+      warnings = ''
+      if (stat == 0) call prepare_scene(local, prepared, warnings, stat, errmsg)
+      if (stat /= 0) then
+         call failed('the point''s initial state: '//trim(errmsg))
+         return
+      end if
+      if (start%given) call take_start()
+      transient = result%settle_steps
+      if (settings%steady_tolerance > 0) then
+         call measure_until_steady()
+         if (stat /= 0 .or. result%status /= status_ok) return
+      end if
+      if (settings%keep_runs) then
+         call run_with_file()
+      else if (settings%steady_tolerance <= 0) then
+         call run_without_file()
+      end if
+      call system_clock(clock_end)
+      result%wall_seconds = real(clock_end - clock_start, dp)/rate
+   contains
+      subroutine failed(message)
+         character(len=*), intent(in) :: message
+         result%status = status_failed
+         result%message = message
+      end subroutine failed
+
+      !> Start from `start` unless its displacement violates this point's obstacles (an
+      !! obstacle moved by the sweep): then from the scene's initial state, as noted.
+      subroutine take_start()
+         real(dp) :: value, tolerance
+         integer :: c
+         tolerance = 1e-12_dp*prepared%model%length
+         do c = 1, prepared%contacts%count
+            value = contact_value(prepared%contacts, c, start%u)
+            if (value + tolerance < prepared%contacts%lower(c) .or. value - tolerance > prepared%contacts%upper(c)) then
+               result%start_point = 0
+               result%message = 'started from the scene''s initial state: the state of point '// &
+                                integer_text(start_point)//' violates this point''s obstacles'
+               return
+            end if
+         end do
+         prepared%u0 = start%u
+         prepared%v0 = start%v
+         if (allocated(start%u_previous) .and. local%scheme == 'position') prepared%u_previous0 = start%u_previous
+      end subroutine take_start
+
+      !> The statistics of the window from `first` over `measure_steps` steps, stepping
+      !! `stepper` (already at `first` or before it) without writing anything.
+      subroutine step_to(stepper, recorder, last)
+         class(time_stepper), intent(inout) :: stepper
+         type(dynamics_recorder), intent(inout) :: recorder
+         integer(int64), intent(in) :: last
+         integer(int64) :: n
+         character(len=512) :: step_message
+         integer :: step_stat
+         do n = stepper%steps + 1, last
+            call stepper%step(step_stat, step_message)
+            if (step_stat /= 0) then
+               write (errmsg, '(a,i0,a,es14.7,a)') 'numerical failure at step ', n, ' (t = ', n*local%dt, ' s): '// &
+                  trim(step_message)
+               call failed(errmsg)
+               return
+            end if
+            call recorder%after_step(stepper, stat, errmsg)
+            if (stat /= 0) then
+               call failed(errmsg)
+               return
+            end if
+            if (interrupt_requested()) then
+               result%status = status_interrupted
+               result%message = 'interrupted at t = '//real_text(n*local%dt)//' s'
+               return
+            end if
+         end do
+      end subroutine step_to
+
+      !> A stepper at the point's start and a recorder that writes nothing, for at most
+      !! `last` steps, its statistics window open; result%status ok, or failed.
+      subroutine start_without_file(stepper, recorder, last)
+         class(time_stepper), allocatable, intent(out) :: stepper
+         type(dynamics_recorder), intent(out) :: recorder
+         integer(int64), intent(in) :: last
+         character(len=:), allocatable :: ignored
+         call start_time_stepper(local, prepared, stepper, stat, errmsg)
+         if (stat /= 0) then
+            call failed(errmsg)
+            return
+         end if
+         if (prepared%reduced) then
+            call recorder%init(local, stepper, prepared%model, stepper%v, last, write_rows=.false., &
+                               reduction=prepared%reduction)
+         else
+            call recorder%init(local, stepper, prepared%model, prepared%v0, last, write_rows=.false.)
+         end if
+         call recorder%start_statistics(stepper, ignored)
+         result%status = status_ok
+      end subroutine start_without_file
+
+      !> Without keep_runs and steady-state detection: settle, measure, statistics.
+      subroutine run_without_file()
+         class(time_stepper), allocatable :: stepper
+         type(dynamics_recorder) :: recorder
+         call start_without_file(stepper, recorder, transient + result%measure_steps)
+         if (result%status /= status_ok) return
+         call step_to(stepper, recorder, transient + result%measure_steps)
+         result%statistics = recorder%window_statistics(stepper)
+         call keep_final(stepper)
+      end subroutine run_without_file
+
+      !> steady_tolerance > 0: after the transient, windows of measure_steps until the RMS
+      !! tip displacement and the impact rate of two consecutive windows agree within the
+      !! tolerance, at most max_settle_windows windows. Sets the transient and the result
+      !! (without keep_runs: the statistics of the last window).
+      subroutine measure_until_steady()
+         class(time_stepper), allocatable :: stepper
+         type(dynamics_recorder) :: recorder
+         type(statistics_result) :: previous, current
+         call start_without_file(stepper, recorder, result%settle_steps + max_settle_windows*result%measure_steps)
+         if (result%status /= status_ok) return
+         result%settled = 0
+         do windows = 1, max_settle_windows
+            transient = result%settle_steps + (windows - 1)*result%measure_steps
+            if (windows > 1) call recorder%restart_statistics(stepper, transient)
+            call step_to(stepper, recorder, transient + result%measure_steps)
+            current = recorder%window_statistics(stepper)
+            if (result%status /= status_ok) exit
+            if (windows > 1) then
+               if (agree(previous, current, settings%steady_tolerance)) then
+                  result%settled = 1
+                  exit
+               end if
+            end if
+            previous = current
+         end do
+         windows = min(windows, max_settle_windows)
+         result%settle_steps = transient
+         result%statistics = current
+         if (result%status == status_ok .and. .not. settings%keep_runs) call keep_final(stepper)
+      end subroutine measure_until_steady
+
+      !> keep_runs: the point's full result through `run_dynamics`, named point_file_name.
+      subroutine run_with_file()
+         type(run_outcome) :: outcome
+         type(state_record) :: record
+         local%file = point_file_name(scene%file, k)
+         local%text = .false.
+         local%measure_from = transient*local%dt
+         local%t_end = (transient + result%measure_steps)*local%dt
+         call run_dynamics(local, prepared, outcome, stat, errmsg, quiet=.true., statistics=result%statistics, &
+                           final_state=record)
+         if (stat /= 0) then
+            call failed('writing '''//trim(local%file)//''': '//trim(errmsg))
+            return
+         end if
+         select case (outcome%status)
+         case ('failed')
+            call failed('numerical failure at '//trim(outcome%failure))
+         case ('interrupted')
+            result%status = status_interrupted
+            result%message = 'interrupted'
+         case default
+            result%status = status_ok
+         end select
+         if (result%status /= status_ok) return
+         allocate (final%u(size(prepared%u0)), final%v(size(prepared%v0)))
+         call record%get_reals('stepper.u', final%u, stat, errmsg)
+         if (stat == 0) call record%get_reals('stepper.v', final%v, stat, errmsg)
+         if (stat == 0 .and. record%find('stepper.u_previous') > 0) then
+            allocate (final%u_previous(size(prepared%u0)))
+            call record%get_reals('stepper.u_previous', final%u_previous, stat, errmsg)
+         end if
+         final%given = stat == 0
+      end subroutine run_with_file
+
+      subroutine keep_final(stepper)
+         class(time_stepper), intent(in) :: stepper
+         type(state_record) :: record
+         if (result%status /= status_ok) return
+         call stepper%save_state(record)
+         final%u = stepper%u
+         final%v = stepper%v
+         if (record%find('stepper.u_previous') > 0) then
+            allocate (final%u_previous(size(stepper%u)))
+            call record%get_reals('stepper.u_previous', final%u_previous, stat, errmsg)
+         end if
+         final%given = .true.
+      end subroutine keep_final
+   end subroutine run_point
+
+   !> The RMS tip displacement and the impact rate of the beam agree within `tolerance`
+   !! (relative to the larger; two zeros agree).
+   logical function agree(a, b, tolerance)
+      type(statistics_result), intent(in) :: a, b
+      real(dp), intent(in) :: tolerance
+      integer :: rms, rate
+      rms = a%layout%entries(a%layout%find(group_points, 'displacement_rms'))%offset + 1
+      rate = a%layout%entries(a%layout%find(group_beam, 'impact_rate'))%offset + 1
+      agree = close(a%values(rms), b%values(rms)) .and. close(a%values(rate), b%values(rate))
+   contains
+      logical function close(x, y)
+         real(dp), intent(in) :: x, y
+         close = abs(x - y) <= tolerance*max(abs(x), abs(y))
+      end function close
+   end function agree
+end module vibrobeam_sweep_runner

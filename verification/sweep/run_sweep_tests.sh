@@ -1,0 +1,133 @@
+#!/usr/bin/env bash
+# Sweep tests (docs/sweeps.md); each compares results bit for bit with compare_sweep.
+# usage: run_sweep_tests.sh MODE VIBROBEAM COMPARE_SWEEP [MPIRUN]
+#   point    every point of an 'independent' sweep equals a single run with its parameter
+#            value and window (both schemes)
+#   files    keep_runs with steady-state detection and continuation ('up'): each point's
+#            result file holds the statistics of the sweep file's row
+#   threads  the same sweeps (independent points; a 2-D map of up-down lines) with 1 and
+#            2 OpenMP threads
+#   mpi      the same with 1 and 2 MPI ranks (mpirun --oversubscribe -n 2), one thread each
+#   failure  a point whose contact solver fails is marked failed, the sweep goes on and
+#            exits with status 3 (independent points, and a continuation branch)
+#   interrupt SIGINT during a sweep: exit status 4, the sweep file published with /run
+#            status 'interrupted' and the points not finished marked
+set -uo pipefail
+mode=$1; vibrobeam=$2; compare=$3; mpirun=${4:-mpirun}
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+failed=0
+
+scene() {  # scene NAME FREQUENCY SCHEME T_END OUTPUT SWEEP
+  sed -e "s|@FILE@|$1.h5|" -e "s|@FREQUENCY@|$2|" -e "s|@SCHEME@|$3|" -e "s|@T_END@|$4|" \
+      -e "s|@OUTPUT@|$5|" -e "s|@SWEEP@|$6|" "$here/scene.nml.in" > "$1.nml"
+}
+run() {  # run NAME [ENVIRONMENT...]: exit status 0 expected
+  local name=$1; shift
+  if ! env "$@" "$vibrobeam" "$name.nml" > "$name.out" 2> "$name.err"; then
+    echo "FAIL: vibrobeam $name.nml"; cat "$name.err"; failed=1
+  fi
+}
+
+case $mode in
+point)
+  for scheme in velocity position; do
+    scene sweep 200 $scheme "" "" \
+      "\&sweep parameter = 'load.point_frequency', values = 150.0, 200.0, 250.0, settle = 0.05, measure = 0.05 /"
+    run sweep
+    k=0
+    for frequency in 150.0 200.0 250.0; do
+      k=$((k + 1))
+      scene single$k $frequency $scheme ", t_end = 0.1" ", measure_from = 0.05" ""
+      run single$k
+      echo "$scheme, point $k ($frequency rad/s):"
+      "$compare" point sweep.h5 $k single$k.h5 || failed=1
+    done
+  done
+  ;;
+files)
+  scene sweep 200 velocity "" "" \
+    "\&sweep parameter = 'load.point_frequency', from = 180, to = 220, count = 3, mode = 'up', settle = 0.02, measure = 0.03, steady_tolerance = 0.05, keep_runs = .true. /"
+  run sweep
+  for k in 1 2 3; do
+    echo "point $k: sweep_point000$k.h5"
+    "$compare" point sweep.h5 $k sweep_point000$k.h5 || failed=1
+  done
+  ;;
+threads|mpi)
+  scene independent 200 velocity "" "" \
+    "\&sweep parameter = 'load.point_frequency', from = 150, to = 250, count = 5, settle = 0.03, measure = 0.03 /"
+  scene map 200 position "" "" \
+    "\&sweep parameter = 'load.point_frequency', from = 180, to = 220, count = 3, mode = 'up-down', parameter2 = 'obstacles.level_from(2)', values2 = 4e-4, 5e-4, 6e-4, settle = 0.02, measure = 0.03 /"
+  for name in independent map; do
+    if [ "$mode" = threads ]; then
+      cp $name.nml ${name}_1.nml; sed -i "s|$name.h5|${name}_1.h5|" ${name}_1.nml
+      cp $name.nml ${name}_2.nml; sed -i "s|$name.h5|${name}_2.h5|" ${name}_2.nml
+      run ${name}_1 OMP_NUM_THREADS=1
+      run ${name}_2 OMP_NUM_THREADS=2
+      grep -q "on 2 threads" ${name}_2.out || { echo "FAIL: ${name}_2 did not run on 2 threads"; cat ${name}_2.out; failed=1; }
+    else
+      for ranks in 1 2; do
+        cp $name.nml ${name}_$ranks.nml; sed -i "s|$name.h5|${name}_$ranks.h5|" ${name}_$ranks.nml
+        if ! OMP_NUM_THREADS=1 "$mpirun" --allow-run-as-root --oversubscribe -n $ranks "$vibrobeam" ${name}_$ranks.nml \
+             > ${name}_$ranks.out 2> ${name}_$ranks.err; then
+          echo "FAIL: mpirun -n $ranks vibrobeam ${name}_$ranks.nml"; cat ${name}_$ranks.err; failed=1
+        fi
+      done
+      grep -q "x 2 processes" ${name}_2.out || { echo "FAIL: ${name}_2 did not run on 2 ranks"; cat ${name}_2.out; failed=1; }
+    fi
+    echo "$name:"
+    "$compare" same ${name}_1.h5 ${name}_2.h5 || failed=1
+  done
+  ;;
+failure)
+  # the scene of verification/dynamics/numerical_failure.nml: a contact solver allowed
+  # one pivoting iteration ('pivoting') fails once the load presses the beam onto its floor
+  for sweep_mode in independent down; do
+    cat > failure.nml <<END
+&beam      length = 1.0, k2 = 1.0 /
+&mesh      elements = 8 /
+&obstacles count = 1, side(1) = 'below', x_from(1) = 0.0, x_to(1) = 1.0, level_from(1) = -1e-3 /
+&time      dt = 1e-2 /
+&load      distributed = -10.0 /
+&solver    contact_method = 'pivoting', contact_max_iterations = 1 /
+&output    file = 'failure.h5', text = .false. /
+&sweep     parameter = 'load.distributed', values = -0.0005, -10.0, -0.001, mode = '$sweep_mode', measure = 10.0 /
+END
+    "$vibrobeam" failure.nml > failure.out 2> failure.err
+    status=$?
+    statuses=$(h5dump -A 0 -d /sweep/status failure.h5 | sed -n "s/.*(0): *\\(.*\\)/\\1/p" | tr -d " ")
+    echo "$sweep_mode: exit status $status, /sweep/status $statuses"
+    if [ $status -ne 3 ]; then echo "FAIL exit status $status, expected 3"; cat failure.err; failed=1; fi
+    case $sweep_mode in
+      independent) expected=0,1,0 ;;   # the order given
+      down) expected=0,0,1 ;;          # -0.0005, -0.001, -10
+    esac
+    if [ "$statuses" != "$expected" ]; then echo "FAIL /sweep/status $statuses, expected $expected"; failed=1; fi
+    grep -q "point [0-9]: numerical failure at step" failure.err || { echo "FAIL no failure message"; cat failure.err; failed=1; }
+  done
+  ;;
+interrupt)
+  scene long 200 velocity "" "" \
+    "\&sweep parameter = 'load.point_frequency', from = 150, to = 250, count = 6, settle = 20, measure = 20 /"
+  "$vibrobeam" long.nml > long.out 2> long.err &
+  pid=$!
+  sleep 1
+  kill -INT $pid
+  wait $pid
+  status=$?
+  echo "exit status $status"
+  if [ $status -ne 4 ]; then echo "FAIL exit status $status, expected 4"; cat long.err; failed=1; fi
+  h5dump -a /run/status long.h5 | grep -q '"interrupted"' || { echo "FAIL /run status is not 'interrupted'"; failed=1; }
+  statuses=$(h5dump -A 0 -d /sweep/status long.h5 | sed -n "s/.*(0): *\\(.*\\)/\\1/p" | tr -d " ")
+  echo "/sweep/status $statuses"
+  case ",$statuses," in *,2,*) ;; *) echo "FAIL no point marked interrupted"; failed=1 ;; esac
+  case ",$statuses," in *,3,*) ;; *) echo "FAIL no point marked not run"; failed=1 ;; esac
+  ls long.h5.*.tmp > /dev/null 2>&1 && { echo "FAIL a temporary file is left"; failed=1; }
+  ;;
+*)
+  echo "unknown mode $mode"; exit 2 ;;
+esac
+exit $failed
