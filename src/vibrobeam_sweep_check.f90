@@ -177,7 +177,7 @@ contains
          end if
       end do
       local = point_scene(scene, settings, points(least))
-      if (worst == best) then
+      if (.not. worst > best) then   ! every point has the same dt against its threshold
          text = resolution_advice_text(local, 'every point of the sweep')
       else
          text = resolution_advice_text(local, 'point '//integer_text(least)//' (the least resolved of the sweep)')
