@@ -7,13 +7,14 @@
 # BUILD_DIR (default: build at the repository root) must hold a built `vibrobeam`;
 # JOBS (default 2) single runs go at a time. The runs' result files go to runs/ here
 # (not committed); runs.dat (one row per run), the tables convergence_*.txt and the
-# plots convergence_*.png are rewritten. Run time: about 15 min on 2 busy cores
-# (about 11 core-minutes of stepping); a run whose result file exists is not redone
-# (delete runs/ to start over).
+# plots convergence_*.png are rewritten. Run time: about 15 min of wall time with 2 jobs
+# on 2 shared cores (34 runs, 1590 s of run wall time in all, measured under a load
+# average of about 9); a run whose result file exists is not redone (delete runs/ to
+# start over).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
-build=${1:-$root/build}
+build=$(cd "${1:-$root/build}" && pwd)   # absolute: the script works in its own folder
 jobs=${2:-2}
 exe=$build/vibrobeam
 [[ -x $exe ]] || { echo "run_study.sh: no executable $exe (build first)" >&2; exit 1; }
