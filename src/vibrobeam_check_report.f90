@@ -29,6 +29,7 @@ module vibrobeam_check_report
    use vibrobeam_cantilever_exact, only: cantilever_frequency
    use vibrobeam_highest_frequency, only: highest_frequency
    use vibrobeam_output_target, only: result_size, estimate_result_size
+   use vibrobeam_resolution_advice, only: resolution_advice_text
    implicit none
    private
    public :: check_report, make_check_report, check_report_text, scene_warnings
@@ -94,13 +95,17 @@ contains
       report%size = estimate_result_size(scene)
    end subroutine make_check_report
 
-   !> The report as lines of text (the program prints them).
-   function check_report_text(scene, report) result(text)
+   !> The report as lines of text (the program prints them). With `advice` (default true),
+   !! a dynamics run with obstacles and a statistics window ends with the resolution advice
+   !! for its statistics (`vibrobeam_resolution_advice`); a sweep prints its own.
+   function check_report_text(scene, report, advice) result(text)
       type(scene_type), intent(in) :: scene
       type(check_report), intent(in) :: report
+      logical, intent(in), optional :: advice
       character(len=:), allocatable :: text
       integer :: n
       real(dp) :: time_scale, beam_stiffness, mass
+      logical :: with_advice
       text = 'natural frequencies of the clamped-free beam (continuum closed form; the obstacles are ignored):'// &
              new_line('a')
       do n = 1, listed_modes
@@ -134,6 +139,9 @@ contains
              g(report%size%hdf5_bytes)//', text '//g(report%size%text_bytes)//'): '//g(report%size%outputs)// &
              ' output times of '//g(report%size%values_per_output)//' values and '//g(report%size%snapshots)// &
              ' field snapshots of '//integer_text(scene%elements + 1)//' nodes; impacts not counted'//new_line('a')
+      with_advice = .true.
+      if (present(advice)) with_advice = advice
+      if (with_advice .and. scene%measure_from < scene%t_end) text = text//resolution_advice_text(scene, 'this run')
    end function check_report_text
 
    !> Contact time scale of compliant obstacle i of the scene (s; module comment), with the

@@ -8,6 +8,7 @@ module vibrobeam_sweep_check
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper
    use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_resolution_advice, only: resolution_advice_text, advice_time_step
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, sweep_points, point_scene, point_windows, &
       task_count, max_settle_windows
    implicit none
@@ -151,16 +152,35 @@ contains
       seconds = real(finish - start, dp)/rate/max(1, n)
    end function time_per_step
 
-   !> The resolution advice for the statistics of a sweep: which statistics can be
-   !! trusted at the scene's Delta t and N. The convergence study of the statistics
-   !! (issue 11, item 5) turns its findings into this text; until then it says so.
+   !> The resolution advice for the statistics of a sweep (`vibrobeam_resolution_advice`),
+   !! for its least resolved point: the one whose dt is largest against the dt the advice
+   !! asks for (the parameter may be dt or an input that sets the natural frequencies).
    function resolution_advice(scene, settings) result(text)
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
       character(len=:), allocatable :: text
-      text = 'resolution advice: none yet (dt = '//real_text(scene%dt)//' s, '//integer_text(scene%elements)// &
-             ' elements); each statistic''s standard error (batch means) gives its sampling uncertainty, '// &
-             'not its discretization error (docs/statistics.md)'//new_line('a')
-      if (.false.) text = text//settings%mode
+      type(sweep_point), allocatable :: points(:)
+      type(scene_type) :: local
+      real(dp) :: ratio, worst, best
+      integer :: k, least
+      allocate (points, source=sweep_points(settings))
+      least = 1
+      worst = -1
+      best = huge(1.0_dp)
+      do k = 1, size(points)
+         local = point_scene(scene, settings, points(k))
+         ratio = local%dt/advice_time_step(local)
+         best = min(best, ratio)
+         if (ratio > worst) then
+            worst = ratio
+            least = k
+         end if
+      end do
+      local = point_scene(scene, settings, points(least))
+      if (.not. worst > best) then   ! every point has the same dt against its threshold
+         text = resolution_advice_text(local, 'every point of the sweep')
+      else
+         text = resolution_advice_text(local, 'point '//integer_text(least)//' (the least resolved of the sweep)')
+      end if
    end function resolution_advice
 end module vibrobeam_sweep_check

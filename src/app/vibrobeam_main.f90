@@ -235,7 +235,7 @@ contains
       end if
       call make_check_report(scene, model, report, stat, errmsg)
       if (stat /= 0) call fail(exit_numerical_failure, errmsg)
-      write (output_unit, '(a)', advance='no') check_report_text(scene, report)
+      write (output_unit, '(a)', advance='no') check_report_text(scene, report, advice=.not. sweep%present)
       end associate
    end subroutine print_resolved_scene
 
