@@ -136,6 +136,14 @@ contains
          call fail('&sweep settle = '//real_text(settings%settle)//' and settle_periods = '// &
                    real_text(settings%settle_periods)//' are both given: give one of them')
       end if
+      if (settings%mode /= 'independent' .and. scene%reduction /= 'none') then
+         ! a continuation point starts from the previous point's state; with a reduced model
+         ! that state is in reduced coordinates, whose basis (the cut-off, the modes) may
+         ! change with the parameter
+         call fail('&sweep mode = '''//trim(settings%mode)//''' carries each point''s state to the next, '// &
+                   'which a reduced model (&mesh reduction = '''//trim(scene%reduction)//''') cannot do: '// &
+                   'use mode = ''independent'' or reduction = ''none''')
+      end if
       if (stat /= 0) return
       total = size(settings%axis(1)%values)*max(1, size(settings%axis(2)%values))
       if (settings%mode == 'up-down') total = 2*total
