@@ -38,8 +38,9 @@ module vibrobeam_contact_points
       integer, allocatable :: dofs(:,:)      !! (4, count) unknowns of row H_c (0 = none)
       real(dp), allocatable :: weights(:,:)  !! (4, count) coefficients of row H_c
       type(spring_set) :: springs            !! the compliant stops (none: rigid obstacles only)
-      !> (count) the obstacle (index in &obstacles) that gives `lower`, `upper`; 0: none.
-      !! An impulse upwards comes from the lower one, downwards from the upper one.
+      !> (count) the obstacle (index in &obstacles) that gives `lower`, `upper`; on a side
+      !! with springs only, its first spring's obstacle; 0: none. An impulse (or a
+      !! compliant episode) upwards comes from the lower one, downwards from the upper one.
       integer, allocatable :: lower_obstacle(:), upper_obstacle(:)
    end type contact_set
 
@@ -176,6 +177,12 @@ contains
                springs%stiffness(k) = o%stiffness*spring_length(k)
                springs%exponent(k) = o%exponent
                springs%damping(k) = o%damping
+               ! a side held by springs only: its first spring's obstacle gives the impulses
+               ! there (the run statistics attribute contact episodes by side)
+               if (o%side == 'below' .and. contacts%lower_obstacle(springs%point(k)) == 0) &
+                  contacts%lower_obstacle(springs%point(k)) = spring_obstacle(k)
+               if (o%side == 'above' .and. contacts%upper_obstacle(springs%point(k)) == 0) &
+                  contacts%upper_obstacle(springs%point(k)) = spring_obstacle(k)
             end associate
          end do
       end associate

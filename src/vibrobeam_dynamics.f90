@@ -40,6 +40,8 @@ module vibrobeam_dynamics
       integer(int64) :: impacts = 0
       real(dp) :: wall_seconds = 0
       real(dp) :: max_penetration = 0
+      logical :: compliant = .false.           !! the scene has compliant stops
+      real(dp) :: peak_force = 0               !! their largest |force| over every step (N)
       character(len=512) :: failure = ''
       character(len=64) :: run_id = ''         !! /run run_id of the published result
    end type run_outcome
@@ -218,6 +220,8 @@ contains
             outcome%steps = stepper%steps
             outcome%impacts = recorder%impacts
             outcome%max_penetration = recorder%max_penetration
+            outcome%compliant = recorder%compliant
+            if (outcome%compliant) outcome%peak_force = maxval(recorder%peak_force)
             summary%status = outcome%status
             summary%steps = stepper%steps
             summary%wall_seconds = meter%elapsed()

@@ -155,6 +155,8 @@ contains
             touched(c) = .true.
             if (.not. self%open(c)) then
                self%open(c) = .true.
+               ! the run statistics count the episode from here, like a rigid one
+               self%opened(c) = .true.
                self%start(c) = t
                self%impulse(c) = 0
                self%approach(c) = abs(contact_value(stepper%contacts, c, stepper%v))

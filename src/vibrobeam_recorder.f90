@@ -392,10 +392,8 @@ contains
          if (c == self%tip_contact) self%tip_impulse = self%tip_impulse + stepper%impulse(k)
       end do
       if (self%compliant) then
-         ! Hook for force statistics (issue 12; the statistics module of the sweeps work is
-         ! not on this branch): stepper%contact_force holds the true force at every contact
-         ! point after every step; a statistics observer should accumulate, per point and
-         ! while the force is nonzero, its peak, mean and RMS here, beside peak_force.
+         ! stepper%contact_force holds the true force at every contact point after every
+         ! step; the run statistics take their force statistics from it (observe_step).
          ! a compliant point is in contact while its stops push (docs/output.md)
          where (abs(stepper%contact_force) > 0) now = .true.
          self%peak_force = max(self%peak_force, abs(stepper%contact_force))

@@ -26,10 +26,14 @@ module vibrobeam_statistics
 
    !> Levels recorded at block boundaries: the running sums of the stepper and the balance.
    integer, parameter :: level_work = 1, level_impacts = 2, level_damping = 3, level_numerical = 4, &
-                         level_balance = 5, level_count = 5
+                         level_contact_damping = 5, level_total = 6, level_balance = 7, level_count = 7
    !> Sum quantities per contact target (a contact point, an obstacle or the beam).
    integer, parameter :: s_impacts = 1, s_episodes = 2, s_impulse = 3, s_impulse_square = 4, s_contact_steps = 5, &
                          s_force = 6, per_target = 6
+   !> Sum quantities of the compliant stops' force per contact point: sum |f|, sum f^2,
+   !! steps with f /= 0, compliant episodes, their steps; extremes: |f|, episode steps.
+   integer, parameter :: f_force = 1, f_force_square = 2, f_steps = 3, f_episodes = 4, f_episode_steps = 5, &
+                         per_force = 5, x_force = 1, x_episode_steps = 2, per_force_extreme = 2
 
    !> What the statistics of a window are (docs/statistics.md).
    type :: statistics_result
@@ -61,6 +65,10 @@ module vibrobeam_statistics
       type(welch_estimator) :: spectrum
       !> (contact points) sample offset at which the open episode there opened; -1: none in the window
       integer(int64), allocatable :: episode_offset(:)
+      !> (contact points) the compliant stops push there (force /= 0 after the last step)
+      logical, allocatable :: force_touching(:)
+      !> (contact points) sample offset at which the compliant episode there opened; -1: none in the window
+      integer(int64), allocatable :: force_offset(:)
       ! the Poincare samples of the last step (the recorder streams them)
       integer :: poincare_found = 0
       real(dp), allocatable :: sample_times(:), sample_values(:, :)
@@ -102,15 +110,15 @@ contains
       self%lower_obstacle = lower_obstacle
       self%upper_obstacle = upper_obstacle
       call self%layout%init(points, self%contacts, obstacles)
-      allocate (self%episode_offset(self%contacts), source=-1_int64)
+      allocate (self%episode_offset(self%contacts), self%force_offset(self%contacts), source=-1_int64)
+      allocate (self%force_touching(self%contacts), source=.false.)
       call self%poincare%init(omega, phase, dt, 2*points)
       capacity = 1
       if (omega > 0) capacity = int(min(1e6_dp, dt*omega/(8*atan(1.0_dp)))) + 2
       allocate (self%sample_times(capacity), self%sample_values(2*points, capacity))
       self%expected_samples = max(1_int64, last_step - first_step)
       ! every item of the checkpoint exists from the start, with its size for the run
-      call self%blocks%init(4*self%points + per_target*targets(self), 2*self%points + targets(self), &
-                            spread(0.0_dp, 1, level_count))
+      call self%blocks%init(sum_count(self), extreme_count(self), spread(0.0_dp, 1, level_count))
       call self%begin_window(first_step)
    end subroutine init
 
@@ -122,6 +130,7 @@ contains
       self%first_step = first_step
       self%started = .false.
       self%episode_offset = -1
+      self%force_offset = -1
       call self%spectrum%init(self%dt, self%expected_samples)
    end subroutine begin_window
 
@@ -140,8 +149,7 @@ contains
       type(run_statistics), intent(inout) :: self
       class(time_stepper), intent(in) :: stepper
       real(dp), intent(in) :: observed(:, :)
-      call self%blocks%init(4*self%points + per_target*targets(self), 2*self%points + targets(self), &
-                            levels_of(stepper))
+      call self%blocks%init(sum_count(self), extreme_count(self), levels_of(stepper))
       call self%poincare%start(stepper%t, reshape(observed, [2*self%points]))
       self%started = .true.
    end subroutine start
@@ -152,15 +160,48 @@ contains
       targets = self%contacts + self%obstacles + 1
    end function targets
 
-   !> Work, impact, damping and numerical sums of the stepper and the balance
-   !! total - work + dissipated, as /energy writes them.
+   !> Sum quantities: 4 per observation point, per_target per contact target, per_force
+   !! per contact point.
+   pure integer function sum_count(self)
+      type(run_statistics), intent(in) :: self
+      sum_count = 4*self%points + per_target*targets(self) + per_force*self%contacts
+   end function sum_count
+
+   !> Extreme quantities: u and v per observation point, |I| per target, per_force_extreme
+   !! per contact point.
+   pure integer function extreme_count(self)
+      type(run_statistics), intent(in) :: self
+      extreme_count = 2*self%points + targets(self) + per_force_extreme*self%contacts
+   end function extreme_count
+
+   !> Index of force sum quantity q of contact point c.
+   pure integer function force_sum(self, c, q)
+      type(run_statistics), intent(in) :: self
+      integer, intent(in) :: c, q
+      force_sum = 4*self%points + per_target*targets(self) + per_force*(c - 1) + q
+   end function force_sum
+
+   !> Index of force extreme quantity q of contact point c.
+   pure integer function force_extreme(self, c, q)
+      type(run_statistics), intent(in) :: self
+      integer, intent(in) :: c, q
+      force_extreme = 2*self%points + targets(self) + per_force_extreme*(c - 1) + q
+   end function force_extreme
+
+   !> Work, impact, damping, numerical and contact damping sums of the stepper, the total
+   !! energy (with the compliant stops' potential) and the balance total - work +
+   !! dissipated, as /energy writes them (docs/theory.md section 8, "Energy").
    function levels_of(stepper) result(levels)
       class(time_stepper), intent(in) :: stepper
       real(dp) :: levels(level_count), total, dissipated
       total = stepper%kinetic_energy() + stepper%elastic_energy()
       dissipated = stepper%dissipated_impacts + stepper%dissipated_damping + stepper%dissipated_numerical
+      if (stepper%contacts%springs%count > 0) then
+         total = total + stepper%contact_potential()
+         dissipated = dissipated + stepper%dissipated_contact_damping
+      end if
       levels = [stepper%work, stepper%dissipated_impacts, stepper%dissipated_damping, stepper%dissipated_numerical, &
-                total - stepper%work + dissipated]
+                stepper%dissipated_contact_damping, total, total - stepper%work + dissipated]
    end function levels_of
 
    !> After every step: the recorder's events carry the impacts, the episodes that opened
@@ -173,7 +214,7 @@ contains
       character(len=*), intent(out) :: errmsg
       logical :: touched(targets(self))
       integer(int64) :: offset
-      real(dp) :: impulse
+      real(dp) :: impulse, force
       integer :: k, c, p, obstacle, beam
       stat = 0
       errmsg = ''
@@ -192,6 +233,7 @@ contains
       do c = 1, self%contacts
          if (events%opened(c)) self%episode_offset(c) = offset
       end do
+      call force_episodes()
       if (offset < 0) return
       associate (blocks => self%blocks)
          do p = 1, self%points
@@ -217,6 +259,14 @@ contains
          do k = 1, size(touched)
             if (touched(k)) call blocks%add(target_sum(self, k, s_contact_steps), 1.0_dp)
          end do
+         do c = 1, self%contacts
+            force = abs(stepper%contact_force(c))
+            call blocks%extreme(force_extreme(self, c, x_force), force)
+            if (force <= 0) cycle
+            call blocks%add(force_sum(self, c, f_force), force)
+            call blocks%add(force_sum(self, c, f_force_square), force**2)
+            call blocks%add(force_sum(self, c, f_steps), 1.0_dp)
+         end do
       end associate
       call self%poincare%sample_step(stepper%steps, reshape(events%observed, [2*self%points]), self%poincare_found, &
                                      self%sample_times, self%sample_values)
@@ -228,6 +278,23 @@ contains
          call self%blocks%close_sample()
       end if
    contains
+      !> Compliant episodes (docs/statistics.md): one opens where the force becomes nonzero
+      !! and closes at the first step without force; it counts when it opened in the window.
+      subroutine force_episodes()
+         integer :: point
+         do point = 1, self%contacts
+            if (abs(stepper%contact_force(point)) > 0) then
+               if (.not. self%force_touching(point)) self%force_offset(point) = offset
+               self%force_touching(point) = .true.
+            else
+               if (self%force_touching(point) .and. self%force_offset(point) >= 0) &
+                  call add_force_episode(self, point, offset - self%force_offset(point))
+               self%force_touching(point) = .false.
+               self%force_offset(point) = -1
+            end if
+         end do
+      end subroutine force_episodes
+
       !> Add `value` to sum quantity `q` of contact point c, of its obstacle and of the beam.
       subroutine contact_sum(point, q, value)
          integer, intent(in) :: point, q
@@ -283,6 +350,19 @@ contains
       end do
    end subroutine add_episode
 
+   !> A compliant episode of `steps` steps at contact point c, opened at force_offset(c):
+   !! counted in the block it opened in.
+   subroutine add_force_episode(self, c, steps)
+      type(run_statistics), intent(inout) :: self
+      integer, intent(in) :: c
+      integer(int64), intent(in) :: steps
+      integer :: block
+      block = self%blocks%block_of(self%force_offset(c))
+      call self%blocks%add(force_sum(self, c, f_episodes), 1.0_dp, block)
+      call self%blocks%add(force_sum(self, c, f_episode_steps), real(steps, dp), block)
+      call self%blocks%extreme(force_extreme(self, c, x_episode_steps), real(steps, dp), block)
+   end subroutine add_force_episode
+
    !> The statistics of the window so far, ending at the stepper's present step: the
    !! episodes still open (`open`, `open_impulse` per contact point, from the episode
    !! tracker) count with their impulse so far. The observer itself is not changed.
@@ -311,6 +391,8 @@ contains
       end select
       do c = 1, self%contacts
          if (open(c) .and. copy%episode_offset(c) >= 0) call add_episode(copy, c, open_impulse(c))
+         if (copy%force_touching(c) .and. copy%force_offset(c) >= 0) &
+            call add_force_episode(copy, c, copy%blocks%samples - copy%force_offset(c))
       end do
       associate (blocks => copy%blocks)
          outcome%present = .true.
@@ -332,6 +414,9 @@ contains
          do k = 1, targets(self)
             call contact_statistics(k)
          end do
+         do k = 1, self%contacts
+            call force_statistics(k)
+         end do
          ! energy
          e = self%layout%entries(self%layout%find(group_energy, 'power_input'))%offset
          call powers(e + 1, levels_end(level_work) - blocks%levels(level_work, 0), &
@@ -342,9 +427,14 @@ contains
                      [(blocks%levels(level_damping, b + 1) - blocks%levels(level_damping, b), b = 0, batches - 1)])
          call powers(e + 4, levels_end(level_numerical) - blocks%levels(level_numerical, 0), &
                      [(blocks%levels(level_numerical, b + 1) - blocks%levels(level_numerical, b), b = 0, batches - 1)])
-         outcome%values(e + 5) = outcome%values(e + 2) + outcome%values(e + 3) + outcome%values(e + 4)
-         batch(e + 5, :) = batch(e + 2, :) + batch(e + 3, :) + batch(e + 4, :)
-         call powers(e + 6, levels_end(level_balance) - blocks%levels(level_balance, 0), &
+         call powers(e + 5, levels_end(level_contact_damping) - blocks%levels(level_contact_damping, 0), &
+                     [(blocks%levels(level_contact_damping, b + 1) - blocks%levels(level_contact_damping, b), &
+                       b = 0, batches - 1)])
+         outcome%values(e + 6) = sum(outcome%values(e + 2:e + 5))
+         batch(e + 6, :) = batch(e + 2, :) + batch(e + 3, :) + batch(e + 4, :) + batch(e + 5, :)
+         call powers(e + 7, levels_end(level_total) - blocks%levels(level_total, 0), &
+                     [(blocks%levels(level_total, b + 1) - blocks%levels(level_total, b), b = 0, batches - 1)])
+         call powers(e + 8, levels_end(level_balance) - blocks%levels(level_balance, 0), &
                      [(blocks%levels(level_balance, b + 1) - blocks%levels(level_balance, b), b = 0, batches - 1)])
       end associate
       do k = 1, self%layout%size
@@ -417,6 +507,26 @@ contains
          end associate
       end subroutine contact_statistics
 
+      !> The force statistics of the compliant stops at contact point c.
+      subroutine force_statistics(c)
+         integer, intent(in) :: c
+         integer :: o(7), j, first
+         first = self%layout%find(group_contacts, 'force_peak')
+         do j = 1, 7
+            o(j) = self%layout%entries(first + j - 1)%offset + c
+         end do
+         associate (blocks => copy%blocks)
+            call fill_force(outcome%values, o, [(blocks%total(force_sum(self, c, j)), j = 1, per_force)], &
+                            [(blocks%highest(force_extreme(self, c, j)), j = 1, per_force_extreme)], &
+                            real(blocks%samples, dp), self%dt)
+            do b = 1, batches
+               call fill_force(batch(:, b), o, [(blocks%sums(force_sum(self, c, j), b - 1), j = 1, per_force)], &
+                               [(blocks%highs(force_extreme(self, c, j), b - 1), j = 1, per_force_extreme)], &
+                               real(blocks%block_steps, dp), self%dt)
+            end do
+         end associate
+      end subroutine force_statistics
+
       !> Power = change/duration into entry `at`, and each block's.
       subroutine powers(at, change, block_changes)
          integer, intent(in) :: at
@@ -471,6 +581,25 @@ contains
       values(at(7)) = force/duration
    end subroutine fill
 
+   !> The force statistics from the force sums and extremes over `samples` steps of dt.
+   pure subroutine fill_force(values, at, sums, extremes, samples, dt)
+      real(dp), intent(inout) :: values(:)
+      integer, intent(in) :: at(7)
+      real(dp), intent(in) :: sums(per_force), extremes(per_force_extreme), samples, dt
+      values(at) = 0
+      values(at(1)) = max(0.0_dp, extremes(x_force))
+      values(at(2)) = sums(f_force)/samples
+      if (sums(f_steps) > 0) then
+         values(at(3)) = sums(f_force)/sums(f_steps)
+         values(at(4)) = sqrt(sums(f_force_square)/sums(f_steps))
+      end if
+      values(at(5)) = sums(f_steps)/samples
+      if (sums(f_episodes) > 0) then
+         values(at(6)) = sums(f_episode_steps)*dt/sums(f_episodes)
+         values(at(7)) = extremes(x_episode_steps)*dt
+      end if
+   end subroutine fill_force
+
    !> Everything a continued run needs (docs/output.md, "Checkpoint and restart").
    subroutine save_state(self, record)
       class(run_statistics), intent(in) :: self
@@ -480,6 +609,8 @@ contains
                                                    int(self%contacts, int64), int(self%obstacles, int64), &
                                                    merge(1_int64, 0_int64, self%started)])
       call record%put_int64s('statistics.episode_offset', self%episode_offset)
+      call record%put_int64s('statistics.force_offset', self%force_offset)
+      call record%put_int64s('statistics.force_touching', merge(1_int64, 0_int64, self%force_touching))
       call self%blocks%save_state(record, 'statistics.blocks')
       call self%poincare%save_state(record, 'statistics.poincare')
       call self%spectrum%save_state(record, 'statistics.spectrum')
@@ -493,7 +624,7 @@ contains
       type(state_record), intent(in) :: record
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer(int64) :: layout(5)
+      integer(int64) :: layout(5), touching(self%contacts)
       stat = 0
       errmsg = ''
       if (.not. self%active .or. record%find('statistics.layout') == 0) return
@@ -502,6 +633,11 @@ contains
       if (any(layout(1:4) /= [self%first_step, int(self%points, int64), int(self%contacts, int64), &
                               int(self%obstacles, int64)])) return
       call record%get_int64s('statistics.episode_offset', self%episode_offset, stat, errmsg)
+      if (stat == 0 .and. record%find('statistics.force_offset') > 0) then
+         call record%get_int64s('statistics.force_offset', self%force_offset, stat, errmsg)
+         if (stat == 0) call record%get_int64s('statistics.force_touching', touching, stat, errmsg)
+         if (stat == 0) self%force_touching = touching == 1
+      end if
       if (stat /= 0 .or. layout(5) == 0) return
       self%started = .true.
       call self%blocks%restore_state(record, 'statistics.blocks', stat, errmsg)

@@ -5,7 +5,8 @@
 !!
 !! Groups and lengths: 'points' (the tip, then each &output points x), 'contacts' (the
 !! contact points), 'obstacles' (each obstacle of &obstacles), 'beam' (all contact points
-!! together; 1), 'energy' (1), 'spectrum' (the `peak_count` largest peaks). Every
+!! together; 1; the contact points also have the force statistics of the compliant
+!! stops), 'energy' (1), 'spectrum' (the `peak_count` largest peaks). Every
 !! statistic has a standard error beside it (`<name>_error`) except the spectrum's.
 module vibrobeam_statistics_layout
    implicit none
@@ -49,8 +50,14 @@ module vibrobeam_statistics_layout
    character(len=*), parameter :: contact_names(7) = [character(len=32) :: 'impact_rate', 'episode_rate', &
       'episode_impulse_mean', 'episode_impulse_max', 'episode_impulse_rms', 'contact_fraction', 'contact_force']
    character(len=*), parameter :: contact_units(7) = [character(len=8) :: '1/s', '1/s', 'N s', 'N s', 'N s', '1', 'N']
-   character(len=*), parameter :: energy_names(6) = [character(len=32) :: 'power_input', 'power_impacts', &
-      'power_damping', 'power_numerical', 'power_dissipated', 'balance_residual']
+   !> Force statistics of the compliant stops at each contact point (0 where no spring acts).
+   character(len=*), parameter :: force_names(7) = [character(len=32) :: 'force_peak', 'force_mean', &
+      'force_contact_mean', 'force_contact_rms', 'force_contact_fraction', 'force_episode_duration_mean', &
+      'force_episode_duration_max']
+   character(len=*), parameter :: force_units(7) = [character(len=8) :: 'N', 'N', 'N', 'N', '1', 's', 's']
+   character(len=*), parameter :: energy_names(8) = [character(len=32) :: 'power_input', 'power_impacts', &
+      'power_damping', 'power_numerical', 'power_contact_damping', 'power_dissipated', 'power_stored', &
+      'balance_residual']
 
 contains
 
@@ -72,6 +79,9 @@ contains
          do k = 1, size(contact_names)
             call add(contact_names(k), contact_units(k), group, lengths(group - group_contacts + 1), .true.)
          end do
+      end do
+      do k = 1, size(force_names)
+         call add(force_names(k), force_units(k), group_contacts, contact_points, .true.)
       end do
       do k = 1, size(energy_names)
          call add(energy_names(k), 'W', group_energy, 1, .true.)

@@ -11,7 +11,7 @@
 !! columns and units.
 module vibrobeam_text_output
    use vibrobeam_kinds, only: dp, int64, pi
-   use vibrobeam_text, only: integer_text
+   use vibrobeam_text, only: integer_text, real_text
    use vibrobeam_hdf5_reader, only: h5_reader
    use vibrobeam_filesystem, only: text_file, open_text_for_atomic_write, write_text_line, write_text_row, &
       finish_text_file, discard_text_file
@@ -387,6 +387,15 @@ contains
          character(len=*), parameter :: pairs(10) = [character(len=40) :: 'beam/impact_rate', 'beam/episode_rate', &
             'beam/episode_impulse_mean', 'beam/episode_impulse_max', 'beam/contact_force', 'energy/power_input', &
             'energy/power_impacts', 'energy/power_damping', 'energy/power_dissipated', '']
+         !> Force statistics of the compliant stops, at the contact point with the largest
+         !! force_peak summed over the points (the most loaded spring; zeros without one).
+         character(len=*), parameter :: force_names(7) = [character(len=28) :: 'force_peak', 'force_mean', &
+            'force_contact_mean', 'force_contact_rms', 'force_contact_fraction', 'force_episode_duration_mean', &
+            'force_episode_duration_max']
+         real(dp), allocatable :: force_values(:, :), contact_x(:)
+         real(dp) :: largest_sum
+         integer :: contacts, loaded
+         real(dp) :: loaded_x
          type(text_sink) :: sink
          real(dp), allocatable :: parameter(:), parameter2(:), direction(:), line(:), status(:), settled(:), &
                                   transient(:), rms(:), rms_error(:), largest(:), largest_error(:), frequency(:), &
@@ -429,6 +438,33 @@ contains
             if (stat /= 0) return
             errors(:, k) = column
          end do
+         call file%read_reals('/sweep/statistics/contacts/x', contact_x, stat, errmsg)
+         if (stat /= 0) return
+         contacts = size(contact_x)
+         allocate (force_values(n, 2*size(force_names)), source=0.0_dp)
+         loaded = 0
+         if (contacts > 0) then
+            ! (contacts, points) stored: column((k - 1) contacts + c) is point k at contact point c
+            call file%read_reals('/sweep/statistics/contacts/force_peak', column, stat, errmsg)
+            if (stat /= 0) return
+            largest_sum = 0
+            do j = 1, contacts
+               if (sum(column(j::contacts)) <= largest_sum) cycle
+               largest_sum = sum(column(j::contacts))
+               loaded = j
+            end do
+         end if
+         loaded_x = 0
+         if (loaded > 0) loaded_x = contact_x(loaded)
+         do j = 1, size(force_names)
+            if (loaded == 0) exit
+            call file%read_reals('/sweep/statistics/contacts/'//trim(force_names(j)), column, stat, errmsg)
+            if (stat /= 0) return
+            force_values(:, 2*j - 1) = column(loaded::contacts)
+            call file%read_reals('/sweep/statistics/contacts/'//trim(force_names(j))//'_error', column, stat, errmsg)
+            if (stat /= 0) return
+            force_values(:, 2*j) = column(loaded::contacts)
+         end do
          call axis_label('/sweep/parameter', first_label)
          second_label = 'none'
          if (file%exists('/sweep/parameter2')) call axis_label('/sweep/parameter2', second_label)
@@ -439,14 +475,18 @@ contains
                         'standard error of: RMS tip displacement (m)  largest tip displacement (m)  impact rate (1/s)'// &
                         '  episode rate (1/s)  mean impulse per episode (N s)  largest impulse per episode (N s)  '// &
                         'contact force (N)  power of the loads (W)  power dissipated at the stops (W)  by damping (W)'// &
-                        '  in all (W); then the first dominant frequency (Hz)')
+                        '  in all (W); then the first dominant frequency (Hz); then value and standard error of '// &
+                        'the compliant stops'' force at x = '//real_text(loaded_x)//' m (0: no spring; docs/statistics.md): '// &
+                        'peak (N)  mean (N)  mean in contact (N)'// &
+                        '  RMS in contact (N)  contact fraction (1)  mean episode duration (s)  longest episode (s)')
          do k = 1, n
             if (k > 1) then
                if (nint(line(k)) /= nint(line(k - 1))) call put_line(sink, '')
             end if
             call put_row(sink, 'wide', [real(k, dp), line(k), direction(k), parameter(k), parameter2(k), status(k), &
                                         settled(k), transient(k), rms(k), rms_error(k), largest(k), largest_error(k), &
-                                        (values(k, j), errors(k, j), j = 1, size(pairs) - 1), frequency(k)])
+                                        (values(k, j), errors(k, j), j = 1, size(pairs) - 1), frequency(k), &
+                                        force_values(k, :)])
          end do
          call close_sink(sink)
          if (stat /= 0) return

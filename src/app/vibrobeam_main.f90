@@ -224,8 +224,9 @@ contains
       if (prepared%reduced) then
          associate (reduction => prepared%reduction)
             write (output_unit, '(a,i0,a,i0,a,i0,a)') 'reduced model (craig-bampton): ', &
-               reduction%boundary + reduction%modes, ' unknowns (', reduction%boundary, ' contact displacements, ', &
-               reduction%modes, ' fixed-interface modes)'
+               reduction%boundary + reduction%modes, ' unknowns (', reduction%boundary, &
+               ' contact displacement'//plural(reduction%boundary)//', ', reduction%modes, &
+               ' fixed-interface mode'//plural(reduction%modes)//')'
             if (reduction%modes > 0) write (output_unit, '(a,es12.5,a)') '  highest fixed-interface mode kept: ', &
                reduction%omega(reduction%modes), ' rad/s'
             if (reduction%cutoff > 0) write (output_unit, '(a,es12.5,a)') '  cut-off: ', reduction%cutoff, &
@@ -313,9 +314,13 @@ contains
          call stop_if_interrupted(outcome%text_skipped)
          call finish(exit_interrupted)
       end select
-      write (output_unit, '(a,i0,a,i0,a,es10.3,a,f0.2,a)') 'vibrobeam: ', outcome%steps, ' steps, ', outcome%impacts, &
-         ' impacts, largest penetration ', outcome%max_penetration, ' m, ', outcome%wall_seconds, ' s; written to '// &
-         trim(scene%file)//' (run '//trim(outcome%run_id)//')'
+      ! impacts and penetration are the rigid stops'; compliant stops show their peak force
+      write (output_unit, '(a,i0,a,i0,a,es10.3,a)', advance='no') 'vibrobeam: ', outcome%steps, ' steps, ', &
+         outcome%impacts, ' impacts, largest penetration ', outcome%max_penetration, ' m, '
+      if (outcome%compliant) write (output_unit, '(a,es10.3,a)', advance='no') 'peak contact force ', &
+         outcome%peak_force, ' N, '
+      write (output_unit, '(f0.2,a)') outcome%wall_seconds, ' s; written to '//trim(scene%file)//' (run '// &
+         trim(outcome%run_id)//')'
       call stop_if_interrupted(outcome%text_skipped)
       call finish(exit_ok)
    end subroutine run_dynamics_scene
@@ -384,4 +389,12 @@ contains
       write (output_unit, '(a,i0,a)') 'vibrobeam: ', size(files), ' text files derived from '//file
       call finish(exit_ok)
    end subroutine run_text
+
+   !> 's' unless `count` is 1, for the messages.
+   pure function plural(count) result(suffix)
+      integer, intent(in) :: count
+      character(len=:), allocatable :: suffix
+      suffix = merge('s', ' ', count /= 1)
+      suffix = trim(suffix)
+   end function plural
 end program vibrobeam_main

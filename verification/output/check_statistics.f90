@@ -6,6 +6,11 @@
 !! The scene has its contact points at the tip only (two stops there), so /tip/impulse
 !! (the impulse of each step, every = 1) gives the steps in contact and the contact
 !! force; which stop gives an impulse follows from its sign (upwards: the 'below' one).
+!! With a compliant stop (/contact/force written, every = 1) the force statistics are
+!! recomputed from /contact/force at every step, and the compliant episodes (maximal runs
+!! of steps with nonzero force) from it too; the powers of the contact damping and of the
+!! stored energy (with the stops' potential) from /energy/dissipated_contact_damping and
+!! /energy/total.
 !!
 !! Tolerances, derived:
 !! - a sum of K terms computed in two orders differs by at most 2 (K - 1) eps sum |x_i|
@@ -13,6 +18,10 @@
 !!   Stability of Numerical Algorithms, 2nd ed., 2002, eq. 4.4); a mean by 2 K eps max |x|,
 !!   a root mean square by K eps relative (half the relative error of its square);
 !! - min, max, counts and rates (a count divided by the same product K dt) are exact, and
+!!   so are the force peak, the contact fraction by force and the episode durations (sums
+!!   of whole step counts, exact in binary, times dt: a few roundings, 4 eps relative);
+!!   the mean force while in contact is a sum of m terms over m (2 m eps max |f|), its
+!!   RMS m eps relative;
 !!   so are powers and the balance residual: differences of the same stored sums over the
 !!   same duration (one rounding each: 2 eps relative to the values subtracted);
 !! - a standard error of c batch values, each within delta of the reference, is within
@@ -85,6 +94,7 @@ program check_statistics
    call check_points()
    call check_contacts()
    call check_energy()
+   call check_forces()
    call check_spectrum()
    call check_poincare()
    call t%finish('check_statistics '//trim(file))
@@ -271,14 +281,23 @@ contains
 
    !> Powers: changes of the stored energy sums over the window and over each block.
    subroutine check_energy()
-      character(len=*), parameter :: names(6) = [character(len=24) :: 'power_input', 'power_impacts', &
-         'power_damping', 'power_numerical', 'power_dissipated', 'balance_residual']
-      character(len=*), parameter :: paths(6) = [character(len=32) :: '/energy/work', '/energy/dissipated_impacts', &
-         '/energy/dissipated_damping', '/energy/dissipated_numerical', '/energy/dissipated', '/energy/balance']
+      character(len=*), parameter :: names(8) = [character(len=24) :: 'power_input', 'power_impacts', &
+         'power_damping', 'power_numerical', 'power_contact_damping', 'power_dissipated', 'power_stored', &
+         'balance_residual']
+      character(len=*), parameter :: paths(8) = [character(len=36) :: '/energy/work', '/energy/dissipated_impacts', &
+         '/energy/dissipated_damping', '/energy/dissipated_numerical', '/energy/dissipated_contact_damping', &
+         '/energy/dissipated', '/energy/total', '/energy/balance']
       real(dp), allocatable :: level(:), values(:), errors(:)
       real(dp) :: batch(batches), scale, expected
       integer :: j, b
-      do j = 1, 6
+      do j = 1, 8
+         if (j == 5 .and. .not. compliant()) then
+            ! rigid stops only: no contact damping
+            values = reported('energy/'//trim(names(j)))
+            call t%check_true('energy '//trim(names(j))//' 0 without springs', size(values) == 1 .and. &
+                              all(abs(values) <= 0))
+            cycle
+         end if
          call load(trim(paths(j)), level)
          values = reported('energy/'//trim(names(j)))
          errors = reported('energy/'//trim(names(j))//'_error')
@@ -287,7 +306,7 @@ contains
          do b = 1, int(batches)
             batch(b) = (level(first + b*block + 1) - level(first + (b - 1)*block + 1))/(block*dt)
          end do
-         ! one rounding per subtraction and division; 'dissipated' is a sum of three powers
+         ! one rounding per subtraction and division; 'dissipated' is a sum of four powers
          ! there and a difference of the stored sum here: 4 eps of the largest sum
          scale = 4*eps*maxval(abs(level))/(block*dt)
          call close_to('energy '//trim(names(j)), values(1), expected, scale*block/samples + 2*eps*abs(expected))
@@ -295,6 +314,100 @@ contains
                        scale/sqrt(batches - 1.0_dp) + 4*batches*eps*error_of(batch))
       end do
    end subroutine check_energy
+
+   !> True when the run has compliant stops (it wrote /contact/force).
+   logical function compliant()
+      real(dp), allocatable :: peak(:)
+      call read_real_1d(trim(file), '/contact/peak_force', peak, stat, errmsg)
+      compliant = stat == 0
+   end function compliant
+
+   !> The force statistics of the compliant stops at each contact point (0 without springs).
+   subroutine check_forces()
+      character(len=*), parameter :: names(7) = [character(len=28) :: 'force_peak', 'force_mean', &
+         'force_contact_mean', 'force_contact_rms', 'force_contact_fraction', 'force_episode_duration_mean', &
+         'force_episode_duration_max']
+      real(dp), allocatable :: force(:, :), values(:), errors(:), f(:)
+      real(dp) :: expected(7), batch(7, batches), bound(7), largest
+      integer :: c, j, b, contacts
+      contacts = size(reported('contacts/impact_rate'))
+      if (.not. compliant()) then
+         do j = 1, 7
+            values = reported('contacts/'//trim(names(j)))
+            call t%check_true('contacts '//trim(names(j))//' 0 without springs', size(values) == contacts .and. &
+                              all(abs(values) <= 0))
+         end do
+         return
+      end if
+      call read_real_2d(trim(file), '/contact/force', force, stat, errmsg)
+      call t%check_true('read /contact/force', stat == 0 .and. size(force, 2) == last + 1, errmsg)
+      if (stat /= 0 .or. size(force, 2) /= last + 1) return
+      call t%check_true('compliant episodes in the window', count(abs(force(1, first + 2:)) > 0) > 100)
+      do c = 1, contacts
+         f = abs(force(c, :))   ! f(n + 1): after step n
+         largest = maxval(f(first + 2:))
+         call forces_over(f, first, last, expected)
+         do b = 1, int(batches)
+            call forces_over(f, first + (b - 1)*block, first + b*block, batch(:, b))
+         end do
+         associate (m => count(f(first + 2:) > 0))
+            bound = [0.0_dp, 2*samples*eps*largest, 2*m*eps*largest, m*eps*expected(4), 0.0_dp, &
+                     4*eps*expected(6), 4*eps*expected(7)]
+         end associate
+         do j = 1, 7
+            values = reported('contacts/'//trim(names(j)))
+            errors = reported('contacts/'//trim(names(j))//'_error')
+            if (size(values) < c .or. size(errors) < c) then
+               call t%check_true('contacts '//trim(names(j))//' present', .false.)
+               cycle
+            end if
+            call close_to('contacts '//trim(names(j))//'('//integer_text(c)//')', values(c), expected(j), &
+                          bound(j) + 2*eps*abs(expected(j)))
+            call close_to('contacts '//trim(names(j))//'('//integer_text(c)//') error', errors(c), &
+                          error_of(batch(j, :)), (bound(j) + 2*eps*maxval(abs(batch(j, :))))/sqrt(batches - 1.0_dp) &
+                          + 4*batches*eps*error_of(batch(j, :)))
+         end do
+      end do
+   end subroutine check_forces
+
+   !> Force statistics of steps from+1 .. to (f(n + 1) = |force| after step n); the
+   !! episodes that open there last until the first step without force, or to the end
+   !! of the window (step last) when none comes.
+   subroutine forces_over(f, from, to, values)
+      real(dp), intent(in) :: f(0:)
+      integer(int64), intent(in) :: from, to
+      real(dp), intent(out) :: values(7)
+      real(dp) :: steps, in_contact, episodes, total_steps, longest
+      integer(int64) :: n, e
+      associate (x => f(from + 1:to))
+         steps = real(to - from, dp)
+         in_contact = count(x > 0)
+         values = 0
+         values(1) = maxval(x)
+         values(2) = sum(x)/steps
+         if (in_contact > 0) values(3:4) = [sum(x, mask=x > 0)/in_contact, sqrt(sum(x**2, mask=x > 0)/in_contact)]
+         values(5) = in_contact/steps
+      end associate
+      episodes = 0
+      total_steps = 0
+      longest = 0
+      do n = from + 1, to
+         ! an episode opens at step n: force after it, none after step n - 1 (none before step 1)
+         if (f(n) <= 0) cycle
+         if (n > 1) then
+            if (f(n - 1) > 0) cycle
+         end if
+         e = n
+         do while (e <= last)
+            if (f(e) <= 0) exit
+            e = e + 1
+         end do
+         episodes = episodes + 1
+         total_steps = total_steps + (e - n)
+         longest = max(longest, real(e - n, dp))
+      end do
+      if (episodes > 0) values(6:7) = [total_steps*dt/episodes, longest*dt]
+   end subroutine forces_over
 
    !> The three largest local maxima of the amplitude spectrum of the tip displacement
    !! over the window (mean removed, periodic Hann window), by a direct DFT.

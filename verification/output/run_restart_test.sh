@@ -2,7 +2,8 @@
 # Checkpoint and restart (docs/output.md, "Checkpoint and restart"): for both schemes and
 # both bases, a run to 2T and a run to T continued to 2T (&initial from_file) must give
 # bitwise identical histories over the continued part, the same spectrum, contact
-# fractions and final state (compare_continued). Then a file that does not match the
+# fractions, statistics and final state (compare_continued); also a scene with a compliant
+# stop, continued inside a compliant episode. Then a file that does not match the
 # scene is refused with exit status 2 and a message naming the mismatch.
 # usage: run_restart_test.sh VIBROBEAM COMPARE_CONTINUED
 set -uo pipefail
@@ -28,6 +29,19 @@ for scheme in velocity position; do
     "$compare" full.h5 continued.h5 || failed=1
   done
 done
+
+# a compliant stop with its force statistics, the checkpoint taken inside a compliant
+# episode (the force is nonzero at t = 0.1712 s) and inside the statistics window
+base="$here/statistics_compliant.nml"
+sed -e "s/'statistics.h5'/'full_compliant.h5'/" "$base" > full_compliant.nml
+sed -e "s/'statistics.h5'/'half_compliant.h5'/" -e "s/t_end = 0.3/t_end = 0.1712/" "$base" > half_compliant.nml
+{ sed -e "s/'statistics.h5'/'continued_compliant.h5'/" "$base"; echo "&initial from_file = 'half_compliant.h5' /"; } \
+  > continued_compliant.nml
+for run in full half continued; do
+  "$vibrobeam" ${run}_compliant.nml > $run.out 2> $run.err || { echo "FAIL compliant: run $run"; cat $run.err; failed=1; }
+done
+echo "compliant stop:"
+"$compare" full_compliant.h5 continued_compliant.h5 || failed=1
 
 # mismatches: exit status 2, the message names what differs, nothing is written
 refused() {  # refused DESCRIPTION EXPECTED_TEXT SED_EXPRESSION
