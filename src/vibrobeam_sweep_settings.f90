@@ -20,6 +20,7 @@ module vibrobeam_sweep_settings
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_text, only: real_text, integer_text
+   use vibrobeam_sorting, only: sorted
    use vibrobeam_scene, only: scene_type, scene_variables, validate_scene, max_obstacles, max_sweep_values, &
       parameter_length, forcing_of, keyword_length, rho_s_of, ei_of
    use vibrobeam_namelist_values, only: namelist_variable, kind_real, range_text, variable_index, choices_text
@@ -408,23 +409,6 @@ contains
       if (size(points) > 0) task_count = maxval(points%task)
    end function task_count
 
-   !> `values` in increasing order (insertion sort: a sweep has few values).
-   pure function sorted(values) result(out)
-      real(dp), intent(in) :: values(:)
-      real(dp) :: out(size(values)), key
-      integer :: i, j
-      out = values
-      do i = 2, size(out)
-         key = out(i)
-         j = i - 1
-         do while (j >= 1)
-            if (out(j) <= key) exit
-            out(j + 1) = out(j)
-            j = j - 1
-         end do
-         out(j + 1) = key
-      end do
-   end function sorted
 
    !> The scene of `point`: the base scene with the parameters set; inputs whose default
    !! follows another one follow it when not given (load.point_position and the

@@ -30,6 +30,7 @@
 !! ('slap', 'static', 'regimes': part A, C or D alone)
 program benchmark_contact
    use vibrobeam_kinds, only: dp, int64, output_unit, error_unit
+   use vibrobeam_sorting, only: median
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
    use vibrobeam_stepper, only: time_stepper
@@ -191,23 +192,6 @@ contains
       record%seconds = real(elapsed, dp)/rate
    end subroutine run_scene
 
-   !> Median of a small sample.
-   real(dp) function median(values)
-      real(dp), intent(in) :: values(:)
-      real(dp) :: sorted(size(values)), swap
-      integer :: i, j
-      sorted = values
-      do i = 2, size(sorted)
-         do j = i, 2, -1
-            if (sorted(j - 1) <= sorted(j)) exit
-            swap = sorted(j)
-            sorted(j) = sorted(j - 1)
-            sorted(j - 1) = swap
-         end do
-      end do
-      median = sorted((size(sorted) + 1)/2)
-      if (mod(size(sorted), 2) == 0) median = 0.5_dp*(sorted(size(sorted)/2) + sorted(size(sorted)/2 + 1))
-   end function median
 
    !> Least-squares slope of log(y) against log(x).
    real(dp) function slope(x, y)

@@ -24,6 +24,7 @@
 !! Ratios are medians of the paired per-repetition ratios.
 program benchmark_kernel
    use vibrobeam_kinds, only: dp, int64, output_unit, error_unit
+   use vibrobeam_sorting, only: median
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_combination, band_factor, band_solve, &
                              band_matvec, band_residual_solve
    use vibrobeam_lapack, only: dpbtrf, dpbtrs, dsbmv
@@ -180,22 +181,6 @@ contains
       cpu = cpu_finish - cpu_start
    end subroutine timed
 
-   pure function median(values) result(m)
-      real(dp), intent(in) :: values(:)
-      real(dp) :: m, sorted(size(values)), swap
-      integer :: i, j
-      sorted = values
-      do i = 2, size(sorted)
-         do j = i, 2, -1
-            if (sorted(j - 1) <= sorted(j)) exit
-            swap = sorted(j)
-            sorted(j) = sorted(j - 1)
-            sorted(j - 1) = swap
-         end do
-      end do
-      m = sorted((size(sorted) + 1)/2)
-      if (mod(size(sorted), 2) == 0) m = (sorted(size(sorted)/2) + sorted(size(sorted)/2 + 1))/2
-   end function median
 
    !> The wall-clock table: per J, each workload's median time per call, its spread, the
    !! ratios kernel/LAPACK and step/LAPACK.

@@ -36,6 +36,7 @@
 !! file name is given, to that file as well.
 program benchmark_steps
    use vibrobeam_kinds, only: dp, int64, output_unit, error_unit
+   use vibrobeam_sorting, only: median
    use vibrobeam_scene, only: scene_type, obstacle_type, validate_scene, rho_s_of, ei_of
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_contact_points, only: contact_set, build_contact_points
@@ -369,29 +370,6 @@ contains
       cpu = cpu_finish - cpu_start
    end subroutine timed_batch
 
-   !> Median of a short list (insertion sort of a copy).
-   pure function median(values) result(middle)
-      real(dp), intent(in) :: values(:)
-      real(dp) :: middle
-      real(dp) :: sorted(size(values)), item
-      integer :: i, j
-      sorted = values
-      do i = 2, size(sorted)
-         item = sorted(i)
-         j = i - 1
-         do while (j >= 1)
-            if (sorted(j) <= item) exit
-            sorted(j + 1) = sorted(j)
-            j = j - 1
-         end do
-         sorted(j + 1) = item
-      end do
-      if (mod(size(sorted), 2) == 1) then
-         middle = sorted(size(sorted)/2 + 1)
-      else
-         middle = 0.5_dp*(sorted(size(sorted)/2) + sorted(size(sorted)/2 + 1))
-      end if
-   end function median
 
    !> Least-squares slope p of log(t) = p log(N) + c.
    pure function fitted_exponent(elements, seconds) result(p)
