@@ -156,16 +156,13 @@ contains
    end function band_abs_times
 
    !> LAPACK dpbcon's estimate of the 1-norm condition number of the SPD band matrix a.
-   !! dpbcon needs LAPACK's Cholesky factor, so a is factored here by dpbtrf whatever form
-   !! `factor` has (the kd = 3 kernel stores L D L^T); `factor` is kept in the interface for
-   !! the callers that hold one and is not read.
-   function band_condition(a, factor) result(condition)
+   !! dpbcon needs LAPACK's Cholesky factor, so a is factored here by dpbtrf (the kd = 3
+   !! kernel of `band_factor` stores L D L^T instead).
+   function band_condition(a) result(condition)
       type(symmetric_band), intent(in) :: a
-      type(band_cholesky), intent(in) :: factor
       real(dp) :: condition
       real(dp) :: rcond, work(3*a%n), ones(a%n), cholesky(a%kd + 1, a%n)
       integer :: iwork(a%n), info
-      if (.false.) condition = factor%factor(1, 1)   ! interface only
       ones = 1
       cholesky = a%lower
       call dpbtrf('L', a%n, a%kd, cholesky, a%kd + 1, info)
