@@ -1,6 +1,6 @@
 # Amplitude spectrum of the tip displacement of a dynamics run (single-sided, mean removed,
 # Hann window, scaled so that a sine of amplitude A on a bin peaks at A; see
-# src/vibrobeam_spectrum.f90), on a logarithmic amplitude axis.
+# src/analysis/statistics/vibrobeam_spectrum.f90), on a logarithmic amplitude axis.
 # usage: gnuplot -e "stem='results/looseness_tip_stops'" scripts/plot_dynamics_spectrum.gp
 #        optional: -e "fmax=20" to fix the upper frequency (Hz); by default the axis ends a
 #        little beyond the last frequency whose amplitude exceeds 1e-4 of the largest one

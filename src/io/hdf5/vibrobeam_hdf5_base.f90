@@ -41,7 +41,7 @@ module vibrobeam_hdf5_base
    logical, save :: library_initialized = .false.
 
    interface
-      !> int vb_h5_error_text(char *buffer, int length);  (src/vibrobeam_hdf5_swmr.c)
+      !> int vb_h5_error_text(char *buffer, int length);  (src/io/hdf5/vibrobeam_hdf5_swmr.c)
       function c_h5_error_text(buffer, length) result(error) bind(C, name='vb_h5_error_text')
          import :: c_char, c_int
          character(kind=c_char), intent(out) :: buffer(*)

@@ -5,12 +5,12 @@
 !!
 !! `h5_writer` writes into a temporary file `<final>.<pid>-<token>.tmp` in the final
 !! file's directory (`vibrobeam_filesystem: unique_temporary_name`); only `commit` (or a
-!! caller that `finish`es the file and renames it itself, src/vibrobeam_results.f90)
+!! caller that `finish`es the file and renames it itself, src/analysis/vibrobeam_results.f90)
 !! publishes it under `<final>`, so a result file under its final name is always complete;
 !! `discard` deletes the temporary file and leaves `<final>` untouched.
 !!
 !! Crash safety of the temporary file. The file is created in the HDF5 1.10 format
-!! (libver bounds 'latest') with a metadata cache that never evicts (src/vibrobeam_hdf5_swmr.c:
+!! (libver bounds 'latest') with a metadata cache that never evicts (src/io/hdf5/vibrobeam_hdf5_swmr.c:
 !! `vb_h5_disable_evictions`), so HDF5 writes metadata only when the file is flushed.
 !! After every object is created, `start_swmr` puts the file in SWMR write mode, in which
 !! HDF5 orders the metadata writes of a flush so that a reader always finds a consistent
@@ -66,7 +66,7 @@ module vibrobeam_hdf5
    public :: h5_path_exists
 
    interface
-      !> int vb_h5_disable_evictions(hid_t fapl);  (src/vibrobeam_hdf5_swmr.c)
+      !> int vb_h5_disable_evictions(hid_t fapl);  (src/io/hdf5/vibrobeam_hdf5_swmr.c)
       function c_h5_disable_evictions(file_access_list) result(error) bind(C, name='vb_h5_disable_evictions')
          import :: c_int, c_int64_t
          integer(c_int64_t), value, intent(in) :: file_access_list

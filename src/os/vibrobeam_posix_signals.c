@@ -1,4 +1,4 @@
-/* Signals and the end of the process, for src/vibrobeam_signals.f90 and the program:
+/* Signals and the end of the process, for src/os/vibrobeam_signals.f90 and the program:
  * the SIGINT/SIGTERM handler (a handler must only set a volatile sig_atomic_t), SIGXFSZ
  * ignored, and an exit that skips atexit handlers. Every function returns 0 or an errno
  * value and never prints; the Fortran side turns that into a message. */

@@ -1,6 +1,6 @@
 !> Small POSIX file-system helpers (mkdir -p, rename, remove, existence, fsync, a lock on a
 !! directory, unique temporary names) and atomic text output, through `bind(C)`
-!! interfaces to the C library and to src/vibrobeam_posix_files.c.
+!! interfaces to the C library and to src/os/vibrobeam_posix_files.c.
 !!
 !! Every procedure returns `stat` (0 = success) and `errmsg` (blank on success, otherwise a
 !! message naming the path(s) and the C library's reason) and never stops. Trailing blanks
@@ -34,7 +34,7 @@ module vibrobeam_filesystem
    !> Suffix of every temporary file name (`unique_temporary_name`).
    character(len=*), parameter :: temporary_suffix = '.tmp'
 
-   !> A text file written through src/vibrobeam_posix_files.c (every write checked: libgfortran
+   !> A text file written through src/os/vibrobeam_posix_files.c (every write checked: libgfortran
    !! does not report a failed write of its buffer to a formatted WRITE with iostat).
    type :: text_file
       type(c_ptr) :: handle = c_null_ptr

@@ -1,5 +1,5 @@
 /* Three HDF5 settings that the HDF5 Fortran API of Debian's 1.10 does not offer, for
- * src/vibrobeam_hdf5_base.f90 and its users: metadata-cache configuration, SWMR write and
+ * src/io/hdf5/vibrobeam_hdf5_base.f90 and its users: metadata-cache configuration, SWMR write and
  * read, the error stack as text. Every function returns 0 or a negative value for an
  * HDF5 failure and never prints. */
 #include <errno.h>

@@ -61,7 +61,7 @@ module vibrobeam_results
    end type result_files
 
    interface
-      !> long vb_peak_rss_kb(void);  (src/vibrobeam_posix_files.c)
+      !> long vb_peak_rss_kb(void);  (src/os/vibrobeam_posix_files.c)
       function c_peak_rss_kb() result(kb) bind(C, name='vb_peak_rss_kb')
          import :: c_long
          integer(c_long) :: kb

@@ -1,5 +1,5 @@
 !> Interruption by SIGINT or SIGTERM (docs/output.md, "Interruption"): the C handlers of
-!! src/vibrobeam_posix_signals.c only record the signal; the run loop asks `interrupt_requested`
+!! src/os/vibrobeam_posix_signals.c only record the signal; the run loop asks `interrupt_requested`
 !! after each step, finishes it, publishes a complete result marked 'interrupted' and the
 !! program exits with status 4. A second signal ends the process at once (the first one
 !! gives both signals back their default action). SIGXFSZ is ignored, so a write beyond

@@ -1,7 +1,7 @@
 !> Where the tasks of a sweep run and how their results reach the process that writes the
 !! sweep file (docs/sweeps.md, "Parallel runs"). This is the build without MPI: one
 !! process (rank 0 of 1) runs every task. With -DVIBROBEAM_MPI=ON the same module comes
-!! from src/vibrobeam_sweep_transport_mpi.F90, which spreads the tasks over the ranks of
+!! from src/analysis/sweep/vibrobeam_sweep_transport_mpi.F90, which spreads the tasks over the ranks of
 !! `mpirun` and gathers the results on rank 0.
 module vibrobeam_sweep_transport
    use vibrobeam_sweep_runner, only: point_result

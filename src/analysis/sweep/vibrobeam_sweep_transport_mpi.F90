@@ -3,7 +3,7 @@
 !! deals the tasks round-robin to the P ranks, each rank runs its own on its threads, and
 !! the ranks send the results of their points to rank 0, which writes the sweep file. Only
 !! the main thread of a process calls MPI (MPI_THREAD_FUNNELED). The same interface
-!! without MPI is src/vibrobeam_sweep_transport.f90.
+!! without MPI is src/analysis/sweep/vibrobeam_sweep_transport.f90.
 !!
 !! A point's result travels as one message of doubles (every integer in it is exactly
 !! representable) and one of characters (its message), so rank 0 holds the same bits as
