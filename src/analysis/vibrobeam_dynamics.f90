@@ -79,17 +79,17 @@ contains
       character(len=512) :: step_message
       character(len=:), allocatable :: warning
 
-      call meter%init(scene%progress)
+      call meter%init(scene%output%progress)
       if (present(quiet)) then
          if (quiet) meter%enabled = .false.
       end if
       call system_clock(start, rate)
       last = step_count(scene)
       ! (n dt rounds to the nearest double of t_end: allow a few of its ulps)
-      if (.not. prepared%resuming .and. abs(last*scene%dt - scene%t_end) > &
-          max(1e-9_dp*scene%dt, 4*epsilon(1.0_dp)*scene%t_end)) &
+      if (.not. prepared%resuming .and. abs(last*scene%time%dt - scene%time%t_end) > &
+          max(1e-9_dp*scene%time%dt, 4*epsilon(1.0_dp)*scene%time%t_end)) &
          write (error_unit, '(a)') 'vibrobeam: warning: t_end is not a whole number of steps; the run ends at '// &
-         real_text(last*scene%dt)//' s'
+         real_text(last*scene%time%dt)//' s'
       call start_time_stepper(scene, prepared, stepper, stat, errmsg)
       if (stat /= 0) return
       summary%start_step = stepper%steps
@@ -101,7 +101,7 @@ contains
       if (prepared%resuming) then
          call recorder%restore_state(prepared%resume, stat, errmsg)
          if (stat /= 0) then
-            errmsg = '&initial from_file = '''//trim(scene%from_file)//''': '//trim(errmsg)
+            errmsg = '&initial from_file = '''//trim(scene%initial%from_file)//''': '//trim(errmsg)
             return
          end if
       end if
@@ -115,13 +115,13 @@ contains
          call system_clock(last_flush)
          last_checkpoint = last_flush
          flush_interval = flush_seconds
-         if (scene%checkpoint_seconds > 0) flush_interval = min(flush_seconds, scene%checkpoint_seconds)
+         if (scene%output%checkpoint_seconds > 0) flush_interval = min(flush_seconds, scene%output%checkpoint_seconds)
 
          do n = stepper%steps + 1, last
             call stepper%step(step_stat, step_message)
             if (step_stat /= 0) then
                outcome%status = 'failed'
-               write (outcome%failure, '(a,i0,a,es14.7,a)') 'step ', n, ' (t = ', n*scene%dt, ' s): '//trim(step_message)
+               write (outcome%failure, '(a,i0,a,es14.7,a)') 'step ', n, ' (t = ', n*scene%time%dt, ' s): '//trim(step_message)
                exit
             end if
             call record_step(n)
@@ -165,10 +165,10 @@ contains
          if (stat == 0) call recorder%create_datasets(files%h5, stepper, prepared%model, stat, errmsg)
          if (stat == 0) then
             call save_state()
-            call slots%create(files%h5, record, merge(2, 1, scene%checkpoint_seconds > 0), stat, errmsg)
+            call slots%create(files%h5, record, merge(2, 1, scene%output%checkpoint_seconds > 0), stat, errmsg)
          end if
-         if (stat == 0 .and. len_trim(scene%from_file) > 0) &
-            call files%h5%attr_string('/run', 'continued_from', trim(scene%from_file), stat, errmsg)
+         if (stat == 0 .and. len_trim(scene%initial%from_file) > 0) &
+            call files%h5%attr_string('/run', 'continued_from', trim(scene%initial%from_file), stat, errmsg)
          if (stat == 0) call files%h5%start_swmr(stat, errmsg)
          if (stat == 0 .and. .not. prepared%resuming) then
             call recorder%sample(stepper, stat, errmsg)
@@ -195,8 +195,8 @@ contains
          integer(int64), intent(in) :: now
          !$omp critical (vibrobeam_hdf5)
          call flush_all()
-         if (stat == 0 .and. scene%checkpoint_seconds > 0 .and. &
-             now - last_checkpoint >= scene%checkpoint_seconds*rate) then
+         if (stat == 0 .and. scene%output%checkpoint_seconds > 0 .and. &
+             now - last_checkpoint >= scene%output%checkpoint_seconds*rate) then
             call save_state()
             call slots%write(files%h5, record, stepper%steps, stepper%t, stat, errmsg)
             if (stat == 0) last_checkpoint = now
@@ -259,7 +259,7 @@ contains
          real(dp) :: elapsed, fraction
          elapsed = meter%elapsed()
          fraction = real(step - summary%start_step, dp)/max(1_int64, last - summary%start_step)
-         write (buffer, '(f6.2,a,es11.4,a,f9.1,a,f9.1,a)') 100.0_dp*step/last, ' %  t = ', step*scene%dt, &
+         write (buffer, '(f6.2,a,es11.4,a,f9.1,a,f9.1,a)') 100.0_dp*step/last, ' %  t = ', step*scene%time%dt, &
             ' s  wall ', elapsed, ' s  left ~', elapsed*(1 - fraction)/max(fraction, 1e-12_dp), ' s'
          text = trim(buffer)
       end function progress_text

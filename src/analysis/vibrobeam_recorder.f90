@@ -156,9 +156,9 @@ contains
       type(reduced_basis), intent(in), optional :: reduction
       contacts = stepper%contacts%count
       if (present(write_rows)) self%write_rows = write_rows
-      self%every = scene%every
-      self%field_every = scene%every
-      if (scene%field_every > 0) self%field_every = scene%field_every
+      self%every = scene%output%every
+      self%field_every = scene%output%every
+      if (scene%output%field_every > 0) self%field_every = scene%output%field_every
       self%last_step = last_step
       self%length = model%length
       allocate (self%in_contact(contacts), self%touched(contacts), source=.false.)
@@ -177,7 +177,7 @@ contains
       end do
       self%max_penetration = penetration(stepper)
       self%max_penetration_time = stepper%t
-      self%point_x = scene%points
+      self%point_x = scene%output%points
       allocate (self%point_dofs(4, size(self%point_x)), self%point_weights(4, size(self%point_x)))
       do p = 1, size(self%point_x)
          call point_row(model, self%point_x(p), self%point_dofs(:, p), self%point_weights(:, p))
@@ -188,15 +188,15 @@ contains
       self%observed_dofs(:, 2:) = self%point_dofs
       self%observed_weights(:, 2:) = self%point_weights
       allocate (self%events%observed(1 + size(self%point_x), 2))
-      call self%spectrum%init(self%every*scene%dt, last_step/self%every + 1)
-      gap = scene%episode_gap
+      call self%spectrum%init(self%every*scene%time%dt, last_step/self%every + 1)
+      gap = scene%output%episode_gap
       if (is_unset(gap)) gap = default_episode_gap(model%length, model%ei/model%rho_s)
       call self%episodes%init(stepper%contacts%x, gap, self%write_rows)
       allocate (self%events%closed_point(contacts), self%events%closed_impulse(contacts), self%events%opened(contacts))
       forcing = forcing_of(scene, omega, phase)
       self%forcing = forcing
-      self%measure_from = scene%measure_from
-      call self%statistics%init(window_first_step(scene%measure_from, scene%dt), last_step, scene%dt, &
+      self%measure_from = scene%output%measure_from
+      call self%statistics%init(window_first_step(scene%output%measure_from, scene%time%dt), last_step, scene%time%dt, &
                                 1 + size(self%point_x), stepper%contacts%lower_obstacle, &
                                 stepper%contacts%upper_obstacle, size(scene%obstacles), omega, phase)
       if (present(reduction)) then

@@ -93,9 +93,9 @@ contains
       character(len=*), intent(out) :: errmsg
       type(scene_entry), allocatable :: list(:)
       integer :: i
-      self%text = scene%text
+      self%text = scene%output%text
       self%run_id = new_run_id()
-      call self%h5%create(trim(scene%file), stat, errmsg)
+      call self%h5%create(trim(scene%output%file), stat, errmsg)
       if (stat /= 0) return
       call self%h5%attr_string('/', 'program', 'vibrobeam', stat, errmsg)
       if (stat == 0) call self%h5%attr_string('/', 'version', version_string, stat, errmsg)

@@ -6,7 +6,7 @@ module vibrobeam_setup
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_status, only: stat_failure, stat_numerical_failure
    use vibrobeam_text, only: real_text
-   use vibrobeam_scene, only: scene_type, rho_s_of, ei_of, step_count, is_unset
+   use vibrobeam_scene, only: scene_type, step_count, is_unset
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_contact_points, only: contact_set, build_contact_points, contact_value
    use vibrobeam_loads, only: load_set, build_loads
@@ -61,26 +61,27 @@ contains
       character(len=:), allocatable, intent(inout) :: warnings
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      call build_model(scene%basis, scene%elements, scene%length, rho_s_of(scene), ei_of(scene), &
+      call build_model(scene%mesh%basis, scene%mesh%elements, scene%beam%length, scene%beam%rho_s(), scene%beam%ei(), &
                        prepared%model, stat, errmsg)
       if (stat /= 0) return
       call build_contact_points(scene, prepared%model, prepared%contacts, warnings, stat, errmsg)
       if (stat /= 0) return
-      call build_loads(scene, prepared%model, rho_s_of(scene), prepared%loads)
-      if (scene%kind == 'dynamics' .and. len_trim(scene%from_file) > 0) then
+      call build_loads(scene%load, prepared%model, scene%beam%rho_s(), prepared%loads)
+      if (scene%analysis%kind == 'dynamics' .and. len_trim(scene%initial%from_file) > 0) then
          call resume_from_file(scene, prepared, stat, errmsg)
          return
       end if
       call initial_displacement(scene, prepared, stat, errmsg)
       if (stat /= 0) return
-      prepared%v0 = initial_velocity(scene, prepared%model)
+      prepared%v0 = initial_velocity(scene%initial, prepared%model)
       ! a failed interpolation of the initial fields returns NaN (vibrobeam_lapack)
       if (.not. all(ieee_is_finite(prepared%u0)) .or. .not. all(ieee_is_finite(prepared%v0))) then
          stat = stat_numerical_failure
          errmsg = '&initial: the initial displacement or velocity is not finite (interpolation on the mesh failed)'
          return
       end if
-      if (scene%kind == 'dynamics' .and. scene%reduction == 'craig-bampton') call reduce_scene(scene, prepared, stat, errmsg)
+      if (scene%analysis%kind == 'dynamics' .and. scene%mesh%reduction == 'craig-bampton') call reduce_scene(scene, &
+         prepared, stat, errmsg)
    end subroutine prepare_scene
 
    !> The cut-off of the fixed-interface modes (rad/s): &mesh reduction_frequency, or its
@@ -90,13 +91,13 @@ contains
       real(dp) :: cutoff
       real(dp) :: forcing(3)
       logical :: loaded(3)
-      if (.not. is_unset(scene%reduction_frequency)) then
-         cutoff = scene%reduction_frequency
+      if (.not. is_unset(scene%mesh%reduction_frequency)) then
+         cutoff = scene%mesh%reduction_frequency
          return
       end if
-      forcing = [scene%distributed_frequency, scene%point_frequency, scene%base_frequency]
-      loaded = [abs(scene%distributed) > 0, abs(scene%point_force) > 0, abs(scene%base_amplitude) > 0]
-      cutoff = default_reduction_frequency(scene%dt, pack(forcing, loaded))
+      forcing = [scene%load%distributed_frequency, scene%load%point_frequency, scene%load%base_frequency]
+      loaded = [abs(scene%load%distributed) > 0, abs(scene%load%point_force) > 0, abs(scene%load%base_amplitude) > 0]
+      cutoff = default_reduction_frequency(scene%time%dt, pack(forcing, loaded))
    end function reduction_cutoff
 
    !> The Craig-Bampton reduced model of a prepared scene (`vibrobeam_reduction`).
@@ -105,15 +106,15 @@ contains
       type(prepared_scene), intent(inout) :: prepared
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      if (scene%reduction_modes > prepared%model%unknowns - prepared%contacts%count) then
+      if (scene%mesh%reduction_modes > prepared%model%unknowns - prepared%contacts%count) then
          stat = stat_failure
-         write (errmsg, '(a,i0,a,i0,a,i0,a,i0,a)') '&mesh reduction_modes = ', scene%reduction_modes, &
+         write (errmsg, '(a,i0,a,i0,a,i0,a,i0,a)') '&mesh reduction_modes = ', scene%mesh%reduction_modes, &
             ' is more than the J - m = ', prepared%model%unknowns - prepared%contacts%count, &
             ' fixed-interface modes of the mesh (J = ', prepared%model%unknowns, ' unknowns, m = ', &
             prepared%contacts%count, ' contact points)'
          return
       end if
-      call build_reduction(prepared%model, prepared%contacts, reduction_cutoff(scene), scene%reduction_modes, &
+      call build_reduction(prepared%model, prepared%contacts, reduction_cutoff(scene), scene%mesh%reduction_modes, &
                            prepared%reduction, stat, errmsg)
       if (stat /= 0) then
          errmsg = '&mesh reduction = ''craig-bampton'': '//trim(errmsg)
@@ -148,7 +149,7 @@ contains
       real(dp) :: value
       character(len=:), allocatable :: file
       integer :: c
-      file = trim(scene%from_file)
+      file = trim(scene%initial%from_file)
       associate (contacts => prepared%contacts)
          call check_compatible(file, scene, contacts%x, contacts%lower, contacts%upper, same_bounds, stat, errmsg)
          if (stat /= 0) return
@@ -167,8 +168,8 @@ contains
          end if
          if (step_count(scene) <= steps) then
             stat = stat_failure
-            errmsg = '&time t_end = '//real_text(scene%t_end)//' s is not after the checkpoint of '''//file// &
-                     ''' at t = '//real_text(steps*scene%dt)//' s (t_end is the end time of the continued run)'
+            errmsg = '&time t_end = '//real_text(scene%time%t_end)//' s is not after the checkpoint of '''//file// &
+                     ''' at t = '//real_text(steps*scene%time%dt)//' s (t_end is the end time of the continued run)'
             return
          end if
          prepared%resuming = .true.
@@ -200,16 +201,16 @@ contains
       stat = 0
       errmsg = ''
       allocate (prepared%u0(prepared%model%unknowns), source=0.0_dp)
-      if (scene%kind /= 'dynamics') return
+      if (scene%analysis%kind /= 'dynamics') return
       associate (model => prepared%model, contacts => prepared%contacts)
-         select case (scene%displacement)
+         select case (scene%initial%displacement)
          case ('mode')
-            prepared%u0 = mode_field(model, scene%displacement_mode, scene%displacement_amplitude)
+            prepared%u0 = mode_field(model, scene%initial%displacement_mode, scene%initial%displacement_amplitude)
          case ('static')
             allocate (reaction(contacts%count))
-            call solve_static(model%stiffness, contacts, prepared%loads%at(0.0_dp), scene%contact_solver, &
-                              prepared%u0, reaction, iterations, stat, errmsg, scene%contact_max_iterations, &
-                              trim(scene%contact_method))
+            call solve_static(model%stiffness, contacts, prepared%loads%at(0.0_dp), scene%solver%contact_solver, &
+                              prepared%u0, reaction, iterations, stat, errmsg, scene%solver%contact_max_iterations, &
+                              trim(scene%solver%contact_method))
             if (stat /= 0) then
                errmsg = '&initial displacement = ''static'': '//trim(errmsg)
                stat = stat_numerical_failure
@@ -223,7 +224,7 @@ contains
             if (value + 1e-12_dp*(abs(value) + model%length) < contacts%lower(c) .or. &
                 value - 1e-12_dp*(abs(value) + model%length) > contacts%upper(c)) then
                write (errmsg, '(a,g0.6,a,g0.6,a,g0.6,a,g0.6,a)') '&initial displacement_amplitude = ', &
-                  scene%displacement_amplitude, ' puts the beam at u = ', value, ' m at x = ', contacts%x(c), &
+                  scene%initial%displacement_amplitude, ' puts the beam at u = ', value, ' m at x = ', contacts%x(c), &
                   ' m, outside the obstacles there [', contacts%lower(c), ', '
                write (errmsg, '(a,g0.6,a)') trim(errmsg), contacts%upper(c), '] m'
                stat = stat_failure
@@ -240,20 +241,22 @@ contains
       type(velocity_stepper), intent(out) :: stepper
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      stepper%compliant_rule = rule_code(trim(scene%compliant_rule))
+      stepper%compliant_rule = rule_code(trim(scene%time%compliant_rule))
       if (prepared%reduced) then
-         call stepper%init(prepared%reduced_model, prepared%reduced_contacts, prepared%reduced_loads, scene%dt, &
-                           scene%theta, scene%gamma, scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, &
-                           scene%contact_solver, prepared%q0, prepared%qv0, stat, errmsg)
+         call stepper%init(prepared%reduced_model, prepared%reduced_contacts, prepared%reduced_loads, scene%time%dt, &
+                           scene%time%theta, scene%time%gamma, scene%impact%restitution, scene%beam%rayleigh_mass, &
+                              scene%beam%rayleigh_stiffness, &
+                           scene%solver%contact_solver, prepared%q0, prepared%qv0, stat, errmsg)
       else
-         call stepper%init(prepared%model, prepared%contacts, prepared%loads, scene%dt, scene%theta, scene%gamma, &
-                           scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
+         call stepper%init(prepared%model, prepared%contacts, prepared%loads, scene%time%dt, scene%time%theta, scene%time%gamma, &
+                           scene%impact%restitution, scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness, &
+                              scene%solver%contact_solver, &
                            prepared%u0, prepared%v0, stat, errmsg)
       end if
-      stepper%projector%max_iterations = scene%contact_max_iterations
-      stepper%projector%method = contact_method_code(trim(scene%contact_method))
-      stepper%compliant%method = trim(scene%contact_method)
-      if (scene%separating_points == 'restitution') stepper%separating_restitution = scene%restitution
+      stepper%projector%max_iterations = scene%solver%contact_max_iterations
+      stepper%projector%method = contact_method_code(trim(scene%solver%contact_method))
+      stepper%compliant%method = trim(scene%solver%contact_method)
+      if (scene%impact%separating_points == 'restitution') stepper%separating_restitution = scene%impact%restitution
    end subroutine start_stepper
 
    !> The stepper of the scene's scheme (&time scheme: 'velocity' or 'position') at t = 0,
@@ -266,25 +269,27 @@ contains
       character(len=*), intent(out) :: errmsg
       type(velocity_stepper), allocatable :: velocity
       type(position_stepper), allocatable :: position
-      if (scene%scheme == 'position') then
+      if (scene%time%scheme == 'position') then
          allocate (position)
-         position%compliant_rule = rule_code(trim(scene%compliant_rule))
+         position%compliant_rule = rule_code(trim(scene%time%compliant_rule))
          if (prepared%reduced) then
-            call position%init(prepared%reduced_model, prepared%reduced_contacts, prepared%reduced_loads, scene%dt, &
-                               scene%theta, scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, &
-                               scene%contact_solver, prepared%q0, prepared%qv0, stat, errmsg)
+            call position%init(prepared%reduced_model, prepared%reduced_contacts, prepared%reduced_loads, scene%time%dt, &
+                               scene%time%theta, scene%impact%restitution, scene%beam%rayleigh_mass, &
+                                  scene%beam%rayleigh_stiffness, &
+                               scene%solver%contact_solver, prepared%q0, prepared%qv0, stat, errmsg)
          else
-            call position%init(prepared%model, prepared%contacts, prepared%loads, scene%dt, scene%theta, &
-                               scene%restitution, scene%rayleigh_mass, scene%rayleigh_stiffness, scene%contact_solver, &
+            call position%init(prepared%model, prepared%contacts, prepared%loads, scene%time%dt, scene%time%theta, &
+                               scene%impact%restitution, scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness, &
+                                  scene%solver%contact_solver, &
                                prepared%u0, prepared%v0, stat, errmsg)
          end if
-         position%projector%max_iterations = scene%contact_max_iterations
-         position%projector%method = contact_method_code(trim(scene%contact_method))
-         position%compliant%method = trim(scene%contact_method)
+         position%projector%max_iterations = scene%solver%contact_max_iterations
+         position%projector%method = contact_method_code(trim(scene%solver%contact_method))
+         position%compliant%method = trim(scene%solver%contact_method)
          if (stat == 0 .and. allocated(prepared%u_previous0)) then
             ! the state of an earlier run carried on (docs/sweeps.md, "Continuation")
             position%u_previous = prepared%u_previous0
-            position%v = (position%u - position%u_previous)/scene%dt
+            position%v = (position%u - position%u_previous)/scene%time%dt
          end if
          call move_alloc(position, stepper)
       else

@@ -24,7 +24,7 @@
 module vibrobeam_check_report
    use vibrobeam_kinds, only: dp, pi
    use vibrobeam_text, only: real_text, integer_text
-   use vibrobeam_scene, only: scene_type, rho_s_of, ei_of, is_unset, unknowns_of
+   use vibrobeam_scene, only: scene_type, is_unset
    use vibrobeam_model, only: beam_model
    use vibrobeam_cantilever_exact, only: cantilever_frequency
    use vibrobeam_highest_frequency, only: highest_frequency
@@ -79,19 +79,19 @@ contains
       character(len=*), intent(out) :: errmsg
       integer :: n
       do n = 1, listed_modes
-         report%omega(n) = cantilever_frequency(n, scene%length, k2_of(scene))
+         report%omega(n) = cantilever_frequency(n, scene%beam%length, k2_of(scene))
       end do
       report%unknowns = model%unknowns
       call highest_frequency(model, report%omega_max, stat, errmsg)
       if (stat /= 0) return
-      report%stepped = scene%kind == 'dynamics'
+      report%stepped = scene%analysis%kind == 'dynamics'
       if (.not. report%stepped) return
-      report%omega1_dt = report%omega(1)*scene%dt
-      report%omega_max_dt = report%omega_max*scene%dt
+      report%omega1_dt = report%omega(1)*scene%time%dt
+      report%omega_max_dt = report%omega_max*scene%time%dt
       report%steps_per_period = 2*pi/report%omega1_dt
       report%resolved_modes = resolved_modes(scene)
       call velocity_scale(scene, report%velocity, report%velocity_source)
-      report%penetration = scene%dt*report%velocity
+      report%penetration = scene%time%dt*report%velocity
       report%size = estimate_result_size(scene)
    end subroutine make_check_report
 
@@ -111,8 +111,8 @@ contains
       do n = 1, listed_modes
          text = text//'  mode '//integer_text(n)//': omega = '//g(report%omega(n))//' rad/s, f = '// &
                 g(report%omega(n)/(2*pi))//' Hz'
-         if (report%stepped) text = text//', omega*dt = '//g(report%omega(n)*scene%dt)//', '// &
-                                    g(2*pi/(report%omega(n)*scene%dt))//' steps per period'
+         if (report%stepped) text = text//', omega*dt = '//g(report%omega(n)*scene%time%dt)//', '// &
+                                    g(2*pi/(report%omega(n)*scene%time%dt))//' steps per period'
          text = text//new_line('a')
       end do
       text = text//'highest frequency of the discrete model ('//integer_text(report%unknowns)// &
@@ -130,18 +130,18 @@ contains
          text = text//'compliant stop '//integer_text(n)//': beam stiffness there k_b = 3EI/x^3 = '// &
                 g(beam_stiffness)//' N/m, effective mass k_b/omega_1^2 = '//g(mass)// &
                 ' kg, contact time scale pi sqrt(m_eff/(k + k_b)) = '//g(time_scale)//' s = '// &
-                g(time_scale/scene%dt)//' steps'
-         if (time_scale/scene%dt < steps_per_contact_wanted) text = text//' (NOT resolved: fewer than '// &
+                g(time_scale/scene%time%dt)//' steps'
+         if (time_scale/scene%time%dt < steps_per_contact_wanted) text = text//' (NOT resolved: fewer than '// &
                                                                    g(steps_per_contact_wanted)//')'
          text = text//new_line('a')
       end do
       text = text//'estimated result size: '//g(report%size%total_bytes)//' bytes (HDF5 '// &
              g(report%size%hdf5_bytes)//', text '//g(report%size%text_bytes)//'): '//g(report%size%outputs)// &
              ' output times of '//g(report%size%values_per_output)//' values and '//g(report%size%snapshots)// &
-             ' field snapshots of '//integer_text(scene%elements + 1)//' nodes; impacts not counted'//new_line('a')
+             ' field snapshots of '//integer_text(scene%mesh%elements + 1)//' nodes; impacts not counted'//new_line('a')
       with_advice = .true.
       if (present(advice)) with_advice = advice
-      if (with_advice .and. scene%measure_from < scene%t_end) text = text//resolution_advice_text(scene, 'this run')
+      if (with_advice .and. scene%output%measure_from < scene%time%t_end) text = text//resolution_advice_text(scene, 'this run')
    end function check_report_text
 
    !> Contact time scale of compliant obstacle i of the scene (s; module comment), with the
@@ -160,10 +160,10 @@ contains
          x = 0.5_dp*(o%x_from + o%x_to)
          if (x <= 0) return
          k = o%stiffness
-         if (o%x_to - o%x_from > 1e-9_dp*scene%length/scene%elements) k = k*(o%x_to - o%x_from)
-         ! ei_of is k2 = EI/(rho S) when the beam is given by k2: then per unit rho S, like k
-         beam_stiffness = 3*ei_of(scene)/x**3
-         omega1 = cantilever_frequency(1, scene%length, k2_of(scene))
+         if (o%x_to - o%x_from > 1e-9_dp*scene%beam%length/scene%mesh%elements) k = k*(o%x_to - o%x_from)
+         ! ei() is k2 = EI/(rho S) when the beam is given by k2: then per unit rho S, like k
+         beam_stiffness = 3*scene%beam%ei()/x**3
+         omega1 = cantilever_frequency(1, scene%beam%length, k2_of(scene))
          effective_mass = beam_stiffness/omega1**2
          time_scale = pi*sqrt(effective_mass/(k + beam_stiffness))
       end associate
@@ -177,37 +177,37 @@ contains
       real(dp) :: omega1, steps, ratio, time_scale, beam_stiffness, mass
       integer :: i
       text = ''
-      if (scene%kind == 'dynamics') then
-         omega1 = cantilever_frequency(1, scene%length, k2_of(scene))
-         steps = 2*pi/(omega1*scene%dt)
+      if (scene%analysis%kind == 'dynamics') then
+         omega1 = cantilever_frequency(1, scene%beam%length, k2_of(scene))
+         steps = 2*pi/(omega1*scene%time%dt)
          if (steps < steps_per_period_wanted) &
-            call add('&time dt = '//real_text(scene%dt)//' s gives '//g(steps)//' steps per period of mode 1 '// &
+            call add('&time dt = '//real_text(scene%time%dt)//' s gives '//g(steps)//' steps per period of mode 1 '// &
                      '(omega_1 = '//g(omega1)//' rad/s, continuum): fewer than '//g(steps_per_period_wanted)// &
                      ', so no natural mode is resolved; dt <= '//g(2*pi/(omega1*steps_per_period_wanted))// &
                      ' s resolves mode 1')
          do i = 1, size(scene%obstacles)
             call contact_time_scale(scene, i, time_scale, beam_stiffness, mass)
             if (time_scale <= 0) cycle
-            if (time_scale/scene%dt < steps_per_contact_wanted) &
+            if (time_scale/scene%time%dt < steps_per_contact_wanted) &
                call add('&obstacles stiffness('//integer_text(i)//') = '//real_text(scene%obstacles(i)%stiffness)// &
-                        ': its contact time scale '//g(time_scale)//' s spans '//g(time_scale/scene%dt)// &
+                        ': its contact time scale '//g(time_scale)//' s spans '//g(time_scale/scene%time%dt)// &
                         ' steps of dt, fewer than '//g(steps_per_contact_wanted)//', so the contact is not resolved; '// &
                         'dt <= '//g(time_scale/steps_per_contact_wanted)//' s resolves it')
          end do
       end if
-      if (is_unset(scene%youngs_modulus)) return
-      if (scene%youngs_modulus < youngs_modulus_least) &
-         call add('&beam youngs_modulus = '//real_text(scene%youngs_modulus)//' Pa is below '// &
+      if (is_unset(scene%beam%youngs_modulus)) return
+      if (scene%beam%youngs_modulus < youngs_modulus_least) &
+         call add('&beam youngs_modulus = '//real_text(scene%beam%youngs_modulus)//' Pa is below '// &
                   g(youngs_modulus_least)//' Pa (rubber): given in GPa or MPa? (steel: 2.1e11 Pa)')
-      if (scene%density < density_range(1) .or. scene%density > density_range(2)) &
-         call add('&beam density = '//real_text(scene%density)//' kg/m^3 is outside ['//g(density_range(1))// &
+      if (scene%beam%density < density_range(1) .or. scene%beam%density > density_range(2)) &
+         call add('&beam density = '//real_text(scene%beam%density)//' kg/m^3 is outside ['//g(density_range(1))// &
                   ', '//g(density_range(2))//'] kg/m^3: given in g/cm^3 or t/m^3? (steel: 7850 kg/m^3)')
-      if (scene%area < area_range(1) .or. scene%area > area_range(2)) &
-         call add('&beam area = '//real_text(scene%area)//' m^2 is outside ['//g(area_range(1))//', '// &
+      if (scene%beam%area < area_range(1) .or. scene%beam%area > area_range(2)) &
+         call add('&beam area = '//real_text(scene%beam%area)//' m^2 is outside ['//g(area_range(1))//', '// &
                   g(area_range(2))//'] m^2: given in mm^2 or cm^2? (1 mm^2 = 1e-6 m^2)')
-      ratio = scene%inertia/scene%area**2
+      ratio = scene%beam%inertia/scene%beam%area**2
       if (ratio < inertia_ratio_range(1) .or. ratio > inertia_ratio_range(2)) &
-         call add('&beam inertia = '//real_text(scene%inertia)//' m^4 does not fit area = '//real_text(scene%area)// &
+         call add('&beam inertia = '//real_text(scene%beam%inertia)//' m^4 does not fit area = '//real_text(scene%beam%area)// &
                   ' m^2: inertia/area^2 = '//g(ratio)//' is outside ['//g(inertia_ratio_range(1))//', '// &
                   g(inertia_ratio_range(2))//'] (a rectangle b x h has h/(12 b), a thin tube r/(4 pi t)): '// &
                   'inertia given in mm^4 or cm^4, or area in mm^2 or cm^2?')
@@ -231,24 +231,24 @@ contains
       real(dp) :: candidate, deflection, ei, length, a
       velocity = 0
       source = 'nothing moves (zero initial data, no loads): no penetration expected'
-      if (scene%velocity /= 'zero') call consider(abs(scene%velocity_amplitude), 'the initial velocity '// &
+      if (scene%initial%velocity /= 'zero') call consider(abs(scene%initial%velocity_amplitude), 'the initial velocity '// &
                                                   '(&initial velocity_amplitude)')
-      if (scene%displacement == 'mode') &
-         call consider(abs(scene%displacement_amplitude)*cantilever_frequency(scene%displacement_mode, &
-                                                                              scene%length, k2_of(scene)), &
+      if (scene%initial%displacement == 'mode') &
+         call consider(abs(scene%initial%displacement_amplitude)*cantilever_frequency(scene%initial%displacement_mode, &
+                                                                              scene%beam%length, k2_of(scene)), &
                        'a free oscillation of the initial displacement (displacement_amplitude x omega_'// &
-                       integer_text(scene%displacement_mode)//')')
-      if (abs(scene%base_acceleration) > 0) then
-         call consider(abs(scene%base_acceleration)/scene%base_frequency, &
+                       integer_text(scene%initial%displacement_mode)//')')
+      if (abs(scene%load%base_acceleration) > 0) then
+         call consider(abs(scene%load%base_acceleration)/scene%load%base_frequency, &
                        'the base excitation (&load base_acceleration / base_frequency)')
       else
-         call consider(abs(scene%base_amplitude)*scene%base_frequency, &
+         call consider(abs(scene%load%base_amplitude)*scene%load%base_frequency, &
                        'the base excitation (&load base_amplitude x base_frequency)')
       end if
-      ei = ei_of(scene)   ! N m^2; k2 when the beam is given by k2 (loads are then per unit mass)
-      length = scene%length
-      a = scene%point_position
-      deflection = abs(scene%distributed)*length**4/(8*ei) + abs(scene%point_force)*a**2*(3*length - a)/(6*ei)
+      ei = scene%beam%ei()   ! N m^2; k2 when the beam is given by k2 (loads are then per unit mass)
+      length = scene%beam%length
+      a = scene%load%point_position
+      deflection = abs(scene%load%distributed)*length**4/(8*ei) + abs(scene%load%point_force)*a**2*(3*length - a)/(6*ei)
       call consider(deflection*cantilever_frequency(1, length, k2_of(scene)), &
                     'a free oscillation in mode 1 with the static tip deflection under the loads ('// &
                     g(deflection)//' m) as amplitude (a resonant load moves faster)')
@@ -272,16 +272,16 @@ contains
       type(scene_type), intent(in) :: scene
       real(dp) :: omega_limit, count
       integer :: n
-      omega_limit = 2*pi/(steps_per_period_wanted*scene%dt)
+      omega_limit = 2*pi/(steps_per_period_wanted*scene%time%dt)
       resolved_modes = 0
-      do n = 1, min(listed_modes, unknowns_of(scene))
-         if (cantilever_frequency(n, scene%length, k2_of(scene)) > omega_limit) return
+      do n = 1, min(listed_modes, scene%mesh%unknowns())
+         if (cantilever_frequency(n, scene%beam%length, k2_of(scene)) > omega_limit) return
          resolved_modes = n
       end do
       if (resolved_modes < listed_modes) return
       ! omega_n = ((2n - 1) pi/2)^2 sqrt(k2)/L^2 <= omega_limit
-      count = ((2/pi)*sqrt(omega_limit*scene%length**2/sqrt(k2_of(scene))) + 1)/2
-      resolved_modes = int(min(real(unknowns_of(scene), dp), max(real(listed_modes, dp), aint(count))))
+      count = ((2/pi)*sqrt(omega_limit*scene%beam%length**2/sqrt(k2_of(scene))) + 1)/2
+      resolved_modes = int(min(real(scene%mesh%unknowns(), dp), max(real(listed_modes, dp), aint(count))))
    end function resolved_modes
 
    function resolved_text(modes, unknowns) result(text)
@@ -303,7 +303,7 @@ contains
    !> k2 = EI/(rho S) (m^4/s^2).
    pure real(dp) function k2_of(scene)
       type(scene_type), intent(in) :: scene
-      k2_of = ei_of(scene)/rho_s_of(scene)
+      k2_of = scene%beam%ei()/scene%beam%rho_s()
    end function k2_of
 
    !> A number with 6 significant digits, without blanks: 210.347, 0.0213, 1.23457e7.

@@ -11,7 +11,7 @@ program vibrobeam_main
                                exit_interrupted, message_length, stat_numerical_failure
    use vibrobeam_version, only: version_string
    use vibrobeam_scene, only: scene_type, validate_scene, format_scene, is_unset
-   use vibrobeam_input, only: read_scene, namelist_groups_text
+   use vibrobeam_scene_read, only: read_scene, namelist_groups_text
    use vibrobeam_output_target, only: check_output_target
    use vibrobeam_check_report, only: check_report, make_check_report, check_report_text, scene_warnings
    use vibrobeam_model, only: nodal_displacement
@@ -88,7 +88,7 @@ program vibrobeam_main
    if (sweep%present) call run_sweep_input()
    ! a single run is rank 0's alone (under mpirun the other ranks have nothing to do)
    if (transport_rank() /= 0) call finish(exit_ok)
-   select case (scene%kind)
+   select case (scene%analysis%kind)
    case ('modes')
       call run_modes()
    case ('static')
@@ -113,7 +113,7 @@ contains
          write (error_unit, '(a)') 'vibrobeam: invalid input, nothing written'
       case (exit_other_error)
          if (.not. text_only) write (error_unit, '(a)') &
-            'vibrobeam: nothing published; what was at '''//trim(scene%file)//''' is untouched'
+            'vibrobeam: nothing published; what was at '''//trim(scene%output%file)//''' is untouched'
       end select
       call finish(code)
    end subroutine fail
@@ -231,7 +231,7 @@ contains
                reduction%omega(reduction%modes), ' rad/s'
             if (reduction%cutoff > 0) write (output_unit, '(a,es12.5,a)') '  cut-off: ', reduction%cutoff, &
                ' rad/s'//merge(' (default)', '          ', &
-               is_unset(scene%reduction_frequency))
+               is_unset(scene%mesh%reduction_frequency))
          end associate
       end if
       call make_check_report(scene, model, report, stat, errmsg)
@@ -247,8 +247,8 @@ contains
       type(run_summary) :: summary
       logical :: text_skipped
       associate (model => prepared%model)
-      call meter%init(scene%progress)
-      call compute_modes(model, scene%modes, omega, shapes, vectors, stat, errmsg)
+      call meter%init(scene%output%progress)
+      call compute_modes(model, scene%analysis%modes, omega, shapes, vectors, stat, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
       call files%open(scene, model, stat, errmsg)
       if (stat == 0) call files%write_modes(omega, shapes, stat, errmsg)
@@ -260,7 +260,7 @@ contains
          call files%discard()
          call fail(exit_other_error, errmsg)
       end if
-      write (output_unit, '(a,i0,a)') 'vibrobeam: ', size(omega), ' natural modes written to '//trim(scene%file)
+      write (output_unit, '(a,i0,a)') 'vibrobeam: ', size(omega), ' natural modes written to '//trim(scene%output%file)
       call stop_if_interrupted(text_skipped)
       end associate
       call finish(exit_ok)
@@ -274,10 +274,10 @@ contains
       integer :: iterations
       logical :: text_skipped
       associate (model => prepared%model, contacts => prepared%contacts, loads => prepared%loads)
-      call meter%init(scene%progress)
+      call meter%init(scene%output%progress)
       allocate (u(model%unknowns), reaction(contacts%count))
-      call solve_static(model%stiffness, contacts, loads%at(0.0_dp), scene%contact_solver, u, reaction, &
-                        iterations, stat, errmsg, scene%contact_max_iterations, trim(scene%contact_method))
+      call solve_static(model%stiffness, contacts, loads%at(0.0_dp), scene%solver%contact_solver, u, reaction, &
+                        iterations, stat, errmsg, scene%solver%contact_max_iterations, trim(scene%solver%contact_method))
       if (stat /= 0) call fail(exit_numerical_failure, errmsg)
       call files%open(scene, model, stat, errmsg)
       if (stat == 0) call files%write_static(nodal_displacement(model, u), contacts%x, reaction, stat, errmsg)
@@ -292,7 +292,7 @@ contains
          call fail(exit_other_error, errmsg)
       end if
       write (output_unit, '(a,i0,a)') 'vibrobeam: static equilibrium with ', count(abs(reaction) > 0), &
-         ' contact points in contact written to '//trim(scene%file)
+         ' contact points in contact written to '//trim(scene%output%file)
       call stop_if_interrupted(text_skipped)
       end associate
       call finish(exit_ok)
@@ -305,12 +305,12 @@ contains
       select case (outcome%status)
       case ('failed')
          write (error_unit, '(a)') 'vibrobeam: numerical failure at '//trim(outcome%failure)
-         write (error_unit, '(a)') 'vibrobeam: results up to the failure written to '//trim(scene%file)// &
+         write (error_unit, '(a)') 'vibrobeam: results up to the failure written to '//trim(scene%output%file)// &
             ' (/run status = ''failed'')'
          call finish(exit_numerical_failure)
       case ('interrupted')
          write (error_unit, '(a,i0,a)') 'vibrobeam: interrupted by '//interrupt_name()//' after step ', &
-            outcome%steps, '; results up to it written to '//trim(scene%file)//' (/run status = ''interrupted'')'
+            outcome%steps, '; results up to it written to '//trim(scene%output%file)//' (/run status = ''interrupted'')'
          call stop_if_interrupted(outcome%text_skipped)
          call finish(exit_interrupted)
       end select
@@ -319,7 +319,7 @@ contains
          outcome%impacts, ' impacts, largest penetration ', outcome%max_penetration, ' m, '
       if (outcome%compliant) write (output_unit, '(a,es10.3,a)', advance='no') 'peak contact force ', &
          outcome%peak_force, ' N, '
-      write (output_unit, '(f0.2,a)') outcome%wall_seconds, ' s; written to '//trim(scene%file)//' (run '// &
+      write (output_unit, '(f0.2,a)') outcome%wall_seconds, ' s; written to '//trim(scene%output%file)//' (run '// &
          trim(outcome%run_id)//')'
       call stop_if_interrupted(outcome%text_skipped)
       call finish(exit_ok)
@@ -340,10 +340,10 @@ contains
       end if
       write (output_unit, '(a,i0,a,i0,a,i0,a,f0.2,a,i0,a,i0,a)') 'vibrobeam: sweep of ', outcome%points, ' points (', &
          outcome%failed, ' failed, ', outcome%interrupted, ' interrupted), ', outcome%wall_seconds, ' s on ', &
-         outcome%threads, ' threads x ', outcome%ranks, ' processes; written to '//trim(scene%file)
+         outcome%threads, ' threads x ', outcome%ranks, ' processes; written to '//trim(scene%output%file)
       if (outcome%status == 'interrupted') then
          write (error_unit, '(a)') 'vibrobeam: interrupted by '//interrupt_name()//'; the points done are in '// &
-            trim(scene%file)//' (/run status = ''interrupted'')'
+            trim(scene%output%file)//' (/run status = ''interrupted'')'
          call stop_if_interrupted(outcome%text_skipped)
          call finish(exit_interrupted)
       end if
@@ -363,7 +363,7 @@ contains
       logical, intent(in) :: text_skipped
       if (text_skipped) write (error_unit, '(a)') 'vibrobeam: '//interrupt_name()// &
          ' while deriving the text files: published without them; derive them with vibrobeam --text '// &
-         trim(scene%file)
+         trim(scene%output%file)
       if (interrupt_requested()) call finish(exit_interrupted)
    end subroutine stop_if_interrupted
 

@@ -81,7 +81,7 @@ contains
       type(result_size) :: estimate
       real(dp) :: free
       stat = 1
-      file = trim(scene%file)
+      file = trim(scene%output%file)
       if (len(file) == 0) then
          errmsg = '&output file = '''' is empty: give a file name such as ''results/run.h5'''
          return
@@ -130,7 +130,7 @@ contains
          if (len(stem) > 3) then
             if (stem(len(stem) - 2:) == '.h5') stem = stem(1:len(stem) - 3)
          end if
-         if (scene%text .and. len(input_resolved) > len(stem) + 5) then
+         if (scene%output%text .and. len(input_resolved) > len(stem) + 5) then
             if (input_resolved(1:len(stem) + 1) == stem//'_' .and. input_resolved(len(input_resolved) - 3:) == '.dat' &
                 .and. index(input_resolved(len(stem) + 2:), '/') == 0) then
                errmsg = shown//' would write text files named '''//abbreviated(base_name(stem), 60)// &
@@ -140,22 +140,22 @@ contains
             end if
          end if
       end if
-      if (len_trim(scene%from_file) > 0) then
-         if (path_kind(trim(scene%from_file)) /= kind_file) then
-            errmsg = '&initial from_file = '''//abbreviated(trim(scene%from_file), 60)// &
+      if (len_trim(scene%initial%from_file) > 0) then
+         if (path_kind(trim(scene%initial%from_file)) /= kind_file) then
+            errmsg = '&initial from_file = '''//abbreviated(trim(scene%initial%from_file), 60)// &
                      ''' is not an existing file: give the results file of an earlier run'
             return
          end if
          ! the continued result holds only what follows the checkpoint: writing it over the
          ! file it continues would lose the earlier part
-         if (c_same_file(c_string(file), c_string(trim(scene%from_file))) == 1 .or. &
-             join(resolved, name) == real_path(trim(scene%from_file))) then
+         if (c_same_file(c_string(file), c_string(trim(scene%initial%from_file))) == 1 .or. &
+             join(resolved, name) == real_path(trim(scene%initial%from_file))) then
             errmsg = shown//' is the file that &initial from_file continues; the continued result holds '// &
                      'only what follows its checkpoint: give it another name'
             return
          end if
       end if
-      if (scene%kind == 'dynamics') then
+      if (scene%analysis%kind == 'dynamics') then
          estimate = estimate_result_size(scene)
          if (estimate%total_bytes > max_result_bytes) then
             errmsg = size_message(estimate)//', more than the limit of '//bytes_text(max_result_bytes)//size_advice()
@@ -175,8 +175,8 @@ contains
       function size_message(estimate) result(text)
          type(result_size), intent(in) :: estimate
          character(len=:), allocatable :: text
-         text = '&output every = '//integer_text(scene%every)//', field_every = '//integer_text(scene%field_every)// &
-                ' with '//real_text(estimate%steps)//' steps and '//integer_text(scene%elements + 1)// &
+         text = '&output every = '//integer_text(scene%output%every)//', field_every = '//integer_text(scene%output%field_every)// &
+                ' with '//real_text(estimate%steps)//' steps and '//integer_text(scene%mesh%elements + 1)// &
                 ' nodes would write about '//bytes_text(estimate%total_bytes)//' of results'
       end function size_message
       function size_advice() result(text)
@@ -199,16 +199,16 @@ contains
       integer :: field_every, points
       real(dp) :: nodes
       points = 0
-      if (allocated(scene%points)) points = size(scene%points)
+      if (allocated(scene%output%points)) points = size(scene%output%points)
       estimate%steps = real(step_count(scene), dp)
-      field_every = scene%field_every
-      if (field_every == 0) field_every = scene%every
-      estimate%outputs = real(step_count(scene)/int(scene%every, int64), dp) + 2
+      field_every = scene%output%field_every
+      if (field_every == 0) field_every = scene%output%every
+      estimate%outputs = real(step_count(scene)/int(scene%output%every, int64), dp) + 2
       estimate%snapshots = real(step_count(scene)/int(field_every, int64), dp) + 2
       estimate%values_per_output = history_columns + 2*points
-      nodes = scene%elements + 1
+      nodes = scene%mesh%elements + 1
       estimate%hdf5_bytes = bytes_per_number*(estimate%outputs*estimate%values_per_output + estimate%snapshots*nodes)
-      if (scene%text) estimate%text_bytes = text_per_number*estimate%outputs*estimate%values_per_output + &
+      if (scene%output%text) estimate%text_bytes = text_per_number*estimate%outputs*estimate%values_per_output + &
                                         text_per_field_value*estimate%snapshots*nodes
       estimate%total_bytes = estimate%hdf5_bytes + estimate%text_bytes
    end function estimate_result_size

@@ -12,7 +12,7 @@
 module vibrobeam_resolution_advice
    use vibrobeam_kinds, only: dp, pi
    use vibrobeam_text, only: integer_text
-   use vibrobeam_scene, only: scene_type, ei_of, rho_s_of
+   use vibrobeam_scene, only: scene_type
    use vibrobeam_cantilever_exact, only: cantilever_frequency
    implicit none
    private
@@ -32,7 +32,7 @@ contains
    !! mode 1 of the clamped-free beam (continuum closed form, theory §7).
    real(dp) function advice_time_step(scene)
       type(scene_type), intent(in) :: scene
-      advice_time_step = 2*pi/(cantilever_frequency(1, scene%length, ei_of(scene)/rho_s_of(scene))* &
+      advice_time_step = 2*pi/(cantilever_frequency(1, scene%beam%length, scene%beam%ei()/scene%beam%rho_s())* &
                                steps_per_period_converged)
    end function advice_time_step
 
@@ -46,19 +46,19 @@ contains
       real(dp) :: dt_wanted, steps
       logical :: time_ok, mesh_ok
       text = ''
-      if (scene%kind /= 'dynamics' .or. size(scene%obstacles) == 0) return
+      if (scene%analysis%kind /= 'dynamics' .or. size(scene%obstacles) == 0) return
       dt_wanted = advice_time_step(scene)
-      steps = steps_per_period_converged*dt_wanted/scene%dt
-      time_ok = scene%dt <= dt_wanted
-      mesh_ok = scene%elements >= elements_converged
+      steps = steps_per_period_converged*dt_wanted/scene%time%dt
+      time_ok = scene%time%dt <= dt_wanted
+      mesh_ok = scene%mesh%elements >= elements_converged
       text = 'resolution advice for the statistics (docs/statistics.md, "Which statistics converge"):'// &
              new_line('a')
       text = text//'  converge to about 2 standard errors with dt <= '//g(dt_wanted)//' s ('// &
              integer_text(nint(steps_per_period_converged))//' steps per period of mode 1) and elements >= '// &
              integer_text(elements_converged)//': RMS tip displacement, episode rate, impulse per episode, '// &
              'contact force, power input and dissipated in all, dominant frequency'//new_line('a')
-      text = text//'  '//what//': dt = '//g(scene%dt)//' s ('//integer_text(int(steps))// &
-             ' steps per period of mode 1), elements = '//integer_text(scene%elements)//': '
+      text = text//'  '//what//': dt = '//g(scene%time%dt)//' s ('//integer_text(int(steps))// &
+             ' steps per period of mode 1), elements = '//integer_text(scene%mesh%elements)//': '
       if (time_ok .and. mesh_ok) then
          text = text//'resolved'
       else
@@ -71,7 +71,7 @@ contains
       text = text//'  properties of dt and N (compare only at equal dt and N): impact rate and contact fraction '// &
              '(micro-impacts per episode multiply as dt and h shrink), RMS tip velocity and power dissipated by '// &
              'damping (high modes the impacts excite)'
-      if (scene%restitution < 1 .and. (scene%rayleigh_mass > 0 .or. scene%rayleigh_stiffness > 0)) &
+      if (scene%impact%restitution < 1 .and. (scene%beam%rayleigh_mass > 0 .or. scene%beam%rayleigh_stiffness > 0)) &
          text = text//'; the split of the dissipated power between the stops (e < 1) and damping'
       text = text//new_line('a')
    end function resolution_advice_text

@@ -64,7 +64,7 @@ contains
          text = text//'  '//pad(integer_text(k), 7)//pad(integer_text(points(k)%line), 6)//pad(direction, 11)// &
                 pad(start, 11)//pad(real_text(points(k)%value(1)), 22)
          if (len_trim(settings%axis(2)%parameter) > 0) text = text//pad(real_text(points(k)%value(2)), 22)
-         text = text//pad(real_text(settle_steps*local%dt), 14)//real_text(measure_steps*local%dt)//new_line('a')
+         text = text//pad(real_text(settle_steps*local%time%dt), 14)//real_text(measure_steps*local%time%dt)//new_line('a')
       end do
       if (settings%steady_tolerance > 0) then
          text = text//'steady state: after settle, windows of measure until the RMS tip displacement and the '// &
@@ -89,7 +89,7 @@ contains
       end if
       text = text//') on '//integer_text(threads)//' threads x '//integer_text(ranks)//' processes'//new_line('a')
       if (settings%keep_runs) text = text//'keep_runs: every point''s result is also written, as '// &
-                                     'STEM_pointNNNN.h5 beside '//trim(scene%file)//new_line('a')
+                                     'STEM_pointNNNN.h5 beside '//trim(scene%output%file)//new_line('a')
       text = text//resolution_advice(scene, settings)
    contains
       pure function pad(word, width) result(out)
@@ -169,7 +169,7 @@ contains
       best = huge(1.0_dp)
       do k = 1, size(points)
          local = point_scene(scene, settings, points(k))
-         ratio = local%dt/advice_time_step(local)
+         ratio = local%time%dt/advice_time_step(local)
          best = min(best, ratio)
          if (ratio > worst) then
             worst = ratio

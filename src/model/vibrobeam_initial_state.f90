@@ -13,14 +13,48 @@
 !! (a cubic spline's response to the clamp's jump, decaying by 2 - sqrt(3) per element).
 module vibrobeam_initial_state
    use vibrobeam_kinds, only: dp
-   use vibrobeam_scene, only: scene_type
    use vibrobeam_model, only: beam_model, interpolate_field
    use vibrobeam_cantilever_exact, only: cantilever_mode_shape
+   use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, text_row, &
+      keyword_length, path_length
    implicit none
    private
-   public :: mode_field, initial_velocity
+   public :: mode_field, initial_velocity, initial_settings, visit_initial
+
+   !> &initial as the input gives it (docs/input.md, "&initial").
+   type :: initial_settings
+      character(len=keyword_length) :: displacement = 'zero'
+      integer :: displacement_mode = 1
+      real(dp) :: displacement_amplitude = 0
+      character(len=keyword_length) :: velocity = 'zero'
+      integer :: velocity_mode = 1
+      real(dp) :: velocity_amplitude = 0
+      character(len=path_length) :: from_file = ''   !! continue from this results file ('' = no)
+   end type initial_settings
 
 contains
+
+   !> Every variable of &initial, once (docs/input.md, "&initial").
+   subroutine visit_initial(initial, visitor)
+      type(initial_settings), intent(inout) :: initial
+      class(schema_visitor), intent(inout) :: visitor
+      call visitor%variable(keyword_row('initial', 'displacement', 'zero|mode|static', keyword_length, &
+                                        'initial displacement: zero, a natural mode, or the static equilibrium'), &
+                            initial%displacement)
+      call visitor%variable(integer_row('initial', 'displacement_mode', 1, 100, &
+                                        'which natural mode the initial displacement is'), initial%displacement_mode)
+      call visitor%variable(real_row('initial', 'displacement_amplitude', 'm', -1e6_dp, 1e6_dp, &
+                                     'tip value of the initial mode shape'), initial%displacement_amplitude)
+      call visitor%variable(keyword_row('initial', 'velocity', 'zero|mode|uniform', keyword_length, &
+                                        'initial velocity: zero, a natural mode, or uniform'), initial%velocity)
+      call visitor%variable(integer_row('initial', 'velocity_mode', 1, 100, &
+                                        'which natural mode the initial velocity is'), initial%velocity_mode)
+      call visitor%variable(real_row('initial', 'velocity_amplitude', 'm/s', -1e8_dp, 1e8_dp, &
+                                     'tip velocity of the mode, or the uniform velocity'), initial%velocity_amplitude)
+      call visitor%variable(text_row('initial', 'from_file', path_length, &
+                                     'continue from the final state or last checkpoint of this results file'), &
+                            initial%from_file)
+   end subroutine visit_initial
 
    !> Unknowns of amplitude * (closed-form mode `mode`, tip value 1) on the mesh.
    function mode_field(model, mode, amplitude) result(u)
@@ -38,19 +72,19 @@ contains
    end function mode_field
 
    !> Initial velocity unknowns from `&initial velocity`.
-   function initial_velocity(scene, model) result(v)
-      type(scene_type), intent(in) :: scene
+   function initial_velocity(initial, model) result(v)
+      type(initial_settings), intent(in) :: initial
       type(beam_model), intent(in) :: model
       real(dp) :: v(model%unknowns)
       integer :: i
-      select case (scene%velocity)
+      select case (initial%velocity)
       case ('mode')
-         v = mode_field(model, scene%velocity_mode, scene%velocity_amplitude)
+         v = mode_field(model, initial%velocity_mode, initial%velocity_amplitude)
       case ('uniform')
          if (model%basis == 'bspline') then
-            v = scene%velocity_amplitude   ! B-spline coefficients: bounded by them, no overshoot
+            v = initial%velocity_amplitude   ! B-spline coefficients: bounded by them, no overshoot
          else
-            v = interpolate_field(model, [(scene%velocity_amplitude, i=1, model%elements)], &
+            v = interpolate_field(model, [(initial%velocity_amplitude, i=1, model%elements)], &
                                   [(0.0_dp, i=1, model%elements)])
          end if
       case default

@@ -9,11 +9,22 @@
 !! obstacles move with the support (they are fixed in its frame).
 module vibrobeam_loads
    use vibrobeam_kinds, only: dp
-   use vibrobeam_scene, only: scene_type
    use vibrobeam_model, only: beam_model, load_vector, point_load_vector, unit_profile
+   use vibrobeam_schema_visitor, only: schema_visitor, real_row, unset, is_unset
    implicit none
    private
-   public :: load_set, build_loads
+   public :: load_set, build_loads, load_settings, visit_load
+
+   !> &load as the input gives it (docs/input.md, "&load"): a uniform load, a point force
+   !! and a base excitation, each constant or harmonic.
+   type :: load_settings
+      real(dp) :: distributed = 0, distributed_frequency = 0, distributed_phase = 0
+      real(dp) :: point_force = 0, point_position = unset, point_frequency = 0
+      real(dp) :: base_amplitude = 0, base_frequency = 0
+      real(dp) :: base_acceleration = 0       !! amplitude of the support's acceleration (m/s^2), instead of base_amplitude
+   contains
+      procedure :: base_load_amplitude
+   end type load_settings
 
    type :: load_set
       logical :: present = .false.           !! false: F(t) = 0, nothing to compute
@@ -30,26 +41,65 @@ module vibrobeam_loads
 
 contains
 
-   subroutine build_loads(scene, model, rho_s, loads)
-      type(scene_type), intent(in) :: scene
+   !> Every variable of &load, once (docs/input.md, "&load"). point_position's default,
+   !! the tip, is the scene reader's (it follows &beam length).
+   subroutine visit_load(load, visitor)
+      type(load_settings), intent(inout) :: load
+      class(schema_visitor), intent(inout) :: visitor
+      call visitor%variable(real_row('load', 'distributed', 'N/m', -1e15_dp, 1e15_dp, &
+                                     'amplitude q of the uniform load q cos(Omega t + phi)'), load%distributed)
+      call visitor%variable(real_row('load', 'distributed_frequency', 'rad/s', 0.0_dp, 1e15_dp, &
+                                     'Omega of the uniform load (0: constant)'), load%distributed_frequency)
+      call visitor%variable(real_row('load', 'distributed_phase', 'rad', -1e6_dp, 1e6_dp, &
+                                     'phase phi of the uniform load'), load%distributed_phase)
+      call visitor%variable(real_row('load', 'point_force', 'N', -1e15_dp, 1e15_dp, &
+                                     'amplitude F of the point force F cos(Omega_p t)'), load%point_force)
+      call visitor%variable(real_row('load', 'point_position', 'm', 0.0_dp, 1e6_dp, &
+                                     'where the point force acts (default: the tip)', optional=.true.), &
+                            load%point_position)
+      call visitor%variable(real_row('load', 'point_frequency', 'rad/s', 0.0_dp, 1e15_dp, &
+                                     'Omega_p of the point force (0: constant)'), load%point_frequency)
+      call visitor%variable(real_row('load', 'base_amplitude', 'm', -1e6_dp, 1e6_dp, &
+                                     'amplitude A of the support motion A sin(Omega_b t)'), load%base_amplitude)
+      call visitor%variable(real_row('load', 'base_frequency', 'rad/s', 0.0_dp, 1e15_dp, &
+                                     'Omega_b of the support motion'), load%base_frequency)
+      call visitor%variable(real_row('load', 'base_acceleration', 'm/s^2', -1e15_dp, 1e15_dp, &
+                                     'amplitude of the support''s acceleration, instead of base_amplitude'), &
+                            load%base_acceleration)
+   end subroutine visit_load
+
+   !> Amplitude of the support's acceleration, A Omega_b^2 or &load base_acceleration
+   !! (m/s^2): the base excitation loads the beam with rho S times this, sin(Omega_b t).
+   pure real(dp) function base_load_amplitude(self)
+      class(load_settings), intent(in) :: self
+      if (abs(self%base_acceleration) > 0) then
+         base_load_amplitude = self%base_acceleration
+      else
+         base_load_amplitude = self%base_amplitude*self%base_frequency**2
+      end if
+   end function base_load_amplitude
+
+   subroutine build_loads(load, model, rho_s, loads)
+      type(load_settings), intent(in) :: load
       type(beam_model), intent(in) :: model
       real(dp), intent(in) :: rho_s
       type(load_set), intent(out) :: loads
-      loads%distributed = scene%distributed
-      loads%distributed_frequency = scene%distributed_frequency
-      loads%distributed_phase = scene%distributed_phase
-      loads%point_force = scene%point_force
-      loads%point_frequency = scene%point_frequency
-      if (abs(scene%base_acceleration) > 0) then
-         loads%base_load = rho_s*scene%base_acceleration
+      loads%distributed = load%distributed
+      loads%distributed_frequency = load%distributed_frequency
+      loads%distributed_phase = load%distributed_phase
+      loads%point_force = load%point_force
+      loads%point_frequency = load%point_frequency
+      if (abs(load%base_acceleration) > 0) then
+         loads%base_load = rho_s*load%base_acceleration
       else
-         loads%base_load = rho_s*scene%base_amplitude*scene%base_frequency**2
+         loads%base_load = rho_s*load%base_amplitude*load%base_frequency**2
       end if
-      loads%base_frequency = scene%base_frequency
+      loads%base_frequency = load%base_frequency
       loads%present = abs(loads%distributed) > 0 .or. abs(loads%point_force) > 0 .or. abs(loads%base_load) > 0
       loads%uniform = load_vector(model, unit_profile)
       if (abs(loads%point_force) > 0) then
-         loads%point = point_load_vector(model, scene%point_position)
+         ! the default position, the tip, when a scene built in code leaves it unset
+         loads%point = point_load_vector(model, merge(model%length, load%point_position, is_unset(load%point_position)))
       else
          allocate (loads%point(model%unknowns), source=0.0_dp)
       end if

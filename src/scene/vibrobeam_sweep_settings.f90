@@ -22,7 +22,7 @@ module vibrobeam_sweep_settings
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_sorting, only: sorted
    use vibrobeam_scene, only: scene_type, scene_variables, validate_scene, max_obstacles, max_sweep_values, &
-      parameter_length, forcing_of, keyword_length, rho_s_of, ei_of
+      parameter_length, forcing_of, keyword_length
    use vibrobeam_namelist_values, only: namelist_variable, kind_real, range_text, variable_index, choices_text
    use vibrobeam_namelist_tokens, only: lowercase
    use vibrobeam_scene_values, only: real_input, set_real_input
@@ -98,8 +98,8 @@ contains
       integer :: k, a, contact_count, total
       stat = 0
       errmsg = ''
-      if (scene%kind /= 'dynamics') then
-         call fail('&sweep needs &analysis kind = ''dynamics'' (kind = '''//trim(scene%kind)//''')')
+      if (scene%analysis%kind /= 'dynamics') then
+         call fail('&sweep needs &analysis kind = ''dynamics'' (kind = '''//trim(scene%analysis%kind)//''')')
          return
       end if
       call check_keyword('mode', settings%mode)
@@ -137,12 +137,12 @@ contains
          call fail('&sweep settle = '//real_text(settings%settle)//' and settle_periods = '// &
                    real_text(settings%settle_periods)//' are both given: give one of them')
       end if
-      if (settings%mode /= 'independent' .and. scene%reduction /= 'none') then
+      if (settings%mode /= 'independent' .and. scene%mesh%reduction /= 'none') then
          ! a continuation point starts from the previous point's state; with a reduced model
          ! that state is in reduced coordinates, whose basis (the cut-off, the modes) may
          ! change with the parameter
          call fail('&sweep mode = '''//trim(settings%mode)//''' carries each point''s state to the next, '// &
-                   'which a reduced model (&mesh reduction = '''//trim(scene%reduction)//''') cannot do: '// &
+                   'which a reduced model (&mesh reduction = '''//trim(scene%mesh%reduction)//''') cannot do: '// &
                    'use mode = ''independent'' or reduction = ''none''')
       end if
       if (stat /= 0) return
@@ -159,7 +159,8 @@ contains
          call validate_scene(trial, stat, errmsg)
          if (stat == 0) call point_windows(settings, trial, settle_steps, measure_steps, stat, errmsg)
          if (stat == 0) then
-            call build_model(trial%basis, trial%elements, trial%length, rho_s_of(trial), ei_of(trial), model, &
+            call build_model(trial%mesh%basis, trial%mesh%elements, trial%beam%length, trial%beam%rho_s(), &
+               trial%beam%ei(), model, &
                              stat, errmsg)
             warnings = ''
             if (stat == 0) call build_contact_points(trial, model, contacts, warnings, stat, errmsg)
@@ -274,7 +275,7 @@ contains
                          integer_text(size(scene%obstacles))//'], the obstacles of &obstacles count')
             else
                call fail(label//': element '//integer_text(axis%index)//' is outside [1, '// &
-                         integer_text(size(scene%points))//'], the &output points given')
+                         integer_text(size(scene%output%points))//'], the &output points given')
             end if
             return
          end if
@@ -431,19 +432,19 @@ contains
             call set_real_input(out, axis%group, axis%name, axis%index, point%value(a), found)
          end associate
       end do
-      if (.not. (settings%point_position_given .or. swept('load.point_position'))) out%point_position = out%length
+      if (.not. (settings%point_position_given .or. swept('load.point_position'))) out%load%point_position = out%beam%length
       do i = 1, size(out%obstacles)
-         if (.not. (settings%x_from_given(i) .or. swept('obstacles.x_from', i))) out%obstacles(i)%x_from = out%length
+         if (.not. (settings%x_from_given(i) .or. swept('obstacles.x_from', i))) out%obstacles(i)%x_from = out%beam%length
          if (.not. (settings%x_to_given(i) .or. swept('obstacles.x_to', i))) &
             out%obstacles(i)%x_to = out%obstacles(i)%x_from
          if (.not. (settings%level_to_given(i) .or. swept('obstacles.level_to', i))) &
             out%obstacles(i)%level_to = out%obstacles(i)%level_from
       end do
-      out%from_file = ''
+      out%initial%from_file = ''
       call point_windows(settings, out, settle_steps, measure_steps, stat, errmsg)
       if (stat /= 0) return
-      out%measure_from = settle_steps*out%dt
-      out%t_end = (settle_steps + measure_steps)*out%dt
+      out%output%measure_from = settle_steps*out%time%dt
+      out%time%t_end = (settle_steps + measure_steps)*out%time%dt
    contains
       !> Input `name` (element `element`) is one of the sweep's parameters.
       logical function swept(name, element)
@@ -488,18 +489,18 @@ contains
       if (settings%settle_periods > 0) settle = settings%settle_periods*period
       measure = settings%measure
       if (settings%measure_periods > 0) measure = settings%measure_periods*period
-      if (settle/scene%dt > 1e15_dp .or. measure/scene%dt > 1e15_dp) then
+      if (settle/scene%time%dt > 1e15_dp .or. measure/scene%time%dt > 1e15_dp) then
          stat = 1
          errmsg = '&sweep: a window of '//real_text(max(settle, measure))//' s makes more than 1e15 steps of dt = '// &
-                  real_text(scene%dt)//' s'
+                  real_text(scene%time%dt)//' s'
          return
       end if
-      settle_steps = nint(settle/scene%dt, int64)
-      measure_steps = nint(measure/scene%dt, int64)
+      settle_steps = nint(settle/scene%time%dt, int64)
+      measure_steps = nint(measure/scene%time%dt, int64)
       if (measure_steps < 1) then
          stat = 1
          errmsg = '&sweep: the measurement window of '//real_text(measure)//' s is shorter than a time step (dt = '// &
-                  real_text(scene%dt)//' s)'
+                  real_text(scene%time%dt)//' s)'
       end if
    end subroutine point_windows
 end module vibrobeam_sweep_settings

@@ -110,12 +110,12 @@ contains
       integer, intent(in) :: elements
       type(scene_type) :: scene
       scene = read_test_scene(trim(directory)//'/'//trim(name)//'.nml')
-      scene%elements = elements
-      scene%contact_method = method
-      scene%contact_solver = regime
+      scene%mesh%elements = elements
+      scene%solver%contact_method = method
+      scene%solver%contact_solver = regime
       ! the old method's default limit, max(100, 10 m) pivots, lets one failing step run for
       ! hours at N = 16000: 2000 pivots per projection at most
-      if (method == 'pivoting') scene%contact_max_iterations = 2000
+      if (method == 'pivoting') scene%solver%contact_max_iterations = 2000
    end function stress_scene
 
    !> Run a scene, timing the steps only; with `measure`, also the energy change and the
@@ -134,7 +134,7 @@ contains
       call prepare_test_scene(scene, prepared)
       call start_time_stepper(scene, prepared, stepper, stat, errmsg)
       if (stat /= 0) error stop 'start_time_stepper failed'
-      record%steps = nint(scene%t_end/scene%dt)
+      record%steps = nint(scene%time%t_end/scene%time%dt)
       elapsed = 0
       do n = 1, record%steps
          if (measure) then
@@ -338,7 +338,7 @@ contains
          if (k == 2 .and. static_sizes(i) > 10000) cycle   ! ill-conditioned beyond (docs/method.md)
          do method = 1, 2
             scene = read_test_scene(trim(directory)//'/'//trim(static_scenes(k))//'.nml')
-            scene%elements = static_sizes(i)
+            scene%mesh%elements = static_sizes(i)
             call prepare_test_scene(scene, prepared)
             allocate (u(prepared%model%unknowns), reaction(prepared%contacts%count))
             call system_clock(start, rate)
@@ -367,9 +367,9 @@ contains
       real(dp), intent(out) :: lifted, continuum, deflection_error, largest
       real(dp) :: q, f, ei, h, b
       integer :: n
-      n = scene%elements
-      q = -scene%distributed
-      f = scene%point_force
+      n = scene%mesh%elements
+      q = -scene%load%distributed
+      f = scene%load%point_force
       ei = prepared%model%ei
       h = prepared%model%length/n
       lifted = h*count(u(1:2*n:2) > 0 .and. .not. abs(reaction) > 0)

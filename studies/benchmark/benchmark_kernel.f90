@@ -99,15 +99,15 @@ contains
       character(len=:), allocatable :: warnings
       character(len=512) :: errmsg
       integer :: stat, i
-      scene%elements = unknowns/2
-      scene%point_position = scene%length   ! the reader's default (no point force here)
-      scene%dt = time_step
-      scene%theta = theta
+      scene%mesh%elements = unknowns/2
+      scene%load%point_position = scene%beam%length   ! the reader's default (no point force here)
+      scene%time%dt = time_step
+      scene%time%theta = theta
       scene%obstacles = [obstacle_type(side='below', x_from=1.0_dp, x_to=1.0_dp, level_from=-1.0_dp, &
                                        level_to=-1.0_dp)]
-      scene%velocity = 'mode'
-      scene%velocity_mode = 1
-      scene%velocity_amplitude = 0.1_dp
+      scene%initial%velocity = 'mode'
+      scene%initial%velocity_mode = 1
+      scene%initial%velocity_amplitude = 0.1_dp
       call validate_scene(scene, stat, errmsg)
       if (stat /= 0) call fail('validate_scene', stat, errmsg)
       warnings = ''

@@ -37,7 +37,7 @@
 program benchmark_steps
    use vibrobeam_kinds, only: dp, int64, output_unit, error_unit
    use vibrobeam_sorting, only: median
-   use vibrobeam_scene, only: scene_type, obstacle_type, validate_scene, rho_s_of, ei_of
+   use vibrobeam_scene, only: scene_type, obstacle_type, validate_scene
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_contact_points, only: contact_set, build_contact_points
    use vibrobeam_loads, only: load_set, build_loads
@@ -186,13 +186,13 @@ contains
    function base_scene(elements) result(scene)
       integer, intent(in) :: elements
       type(scene_type) :: scene
-      scene%length = beam_length
-      scene%k2 = 1
-      scene%elements = elements
-      scene%basis = 'hermite'
-      scene%dt = time_step
-      scene%t_end = 1
-      scene%point_position = beam_length   ! the reader's default (no point force here)
+      scene%beam%length = beam_length
+      scene%beam%k2 = 1
+      scene%mesh%elements = elements
+      scene%mesh%basis = 'hermite'
+      scene%time%dt = time_step
+      scene%time%t_end = 1
+      scene%load%point_position = beam_length   ! the reader's default (no point force here)
       allocate (scene%obstacles(0))
    end function base_scene
 
@@ -207,13 +207,14 @@ contains
       integer :: stat
       call validate_scene(scene, stat, errmsg)
       if (stat /= 0) call fail('validate_scene', stat, errmsg)
-      call build_model(scene%basis, scene%elements, scene%length, rho_s_of(scene), ei_of(scene), model, stat, errmsg)
+      call build_model(scene%mesh%basis, scene%mesh%elements, scene%beam%length, scene%beam%rho_s(), scene%beam%ei(), &
+         model, stat, errmsg)
       if (stat /= 0) call fail('build_model', stat, errmsg)
       warnings = ''
       call build_contact_points(scene, model, contacts, warnings, stat, errmsg)
       if (stat /= 0) call fail('build_contact_points', stat, errmsg)
       if (len(warnings) > 0) write (error_unit, '(a)', advance='no') warnings
-      call build_loads(scene, model, rho_s_of(scene), loads)
+      call build_loads(scene%load, model, scene%beam%rho_s(), loads)
    end subroutine discretize
 
    !> Case (a): free flight in mode 1 above a tip obstacle that is never reached.
@@ -233,8 +234,8 @@ contains
       call discretize(scene, model, contacts, loads)
       if (contacts%count /= 1) call fail('case (a): expected one contact point', contacts%count, '')
       allocate (zero(model%unknowns), source=0.0_dp)
-      call stepper%init(model, contacts, loads, scene%dt, scene%theta, scene%gamma, scene%restitution, &
-                        scene%rayleigh_mass, scene%rayleigh_stiffness, 'auto', zero, &
+      call stepper%init(model, contacts, loads, scene%time%dt, scene%time%theta, scene%time%gamma, scene%impact%restitution, &
+                        scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness, 'auto', zero, &
                         mode_field(model, 1, tip_velocity), stat, errmsg)
       if (stat /= 0) call fail('case (a): stepper%init', stat, errmsg)
    end subroutine start_tip_case
@@ -255,9 +256,9 @@ contains
       scene = base_scene(elements)
       scene%obstacles = [obstacle_type(side='below', x_from=0.0_dp, x_to=beam_length, &
                                        level_from=0.0_dp, level_to=0.0_dp)]
-      scene%distributed = pressing_load
-      scene%restitution = 0
-      scene%contact_solver = regime
+      scene%load%distributed = pressing_load
+      scene%impact%restitution = 0
+      scene%solver%contact_solver = regime
       call discretize(scene, model, contacts, loads)
       if (contacts%count /= elements) call fail('case (b): expected a contact point at every node', contacts%count, '')
       allocate (u0(model%unknowns), reaction(contacts%count))
@@ -267,8 +268,8 @@ contains
       if (count(reaction > 0) /= contacts%count) &
          call fail('case (b): the static equilibrium does not touch the obstacle at every node', &
                    count(reaction > 0), '')
-      call stepper%init(model, contacts, loads, scene%dt, scene%theta, scene%gamma, scene%restitution, &
-                        scene%rayleigh_mass, scene%rayleigh_stiffness, regime, u0, v0, &
+      call stepper%init(model, contacts, loads, scene%time%dt, scene%time%theta, scene%time%gamma, scene%impact%restitution, &
+                        scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness, regime, u0, v0, &
                         stat, errmsg)
       if (stat /= 0) call fail('case (b): stepper%init', stat, errmsg)
    end subroutine start_longitudinal_case

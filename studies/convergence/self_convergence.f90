@@ -38,7 +38,7 @@ program self_convergence
    use vibrobeam_text, only: integer_text
    use vibrobeam_status, only: message_length
    use vibrobeam_scene, only: scene_type, validate_scene
-   use vibrobeam_input, only: read_scene
+   use vibrobeam_scene_read, only: read_scene
    use vibrobeam_convergence_runs, only: event_gap, run_history, run_errors, simulate, compare, tip_error, &
                                field_size, move_alloc_history, fail, sci, fixed, padded, rate, coarsest_dt, &
                                level_dt => joint_dt, level_elements => joint_elements
@@ -99,7 +99,7 @@ program self_convergence
    end do
 
    ! 1. survey of the scene as given
-   call simulate(base, base%dt, base%elements, base%t_end, survey)
+   call simulate(base, base%time%dt, base%mesh%elements, base%time%t_end, survey)
    call write_survey()
 
    ! 2. joint refinement against level joint_levels = (dt0/16, 4 N0)
@@ -130,7 +130,7 @@ program self_convergence
    ! 4. N alone
    do k = 1, size(space_study_elements)
       call simulate(base, space_study_dt, space_study_elements(k), window_end, space_runs(k))
-      space_h(k) = base%length/space_study_elements(k)
+      space_h(k) = base%beam%length/space_study_elements(k)
    end do
    call simulate(base, space_study_dt, 4*space_study_elements(size(space_study_elements)), window_end, &
                  space_reference)
@@ -144,9 +144,9 @@ program self_convergence
    call write_window_table()
 
    ! 6. successive differences along the joint path, far beyond the reference
-   call successive_differences(base%theta, base%restitution, cauchy_levels, 'scene as given')
-   call successive_differences(0.55_dp, base%restitution, variant_levels, 'numerical damping of the unresolved modes')
-   call successive_differences(base%theta, 1.0_dp, variant_levels, 'no dissipation at impacts')
+   call successive_differences(base%time%theta, base%impact%restitution, cauchy_levels, 'scene as given')
+   call successive_differences(0.55_dp, base%impact%restitution, variant_levels, 'numerical damping of the unresolved modes')
+   call successive_differences(base%time%theta, 1.0_dp, variant_levels, 'no dissipation at impacts')
 
    accepted = decreasing(joint_errors)
    call emit('')
@@ -251,7 +251,7 @@ contains
       write (data_unit, '(a)') '# dt (s)  N  h (m)  tip max error (m)  field L2 error (m)  energy error (J)  '// &
          'tip/max|u_tip,ref|  field/|u_ref|_L2  energy/E_ref(T)'
       do k = 1, size(runs)
-         write (data_unit, '(es14.6,i6,*(es14.6))') runs(k)%dt, runs(k)%elements, base%length/runs(k)%elements, &
+         write (data_unit, '(es14.6,i6,*(es14.6))') runs(k)%dt, runs(k)%elements, base%beam%length/runs(k)%elements, &
             errors(k)%tip, errors(k)%field, errors(k)%energy, errors(k)%tip/tip_scale, &
             errors(k)%field/field_scale, errors(k)%energy/energy_scale
       end do
@@ -328,8 +328,8 @@ contains
       integer :: level, events(0:levels - 1), impulses(0:levels - 1)
       character(len=:), allocatable :: title
       variant = base
-      variant%theta = theta
-      variant%restitution = restitution
+      variant%time%theta = theta
+      variant%impact%restitution = restitution
       title = 'successive differences, theta = '//fixed(theta, 2)//', e = '//fixed(restitution, 2)//' ('//label//')'
       call simulate(variant, joint_dt(0), joint_elements(0), window_end, previous)
       do level = 0, levels - 1

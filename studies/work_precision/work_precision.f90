@@ -143,37 +143,37 @@ contains
       call system_clock(study_start, rate)
       scene = read_test_scene(path)
       ! the normalized beam of theory §7, whatever the file says
-      scene%length = 1
-      scene%k2 = 1
-      scene%youngs_modulus = unset
-      scene%density = unset
-      scene%area = unset
-      scene%inertia = unset
-      scene%rayleigh_mass = 0
-      scene%rayleigh_stiffness = 0
-      scene%kind = 'dynamics'
+      scene%beam%length = 1
+      scene%beam%k2 = 1
+      scene%beam%youngs_modulus = unset
+      scene%beam%density = unset
+      scene%beam%area = unset
+      scene%beam%inertia = unset
+      scene%beam%rayleigh_mass = 0
+      scene%beam%rayleigh_stiffness = 0
+      scene%analysis%kind = 'dynamics'
       if (allocated(scene%obstacles)) deallocate (scene%obstacles)
       allocate (scene%obstacles(0))
-      scene%distributed = 0
-      scene%point_force = 0
-      scene%base_amplitude = 0
-      scene%displacement = 'mode'
-      scene%displacement_mode = 2
-      scene%displacement_amplitude = displacement_amplitude
-      scene%velocity = 'mode'
-      scene%velocity_mode = 1
-      scene%velocity_amplitude = velocity_amplitude
-      scene%t_end = t_end
-      omega1 = cantilever_frequency(1, scene%length, scene%k2)
-      omega2 = cantilever_frequency(2, scene%length, scene%k2)
+      scene%load%distributed = 0
+      scene%load%point_force = 0
+      scene%load%base_amplitude = 0
+      scene%initial%displacement = 'mode'
+      scene%initial%displacement_mode = 2
+      scene%initial%displacement_amplitude = displacement_amplitude
+      scene%initial%velocity = 'mode'
+      scene%initial%velocity_mode = 1
+      scene%initial%velocity_amplitude = velocity_amplitude
+      scene%time%t_end = t_end
+      omega1 = cantilever_frequency(1, scene%beam%length, scene%beam%k2)
+      omega2 = cantilever_frequency(2, scene%beam%length, scene%beam%k2)
       samples = nint(t_end/sample_interval)
       allocate (exact_tip(samples))
       do k = 1, samples
          t = k*sample_interval
          ! theory §7: each mode evolves on its own; the shapes have tip value 1
-         exact_tip(k) = cantilever_mode_shape(1, scene%length, scene%length, 0)*velocity_amplitude* &
+         exact_tip(k) = cantilever_mode_shape(1, scene%beam%length, scene%beam%length, 0)*velocity_amplitude* &
                         sin(omega1*t)/omega1 + &
-                        cantilever_mode_shape(2, scene%length, scene%length, 0)*displacement_amplitude*cos(omega2*t)
+                        cantilever_mode_shape(2, scene%beam%length, scene%beam%length, 0)*displacement_amplitude*cos(omega2*t)
       end do
 
       allocate (rows(size(families)*size(element_counts)*(finest_power - 4)))
@@ -288,7 +288,7 @@ contains
       integer(int64) :: study_start, study_end, rate
       call system_clock(study_start, rate)
       scene = read_test_scene(path)
-      scene%t_end = window
+      scene%time%t_end = window
 
       ! the reference: finest settings, 16 x below the sweep's finest dt, N = 1024
       reference%family = combination('hermite', 'velocity', 0.5_dp)
@@ -369,7 +369,8 @@ contains
       write (unit, '(a)') '## Reference and its convergence'
       write (unit, '(a)') '# reference: hermite velocity theta 0.5, N = 1024, dt = 2e-5/1024 s (16 x below the '// &
          'sweep''s finest dt); the levels of its family keep dt N = 2e-5 s (dt proportional to h)'
-      write (unit, '(a)') '# bounces: bursts of tip impulses separated by more than 20 us of flight; episodes: by more than 0.5 ms'
+      write (unit, &
+         '(a)') '# bounces: bursts of tip impulses separated by more than 20 us of flight; episodes: by more than 0.5 ms'
       write (unit, '(a)') '#  basis    scheme    theta     N     J       dt (s)   steps   cpu (s)   '// &
          'difference  abs (m)    rms (m)     energy   impacts impulse-steps bounces episodes E(t_end) (J)'
       call write_check_row(unit, reference, 0.0_dp)
@@ -409,13 +410,13 @@ contains
       real(dp) :: cpu(3), wall(3)
       integer :: stat, batch, repetition, b
       configured = scene
-      configured%basis = row%family%basis
-      configured%scheme = row%family%scheme
-      configured%theta = row%family%theta
-      configured%elements = row%elements
-      configured%dt = row%dt
+      configured%mesh%basis = row%family%basis
+      configured%time%scheme = row%family%scheme
+      configured%time%theta = row%family%theta
+      configured%mesh%elements = row%elements
+      configured%time%dt = row%dt
       ! &analysis modes only matters for kind = 'modes' but must not exceed the unknowns
-      configured%modes = 1
+      configured%analysis%modes = 1
       call validate_scene(configured, stat, errmsg)
       if (stat == 0) then
          warnings = ''
@@ -426,7 +427,7 @@ contains
          error stop 1
       end if
       row%unknowns = prepared%model%unknowns
-      row%steps = nint(configured%t_end/configured%dt)
+      row%steps = nint(configured%time%t_end/configured%time%dt)
       call simulate(configured, prepared, sample_interval, row%output)
       if (present(once)) then
          if (once) return
@@ -466,9 +467,9 @@ contains
          write (error_unit, '(a)') 'work_precision: '//trim(errmsg)
          error stop 1
       end if
-      call point_row(prepared%model, scene%length, dofs, weights)
-      steps = nint(scene%t_end/scene%dt)
-      every = nint(sample_interval/scene%dt)
+      call point_row(prepared%model, scene%beam%length, dofs, weights)
+      steps = nint(scene%time%t_end/scene%time%dt)
+      every = nint(sample_interval/scene%time%dt)
       allocate (output%tip(steps/every), in_contact(prepared%contacts%count), now(prepared%contacts%count))
       in_contact = .false.
       last_impulse = -huge(1.0_dp)
@@ -478,8 +479,8 @@ contains
       do n = 1, steps
          call stepper%step(stat, errmsg)
          if (stat /= 0) then
-            write (error_unit, '(a,1x,a,1x,a,i0,a,es10.3,a)') 'work_precision: step failed (', trim(scene%basis), &
-               trim(scene%scheme), scene%elements, ', dt = ', scene%dt, '): '//trim(errmsg)
+            write (error_unit, '(a,1x,a,1x,a,i0,a,es10.3,a)') 'work_precision: step failed (', trim(scene%mesh%basis), &
+               trim(scene%time%scheme), scene%mesh%elements, ', dt = ', scene%time%dt, '): '//trim(errmsg)
             error stop 1
          end if
          if (mod(n, every) == 0) then

@@ -78,14 +78,14 @@ program work_precision_reduced
    read (argument, *) t_end
    call get_command_argument(5, output_file)
    scene = read_test_scene(trim(scene_file))
-   scene%elements = elements
-   scene%measure_from = measure_from
-   scene%t_end = t_end
+   scene%mesh%elements = elements
+   scene%output%measure_from = measure_from
+   scene%time%t_end = t_end
    perturbed_scene = scene
-   perturbed_scene%point_force = scene%point_force*(1 + 1e-9_dp)
-   perturbed_scene%distributed = scene%distributed*(1 + 1e-9_dp)
-   perturbed_scene%base_amplitude = scene%base_amplitude*(1 + 1e-9_dp)
-   perturbed_scene%velocity_amplitude = scene%velocity_amplitude*(1 + 1e-9_dp)
+   perturbed_scene%load%point_force = scene%load%point_force*(1 + 1e-9_dp)
+   perturbed_scene%load%distributed = scene%load%distributed*(1 + 1e-9_dp)
+   perturbed_scene%load%base_amplitude = scene%load%base_amplitude*(1 + 1e-9_dp)
+   perturbed_scene%initial%velocity_amplitude = scene%initial%velocity_amplitude*(1 + 1e-9_dp)
 
    full = run(scene, 'none', -1)
    open (newunit=unit, file=trim(output_file), status='replace', action='write')
@@ -99,9 +99,9 @@ program work_precision_reduced
    if (full_only) then
       ! the full model's own mesh dependence: N/2 and 2N against N
       do k = 1, 2
-         scene%elements = merge(elements/2, 2*elements, k == 1)
+         scene%mesh%elements = merge(elements/2, 2*elements, k == 1)
          reduced = run(scene, 'none', -1)
-         write (argument, '(a,i0)') 'full-N=', scene%elements
+         write (argument, '(a,i0)') 'full-N=', scene%mesh%elements
          call print_row(unit, trim(argument), reduced)
          call print_row(output_unit, trim(argument), reduced)
       end do
@@ -172,14 +172,14 @@ contains
       real(dp) :: weights(4)
       character(len=256) :: errmsg
       scene = base
-      scene%reduction = reduction
-      scene%reduction_modes = modes
+      scene%mesh%reduction = reduction
+      scene%mesh%reduction_modes = modes
       call cpu_time(setup_start)
       call prepare_test_scene(scene, prepared)
       call cpu_time(start)
       s%setup_seconds = start - setup_start
-      steps = nint(scene%t_end/scene%dt)
-      first = nint(scene%measure_from/scene%dt)
+      steps = nint(scene%time%t_end/scene%time%dt)
+      first = nint(scene%output%measure_from/scene%time%dt)
       ! the tip as a row of the stepper's unknowns
       call node_row(prepared%model, prepared%model%elements, dofs, weights)
       if (prepared%reduced) then
@@ -249,8 +249,8 @@ contains
          times(repetition) = (finish - start)/steps   ! times(0), with the statistics, is not used
          if (repetition == 0) then
             s%rms_tip = sqrt(sum_square/max(samples, 1))
-            s%impact_rate = impacts/((steps - first)*scene%dt)
-            s%episode_rate = episodes/((steps - first)*scene%dt)
+            s%impact_rate = impacts/((steps - first)*scene%time%dt)
+            s%episode_rate = episodes/((steps - first)*scene%time%dt)
             s%energy_lost = stepper%dissipated_impacts - lost_start
          end if
       end do

@@ -34,7 +34,7 @@
 !!   and that the rigid stop is hit, and prints the same measurement for the 'mean' rule.
 program test_compliant
    use vibrobeam_kinds, only: dp, output_unit
-   use vibrobeam_scene, only: scene_type, ei_of
+   use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
    use vibrobeam_static, only: solve_static
    use vibrobeam_stepper, only: time_stepper
@@ -74,14 +74,14 @@ contains
       character(len=256) :: errmsg
       character(len=80) :: label
       scene = read_test_scene(trim(path))
-      q = -scene%distributed
+      q = -scene%load%distributed
       g = -scene%obstacles(1)%level_from
-      ei = ei_of(scene)
-      length = scene%length
+      ei = scene%beam%ei()
+      length = scene%beam%length
       rigid = 3*ei*(q*length**4/(8*ei) - g)/length**3
       fit = 0
       do i = 1, size(meshes)
-         scene%elements = meshes(i)
+         scene%mesh%elements = meshes(i)
          do k = 1, size(stiffnesses)
             scene%obstacles(1)%stiffness = stiffnesses(k)
             call prepare_test_scene(scene, prepared)
@@ -136,7 +136,7 @@ contains
       scene = read_test_scene(trim(path))
       call prepare_test_scene(scene, prepared)
       do r = 1, 2
-         scene%compliant_rule = rules(r)
+         scene%time%compliant_rule = rules(r)
          call run(scene, prepared, drift(r), bound(r), ratio(r), engaged(r), rigid_hit(r))
          write (output_unit, '(a,a8,a,es10.3,a,es10.3,a,es10.3)') 'rule ', rules(r), ': max |E^n - E^0| = ', &
             drift(r), ' J, final round-off bound ', bound(r), ' J, largest |E^n - E^0|/bound_n ', ratio(r)
@@ -161,7 +161,7 @@ contains
       character(len=256) :: errmsg
       call start_time_stepper(scene, prepared, s, stat, errmsg)
       if (stat /= 0) error stop 'cannot start the stepper'
-      steps = nint(scene%t_end/scene%dt)
+      steps = nint(scene%time%t_end/scene%time%dt)
       kd = s%stiffness%kd
       associate (springs => s%contacts%springs)
          allocate (seen(springs%count), source=.false.)

@@ -95,12 +95,12 @@ program test_energy
       previous = huge(1.0_dp)
       do k = 3, command_argument_count()
          call get_command_argument(k, argument)
-         read (argument, *) scene%dt
-         steps = nint(scene%t_end/scene%dt)
+         read (argument, *) scene%time%dt
+         steps = nint(scene%time%t_end/scene%time%dt)
          r = run(scene, steps)
-         write (output_unit, '(es10.3,i8,i8,es16.3,es16.3,es16.3)') scene%dt, steps, r%impacts, r%drift, &
+         write (output_unit, '(es10.3,i8,i8,es16.3,es16.3,es16.3)') scene%time%dt, steps, r%impacts, r%drift, &
             r%penetration, r%drift_ratio
-         write (argument, '(a,es9.2)') 'energy error decreases with dt, dt =', scene%dt
+         write (argument, '(a,es9.2)') 'energy error decreases with dt, dt =', scene%time%dt
          call t%check_true(trim(argument), r%drift < previous)
          call check_balance(r)
          previous = r%drift
@@ -110,31 +110,31 @@ program test_energy
          '  lowest running D_num/E  drift/bound  impacts/bound  D_num(no impulse)/bound   (E: largest energy of the run)'
       do k = 3, command_argument_count()
          call get_command_argument(k, argument)
-         read (argument, *) scene%theta
-         steps = nint(scene%t_end/scene%dt)
+         read (argument, *) scene%time%theta
+         steps = nint(scene%time%t_end/scene%time%dt)
          r = run(scene, steps)
-         write (output_unit, '(f6.3,i9,2es14.4,2es25.3,3es14.3)') scene%theta, r%impacts, r%drift, r%numerical_end, &
+         write (output_unit, '(f6.3,i9,2es14.4,2es25.3,3es14.3)') scene%time%theta, r%impacts, r%drift, r%numerical_end, &
             r%numerical_lowest, r%numerical_running, r%drift_ratio, r%impacts_ratio, r%numerical_ratio
          call check_balance(r)
-         write (argument, '(a,f5.3)') 'theta = ', scene%theta
+         write (argument, '(a,f5.3)') 'theta = ', scene%time%theta
          call t%check_close('increment of dissipated_impacts >= -round-off, '//trim(argument), max(r%impacts_ratio, 0.0_dp), &
                             0.0_dp, 1.0_dp, 1.0_dp)
          call t%check_close('increment of dissipated_numerical >= -round-off without impulses, '//trim(argument), &
                             max(r%numerical_ratio, 0.0_dp), 0.0_dp, 1.0_dp, 1.0_dp)
          call t%check_true('running dissipated_numerical >= 0, '//trim(argument), r%numerical_running >= 0)
-         if (abs(scene%theta - 0.5_dp) <= 0) call t%check_true('dissipated_numerical = 0 for theta = 1/2', &
+         if (abs(scene%time%theta - 0.5_dp) <= 0) call t%check_true('dissipated_numerical = 0 for theta = 1/2', &
                                                                abs(r%numerical_end) + abs(r%numerical_lowest) <= 0)
-         if (scene%theta > 0.5_dp) call t%check_true('dissipated_numerical > 0 for theta > 1/2, '//trim(argument), &
+         if (scene%time%theta > 0.5_dp) call t%check_true('dissipated_numerical > 0 for theta > 1/2, '//trim(argument), &
                                                      r%numerical_end > 0)
       end do
    case ('gains')
-      scene%scheme = 'position'
+      scene%time%scheme = 'position'
       write (output_unit, '(a)') '     dt      e    largest one-step gain of the impulses / E before the step'
       do k = 3, command_argument_count()
          call get_command_argument(k, argument)
-         read (argument, *) scene%dt
-         r = run(scene, nint(scene%t_end/scene%dt))
-         write (output_unit, '(es10.3,f6.2,f12.4)') scene%dt, scene%restitution, r%gain
+         read (argument, *) scene%time%dt
+         r = run(scene, nint(scene%time%t_end/scene%time%dt))
+         write (output_unit, '(es10.3,f6.2,f12.4)') scene%time%dt, scene%impact%restitution, r%gain
          call check_balance(r)
       end do
    case ('dissipate', 'measure')
@@ -142,14 +142,14 @@ program test_energy
          '  plain law: max rise   max impulse gain/E^n'
       do k = 3, command_argument_count()
          call get_command_argument(k, argument)
-         read (argument, *) scene%dt
-         steps = nint(scene%t_end/scene%dt)
-         scene%separating_points = 'restitution'
+         read (argument, *) scene%time%dt
+         steps = nint(scene%time%t_end/scene%time%dt)
+         scene%impact%separating_points = 'restitution'
          plain = run(scene, steps, bounds=.false.)   ! reported only: no round-off bounds needed
-         scene%separating_points = 'elastic'
+         scene%impact%separating_points = 'elastic'
          r = run(scene, steps)
-         write (output_unit, '(es10.3,i8,i8,es16.3,es12.3,f12.6,es14.3,es14.3,f16.4)') scene%dt, steps, r%impacts, r%rise, &
-            r%rise_ratio, 1 - r%drift, r%penetration/scene%dt, plain%rise, r%gain
+         write (output_unit, '(es10.3,i8,i8,es16.3,es12.3,f12.6,es14.3,es14.3,f16.4)') scene%time%dt, steps, r%impacts, r%rise, &
+            r%rise_ratio, 1 - r%drift, r%penetration/scene%time%dt, plain%rise, r%gain
          call check_balance(r)
          if (mode == 'dissipate') then
             call t%check_close('largest energy increase in one step / its round-off bound', max(r%rise_ratio, 0.0_dp), &
@@ -158,7 +158,7 @@ program test_energy
                                0.0_dp, 1.0_dp, 1.0_dp)
          else
             call t%check_true('the run ends with less energy than it started with', r%drift > 0)
-            if (scene%scheme == 'position') then
+            if (scene%time%scheme == 'position') then
                call t%check_true('the impulses add energy in some step (the position scheme)', r%gain > 0)
                call t%check_close('largest energy the impulses add in one step / the energy before it, '// &
                                   'documented bound 1/3', r%gain, 0.0_dp, 1.0_dp, 1.0_dp/3)
@@ -166,7 +166,7 @@ program test_energy
          end if
          call t%check_true('some impacts happen', r%impacts > 0)
          ! theory §4: with e = 0 every position of the position scheme is admissible
-         if (scene%scheme == 'position' .and. scene%restitution <= 0) &
+         if (scene%time%scheme == 'position' .and. scene%impact%restitution <= 0) &
             call t%check_close('penetration of the position scheme with e = 0 / its round-off bound', &
                                r%penetration_ratio, 0.0_dp, 1.0_dp, 1.0_dp)
       end do

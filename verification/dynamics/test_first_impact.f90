@@ -39,9 +39,9 @@ program test_first_impact
    call get_command_argument(1, path)
    scene = read_test_scene(trim(path))
    call prepare_test_scene(scene, prepared)
-   omega1 = cantilever_frequency(1, scene%length, scene%k2)
+   omega1 = cantilever_frequency(1, scene%beam%length, scene%beam%k2)
    gap = -scene%obstacles(1)%level_from
-   t_star = asin(gap*omega1/abs(scene%velocity_amplitude))/omega1
+   t_star = asin(gap*omega1/abs(scene%initial%velocity_amplitude))/omega1
    write (output_unit, '(a,es20.12)') 'closed-form first impact time t* = ', t_star
    call measure(plain_steps)
    steps = t_star/steps_per_t_star
@@ -55,12 +55,12 @@ contains
    real(dp), intent(in) :: steps(:)
    write (output_unit, '(a)') '     dt       t_impact    (t_impact - t*)/dt   max penetration   bound'
    do k = 1, size(steps)
-      scene%dt = steps(k)
+      scene%time%dt = steps(k)
       call start_time_stepper(scene, prepared, stepper, stat, errmsg)
       t_impact = -1
       depth(k) = 0
       v_impact = 0
-      do n = 1, nint(scene%t_end/scene%dt)
+      do n = 1, nint(scene%time%t_end/scene%time%dt)
          call stepper%step(stat, errmsg)
          if (stat /= 0) error stop 'step failed'
          if (t_impact < 0 .and. stepper%active_count > 0) then
@@ -72,16 +72,16 @@ contains
          depth(k) = max(depth(k), prepared%contacts%lower(1) - contact_value(prepared%contacts, 1, stepper%u))
          if (t_impact > 0 .and. stepper%t > t_impact + 0.1_dp) exit   ! the first impact episode is over
       end do
-      bound = scene%dt*v_impact
+      bound = scene%time%dt*v_impact
       ! position scheme: U^{n+1} = (1 + e) Z - e U^{n-1} may reflect a point up to dt |v|
       ! inside (one degree of freedom: exactly dt |v| at most), and the beam's elastic
       ! response adds to it (measured: 1.1 dt |v|); allow 2 dt |v|
-      if (scene%scheme == 'position') bound = 2*bound
-      write (output_unit, '(es10.3, es14.6, f12.3, 2es16.4)') scene%dt, t_impact, (t_impact - t_star)/scene%dt, &
+      if (scene%time%scheme == 'position') bound = 2*bound
+      write (output_unit, '(es10.3, es14.6, f12.3, 2es16.4)') scene%time%dt, t_impact, (t_impact - t_star)/scene%time%dt, &
          depth(k), bound
-      write (label, '(a,es9.2)') 'first impact time, dt =', scene%dt
-      call t%check_close(trim(label), abs(t_impact - t_star), 0.0_dp, 1.0_dp, 2*scene%dt)
-      write (label, '(a,es9.2)') 'penetration within the bound, dt =', scene%dt
+      write (label, '(a,es9.2)') 'first impact time, dt =', scene%time%dt
+      call t%check_close(trim(label), abs(t_impact - t_star), 0.0_dp, 1.0_dp, 2*scene%time%dt)
+      write (label, '(a,es9.2)') 'penetration within the bound, dt =', scene%time%dt
       ! round-off: depth = g1 - H U (H U a sum of at most 3 products, then a subtraction)
       ! is off by gamma_4 (|g1| + |H U|) <= gamma_4 2|g1|; the bound dt |v| by gamma_5
       call t%check_true(trim(label), depth(k) <= bound*(1 + gamma_n(5)) + 2*gamma_n(4)*abs(prepared%contacts%lower(1)))

@@ -28,13 +28,13 @@ program test_free_flight
    call get_command_argument(1, path)
    scene = read_test_scene(trim(path))
    call prepare_test_scene(scene, prepared)
-   allocate (u_exact, source=modal_solution(prepared, scene%t_end))
+   allocate (u_exact, source=modal_solution(prepared, scene%time%t_end))
    write (output_unit, '(a)') '    dt         max|U - U_exact|/max|U_exact| at t = 2'
    do k = 1, size(steps_per_unit)
-      scene%dt = 1/steps_per_unit(k)
+      scene%time%dt = 1/steps_per_unit(k)
       u = run(scene, prepared)
       error(k) = maxval(abs(u - u_exact))/maxval(abs(u_exact))
-      write (output_unit, '(es10.3, es14.4)') scene%dt, error(k)
+      write (output_unit, '(es10.3, es14.4)') scene%time%dt, error(k)
    end do
    order = log(error(1)/error(size(error)))/log(steps_per_unit(size(error))/steps_per_unit(1))
    write (output_unit, '(a,f7.4)') 'observed order in dt: ', order
@@ -42,21 +42,21 @@ program test_free_flight
    call t%check_close('error at dt = 1/3200 (semi-discrete exact)', error(size(error)), 0.0_dp, 1.0_dp, 2e-6_dp)
 
    ! (2) continuum closed form, mode-1 velocity data only, N = 32
-   scene%elements = 32
-   scene%displacement = 'zero'
-   scene%t_end = 1.0_dp
-   scene%dt = 1e-4_dp
+   scene%mesh%elements = 32
+   scene%initial%displacement = 'zero'
+   scene%time%t_end = 1.0_dp
+   scene%time%dt = 1e-4_dp
    call prepare_test_scene(scene, prepared)
    u = run(scene, prepared)
    tip = u(prepared%model%unknowns - 1)
-   omega1 = cantilever_frequency(1, scene%length, scene%k2)
-   exact_tip = scene%velocity_amplitude*sin(omega1*scene%t_end)/omega1
+   omega1 = cantilever_frequency(1, scene%beam%length, scene%beam%k2)
+   exact_tip = scene%initial%velocity_amplitude*sin(omega1*scene%time%t_end)/omega1
    write (output_unit, '(a,es22.14,a,es22.14)') 'tip at t = 1: vibrobeam ', tip, ', closed form ', exact_tip
    ! tolerance: theta-method phase error (omega dt)^2/12 omega t ~ 1.3e-7 plus spatial 1e-6
    call t%check_close('tip displacement vs continuum closed form', tip, exact_tip, 2e-6_dp)
    call t%check_close('tip slope vs continuum closed form', u(prepared%model%unknowns), &
-                      scene%velocity_amplitude*cantilever_mode_shape(1, scene%length, scene%length, 1)* &
-                      sin(omega1*scene%t_end)/omega1, 2e-6_dp)
+                      scene%initial%velocity_amplitude*cantilever_mode_shape(1, scene%beam%length, scene%beam%length, 1)* &
+                      sin(omega1*scene%time%t_end)/omega1, 2e-6_dp)
    call t%finish('test_free_flight')
 
 contains
@@ -69,7 +69,7 @@ contains
       integer :: n, stat
       character(len=512) :: errmsg
       call start_stepper(scene, prepared, stepper, stat, errmsg)
-      do n = 1, nint(scene%t_end/scene%dt)
+      do n = 1, nint(scene%time%t_end/scene%time%dt)
          call stepper%step(stat, errmsg)
          if (stat /= 0) error stop 'step failed'
          if (stepper%active_count > 0) error stop 'an obstacle was touched in free flight'

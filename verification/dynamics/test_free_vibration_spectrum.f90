@@ -50,7 +50,7 @@ program test_free_vibration_spectrum
    call prepare_test_scene(scene, prepared)
    call t%check_true('no contact point (free vibration)', prepared%contacts%count == 0, &
                      'the scene has contact points')
-   call t%check_close('theta (energy-conserving scheme)', scene%theta, 0.5_dp, 0.0_dp)
+   call t%check_close('theta (energy-conserving scheme)', scene%time%theta, 0.5_dp, 0.0_dp)
 
    call compute_modes(prepared%model, modes, omega, shapes, vectors, stat, errmsg)
    if (stat /= 0) then
@@ -59,10 +59,10 @@ program test_free_vibration_spectrum
    end if
    natural = omega/(2*pi)
 
-   steps = nint(scene%t_end/scene%dt)
-   width = bin_width(steps + 1, scene%dt)
-   call t%check_true('omega_3 dt <= 0.1 (mode 3 resolved in time)', omega(modes)*scene%dt <= 0.1_dp, &
-                     'omega_3 dt = '//real_text(omega(modes)*scene%dt)//', tolerance 0.1')
+   steps = nint(scene%time%t_end/scene%time%dt)
+   width = bin_width(steps + 1, scene%time%dt)
+   call t%check_true('omega_3 dt <= 0.1 (mode 3 resolved in time)', omega(modes)*scene%time%dt <= 0.1_dp, &
+                     'omega_3 dt = '//real_text(omega(modes)*scene%time%dt)//', tolerance 0.1')
    call t%check_true('bin width <= (closest frequency spacing)/10', width <= minval(natural(2:) - natural(:modes - 1))/10, &
                      'bin width '//real_text(width)//' Hz, spacing '//real_text(minval(natural(2:) - natural(:modes - 1)))// &
                      ' Hz')
@@ -92,7 +92,7 @@ program test_free_vibration_spectrum
       tip(n) = tip_displacement(stepper%u)
    end do
 
-   call amplitude_spectrum(tip, scene%dt, frequency, amplitude, stat, errmsg, window='hann')
+   call amplitude_spectrum(tip, scene%time%dt, frequency, amplitude, stat, errmsg, window='hann')
    call t%check_true('amplitude_spectrum succeeds', stat == 0, trim(errmsg))
    if (stat /= 0) call t%finish('test_free_vibration_spectrum')
    ! frequency(2) = 1/(n dt) and frequency(1) = 0 exactly; both sides round twice (gamma_4)
@@ -106,8 +106,8 @@ program test_free_vibration_spectrum
    found_frequency = frequency(peaks(order))
    found_amplitude = amplitude(peaks(order))
 
-   write (output_unit, '(a,i0,a,es10.3,a,es10.3,a,f8.5,a)') 'record: ', steps + 1, ' samples, dt = ', scene%dt, &
-      ' s, bin width ', width, ' Hz, omega_3 dt = ', omega(modes)*scene%dt
+   write (output_unit, '(a,i0,a,es10.3,a,es10.3,a,f8.5,a)') 'record: ', steps + 1, ' samples, dt = ', scene%time%dt, &
+      ' s, bin width ', width, ' Hz, omega_3 dt = ', omega(modes)*scene%time%dt
    write (output_unit, '(a)') 'mode  omega_k/2pi (Hz)   peak (Hz)        difference (bins)  ' // &
       'peak amplitude (m)  tip amplitude a_k (m)'
    do k = 1, modes

@@ -36,7 +36,7 @@ program test_position_records
    logical :: stamped_at_t_n
    call get_command_argument(1, path)
    scene = read_test_scene(trim(path))
-   scene%scheme = 'position'
+   scene%time%scheme = 'position'
    call prepare_test_scene(scene, prepared)
    call start_time_stepper(scene, prepared, stepper, stat, errmsg)
    call ledger%start(stepper)
@@ -44,8 +44,8 @@ program test_position_records
    worst_work = 0
    impulses = 0
    stamped_at_t_n = .true.
-   associate (dt => scene%dt, theta => scene%theta)
-      do n = 1, nint(scene%t_end/scene%dt)
+   associate (dt => scene%time%dt, theta => scene%time%theta)
+      do n = 1, nint(scene%time%t_end/scene%time%dt)
          call ledger%before_step(stepper)
          u_old = ledger%u_before
          u_older = ledger%u_before_previous

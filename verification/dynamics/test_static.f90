@@ -20,7 +20,7 @@
 !! is added where it applies.
 program test_static
    use vibrobeam_kinds, only: dp, output_unit
-   use vibrobeam_scene, only: scene_type, ei_of
+   use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene
    use vibrobeam_static, only: solve_static
    use vibrobeam_contact_points, only: contact_value
@@ -49,15 +49,15 @@ program test_static
 
    ! 1. tip reaction
    scene = read_test_scene(trim(dir)//'/static_tip.nml')
-   scene%basis = basis
-   q = -scene%distributed
+   scene%mesh%basis = basis
+   q = -scene%load%distributed
    g = -scene%obstacles(1)%level_from
-   exact = 3*ei_of(scene)*(q*scene%length**4/(8*ei_of(scene)) - g)/scene%length**3
+   exact = 3*scene%beam%ei()*(q*scene%beam%length**4/(8*scene%beam%ei()) - g)/scene%beam%length**3
    ! its own rounding: 10 operations on terms of size 3EI(|q|L^4/(8EI) + |g|)/L^3
-   exact_error = gamma_n(10)*3*ei_of(scene)*(abs(q)*scene%length**4/(8*ei_of(scene)) + abs(g))/scene%length**3
+   exact_error = gamma_n(10)*3*scene%beam%ei()*(abs(q)*scene%beam%length**4/(8*scene%beam%ei()) + abs(g))/scene%beam%length**3
    write (output_unit, '(a,es22.14,a)') 'closed-form tip reaction ', exact, ' N'
    do k = 1, size(meshes)
-      scene%elements = meshes(k)
+      scene%mesh%elements = meshes(k)
       call prepare_test_scene(scene, prepared)
       call solve(prepared, 'delassus', u_delassus, r_delassus, du_delassus, dr_delassus)
       call solve(prepared, 'band', u_band, r_band, du_band, dr_band)
@@ -74,13 +74,13 @@ program test_static
 
    ! 2. longitudinal obstacle
    scene = read_test_scene(trim(dir)//'/static_longitudinal.nml')
-   scene%basis = basis
+   scene%mesh%basis = basis
    do k = 1, 3
       call prepare_test_scene(scene, prepared)
       call solve(prepared, 'delassus', u_delassus, r_delassus, du_delassus, dr_delassus)
       call solve(prepared, 'band', u_band, r_band, du_band, dr_band)
       scale = maxval(abs(r_band))
-      write (label, '(a,i0)') 'N = ', scene%elements
+      write (label, '(a,i0)') 'N = ', scene%mesh%elements
       ! the band solver accepts a held point whose impulse is below -slack max|P| (then
       ! set to 0) and a free point inside its obstacle by slack times the gap scale
       slack = max(1e-12_dp, 16*prepared%contacts%count*epsilon(1.0_dp))
@@ -96,7 +96,7 @@ program test_static
       first = findloc(r_band > 1e-12_dp*scale, .true., dim=1)
       last = findloc(r_band > 1e-12_dp*scale, .true., dim=1, back=.true.)
       lift_off(k) = maxval(gap(first:last))
-      write (output_unit, '(a,i4,a,f6.3,a,f6.3,a,es10.3,a,es10.3)') 'N = ', scene%elements, ': contact from x = ', &
+      write (output_unit, '(a,i4,a,f6.3,a,f6.3,a,es10.3,a,es10.3)') 'N = ', scene%mesh%elements, ': contact from x = ', &
          prepared%contacts%x(first), ' to ', prepared%contacts%x(last), ', largest lift-off inside ', lift_off(k), &
          ' m, edge reaction ', r_band(first)
       call t%check_true(trim(label)//': contact set ends at the tip', last == prepared%contacts%count)
@@ -112,14 +112,14 @@ program test_static
          du_whole = du_band
          dr_whole = dr_band
       end if
-      scene%elements = 2*scene%elements
+      scene%mesh%elements = 2*scene%mesh%elements
    end do
    call t%check_true('contact set is an interval up to a lift-off that vanishes with h (at least like h^2)', &
                      lift_off(3) <= lift_off(1)/16)
 
    ! 3. the same obstacle in pieces, listed in another order
    scene = read_test_scene(trim(dir)//'/static_longitudinal_pieces.nml')
-   scene%basis = basis
+   scene%mesh%basis = basis
    call prepare_test_scene(scene, prepared)
    call solve(prepared, 'band', u_pieces, r_pieces, du_band, dr_band)   ! bounds of the pieces' solution
    ! both solutions lie within their round-off bounds of the same exact one (the pieces'

@@ -92,11 +92,11 @@ program check_sdnl104
    call prepare_test_scene(scene, prepared)
    allocate (u_static(prepared%model%unknowns), r_static(prepared%contacts%count), u_error(prepared%model%unknowns), &
              r_error(prepared%contacts%count))
-   call solve_static(prepared%model%stiffness, prepared%contacts, prepared%loads%at(0.0_dp), scene%contact_solver, &
+   call solve_static(prepared%model%stiffness, prepared%contacts, prepared%loads%at(0.0_dp), scene%solver%contact_solver, &
                      u_static, r_static, iterations, stat, errmsg)
    call t%check_true('repeat the static solve for its round-off bound', stat == 0, errmsg)
    if (t%failed > 0) call t%finish('check_sdnl104')
-   regime = scene%contact_solver   ! 'auto' chooses as the projector does
+   regime = scene%solver%contact_solver   ! 'auto' chooses as the projector does
    if (regime == 'auto') regime = merge('band    ', 'delassus', prepared%contacts%count > delassus_limit)
    call static_error_bounds(prepared%model%stiffness, prepared%contacts, prepared%loads%at(0.0_dp), u_static, &
                             r_static, trim(regime), u_error, r_error)

@@ -76,7 +76,7 @@ program test_liftoff_closed_form
    do i = 3, command_argument_count()
       call get_command_argument(i, argument)
       read (argument, *) elements
-      scene%elements = elements
+      scene%mesh%elements = elements
       call check_scene(scene)
    end do
    call t%finish('test_liftoff_closed_form')
@@ -190,11 +190,11 @@ contains
       character(len=512) :: errmsg
       character(len=200) :: detail, label
       call prepare_test_scene(scene, prepared)
-      n = scene%elements
+      n = scene%mesh%elements
       length = prepared%model%length
       h = length/n
-      q = -scene%distributed
-      f = scene%point_force
+      q = -scene%load%distributed
+      f = scene%load%point_force
       ei = prepared%model%ei
       if (q <= 0 .or. f <= 0 .or. prepared%contacts%count /= n) error stop 'test_liftoff_closed_form: scene shape'
       force = prepared%loads%at(0.0_dp)

@@ -68,7 +68,7 @@ program test_stress
       read (argument, *) check_elements
       call static_checks(scene, reference_elements, check_elements)
    else
-      if (len_trim(argument) > 0) read (argument, *) scene%elements
+      if (len_trim(argument) > 0) read (argument, *) scene%mesh%elements
       call dynamic_checks(scene)
    end if
    call t%finish('test_stress')
@@ -122,15 +122,15 @@ contains
       call prepare_test_scene(scene, prepared)
       call start_time_stepper(scene, prepared, stepper, stat, errmsg)
       if (stat /= 0) error stop 'start_time_stepper failed'
-      if (scene%scheme /= 'velocity' .or. abs(scene%theta - 0.5_dp) > 0 .or. scene%rayleigh_mass > 0 .or. &
-          scene%rayleigh_stiffness > 0) error stop 'test_stress: velocity scheme, theta = 1/2, no damping only'
+      if (scene%time%scheme /= 'velocity' .or. abs(scene%time%theta - 0.5_dp) > 0 .or. scene%beam%rayleigh_mass > 0 .or. &
+          scene%beam%rayleigh_stiffness > 0) error stop 'test_stress: velocity scheme, theta = 1/2, no damping only'
       separating = 1
       select type (stepper)
       type is (velocity_stepper)
          separating = stepper%separating_restitution
       end select
       kappa = band_condition(stepper%iteration_matrix)
-      steps = nint(scene%t_end/scene%dt)
+      steps = nint(scene%time%t_end/scene%time%dt)
       e0 = stepper%kinetic_energy() + stepper%elastic_energy()
       e_old = e0
       e_scale = tiny(1.0_dp)
@@ -185,7 +185,7 @@ contains
             gap_scale = tiny(1.0_dp)
             comp = 0
             do k = 1, m
-               e_k = merge(scene%restitution, separating, stepper%approaching(k))
+               e_k = merge(scene%impact%restitution, separating, stepper%approaching(k))
                b(k) = -e_k*stepper%velocity_before(k)
                gap_scale = max(gap_scale, abs(stepper%velocity_after(k)), abs(b(k)), &
                                abs(contact_value(contacts, stepper%active(k), v_f)))
@@ -225,7 +225,7 @@ contains
             deallocate (rho, work, k_u, b)
          end do
       end associate
-      write (output_unit, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,i0,a)') 'N = ', scene%elements, ': ', n - 1, ' steps, ', &
+      write (output_unit, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,i0,a)') 'N = ', scene%mesh%elements, ': ', n - 1, ' steps, ', &
          contact_steps, ' with impulses, ', interior_steps, ' with the interior-point method; linear solves: ', &
          total_solves, ' in all, at most ', largest_solves, ' in one step'
       e_scale = max(e_scale, e_old)
@@ -260,7 +260,7 @@ contains
       character(len=160) :: detail
       scene = scene_in
       do pass = 1, 2
-         scene%elements = merge(reference_elements, check_elements, pass == 1)
+         scene%mesh%elements = merge(reference_elements, check_elements, pass == 1)
          call prepare_test_scene(scene, prepared)
          associate (contacts => prepared%contacts, stiffness => prepared%model%stiffness)
             m = contacts%count
@@ -290,7 +290,7 @@ contains
                call t%check_true('static bounds hold', value >= contacts%lower(c) - 64*kappa*epsilon(1.0_dp)* &
                                  maxval(abs(u)))
             end do
-            write (output_unit, '(a,i0,a,i0,a,i0,a,es9.2,a,es12.5)') 'static N = ', scene%elements, ': ', &
+            write (output_unit, '(a,i0,a,i0,a,i0,a,es9.2,a,es12.5)') 'static N = ', scene%mesh%elements, ': ', &
                count(abs(r) > 0), ' of ', m, ' points in contact; cond(K) ', kappa, '; sum of reactions ', sum(r)
             if (pass == 1) then
                ! dense reference: the LCP of A = H K^-1 H^T (dense Cholesky), q = H K^-1 F - lower

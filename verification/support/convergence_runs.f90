@@ -80,9 +80,9 @@ contains
       integer(int64) :: start, finish, rate
       call system_clock(start, rate)
       variant = scene
-      variant%dt = dt
-      variant%elements = elements
-      variant%t_end = t_end
+      variant%time%dt = dt
+      variant%mesh%elements = elements
+      variant%time%t_end = t_end
       call validate_scene(variant, status, message)
       if (status /= 0) call fail(message)
       warnings = ''
@@ -99,10 +99,10 @@ contains
       allocate (run%tip(0:run%steps), run%field(sample_points, 0:run%steps), run%energy(0:run%steps))
       allocate (run%event_first(0), run%event_last(0), run%event_side(0), run%event_impulses(0))
       do p = 1, sample_points
-         call point_row(prepared%model, scene%length*(p - 1)/(sample_points - 1), point_dofs(:, p), &
+         call point_row(prepared%model, scene%beam%length*(p - 1)/(sample_points - 1), point_dofs(:, p), &
                         point_weights(:, p))
       end do
-      call point_row(prepared%model, scene%length, tip_dofs, tip_weights)
+      call point_row(prepared%model, scene%beam%length, tip_dofs, tip_weights)
       allocate (last_impulse(stepper%contacts%count), source=-huge(1.0_dp))
       allocate (last_side(stepper%contacts%count), last_event(stepper%contacts%count), source=0)
       call record_state(run, 0, stepper, point_dofs, point_weights, tip_dofs, tip_weights)
@@ -137,7 +137,7 @@ contains
       call system_clock(finish)
       run%wall_seconds = real(finish - start, dp)/rate
       write (output_unit, '(a)') '  run dt = '//sci(dt)//' s, N = '//integer_text(elements)//', theta = '// &
-         fixed(scene%theta, 2)//', e = '//fixed(scene%restitution, 2)//', T = '//sci(t_end)//' s: '// &
+         fixed(scene%time%theta, 2)//', e = '//fixed(scene%impact%restitution, 2)//', T = '//sci(t_end)//' s: '// &
          integer_text(run%events)//' impact events, '//fixed(run%wall_seconds, 2)//' s'
    end subroutine simulate
 

@@ -265,7 +265,7 @@ contains
       character(len=512) :: errmsg
       scene = read_test_scene(path)
       call prepare_test_scene(scene, prepared)
-      steps = nint(scene%t_end/scene%dt)
+      steps = nint(scene%time%t_end/scene%time%dt)
       allocate (bounds(0:steps))
       call balance_bounds(scene, prepared, steps, bounds, stat, errmsg)
       if (stat /= 0) then
@@ -273,7 +273,7 @@ contains
          error stop 1
       end if
       do j = 1, size(time)
-         bound(j) = bounds(min(steps, max(0, nint(time(j)/scene%dt))))
+         bound(j) = bounds(min(steps, max(0, nint(time(j)/scene%time%dt))))
       end do
    end function balance_bounds_at
 

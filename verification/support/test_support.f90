@@ -6,7 +6,7 @@
 module vibrobeam_test_support
    use vibrobeam_kinds, only: dp, error_unit, output_unit
    use vibrobeam_scene, only: scene_type, validate_scene
-   use vibrobeam_input, only: read_scene
+   use vibrobeam_scene_read, only: read_scene
    use vibrobeam_setup, only: prepared_scene, prepare_scene
    use vibrobeam_blas_threads, only: limit_blas_threads
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_entry, band_factor, band_solve

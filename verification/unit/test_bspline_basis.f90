@@ -157,9 +157,9 @@ contains
       real(dp) :: v(model%unknowns)
       real(dp) :: x, value, previous, weights(4)
       integer :: i, dofs(4)
-      scene%velocity = 'uniform'
-      scene%velocity_amplitude = amplitude
-      v = initial_velocity(scene, model)
+      scene%initial%velocity = 'uniform'
+      scene%initial%velocity_amplitude = amplitude
+      v = initial_velocity(scene%initial, model)
       previous = 0
       do i = 0, 400
          x = model%length*i/400

@@ -36,56 +36,56 @@ program test_check_report
    k2 = youngs*inertia/(density*area)
    omega = roots**2*sqrt(k2)/length**2
    scene = steel()
-   scene%dt = 1e-5_dp
+   scene%time%dt = 1e-5_dp
    call report_of(scene)
    do n = 1, 5
       call t%check_close('omega_n against the closed form', report%omega(n), omega(n), 16*epsilon(1.0_dp))
    end do
-   call t%check_close('omega_1 dt', report%omega1_dt, omega(1)*scene%dt, 8*epsilon(1.0_dp))
-   call t%check_close('steps per period of mode 1', report%steps_per_period, 2*pi/(omega(1)*scene%dt), &
+   call t%check_close('omega_1 dt', report%omega1_dt, omega(1)*scene%time%dt, 8*epsilon(1.0_dp))
+   call t%check_close('steps per period of mode 1', report%steps_per_period, 2*pi/(omega(1)*scene%time%dt), &
                       8*epsilon(1.0_dp))
-   call t%check_close('omega_max dt', report%omega_max_dt, report%omega_max*scene%dt, 8*epsilon(1.0_dp))
-   call t%check_true('resolved modes, dt = 1e-5', report%resolved_modes == resolved_count(scene%dt), &
-                     'counted '//text(real(resolved_count(scene%dt), dp)))
-   scene%dt = 2*pi/(steps_per_period_wanted*omega(3))*(1 + 1e-9_dp)   ! mode 3 just misses 20 steps
+   call t%check_close('omega_max dt', report%omega_max_dt, report%omega_max*scene%time%dt, 8*epsilon(1.0_dp))
+   call t%check_true('resolved modes, dt = 1e-5', report%resolved_modes == resolved_count(scene%time%dt), &
+                     'counted '//text(real(resolved_count(scene%time%dt), dp)))
+   scene%time%dt = 2*pi/(steps_per_period_wanted*omega(3))*(1 + 1e-9_dp)   ! mode 3 just misses 20 steps
    call report_of(scene)
    call t%check_true('resolved modes: 2 when mode 3 just misses', report%resolved_modes == 2)
-   scene%dt = 1e-7_dp   ! beyond the listed modes: the asymptotic count (J = 128 > 73 modes)
-   scene%elements = 64
+   scene%time%dt = 1e-7_dp   ! beyond the listed modes: the asymptotic count (J = 128 > 73 modes)
+   scene%mesh%elements = 64
    call report_of(scene)
-   call t%check_true('resolved modes, dt = 1e-7', report%resolved_modes == resolved_count(scene%dt), &
-                     'counted '//text(real(resolved_count(scene%dt), dp))//', reported '// &
+   call t%check_true('resolved modes, dt = 1e-7', report%resolved_modes == resolved_count(scene%time%dt), &
+                     'counted '//text(real(resolved_count(scene%time%dt), dp))//', reported '// &
                      text(real(report%resolved_modes, dp)))
 
    ! velocity scales and their sources
    scene = steel()
-   scene%velocity = 'uniform'
-   scene%velocity_amplitude = -0.3_dp
+   scene%initial%velocity = 'uniform'
+   scene%initial%velocity_amplitude = -0.3_dp
    call velocity_scale(scene, velocity, source)
    call t%check_close('velocity: initial velocity', velocity, 0.3_dp, 0.0_dp)
    call t%check_true('source: initial velocity', index(source, 'initial velocity') > 0, source)
    scene = steel()
-   scene%displacement = 'mode'
-   scene%displacement_mode = 2
-   scene%displacement_amplitude = 1e-3_dp
+   scene%initial%displacement = 'mode'
+   scene%initial%displacement_mode = 2
+   scene%initial%displacement_amplitude = 1e-3_dp
    call velocity_scale(scene, velocity, source)
    call t%check_close('velocity: mode 2 oscillation', velocity, 1e-3_dp*omega(2), 16*epsilon(1.0_dp))
    call t%check_true('source: initial displacement', index(source, 'omega_2') > 0, source)
    scene = steel()
-   scene%base_amplitude = 2e-3_dp
-   scene%base_frequency = 150
+   scene%load%base_amplitude = 2e-3_dp
+   scene%load%base_frequency = 150
    call velocity_scale(scene, velocity, source)
    call t%check_close('velocity: base excitation', velocity, 0.3_dp, 4*epsilon(1.0_dp))
    call t%check_true('source: base excitation', index(source, 'base excitation') > 0, source)
    scene = steel()
-   scene%distributed = -100
+   scene%load%distributed = -100
    call velocity_scale(scene, velocity, source)
    deflection = 100*length**4/(8*youngs*inertia)
    call t%check_close('velocity: uniform load', velocity, deflection*omega(1), 8*epsilon(1.0_dp))
    call t%check_true('source: static deflection', index(source, 'static tip deflection') > 0, source)
    scene = steel()
-   scene%point_force = 20
-   scene%point_position = 0.3_dp
+   scene%load%point_force = 20
+   scene%load%point_position = 0.3_dp
    call velocity_scale(scene, velocity, source)
    deflection = 20*0.3_dp**2*(3*length - 0.3_dp)/(6*youngs*inertia)
    call t%check_close('velocity: point force', velocity, deflection*omega(1), 8*epsilon(1.0_dp))
@@ -93,41 +93,41 @@ program test_check_report
    call velocity_scale(scene, velocity, source)
    call t%check_close('velocity: nothing moves', velocity, 0.0_dp, 0.0_dp, 1.0_dp)
    scene = steel()
-   scene%velocity = 'mode'
-   scene%velocity_amplitude = 0.5_dp
-   scene%base_amplitude = 1e-3_dp
-   scene%base_frequency = 100   ! 0.1 m/s: the initial velocity is the larger
-   scene%dt = 2e-5_dp
+   scene%initial%velocity = 'mode'
+   scene%initial%velocity_amplitude = 0.5_dp
+   scene%load%base_amplitude = 1e-3_dp
+   scene%load%base_frequency = 100   ! 0.1 m/s: the initial velocity is the larger
+   scene%time%dt = 2e-5_dp
    call report_of(scene)
    call t%check_close('penetration scale dt |v|', report%penetration, 2e-5_dp*0.5_dp, 4*epsilon(1.0_dp))
 
    ! warnings on the data (static scenes: no time step to warn about)
    call expect_warning('plausible steel beam', steel(), '')
    scene = steel()
-   scene%youngs_modulus = 210
+   scene%beam%youngs_modulus = 210
    call expect_warning('E typed in GPa', scene, 'youngs_modulus')
    scene = steel()
-   scene%density = 7.85_dp
+   scene%beam%density = 7.85_dp
    call expect_warning('density typed in g/cm^3', scene, 'density')
    scene = steel()
-   scene%area = 200
-   scene%inertia = 200**2/12.0_dp
+   scene%beam%area = 200
+   scene%beam%inertia = 200**2/12.0_dp
    call expect_warning('area typed in mm^2', scene, 'area')
    scene = steel()
-   scene%inertia = inertia*1e12_dp
+   scene%beam%inertia = inertia*1e12_dp
    call expect_warning('inertia typed in mm^4', scene, 'inertia')
    scene = steel()
-   scene%area = 1e-3_dp*0.1_dp                       ! a 100 mm x 1 mm strip, bent flatwise
-   scene%inertia = 0.1_dp*1e-3_dp**3/12
+   scene%beam%area = 1e-3_dp*0.1_dp                       ! a 100 mm x 1 mm strip, bent flatwise
+   scene%beam%inertia = 0.1_dp*1e-3_dp**3/12
    call expect_warning('1:100 strip', scene, '')
    scene = steel()
-   scene%area = 2*pi*0.05_dp*0.5e-3_dp               ! a tube r = 50 mm, t = 0.5 mm
-   scene%inertia = pi*0.05_dp**3*0.5e-3_dp
+   scene%beam%area = 2*pi*0.05_dp*0.5e-3_dp               ! a tube r = 50 mm, t = 0.5 mm
+   scene%beam%inertia = pi*0.05_dp**3*0.5e-3_dp
    call expect_warning('thin tube r/t = 100', scene, '')
    scene = steel()
-   scene%dt = 2*pi/(omega(1)*10)                     ! 10 steps per period of mode 1
+   scene%time%dt = 2*pi/(omega(1)*10)                     ! 10 steps per period of mode 1
    call expect_warning('10 steps per period', scene, 'steps per period of mode 1')
-   scene%dt = 2*pi/(omega(1)*25)
+   scene%time%dt = 2*pi/(omega(1)*25)
    call expect_warning('25 steps per period', scene, '')
    call t%finish('test_check_report')
 
@@ -136,17 +136,17 @@ contains
    !> The steel cantilever of the README (valid as it stands).
    function steel() result(scene)
       type(scene_type) :: scene
-      allocate (scene%obstacles(0), scene%points(0))
-      scene%length = length
-      scene%youngs_modulus = youngs
-      scene%density = density
-      scene%area = area
-      scene%inertia = inertia
-      scene%elements = 8
-      scene%point_position = length
-      scene%t_end = 0.1_dp
-      scene%dt = 1e-5_dp
-      scene%file = 'unused.h5'
+      allocate (scene%obstacles(0), scene%output%points(0))
+      scene%beam%length = length
+      scene%beam%youngs_modulus = youngs
+      scene%beam%density = density
+      scene%beam%area = area
+      scene%beam%inertia = inertia
+      scene%mesh%elements = 8
+      scene%load%point_position = length
+      scene%time%t_end = 0.1_dp
+      scene%time%dt = 1e-5_dp
+      scene%output%file = 'unused.h5'
    end function steel
 
    subroutine report_of(scene)
@@ -154,8 +154,8 @@ contains
       type(beam_model) :: model
       call validate_scene(scene, stat, errmsg)
       call t%check_true('scene valid', stat == 0, trim(errmsg))
-      call build_model(scene%basis, scene%elements, scene%length, scene%density*scene%area, &
-                       scene%youngs_modulus*scene%inertia, model, stat, errmsg)
+      call build_model(scene%mesh%basis, scene%mesh%elements, scene%beam%length, scene%beam%density*scene%beam%area, &
+                       scene%beam%youngs_modulus*scene%beam%inertia, model, stat, errmsg)
       call make_check_report(scene, model, report, stat, errmsg)
       call t%check_true('report made', stat == 0, trim(errmsg))
    end subroutine report_of
@@ -166,7 +166,7 @@ contains
       type(scene_type), intent(in) :: given
       type(scene_type) :: scene
       scene = given
-      if (index(name, 'steps per period') == 0) scene%kind = 'static'
+      if (index(name, 'steps per period') == 0) scene%analysis%kind = 'static'
       call validate_scene(scene, stat, errmsg)
       call t%check_true(name//': scene valid', stat == 0, trim(errmsg))
       warnings = scene_warnings(scene)

@@ -52,14 +52,14 @@ contains
       type(scene_type) :: scene
       integer :: stat
       character(len=256) :: errmsg
-      scene%basis = basis
-      scene%elements = elements
-      scene%dt = 1e-3_dp
-      scene%t_end = 0.4_dp
-      scene%restitution = 0.7_dp
-      scene%velocity = 'mode'
-      scene%velocity_amplitude = -1
-      scene%point_position = 1
+      scene%mesh%basis = basis
+      scene%mesh%elements = elements
+      scene%time%dt = 1e-3_dp
+      scene%time%t_end = 0.4_dp
+      scene%impact%restitution = 0.7_dp
+      scene%initial%velocity = 'mode'
+      scene%initial%velocity_amplitude = -1
+      scene%load%point_position = 1
       if (middle) then
          scene%obstacles = [obstacle_type(side='below', x_from=1, x_to=1, level_from=-0.02_dp, level_to=-0.02_dp), &
                             obstacle_type(side='below', x_from=0.5_dp, x_to=0.5_dp, level_from=-1, level_to=-1)]
@@ -80,8 +80,8 @@ contains
       type(prepared_scene), intent(out) :: prepared
       type(scene_type) :: reduced
       reduced = scene
-      reduced%reduction = 'craig-bampton'
-      reduced%reduction_modes = modes
+      reduced%mesh%reduction = 'craig-bampton'
+      reduced%mesh%reduction_modes = modes
       call prepare_test_scene(reduced, prepared)
    end subroutine reduced_scene
 

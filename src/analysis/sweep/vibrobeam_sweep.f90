@@ -42,7 +42,7 @@ contains
       !$ sweep_threads = omp_get_max_threads()
    end function sweep_threads
 
-   !> Run every point and publish the sweep file `scene%file` (on rank 0). stat /= 0 (with
+   !> Run every point and publish the sweep file `scene%output%file` (on rank 0). stat /= 0 (with
    !! errmsg) when no sweep file could be written or the start state of &initial from_file
    !! cannot be read (then stat = 2: invalid input).
    subroutine run_sweep(scene, settings, outcome, stat, errmsg)
@@ -60,7 +60,7 @@ contains
       type(scene_type) :: first_scene
       character(len=:), allocatable :: warnings
       integer :: task, tasks, rank, ranks, done, k
-      call meter%init(scene%progress)
+      call meter%init(scene%output%progress)
       rank = transport_rank()
       ranks = transport_ranks()
       if (rank /= 0) meter%enabled = .false.
@@ -83,8 +83,8 @@ contains
          end if
          stat = 0
       end if
-      if (len_trim(scene%from_file) > 0) then
-         call read_start(trim(scene%from_file))
+      if (len_trim(scene%initial%from_file) > 0) then
+         call read_start(trim(scene%initial%from_file))
          if (stat /= 0) return
       end if
       done = 0
@@ -114,9 +114,10 @@ contains
                             new_line('a')
       end do
       if (rank /= 0) return
-      call layout%init(1 + size(first_scene%points), first%contacts%count, size(first_scene%obstacles))
+      call layout%init(1 + size(first_scene%output%points), first%contacts%count, size(first_scene%obstacles))
       call write_sweep_file(scene, first%model, settings, points, results, layout, &
-                            [first_scene%length, first_scene%points], first%contacts%x, first%contacts%lower_obstacle, &
+                            [first_scene%beam%length, first_scene%output%points], first%contacts%x, &
+                               first%contacts%lower_obstacle, &
                             first%contacts%upper_obstacle, outcome%status, outcome%wall_seconds, outcome%threads, &
                             ranks, meter, outcome%text_skipped, stat, errmsg)
       call meter%end_line()

@@ -32,7 +32,7 @@ module vibrobeam_sweep_file
 
 contains
 
-   !> Write and publish the sweep file `scene%file`. `status` is the /run status ('ok' or
+   !> Write and publish the sweep file `scene%output%file`. `status` is the /run status ('ok' or
    !! 'interrupted'); `threads` and `ranks` what ran it. stat /= 0: nothing is published.
    subroutine write_sweep_file(scene, model, settings, points, results, layout, point_x, contact_x, &
                                lower_obstacle, upper_obstacle, status, wall_seconds, threads, ranks, meter, &

@@ -137,8 +137,8 @@ contains
       integer :: stat, windows
       call system_clock(clock_start, rate)
       local = point_scene(scene, settings, point)
-      local%progress = .false.
-      result%dt = local%dt
+      local%output%progress = .false.
+      result%dt = local%time%dt
       result%start_point = start_point
       call point_windows(settings, local, result%settle_steps, result%measure_steps, stat, errmsg)
       warnings = ''
@@ -184,7 +184,7 @@ contains
          end do
          prepared%u0 = start%u
          prepared%v0 = start%v
-         if (allocated(start%u_previous) .and. local%scheme == 'position') prepared%u_previous0 = start%u_previous
+         if (allocated(start%u_previous) .and. local%time%scheme == 'position') prepared%u_previous0 = start%u_previous
       end subroutine take_start
 
       !> The statistics of the window from `first` over `measure_steps` steps, stepping
@@ -199,7 +199,7 @@ contains
          do n = stepper%steps + 1, last
             call stepper%step(step_stat, step_message)
             if (step_stat /= 0) then
-               write (errmsg, '(a,i0,a,es14.7,a)') 'numerical failure at step ', n, ' (t = ', n*local%dt, ' s): '// &
+               write (errmsg, '(a,i0,a,es14.7,a)') 'numerical failure at step ', n, ' (t = ', n*local%time%dt, ' s): '// &
                   trim(step_message)
                call failed(errmsg)
                return
@@ -211,7 +211,7 @@ contains
             end if
             if (interrupt_requested()) then
                result%status = status_interrupted
-               result%message = 'interrupted at t = '//real_text(n*local%dt)//' s'
+               result%message = 'interrupted at t = '//real_text(n*local%time%dt)//' s'
                return
             end if
          end do
@@ -285,14 +285,14 @@ contains
       subroutine run_with_file()
          type(run_outcome) :: outcome
          type(state_record) :: record
-         local%file = point_file_name(scene%file, k)
-         local%text = .false.
-         local%measure_from = transient*local%dt
-         local%t_end = (transient + result%measure_steps)*local%dt
+         local%output%file = point_file_name(scene%output%file, k)
+         local%output%text = .false.
+         local%output%measure_from = transient*local%time%dt
+         local%time%t_end = (transient + result%measure_steps)*local%time%dt
          call run_dynamics(local, prepared, outcome, stat, errmsg, quiet=.true., statistics=result%statistics, &
                            final_state=record)
          if (stat /= 0) then
-            call failed('writing '''//trim(local%file)//''': '//trim(errmsg))
+            call failed('writing '''//trim(local%output%file)//''': '//trim(errmsg))
             return
          end if
          select case (outcome%status)

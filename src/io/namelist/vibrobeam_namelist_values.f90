@@ -39,6 +39,13 @@ module vibrobeam_namelist_values
       integer :: lowest_integer = 0, highest_integer = 0   !! integers: hard range
       character(len=64) :: choices = ''          !! strings: allowed values 'a|b|c'; '' for free text
       character(len=16) :: unit = ''             !! SI unit ('' dimensionless), for messages and docs
+      !> the marker of a value not given whose default is computed from other inputs stands
+      !! in the variable (`vibrobeam_schema_visitor`: unset, unset_integer)
+      logical :: optional = .false.
+      character(len=160) :: meaning = ''         !! one line: what the variable is (docs/input.md says more)
+      !> for a variable of an array of settings (obstacle i of &obstacles), the element that
+      !! a visit hands over as a scalar; 0: the row only describes the variable
+      integer :: element = 0
    end type namelist_variable
 
    !> One value of an assignment, as written.

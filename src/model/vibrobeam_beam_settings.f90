@@ -1,0 +1,106 @@
+!> The beam and its mesh as the input gives them: &beam (docs/input.md, "&beam") and &mesh
+!! ("&mesh"), each variable declared once in `visit_beam` and `visit_mesh`
+!! (`vibrobeam_schema_visitor`), with the quantities the model derives from them.
+module vibrobeam_beam_settings
+   use vibrobeam_kinds, only: dp
+   use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, unset, is_unset, &
+      unset_integer, keyword_length
+   implicit none
+   private
+   public :: beam_settings, mesh_settings, visit_beam, visit_mesh
+
+   !> &beam: the beam's length, stiffness and mass (by E, rho, S, I, or by k2 = EI/(rho S)
+   !! alone, per unit mass), and its Rayleigh damping.
+   type :: beam_settings
+      real(dp) :: length = 1                  !! L (m)
+      real(dp) :: k2 = 1                      !! EI/(rho S) (m^4/s^2)
+      real(dp) :: youngs_modulus = unset      !! E (Pa)
+      real(dp) :: density = unset             !! rho (kg/m^3)
+      real(dp) :: area = unset                !! S (m^2)
+      real(dp) :: inertia = unset             !! I (m^4)
+      real(dp) :: rayleigh_mass = 0           !! a in C = a M + b K (1/s)
+      real(dp) :: rayleigh_stiffness = 0      !! b in C = a M + b K (s)
+   contains
+      procedure :: physical                   !! given by E, rho, S, I?
+      procedure :: rho_s                      !! mass per unit length (kg/m)
+      procedure :: ei                         !! bending stiffness (N m^2)
+   end type beam_settings
+
+   !> &mesh: the finite elements, their basis, and the reduced model of dynamics.
+   type :: mesh_settings
+      integer :: elements = 32                !! N
+      character(len=keyword_length) :: basis = 'hermite'
+      character(len=keyword_length) :: reduction = 'none'   !! 'none' | 'craig-bampton' (dynamics only)
+      real(dp) :: reduction_frequency = unset   !! cut-off of the fixed-interface modes (rad/s); unset: default
+      integer :: reduction_modes = unset_integer   !! number of fixed-interface modes; unset: set by the cut-off
+   contains
+      procedure :: unknowns                   !! J of the mesh
+   end type mesh_settings
+
+contains
+
+   !> Every variable of &beam, once (docs/input.md, "&beam").
+   subroutine visit_beam(beam, visitor)
+      type(beam_settings), intent(inout) :: beam
+      class(schema_visitor), intent(inout) :: visitor
+      call visitor%variable(real_row('beam', 'length', 'm', 1e-9_dp, 1e6_dp, 'length L of the beam'), beam%length)
+      call visitor%variable(real_row('beam', 'k2', 'm^4/s^2', 1e-30_dp, 1e30_dp, &
+                                     'EI/(rho S), when E, rho, S, I are not given (loads are then per unit mass)'), beam%k2)
+      call visitor%variable(real_row('beam', 'youngs_modulus', 'Pa', 1.0_dp, 1e13_dp, 'Young''s modulus E', &
+                                     optional=.true.), beam%youngs_modulus)
+      call visitor%variable(real_row('beam', 'density', 'kg/m^3', 1e-2_dp, 1e6_dp, 'density rho', optional=.true.), &
+                            beam%density)
+      call visitor%variable(real_row('beam', 'area', 'm^2', 1e-20_dp, 1e4_dp, 'cross-section area S', &
+                                     optional=.true.), beam%area)
+      call visitor%variable(real_row('beam', 'inertia', 'm^4', 1e-42_dp, 1e8_dp, 'second moment of area I', &
+                                     optional=.true.), beam%inertia)
+      call visitor%variable(real_row('beam', 'rayleigh_mass', '1/s', 0.0_dp, 1e12_dp, &
+                                     'a in the Rayleigh damping C = a M + b K'), beam%rayleigh_mass)
+      call visitor%variable(real_row('beam', 'rayleigh_stiffness', 's', 0.0_dp, 1e3_dp, &
+                                     'b in the Rayleigh damping C = a M + b K'), beam%rayleigh_stiffness)
+   end subroutine visit_beam
+
+   !> Every variable of &mesh, once (docs/input.md, "&mesh").
+   subroutine visit_mesh(mesh, visitor)
+      type(mesh_settings), intent(inout) :: mesh
+      class(schema_visitor), intent(inout) :: visitor
+      call visitor%variable(integer_row('mesh', 'elements', 1, 1000000, 'number of elements N (uniform mesh)'), &
+                            mesh%elements)
+      call visitor%variable(keyword_row('mesh', 'basis', 'hermite|bspline', keyword_length, &
+                                        'Hermite cubic elements or cubic B-splines'), mesh%basis)
+      call visitor%variable(keyword_row('mesh', 'reduction', 'none|craig-bampton', keyword_length, &
+                                        'dynamics on the full model or on a Craig-Bampton reduced model'), mesh%reduction)
+      call visitor%variable(real_row('mesh', 'reduction_frequency', 'rad/s', 1e-30_dp, 1e30_dp, &
+                                     'cut-off of the fixed-interface modes the reduced model keeps', optional=.true.), &
+                            mesh%reduction_frequency)
+      call visitor%variable(integer_row('mesh', 'reduction_modes', 0, 100000, &
+                                        'number of fixed-interface modes the reduced model keeps', optional=.true.), &
+                            mesh%reduction_modes)
+   end subroutine visit_mesh
+
+   !> True when the beam is given by E, rho, S, I (then k2 = EI/(rho S)).
+   pure logical function physical(self)
+      class(beam_settings), intent(in) :: self
+      physical = .not. all(is_unset([self%youngs_modulus, self%density, self%area, self%inertia]))
+   end function physical
+
+   !> Mass per unit length rho S (kg/m); 1 when the beam is given by k2.
+   pure real(dp) function rho_s(self)
+      class(beam_settings), intent(in) :: self
+      rho_s = 1
+      if (self%physical()) rho_s = self%density*self%area
+   end function rho_s
+
+   !> Bending stiffness E I (N m^2); k2 when the beam is given by k2.
+   pure real(dp) function ei(self)
+      class(beam_settings), intent(in) :: self
+      ei = self%k2
+      if (self%physical()) ei = self%youngs_modulus*self%inertia
+   end function ei
+
+   !> Unknowns J of the mesh: 2N (Hermite) or N + 1 (B-splines).
+   pure integer function unknowns(self)
+      class(mesh_settings), intent(in) :: self
+      unknowns = merge(2*self%elements, self%elements + 1, self%basis == 'hermite')
+   end function unknowns
+end module vibrobeam_beam_settings

@@ -1,0 +1,294 @@
+!> Reading a scene from a namelist file (docs/input.md).
+!!
+!! The file is first scanned whole against the table of every variable
+!! (`vibrobeam_namelist_scan` with `scene_variables`): anything outside a known group, an
+!! unterminated or repeated group, a value too long, out of an array, not finite, or of a
+!! magnitude that would overflow or underflow in conversion is refused there, with the
+!! line, group and variable. The values the scanner accepted are then set by walking the
+!! settings' declarations (`visit_scene` with a `schema_reader`): each value converted by
+!! the run-time library's list-directed read, so a failure still names the assignment.
+!! Which variables were given comes from the scanner's tokens, never from comparing a
+!! value with a marker. What is left here is what relates variables: the defaults that
+!! follow another input, the variables an obstacle requires, the observation points
+!! listed without gaps, and the warnings for values the analysis ignores.
+module vibrobeam_scene_read
+   use vibrobeam_kinds, only: dp
+   use vibrobeam_text, only: integer_text
+   use vibrobeam_scene, only: scene_type, max_obstacles, max_points, scene_variables, visit_scene
+   use vibrobeam_obstacles, only: obstacle_type
+   use vibrobeam_namelist_values, only: namelist_variable
+   use vibrobeam_namelist_scan, only: scanned_file, scan_namelist_file
+   use vibrobeam_schema_operations, only: schema_reader
+   use vibrobeam_sweep_input, only: sweep_input, visit_sweep, max_sweep_values
+   use vibrobeam_sweep_settings, only: sweep_settings
+   implicit none
+   private
+   public :: read_scene, namelist_groups_text
+
+   !> Natural modes computed when `&analysis modes` is not given (fewer when J is smaller).
+   integer, parameter :: default_modes = 6
+
+contains
+
+   !> Read `filename` into `scene` (defaults for everything not given). stat = 0 on
+   !! success, 1 with a message naming the line, group and variable otherwise. Validation
+   !! of the values against each other is `validate_scene`'s job. `warnings` (optional)
+   !! receives one line per given value the analysis ignores.
+   subroutine read_scene(filename, scene, stat, errmsg, warnings, sweep)
+      character(len=*), intent(in) :: filename
+      type(scene_type), intent(out) :: scene
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=:), allocatable, intent(inout), optional :: warnings
+      !> the &sweep group as written (`resolve_sweep` checks it against the scene);
+      !! sweep%present is false without one
+      type(sweep_settings), intent(out), optional :: sweep
+      type(schema_reader) :: reader
+      integer :: count
+      call scan_namelist_file(filename, scene_variables(), reader%scanned, stat, errmsg)
+      if (stat /= 0) return
+      ! room for every obstacle and point the file may describe; cut to what it gives below
+      allocate (scene%obstacles(max_obstacles), scene%output%points(max_points))
+      scene%obstacles(:)%side = ''
+      scene%output%points = 0
+      count = 0
+      call visit_scene(scene, reader, obstacle_count=count)
+      if (reader%stat /= 0) then
+         stat = reader%stat
+         errmsg = reader%errmsg
+         return
+      end if
+      call resolve_obstacles(reader%scanned, count, scene, stat, errmsg)
+      if (stat == 0) call resolve_points(reader%scanned, scene, stat, errmsg)
+      if (stat /= 0) return
+      if (.not. reader%scanned%is_given('load', 'point_position')) scene%load%point_position = scene%beam%length
+      if (present(sweep)) then
+         call read_sweep(reader, sweep, stat, errmsg)
+         if (stat /= 0) return
+         if (sweep%present .and. present(warnings)) then
+            if (reader%scanned%is_given('time', 't_end')) warnings = warnings//'&time t_end is ignored by a sweep: '// &
+               'each point runs for its settle and measure windows'//new_line('a')
+            if (reader%scanned%is_given('output', 'measure_from')) warnings = warnings//'&output measure_from is '// &
+               'ignored by a sweep: each point measures after its settle window'//new_line('a')
+         end if
+      else if (reader%scanned%group_given('sweep')) then
+         stat = 1
+         errmsg = '&sweep: this program reads a single run''s scene (a sweep is run by vibrobeam itself)'
+         return
+      end if
+      ! the default number of modes applies only to kind = 'modes', and never beyond J
+      if (scene%analysis%kind == 'modes' .and. .not. reader%scanned%is_given('analysis', 'modes') .and. &
+          scene%mesh%elements >= 1) scene%analysis%modes = min(default_modes, scene%mesh%unknowns())
+      if (present(warnings)) call ignored_values(reader%scanned, scene, warnings)
+   end subroutine read_scene
+
+   !> '&beam &mesh ... &output': every group a file may hold.
+   function namelist_groups_text() result(text)
+      character(len=:), allocatable :: text
+      type(namelist_variable), allocatable :: table(:)
+      integer :: k
+      allocate (table, source=scene_variables())
+      text = ''
+      do k = 1, size(table)
+         if (index(text//' ', '&'//trim(table(k)%group)//' ') > 0) cycle
+         if (len(text) > 0) text = text//' '
+         text = text//'&'//trim(table(k)%group)
+      end do
+   end function namelist_groups_text
+
+   !> A warning for each value given that the analysis does not use.
+   subroutine ignored_values(scanned, scene, warnings)
+      type(scanned_file), intent(in) :: scanned
+      type(scene_type), intent(in) :: scene
+      character(len=:), allocatable, intent(inout) :: warnings
+      character(len=*), parameter :: unused_by_modes(6) = [character(len=9) :: 'obstacles', 'impact', 'time', &
+                                                            'initial', 'load', 'solver']
+      character(len=*), parameter :: unused_by_static(3) = [character(len=9) :: 'impact', 'time', 'initial']
+      integer :: k
+      if (scene%analysis%kind /= 'modes' .and. scanned%is_given('analysis', 'modes')) &
+         call add('&analysis modes = '//integer_text(scene%analysis%modes)//' is ignored: kind = '''// &
+                  trim(scene%analysis%kind)//''' computes no natural modes')
+      if (scanned%is_given('beam', 'k2') .and. (scanned%is_given('beam', 'youngs_modulus') .or. &
+          scanned%is_given('beam', 'density') .or. scanned%is_given('beam', 'area') .or. &
+          scanned%is_given('beam', 'inertia'))) &
+         call add('&beam k2 is ignored: youngs_modulus, density, area and inertia are given (k2 = EI/(rho S))')
+      select case (scene%analysis%kind)
+      case ('modes')
+         do k = 1, size(unused_by_modes)
+            if (scanned%group_given(trim(unused_by_modes(k)))) &
+               call add('&'//trim(unused_by_modes(k))//' is ignored: kind = ''modes'' computes the modes of the '// &
+                        'free cantilever')
+         end do
+      case ('static')
+         do k = 1, size(unused_by_static)
+            if (scanned%group_given(trim(unused_by_static(k)))) &
+               call add('&'//trim(unused_by_static(k))//' is ignored: kind = ''static'' solves for the '// &
+                        'equilibrium under the loads at t = 0')
+         end do
+      end select
+   contains
+      subroutine add(line)
+         character(len=*), intent(in) :: line
+         warnings = warnings//line//new_line('a')
+      end subroutine add
+   end subroutine ignored_values
+
+   !> &obstacles after reading: nothing may be described beyond `count`; each obstacle
+   !! needs side and level_from and takes the defaults that follow other inputs for what
+   !! is not given (x_from = L, x_to = x_from, level_to = level_from).
+   subroutine resolve_obstacles(scanned, count, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
+      integer, intent(in) :: count
+      type(scene_type), intent(inout) :: scene
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(obstacle_type), allocatable :: read(:)
+      integer :: i
+      character(len=:), allocatable :: number
+      stat = 1
+      if (count < 0 .or. count > max_obstacles) then
+         errmsg = '&obstacles count = '//integer_text(count)//' is outside [0, '//integer_text(max_obstacles)//']'
+         return
+      end if
+      do i = count + 1, max_obstacles
+         if (given(i)) then
+            errmsg = '&obstacles: obstacle '//integer_text(i)//' is described but count = '//integer_text(count)// &
+                     '; raise count or remove it'
+            return
+         end if
+      end do
+      call move_alloc(scene%obstacles, read)
+      allocate (scene%obstacles(count))
+      do i = 1, count
+         number = integer_text(i)
+         if (.not. scanned%is_given('obstacles', 'side', i)) then
+            errmsg = '&obstacles side('//number//') is missing: give ''below'' or ''above'''
+            return
+         end if
+         if (.not. scanned%is_given('obstacles', 'level_from', i)) then
+            errmsg = '&obstacles level_from('//number//') is missing: give the height (m) of the obstacle surface'
+            return
+         end if
+         scene%obstacles(i) = read(i)
+         if (.not. scanned%is_given('obstacles', 'x_from', i)) scene%obstacles(i)%x_from = scene%beam%length
+         if (.not. scanned%is_given('obstacles', 'x_to', i)) scene%obstacles(i)%x_to = scene%obstacles(i)%x_from
+         if (.not. scanned%is_given('obstacles', 'level_to', i)) scene%obstacles(i)%level_to = read(i)%level_from
+      end do
+      stat = 0
+      errmsg = ''
+   contains
+      logical function given(i)
+         integer, intent(in) :: i
+         character(len=*), parameter :: names(8) = [character(len=10) :: 'side', 'x_from', 'x_to', 'level_from', &
+                                                     'level_to', 'stiffness', 'exponent', 'damping']
+         integer :: k
+         given = .false.
+         do k = 1, size(names)
+            given = given .or. scanned%is_given('obstacles', trim(names(k)), i)
+         end do
+      end function given
+   end subroutine resolve_obstacles
+
+   !> &output points: the leading elements given (points(1), points(2), ...), no gaps.
+   subroutine resolve_points(scanned, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
+      type(scene_type), intent(inout) :: scene
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: k, count_points
+      stat = 0
+      errmsg = ''
+      count_points = leading_given(scanned, 'output', 'points', max_points)
+      do k = count_points + 1, max_points
+         if (scanned%is_given('output', 'points', k)) then
+            stat = 1
+            errmsg = '&output points('//integer_text(k)//') is given but points('//integer_text(count_points + 1)// &
+                     ') is not: list the observation points from points(1) on, without gaps'
+            return
+         end if
+      end do
+      scene%output%points = scene%output%points(1:count_points)
+   end subroutine resolve_points
+
+   !> How many of group.name(1), (2), ... are given before the first that is not.
+   integer function leading_given(scanned, group, name, most)
+      type(scanned_file), intent(in) :: scanned
+      character(len=*), intent(in) :: group, name
+      integer, intent(in) :: most
+      leading_given = 0
+      do while (leading_given < most)
+         if (.not. scanned%is_given(group, name, leading_given + 1)) exit
+         leading_given = leading_given + 1
+      end do
+   end function leading_given
+
+   !> &sweep as written, and which inputs whose default follows another were given
+   !! (docs/sweeps.md, "The parameter").
+   subroutine read_sweep(reader, settings, stat, errmsg)
+      type(schema_reader), intent(inout) :: reader
+      type(sweep_settings), intent(out) :: settings
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(sweep_input) :: input
+      integer :: i
+      stat = 0
+      errmsg = ''
+      settings%present = reader%scanned%group_given('sweep')
+      if (.not. settings%present) return
+      call visit_sweep(input, reader)
+      if (reader%stat /= 0) then
+         stat = reader%stat
+         errmsg = reader%errmsg
+         return
+      end if
+      settings%axis(1)%parameter = input%parameter
+      settings%axis(2)%parameter = input%parameter2
+      call axis_values(1, input%values, input%from, input%to, input%count, input%spacing, '')
+      if (stat == 0) call axis_values(2, input%values2, input%from2, input%to2, input%count2, input%spacing2, '2')
+      if (stat /= 0) return
+      settings%mode = input%mode
+      settings%settle = input%settle
+      settings%measure = input%measure
+      settings%settle_periods = input%settle_periods
+      settings%measure_periods = input%measure_periods
+      settings%steady_tolerance = input%steady_tolerance
+      settings%keep_runs = input%keep_runs
+      settings%point_position_given = reader%scanned%is_given('load', 'point_position')
+      do i = 1, max_obstacles
+         settings%x_from_given(i) = reader%scanned%is_given('obstacles', 'x_from', i)
+         settings%x_to_given(i) = reader%scanned%is_given('obstacles', 'x_to', i)
+         settings%level_to_given(i) = reader%scanned%is_given('obstacles', 'level_to', i)
+      end do
+   contains
+      !> The leading elements given of values (without gaps), or the range.
+      subroutine axis_values(a, list, first, last, number, kind, suffix)
+         integer, intent(in) :: a, number
+         real(dp), intent(in) :: list(:), first, last
+         character(len=*), intent(in) :: kind, suffix
+         integer :: given, j
+         given = leading_given(reader%scanned, 'sweep', 'values'//suffix, max_sweep_values)
+         do j = given + 1, max_sweep_values
+            if (reader%scanned%is_given('sweep', 'values'//suffix, j)) then
+               stat = 1
+               errmsg = '&sweep values'//suffix//'('//integer_text(j)//') is given but values'//suffix//'('// &
+                        integer_text(given + 1)//') is not: list the values from values'//suffix//'(1) on, without gaps'
+               return
+            end if
+         end do
+         if (given > 0) settings%axis(a)%given_values = list(1:given)
+         settings%axis(a)%range_given = reader%scanned%is_given('sweep', 'from'//suffix) .or. &
+                                        reader%scanned%is_given('sweep', 'to'//suffix) .or. &
+                                        reader%scanned%is_given('sweep', 'count'//suffix)
+         if (settings%axis(a)%range_given .and. .not. (reader%scanned%is_given('sweep', 'from'//suffix) .and. &
+                                                       reader%scanned%is_given('sweep', 'to'//suffix))) then
+            stat = 1
+            errmsg = '&sweep: a range needs from'//suffix//' and to'//suffix//' (and count'//suffix//')'
+            return
+         end if
+         settings%axis(a)%from = first
+         settings%axis(a)%to = last
+         settings%axis(a)%count = max(number, 0)
+         settings%axis(a)%spacing = kind
+      end subroutine axis_values
+   end subroutine read_sweep
+end module vibrobeam_scene_read
