@@ -27,7 +27,7 @@ module vibrobeam_episodes
    use vibrobeam_hdf5_series, only: h5_series
    use vibrobeam_state_record, only: state_record
    use vibrobeam_step_observer, only: step_observer, step_events
-   use vibrobeam_contact_points, only: contact_value
+   use vibrobeam_contact_set, only: contact_value
    implicit none
    private
    public :: episode_tracker, episode_columns

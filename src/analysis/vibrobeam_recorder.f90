@@ -30,7 +30,7 @@ module vibrobeam_recorder
    use vibrobeam_scene, only: scene_type, is_unset, forcing_of
    use vibrobeam_model, only: beam_model, nodal_displacement, point_row, node_row
    use vibrobeam_reduction, only: reduced_basis
-   use vibrobeam_contact_points, only: contact_value
+   use vibrobeam_contact_set, only: contact_value
    use vibrobeam_cantilever_exact, only: cantilever_frequency
    use vibrobeam_stepper, only: time_stepper
    use vibrobeam_hdf5, only: h5_writer

@@ -8,7 +8,8 @@ module vibrobeam_setup
    use vibrobeam_text, only: real_text
    use vibrobeam_scene, only: scene_type, step_count, is_unset
    use vibrobeam_model, only: beam_model, build_model
-   use vibrobeam_contact_points, only: contact_set, build_contact_points, contact_value
+   use vibrobeam_contact_set, only: contact_set, contact_value
+   use vibrobeam_obstacles, only: build_contact_points
    use vibrobeam_loads, only: load_set, build_loads
    use vibrobeam_initial_state, only: mode_field, initial_velocity
    use vibrobeam_static, only: solve_static
@@ -64,7 +65,7 @@ contains
       call build_model(scene%mesh%basis, scene%mesh%elements, scene%beam%length, scene%beam%rho_s(), scene%beam%ei(), &
                        prepared%model, stat, errmsg)
       if (stat /= 0) return
-      call build_contact_points(scene, prepared%model, prepared%contacts, warnings, stat, errmsg)
+      call build_contact_points(scene%obstacles, prepared%model, prepared%contacts, warnings, stat, errmsg)
       if (stat /= 0) return
       call build_loads(scene%load, prepared%model, scene%beam%rho_s(), prepared%loads)
       if (scene%analysis%kind == 'dynamics' .and. len_trim(scene%initial%from_file) > 0) then

@@ -14,7 +14,7 @@
 module vibrobeam_static
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_factor, band_solve
-   use vibrobeam_contact_points, only: contact_set
+   use vibrobeam_contact_set, only: contact_set
    use vibrobeam_contact_solver, only: contact_projector
    use vibrobeam_compliant_law, only: spring_set, rule_mean
    use vibrobeam_compliant_solve, only: compliant_solver, rigid_admissible

@@ -31,7 +31,7 @@
 module vibrobeam_compliant_solve
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_factor, band_solve, band_matvec, band_add
-   use vibrobeam_contact_points, only: contact_set, contact_value
+   use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_contact_solver, only: contact_projector
    use vibrobeam_compliant_law, only: spring_set, step_force
    implicit none

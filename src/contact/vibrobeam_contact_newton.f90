@@ -42,7 +42,7 @@
 module vibrobeam_contact_newton
    use vibrobeam_kinds, only: dp
    use vibrobeam_status, only: stat_no_convergence, stat_residual_check_failed
-   use vibrobeam_contact_points, only: contact_value, no_bound
+   use vibrobeam_contact_set, only: contact_value, no_bound
    use vibrobeam_band, only: band_matvec
    use vibrobeam_contact_system, only: contact_system, solve_tally, scatter_rows
    implicit none

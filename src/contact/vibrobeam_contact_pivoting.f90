@@ -17,7 +17,7 @@ module vibrobeam_contact_pivoting
    use vibrobeam_kinds, only: dp
    use vibrobeam_status, only: stat_no_convergence, stat_invalid_argument, stat_linear_solver_failure, stat_residual_check_failed
    use vibrobeam_band, only: band_matvec
-   use vibrobeam_contact_points, only: contact_value, no_bound
+   use vibrobeam_contact_set, only: contact_value, no_bound
    use vibrobeam_contact_system, only: contact_system, solve_tally, regime_delassus
    use vibrobeam_lcp, only: solve_lcp
    implicit none

@@ -27,7 +27,7 @@
 module vibrobeam_contact_solver
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_cholesky
-   use vibrobeam_contact_points, only: contact_set, no_bound
+   use vibrobeam_contact_set, only: contact_set, no_bound
    use vibrobeam_contact_system, only: contact_system, solve_tally, regime_delassus, regime_band
    use vibrobeam_contact_newton, only: newton_project, newton_report
    use vibrobeam_contact_pivoting, only: pivot_project, pivot_admissible

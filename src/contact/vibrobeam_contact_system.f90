@@ -29,7 +29,7 @@ module vibrobeam_contact_system
    use vibrobeam_status, only: stat_linear_solver_failure
    use vibrobeam_lapack, only: dpbtrf, dpbtrs, dpotrf, dpotrs, poison_failed_solve
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_solve, band_matvec, band_entry
-   use vibrobeam_contact_points, only: contact_set, contact_value
+   use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_saddle_band, only: saddle_factor
    implicit none
    private

@@ -16,7 +16,7 @@ module vibrobeam_saddle_band
    use vibrobeam_status, only: stat_linear_solver_failure
    use vibrobeam_lapack, only: dgbtrf, dgbtrs
    use vibrobeam_band, only: symmetric_band
-   use vibrobeam_contact_points, only: contact_set
+   use vibrobeam_contact_set, only: contact_set
    implicit none
    private
    public :: saddle_factor

@@ -34,7 +34,7 @@ module vibrobeam_reduction
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: band_allocate, band_matvec, band_to_dense
    use vibrobeam_model, only: beam_model
-   use vibrobeam_contact_points, only: contact_set, contact_value
+   use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
    use vibrobeam_flexibility, only: cantilever_flexibility
    use vibrobeam_lanczos, only: lanczos_modes

@@ -27,7 +27,8 @@ module vibrobeam_sweep_settings
    use vibrobeam_namelist_tokens, only: lowercase
    use vibrobeam_scene_values, only: real_input, set_real_input
    use vibrobeam_model, only: beam_model, build_model
-   use vibrobeam_contact_points, only: contact_set, build_contact_points
+   use vibrobeam_contact_set, only: contact_set
+   use vibrobeam_obstacles, only: build_contact_points
    implicit none
    private
    public :: sweep_settings, sweep_axis, sweep_point, resolve_sweep, sweep_points, point_scene, point_windows
@@ -163,7 +164,7 @@ contains
                trial%beam%ei(), model, &
                              stat, errmsg)
             warnings = ''
-            if (stat == 0) call build_contact_points(trial, model, contacts, warnings, stat, errmsg)
+            if (stat == 0) call build_contact_points(trial%obstacles, model, contacts, warnings, stat, errmsg)
          end if
          if (stat == 0 .and. contact_count >= 0 .and. contacts%count /= contact_count) then
             stat = 1

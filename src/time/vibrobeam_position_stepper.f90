@@ -27,7 +27,7 @@ module vibrobeam_position_stepper
    use vibrobeam_status, only: stat_not_finite
    use vibrobeam_band, only: band_cholesky, band_factor, band_solve, band_matvec
    use vibrobeam_model, only: beam_model
-   use vibrobeam_contact_points, only: contact_set, contact_value
+   use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
    use vibrobeam_stepper, only: time_stepper, save_stepper_state, restore_stepper_state
    use vibrobeam_state_record, only: state_record

@@ -6,13 +6,13 @@ module vibrobeam_stepper
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_matvec, band_combination, band_factor
    use vibrobeam_model, only: beam_model
-   use vibrobeam_contact_points, only: contact_set
+   use vibrobeam_contact_set, only: contact_set
    use vibrobeam_contact_solver, only: contact_projector
    use vibrobeam_loads, only: load_set
    use vibrobeam_state_record, only: state_record
    use vibrobeam_compliant_law, only: stop_potential, rule_gradient
    use vibrobeam_compliant_solve, only: compliant_solver
-   use vibrobeam_contact_points, only: contact_value
+   use vibrobeam_contact_set, only: contact_value
    implicit none
    private
    public :: time_stepper, save_stepper_state, restore_stepper_state

@@ -27,7 +27,7 @@ module vibrobeam_velocity_stepper
    use vibrobeam_status, only: stat_not_finite
    use vibrobeam_band, only: band_matvec, band_residual_solve
    use vibrobeam_model, only: beam_model
-   use vibrobeam_contact_points, only: contact_set, contact_value
+   use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
    use vibrobeam_stepper, only: time_stepper, save_stepper_state, restore_stepper_state
    use vibrobeam_state_record, only: state_record

@@ -36,7 +36,7 @@ program benchmark_contact
    use vibrobeam_stepper, only: time_stepper
    use vibrobeam_band, only: band_matvec, band_solve, band_factor, band_cholesky
    use vibrobeam_static, only: solve_static
-   use vibrobeam_contact_points, only: contact_value
+   use vibrobeam_contact_set, only: contact_value
    use vibrobeam_test_support, only: read_test_scene, prepare_test_scene
    implicit none
 

@@ -39,7 +39,8 @@ program benchmark_steps
    use vibrobeam_sorting, only: median
    use vibrobeam_scene, only: scene_type, obstacle_type, validate_scene
    use vibrobeam_model, only: beam_model, build_model
-   use vibrobeam_contact_points, only: contact_set, build_contact_points
+   use vibrobeam_contact_set, only: contact_set
+   use vibrobeam_obstacles, only: build_contact_points
    use vibrobeam_loads, only: load_set, build_loads
    use vibrobeam_initial_state, only: mode_field
    use vibrobeam_static, only: solve_static
@@ -211,7 +212,7 @@ contains
          model, stat, errmsg)
       if (stat /= 0) call fail('build_model', stat, errmsg)
       warnings = ''
-      call build_contact_points(scene, model, contacts, warnings, stat, errmsg)
+      call build_contact_points(scene%obstacles, model, contacts, warnings, stat, errmsg)
       if (stat /= 0) call fail('build_contact_points', stat, errmsg)
       if (len(warnings) > 0) write (error_unit, '(a)', advance='no') warnings
       call build_loads(scene%load, model, scene%beam%rho_s(), loads)

@@ -38,7 +38,7 @@ program test_compliant
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
    use vibrobeam_static, only: solve_static
    use vibrobeam_stepper, only: time_stepper
-   use vibrobeam_contact_points, only: contact_set
+   use vibrobeam_contact_set, only: contact_set
    use vibrobeam_compliant_law, only: stop_potential
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_add, band_factor, band_matvec, band_solve
    use vibrobeam_roundoff_bounds, only: gamma_n, energy_ledger, abs_band_times, hoeffding_lambda, abs_row

@@ -20,7 +20,7 @@ program test_position_records
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
    use vibrobeam_stepper, only: time_stepper
    use vibrobeam_band, only: band_matvec
-   use vibrobeam_contact_points, only: contact_value
+   use vibrobeam_contact_set, only: contact_value
    use vibrobeam_roundoff_bounds, only: energy_ledger, gamma_n, abs_band_times
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
    implicit none

@@ -23,7 +23,7 @@ program test_static
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene
    use vibrobeam_static, only: solve_static
-   use vibrobeam_contact_points, only: contact_value
+   use vibrobeam_contact_set, only: contact_value
    use vibrobeam_roundoff_bounds, only: gamma_n
    use vibrobeam_static_bounds, only: static_error_bounds
    use vibrobeam_band, only: band_cholesky, band_factor, band_solve

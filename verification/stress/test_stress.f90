@@ -46,7 +46,7 @@ program test_stress
    use vibrobeam_stepper, only: time_stepper
    use vibrobeam_velocity_stepper, only: velocity_stepper
    use vibrobeam_band, only: symmetric_band, band_matvec, band_solve
-   use vibrobeam_contact_points, only: contact_set, contact_value, no_bound
+   use vibrobeam_contact_set, only: contact_set, contact_value, no_bound
    use vibrobeam_static, only: solve_static
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene, band_abs_times, band_condition, &
                                      dense_lcp_reference, abs_factor_times

@@ -8,7 +8,7 @@ module vibrobeam_convergence_runs
    use vibrobeam_status, only: message_length
    use vibrobeam_scene, only: scene_type, validate_scene
    use vibrobeam_model, only: point_row
-   use vibrobeam_contact_points, only: contact_value
+   use vibrobeam_contact_set, only: contact_value
    use vibrobeam_setup, only: prepared_scene, prepare_scene, start_stepper
    use vibrobeam_velocity_stepper, only: velocity_stepper
    implicit none

@@ -6,7 +6,7 @@ module vibrobeam_static_bounds
    use vibrobeam_kinds, only: dp
    use vibrobeam_lapack, only: dgesv, dgetrf
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_solve, band_factor
-   use vibrobeam_contact_points, only: contact_set
+   use vibrobeam_contact_set, only: contact_set
    use vibrobeam_roundoff_bounds, only: gamma_n, abs_band_times, abs_factor_times
    implicit none
    private

@@ -12,7 +12,7 @@ module vibrobeam_test_support
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_entry, band_factor, band_solve
    use vibrobeam_lapack, only: dpbcon, dpbtrf, dpotrf, dpotrs
    use vibrobeam_band_kernel, only: kernel_bandwidth
-   use vibrobeam_contact_points, only: contact_set, contact_value, no_bound
+   use vibrobeam_contact_set, only: contact_set, contact_value, no_bound
    use vibrobeam_lcp, only: solve_lcp
    implicit none
    private

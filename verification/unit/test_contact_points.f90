@@ -15,7 +15,8 @@ program test_contact_points
    use vibrobeam_kinds, only: dp
    use vibrobeam_scene, only: scene_type, obstacle_type
    use vibrobeam_model, only: beam_model, build_model
-   use vibrobeam_contact_points, only: contact_set, build_contact_points
+   use vibrobeam_contact_set, only: contact_set
+   use vibrobeam_obstacles, only: build_contact_points
    use vibrobeam_test_support, only: test_counter
    implicit none
    type(test_counter) :: t
@@ -66,7 +67,7 @@ contains
       scene%obstacles = [obstacle]
       call build_model('hermite', elements, 1.0_dp, 1.0_dp, 1.0_dp, model, stat, errmsg)
       warnings = ''
-      call build_contact_points(scene, model, contacts, warnings, stat, errmsg)
+      call build_contact_points(scene%obstacles, model, contacts, warnings, stat, errmsg)
       if (stat /= 0) error stop 'build_contact_points failed'
    end function contacts_of
 

@@ -27,7 +27,7 @@ program test_reduction
    use vibrobeam_setup, only: prepared_scene, start_stepper
    use vibrobeam_velocity_stepper, only: velocity_stepper
    use vibrobeam_band, only: band_cholesky, band_factor, band_solve, band_to_dense
-   use vibrobeam_contact_points, only: contact_value
+   use vibrobeam_contact_set, only: contact_value
    use vibrobeam_lapack, only: dsygv, dpotrf, dpotrs
    use vibrobeam_test_support, only: test_counter, prepare_test_scene
    implicit none

@@ -27,7 +27,7 @@ module vibrobeam_sweep_runner
    use vibrobeam_recorder, only: dynamics_recorder
    use vibrobeam_dynamics, only: run_dynamics, run_outcome
    use vibrobeam_state_record, only: state_record
-   use vibrobeam_contact_points, only: contact_value
+   use vibrobeam_contact_set, only: contact_value
    use vibrobeam_statistics, only: statistics_result
    use vibrobeam_statistics_layout, only: group_points, group_beam
    use vibrobeam_signals, only: interrupt_requested
