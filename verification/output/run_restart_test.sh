@@ -10,7 +10,8 @@
 #             naming the group, the variable, the file's value and the scene's, and nothing
 #             written: the model (basis, elements, reduction, length), the time scheme, the
 #             contact points, the compliant stops and their kind; what may change (rigid
-#             obstacle levels, a stop's damping) is accepted
+#             obstacle levels, a stop's damping) is accepted; &initial velocity beside
+#             from_file draws a warning
 #   checksum  a checkpoint with one flipped bit (a real, a running sum, the step count) is
 #             refused with exit status 2 (edit_checkpoint damages it); one without a
 #             checksum (as vibrobeam 0.2.0 wrote them) is continued with a warning
@@ -144,7 +145,9 @@ refused)
   refused 'the output is the file continued' 'is the file that &initial from_file continues' "s/continued.h5/half.h5/"
   refused 'the stops moved onto the beam position' 'outside the changed obstacles there' \
     "s/level_from(1) = -1e-3/level_from(1) = -1e-9/; s/level_from(2) = 1e-3/level_from(2) = 1e-9/"
-  # what may change
+  # what may change; the initial state beside from_file is ignored, with a warning
+  accepted 'the initial velocity given beside from_file' '' \
+    "&initial velocity is ignored: from_file continues the state of its checkpoint"
   accepted 'the rigid stops moved apart' "s/level_from(1) = -1e-3/level_from(1) = -2e-3/; s/level_from(2) = 1e-3/level_from(2) = 2e-3/"
   accepted 'a compliant stop with damping' \
     "s/half.h5/compliant.h5/; s/level_from(1) = -1e-3,/level_from(1) = -1e-3, stiffness(1) = 1e5, damping(1) = 0.5,/"
