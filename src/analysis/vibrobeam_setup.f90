@@ -16,7 +16,7 @@ module vibrobeam_setup
    use vibrobeam_velocity_stepper, only: velocity_stepper
    use vibrobeam_position_stepper, only: position_stepper
    use vibrobeam_state_record, only: state_record
-   use vibrobeam_checkpoint, only: read_checkpoint, check_compatible, check_stops
+   use vibrobeam_checkpoint, only: read_checkpoint, check_compatible
    use vibrobeam_contact_solver, only: contact_method_code
    use vibrobeam_compliant_law, only: rule_code
    use vibrobeam_reduction, only: reduced_basis, build_reduction, reduce_model, reduce_contacts, reduce_loads, &
@@ -153,8 +153,8 @@ contains
       integer :: c
       file = trim(scene%from_file)
       associate (contacts => prepared%contacts)
-         call check_compatible(file, scene, contacts%x, contacts%lower, contacts%upper, same_bounds, stat, errmsg)
-         if (stat == 0) call check_stops(file, scene, stat, errmsg)
+         call check_compatible(file, scene, contacts%x, contacts%lower, contacts%upper, same_bounds, stat, errmsg, &
+                               stops=.true.)
          if (stat /= 0) return
          call read_checkpoint(file, prepared%resume, prepared%resume_time, stat, errmsg, verified)
          if (stat /= 0) then

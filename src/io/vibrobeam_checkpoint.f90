@@ -13,13 +13,13 @@
 !! complete state. The datasets are created once, before the file enters SWMR mode, and
 !! rewritten in place.
 !!
-!! Restart (`read_checkpoint`, `check_compatible`, `check_stops`): `&initial from_file`
+!! Restart (`read_checkpoint`, `check_compatible`): `&initial from_file`
 !! names a result file (published, or the temporary file of a killed run); its checkpoint
 !! is read only when its checksum matches the state (one without a checksum, written by
 !! vibrobeam 0.2.0, is read and reported as not verified). The scene must match the file
 !! in its model (basis, elements, reduction, length, beam data), its time scheme (scheme,
 !! dt, theta, gamma) and its contact points (count and x); a single run's continuation
-!! also in its compliant stops (`check_stops`). Loads, restitution, rigid obstacle levels,
+!! also in its compliant stops. Loads, restitution, rigid obstacle levels,
 !! a stop's damping and outputs may change.
 module vibrobeam_checkpoint
    use vibrobeam_kinds, only: dp, int64
@@ -32,7 +32,7 @@ module vibrobeam_checkpoint
    use vibrobeam_checksum, only: crc64_start, crc64_words, crc64_text, crc64_finish
    implicit none
    private
-   public :: checkpoint_slots, read_checkpoint, check_compatible, check_stops, record_checksum
+   public :: checkpoint_slots, read_checkpoint, check_compatible, record_checksum
 
    !> The checkpoint datasets of an open result file.
    type :: checkpoint_slots
@@ -262,16 +262,26 @@ contains
    end subroutine no_checkpoint
 
    !> Check that `filename`'s run matches `scene` in its model and time scheme
-   !! (`matching`) and has the contact points `contact_x`. stat = 1 with a message naming
+   !! (`matching`) and has the contact points `contact_x`; with `stops` (a run that
+   !! continues the checkpoint, not a sweep that starts from its U and V), also in its
+   !! compliant stops: a stop's force and stored energy are part of the state that a run
+   !! continues (the running sums of the energy balance include them), so every obstacle
+   !! that is compliant in the file or in the scene keeps its kind, side, extent, levels,
+   !! stiffness and exponent; its damping may change, and so may rigid obstacles (their
+   !! levels are checked against the state by the caller). stat = 1 with a message naming
    !! the first mismatch. `same_bounds`: the obstacle bounds at the contact points are
    !! those of the file.
-   subroutine check_compatible(filename, scene, contact_x, lower, upper, same_bounds, stat, errmsg)
+   subroutine check_compatible(filename, scene, contact_x, lower, upper, same_bounds, stat, errmsg, stops)
       character(len=*), intent(in) :: filename
       type(scene_type), intent(in) :: scene
       real(dp), intent(in) :: contact_x(:), lower(:), upper(:)
       logical, intent(out) :: same_bounds
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      logical, intent(in), optional :: stops
+      character(len=*), parameter :: stops_why = '; a compliant stop''s force and stored energy are part of '// &
+         'the checkpoint: each obstacle keeps its kind (rigid or compliant), and a compliant one its side, '// &
+         'extent, levels, stiffness and exponent (its damping may change, rigid obstacles may move)'
       type(h5_reader) :: file
       type(scene_entry), allocatable :: list(:)
       character(len=:), allocatable :: prefix, why
@@ -317,6 +327,10 @@ contains
                           why, stat, errmsg)
          end if
          if (stat /= 0) exit compare
+         if (present(stops)) then
+            if (stops) call compare_stops()
+            if (stat /= 0) exit compare
+         end if
          call file%read_reals('/contact/lower', file_lower, stat, errmsg)
          if (stat == 0) call file%read_reals('/contact/upper', file_upper, stat, errmsg)
          if (stat /= 0) then
@@ -326,48 +340,30 @@ contains
          same_bounds = all(same_bits(file_lower, lower)) .and. all(same_bits(file_upper, upper))
       end block compare
       call file%close()
-   end subroutine check_compatible
-
-   !> Check that the compliant stops of `filename`'s run are those of `scene` (docs/output.md,
-   !! "Checkpoint and restart"): a stop's force and stored energy are part of the state
-   !! that a run continues (the running sums of the energy balance include them), so every
-   !! obstacle that is compliant in the file or in the scene keeps its kind, side, extent,
-   !! levels, stiffness and exponent; its damping may change, and so may rigid obstacles
-   !! (their levels are checked against the state by the caller). stat = 1 with a message
-   !! naming the first mismatch.
-   subroutine check_stops(filename, scene, stat, errmsg)
-      character(len=*), intent(in) :: filename
-      type(scene_type), intent(in) :: scene
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      character(len=*), parameter :: why = '; a compliant stop''s force and stored energy are part of the '// &
-         'checkpoint: each obstacle keeps its kind (rigid or compliant), and a compliant one its side, extent, '// &
-         'levels, stiffness and exponent (its damping may change, rigid obstacles may move)'
-      character(len=*), parameter :: compared(7) = [character(len=10) :: 'side', 'x_from', 'x_to', 'level_from', &
-                                                     'level_to', 'stiffness', 'exponent']
-      type(h5_reader) :: file
-      type(scene_entry), allocatable :: list(:)
-      character(len=:), allocatable :: prefix, item
-      integer(int64) :: file_count
-      real(dp) :: file_stiffness
-      logical :: file_compliant, scene_compliant
-      integer :: i, k, e
-      prefix = '&initial from_file = '''//trim(filename)//''': '
-      call file%open(filename, stat, errmsg)
-      if (stat /= 0) then
-         errmsg = prefix//trim(errmsg)
-         return
-      end if
-      allocate (list, source=scene_entries(scene))
-      compare: block
+   contains
+      !> The compliant stops of the file against the scene's (see above).
+      subroutine compare_stops()
+         character(len=*), parameter :: compared(7) = [character(len=10) :: 'side', 'x_from', 'x_to', &
+                                                        'level_from', 'level_to', 'stiffness', 'exponent']
+         character(len=:), allocatable :: item
+         integer(int64) :: file_count
+         real(dp) :: file_stiffness
+         logical :: file_compliant, scene_compliant
+         integer :: i, k, e
          call file%attr_int64('/', 'obstacles.count', file_count, stat, errmsg)
-         if (stat /= 0) exit compare
+         if (stat /= 0) then
+            errmsg = prefix//trim(errmsg)
+            return
+         end if
          do i = 1, max(int(file_count), size(scene%obstacles))
             item = '('//integer_text(i)//')'
             file_compliant = .false.
             if (i <= file_count) then
                call file%attr_real('/', 'obstacles.stiffness'//item, file_stiffness, stat, errmsg)
-               if (stat /= 0) exit compare
+               if (stat /= 0) then
+                  errmsg = prefix//trim(errmsg)
+                  return
+               end if
                file_compliant = file_stiffness > 0
             end if
             scene_compliant = .false.
@@ -376,22 +372,20 @@ contains
             if (i > file_count .or. i > size(scene%obstacles)) then
                call mismatch(prefix, 'obstacles.count', integer_text(int(file_count)), &
                              integer_text(size(scene%obstacles)), '; obstacle '//integer_text(i)// &
-                             ' is a compliant stop in '//trim(merge('the file  ', 'this scene', i <= file_count))//why, &
-                             stat, errmsg)
-               exit compare
+                             ' is a compliant stop in '//trim(merge('the file  ', 'this scene', i <= file_count))// &
+                             stops_why, stat, errmsg)
+               return
             end if
             do k = 1, size(compared)
                do e = size(list), 1, -1
                   if (list(e)%name == 'obstacles.'//trim(compared(k))//item) exit
                end do
-               call compare_entry(file, list(e), prefix, why, stat, errmsg)
-               if (stat /= 0) exit compare
+               call compare_entry(file, list(e), prefix, stops_why, stat, errmsg)
+               if (stat /= 0) return
             end do
          end do
-      end block compare
-      if (stat /= 0 .and. index(errmsg, prefix) /= 1) errmsg = prefix//trim(errmsg)
-      call file%close()
-   end subroutine check_stops
+      end subroutine compare_stops
+   end subroutine check_compatible
 
    !> Compare the root attribute of `item`'s name in `file` with `item` (reals bitwise).
    !! stat = 1 with the mismatch message (`mismatch`, ending with `why`), or with the
