@@ -4,8 +4,7 @@
 !! create, on a file system that stores files), `&initial from_file` must be a readable
 !! file, and the results of a dynamics run must fit: their estimated size
 !! (`estimate_result_size`) below a hard limit and below the free space of the target file
-!! system. Failures are invalid input (the
-!! program exits 2 and writes nothing).
+!! system. Failures are invalid input (the program exits 2 and writes nothing).
 !!
 !! The run's writer guards the same things at write time; these checks are the ones a
 !! user meets first, before an afternoon of computing.
