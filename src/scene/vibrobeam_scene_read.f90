@@ -21,6 +21,10 @@ module vibrobeam_scene_read
    use vibrobeam_schema_operations, only: schema_reader
    use vibrobeam_sweep_input, only: sweep_input, visit_sweep, max_sweep_values
    use vibrobeam_sweep_settings, only: sweep_settings
+   use vibrobeam_ignored_values, only: ignored_values
+   use vibrobeam_namelist_tokens, only: lowercase
+   use vibrobeam_schema_operations, only: schema_checker
+   use vibrobeam_sweep_input, only: parameter_length
    implicit none
    private
    public :: read_scene, namelist_groups_text
@@ -79,7 +83,21 @@ contains
       ! the default number of modes applies only to kind = 'modes', and never beyond J
       if (scene%analysis%kind == 'modes' .and. .not. reader%scanned%is_given('analysis', 'modes') .and. &
           scene%mesh%elements >= 1) scene%analysis%modes = min(default_modes, scene%mesh%unknowns())
-      if (present(warnings)) call ignored_values(reader%scanned, scene, warnings)
+      if (present(warnings)) call ignored_values(reader%scanned, scene, swept_inputs(), warnings)
+
+   contains
+      !> The inputs the &sweep varies, 'group.variable' without an element index.
+      function swept_inputs() result(names)
+         character(len=parameter_length), allocatable :: names(:)
+         integer :: a, open
+         allocate (names(0))
+         if (.not. present(sweep)) return
+         do a = 1, 2
+            names = [character(len=parameter_length) :: names, lowercase(sweep%axis(a)%parameter)]
+            open = index(names(size(names)), '(')
+            if (open > 0) names(size(names)) = names(size(names))(1:open - 1)
+         end do
+      end function swept_inputs
    end subroutine read_scene
 
    !> '&beam &mesh ... &output': every group a file may hold.
@@ -95,43 +113,6 @@ contains
          text = text//'&'//trim(table(k)%group)
       end do
    end function namelist_groups_text
-
-   !> A warning for each value given that the analysis does not use.
-   subroutine ignored_values(scanned, scene, warnings)
-      type(scanned_file), intent(in) :: scanned
-      type(scene_type), intent(in) :: scene
-      character(len=:), allocatable, intent(inout) :: warnings
-      character(len=*), parameter :: unused_by_modes(6) = [character(len=9) :: 'obstacles', 'impact', 'time', &
-                                                            'initial', 'load', 'solver']
-      character(len=*), parameter :: unused_by_static(3) = [character(len=9) :: 'impact', 'time', 'initial']
-      integer :: k
-      if (scene%analysis%kind /= 'modes' .and. scanned%is_given('analysis', 'modes')) &
-         call add('&analysis modes = '//integer_text(scene%analysis%modes)//' is ignored: kind = '''// &
-                  trim(scene%analysis%kind)//''' computes no natural modes')
-      if (scanned%is_given('beam', 'k2') .and. (scanned%is_given('beam', 'youngs_modulus') .or. &
-          scanned%is_given('beam', 'density') .or. scanned%is_given('beam', 'area') .or. &
-          scanned%is_given('beam', 'inertia'))) &
-         call add('&beam k2 is ignored: youngs_modulus, density, area and inertia are given (k2 = EI/(rho S))')
-      select case (scene%analysis%kind)
-      case ('modes')
-         do k = 1, size(unused_by_modes)
-            if (scanned%group_given(trim(unused_by_modes(k)))) &
-               call add('&'//trim(unused_by_modes(k))//' is ignored: kind = ''modes'' computes the modes of the '// &
-                        'free cantilever')
-         end do
-      case ('static')
-         do k = 1, size(unused_by_static)
-            if (scanned%group_given(trim(unused_by_static(k)))) &
-               call add('&'//trim(unused_by_static(k))//' is ignored: kind = ''static'' solves for the '// &
-                        'equilibrium under the loads at t = 0')
-         end do
-      end select
-   contains
-      subroutine add(line)
-         character(len=*), intent(in) :: line
-         warnings = warnings//line//new_line('a')
-      end subroutine add
-   end subroutine ignored_values
 
    !> &obstacles after reading: nothing may be described beyond `count`; each obstacle
    !! needs side and level_from and takes the defaults that follow other inputs for what
@@ -230,6 +211,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(sweep_input) :: input
+      type(schema_checker) :: checker
       integer :: i
       stat = 0
       errmsg = ''
@@ -239,6 +221,14 @@ contains
       if (reader%stat /= 0) then
          stat = reader%stat
          errmsg = reader%errmsg
+         return
+      end if
+      ! every value of &sweep against its hard range (the values of the parameter are checked
+      ! against the parameter's own range by resolve_sweep)
+      call visit_sweep(input, checker)
+      if (checker%stat /= 0) then
+         stat = checker%stat
+         errmsg = checker%errmsg
          return
       end if
       settings%axis(1)%parameter = input%parameter

@@ -13,12 +13,11 @@
 !! None knows a variable by name: adding a variable to a settings type's `visit` is all it
 !! takes for every one of them to handle it.
 module vibrobeam_schema_operations
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_namelist_tokens, only: lowercase
    use vibrobeam_namelist_values, only: namelist_variable, kind_real, kind_integer, kind_logical, kind_string, &
-      range_text, choices_text, form_null, variable_index
+      choices_text, form_null, variable_index, real_range_problem, integer_range_problem
    use vibrobeam_namelist_scanned, only: scanned_file
    use vibrobeam_schema_visitor, only: schema_visitor, is_unset, unset_integer
    implicit none
@@ -204,6 +203,7 @@ contains
       character(len=*), intent(inout), optional :: text_value, text_values(:)
       logical, intent(inout), optional :: logical_value
       integer :: i
+      character(len=:), allocatable :: problem
       if (self%stat /= 0 .or. row%element < 0) return
       if (row%element == 0 .and. row%extent > 0 .and. .not. (present(real_values) .or. present(text_values))) &
          return   ! only the description of an array of settings with no element
@@ -215,9 +215,8 @@ contains
          end do
       else if (present(integer_value)) then
          if (row%optional .and. integer_value == unset_integer) return
-         if (integer_value < row%lowest_integer .or. integer_value > row%highest_integer) &
-            call fail(label()//' = '//integer_text(integer_value)//' is outside ['// &
-                      integer_text(row%lowest_integer)//', '//integer_text(row%highest_integer)//']')
+         problem = integer_range_problem(row, integer_value)
+         if (len(problem) > 0) call fail(label()//' = '//integer_text(integer_value)//' '//problem)
       else if (present(text_value)) then
          call check_keyword(label(), text_value)
       else if (present(text_values)) then
@@ -251,14 +250,8 @@ contains
       subroutine check_real(name, value)
          character(len=*), intent(in) :: name
          real(dp), intent(in) :: value
-         if (.not. ieee_is_finite(value)) then
-            call fail(name//' = '//real_text(value)//' is not a finite number: allowed '//range_text(row))
-         else if (value < row%lowest .or. value > row%highest) then
-            call fail(name//' = '//real_text(value)//' is outside '//range_text(row))
-         else if (abs(value) > 0 .and. abs(value) < row%smallest_nonzero) then
-            call fail(name//' = '//real_text(value)//' is too small in magnitude: write 0 or a magnitude of at '// &
-                      'least '//real_text(row%smallest_nonzero)//'; allowed '//range_text(row))
-         end if
+         problem = real_range_problem(row, value)
+         if (len(problem) > 0) call fail(name//' = '//real_text(value)//' '//problem)
       end subroutine check_real
 
       !> One of the row's choices (free text is not checked here).
