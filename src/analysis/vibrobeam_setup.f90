@@ -17,7 +17,8 @@ module vibrobeam_setup
    use vibrobeam_velocity_stepper, only: velocity_stepper
    use vibrobeam_position_stepper, only: position_stepper
    use vibrobeam_state_record, only: state_record
-   use vibrobeam_checkpoint, only: read_checkpoint, check_compatible
+   use vibrobeam_checkpoint, only: read_checkpoint
+   use vibrobeam_restart_check, only: check_compatible
    use vibrobeam_contact_solver, only: contact_method_code
    use vibrobeam_compliant_law, only: rule_code
    use vibrobeam_reduction, only: reduced_basis, build_reduction, reduce_model, reduce_contacts, reduce_loads, &

@@ -10,11 +10,7 @@ every module it defines and every `use` of a module of the library, and lists ea
 goes to a later folder. It exits 1 when there is one (or a source file outside the folders,
 or a folder not in the list), 0 otherwise.
 
-usage: check_layering.py SRC [EXCEPTIONS]
-
-EXCEPTIONS, while the architecture moves to this rule, names the uses still allowed against
-it, one "file uses module" per line (# starts a comment); an exception that no longer occurs
-is itself a problem, so the list can only shrink.
+usage: check_layering.py SRC
 """
 import os
 import re
@@ -32,17 +28,10 @@ def strip_comments(text):
 
 
 def main(argv):
-    if len(argv) not in (2, 3):
+    if len(argv) != 2:
         print(__doc__, file=sys.stderr)
         return 2
     src = argv[1]
-    allowed = set()
-    if len(argv) == 3:
-        with open(argv[2], encoding="utf-8") as handle:
-            for line in handle:
-                words = line.split("#", 1)[0].split()
-                if words:
-                    allowed.add((words[0], words[-1].lower()))
     problems = []
     folder_of = {}      # module name -> top folder
     uses = []           # (file, top folder, used module, line number)
@@ -75,12 +64,7 @@ def main(argv):
         if used not in folder_of:
             continue    # an intrinsic or external module (iso_c_binding, hdf5, mpi_f08, omp_lib)
         if ORDER.index(folder_of[used]) > ORDER.index(top):
-            if (relative, used) in allowed:
-                allowed.discard((relative, used))
-                continue
             problems.append(f"{relative}:{line}: uses {used}, which is in {folder_of[used]}/, a later layer than {top}/")
-    for relative, used in sorted(allowed):
-        problems.append(f"{relative} uses {used}: listed as an exception but no longer occurs; remove it from the list")
     if problems:
         print(f"layering: {len(problems)} problem(s); the order is {' < '.join(ORDER)}")
         print("\n".join(problems))

@@ -11,7 +11,8 @@ module vibrobeam_sweep
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, prepare_scene
-   use vibrobeam_checkpoint, only: read_checkpoint, check_compatible
+   use vibrobeam_checkpoint, only: read_checkpoint
+   use vibrobeam_restart_check, only: check_compatible
    use vibrobeam_state_record, only: state_record
    use vibrobeam_statistics_layout, only: statistics_layout
    use vibrobeam_progress, only: progress_meter
