@@ -244,7 +244,8 @@ contains
                self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)* &
                                            (dot_product(rhs, work_vector) - impulse_power)
             end if
-            if (self%contacts%springs%count > 0) call self%compliant_energy(u_new)
+            if (self%contacts%springs%count > 0) &
+               call self%compliant_energy(self%spring_penetrations(u), self%spring_penetrations(u_new))
          end associate
       end subroutine complete
    end subroutine step
@@ -252,7 +253,8 @@ contains
    !> Step 3 with compliant stops: V^{n+1} from Newton's method on
    !! W (V - V_free) = dt sum_j s_j f_j(p_j) H_j^T + H^T P, p_j = s_j (g_j - H_j U^{n+1}),
    !! U^{n+1} = U^n + dt ((1 - theta) V^n + theta V), with the rigid projection of the
-   !! active points inside each iteration. stat 3 when Newton fails (exit 3).
+   !! active points inside each iteration. stat 3 when Newton fails (exit 3), or the
+   !! failure of `check_compliant_work` when the force residual it left is not negligible.
    subroutine compliant_step(self, v_free, signs, offsets, v_new, stat, errmsg)
       class(velocity_stepper), intent(inout) :: self
       real(dp), intent(in) :: v_free(:), signs(:), offsets(:)
@@ -275,6 +277,8 @@ contains
             stat = 3
             return
          end if
+         call self%check_compliant_work(p0, self%compliant%p1, stat, errmsg)
+         if (stat /= 0) return
          self%contact_force = 0
          do j = 1, springs%count
             self%contact_force(springs%point(j)) = self%contact_force(springs%point(j)) + springs%sign(j)* &
