@@ -144,15 +144,16 @@ contains
    subroutine energy_checks()
       type(scene_type) :: scene
       type(prepared_scene) :: prepared
-      real(dp) :: drift(2), bound(2), ratio(2)
-      logical :: engaged(2), rigid_hit(2)
+      real(dp) :: drift(2), bound(2), ratio(2), balance_drift, balance_ratio, numerical
+      logical :: engaged(2), rigid_hit(2), damped
       integer :: r
       character(len=8), parameter :: rules(2) = [character(len=8) :: 'gradient', 'mean']
       scene = read_test_scene(trim(path))
       call prepare_test_scene(scene, prepared)
       do r = 1, 2
          scene%compliant_rule = rules(r)
-         call run(scene, prepared, drift(r), bound(r), ratio(r), engaged(r), rigid_hit(r))
+         call run(scene, prepared, drift(r), bound(r), ratio(r), engaged(r), rigid_hit(r), balance_drift, &
+                  balance_ratio, numerical, damped)
          write (output_unit, '(a,a8,a,es10.3,a,es10.3,a,es10.3)') 'rule ', rules(r), ': max |E^n - E^0| = ', &
             drift(r), ' J, final round-off bound ', bound(r), ' J, largest |E^n - E^0|/bound_n ', ratio(r)
       end do
@@ -162,15 +163,22 @@ contains
       call t%check_true('mean rule: energy not conserved (engagement steps), so the test can fail', ratio(2) > 1)
    end subroutine energy_checks
 
-   subroutine run(scene, prepared, drift, bound, ratio, engaged, rigid_hit)
+   !> One run of `scene`, step by step with its round-off bounds. The energy E (with the
+   !! stops' potential): its largest |E^n - E^0| (J), the final bound and the largest
+   !! |E^n - E^0|/bound_n; the balance B (`full_balance`): the same for |B^n - B^0| (the
+   !! bound adds the rounding of the potential and of D_c where B is formed). Also whether
+   !! every spring was engaged and the rigid stop hit, the final dissipated_numerical and
+   !! whether the contact damping took energy.
+   subroutine run(scene, prepared, drift, bound, ratio, engaged, rigid_hit, balance_drift, balance_ratio, &
+                  numerical, damped)
       type(scene_type), intent(in) :: scene
       type(prepared_scene), intent(in) :: prepared
-      real(dp), intent(out) :: drift, bound, ratio
-      logical, intent(out) :: engaged, rigid_hit
+      real(dp), intent(out) :: drift, bound, ratio, balance_drift, balance_ratio, numerical
+      logical, intent(out) :: engaged, rigid_hit, damped
       class(time_stepper), allocatable :: s
       type(energy_ledger) :: ledger
       real(dp), allocatable :: u0(:), v0(:), p0(:), p1(:)
-      real(dp) :: e0, energy, spring_step, linear, squares, potential_bound
+      real(dp) :: e0, b0, energy, balance, spring_step, linear, squares, potential_bound, ends_bound
       logical, allocatable :: seen(:)
       integer :: n, steps, stat
       character(len=256) :: errmsg
@@ -180,13 +188,17 @@ contains
       associate (springs => s%contacts%springs)
          allocate (seen(springs%count), source=.false.)
          e0 = s%kinetic_energy() + s%elastic_energy() + s%contact_potential()
+         b0 = full_balance(s)
          call ledger%start(s)
          drift = 0
          ratio = 0
+         balance_drift = 0
+         balance_ratio = 0
          linear = 0
          squares = 0
          rigid_hit = .false.
          potential_bound = gamma_n(4)*s%contact_potential()
+         ends_bound = gamma_n(8)*(s%contact_potential() + abs(s%dissipated_contact_damping))
          do n = 1, steps
             u0 = s%u
             v0 = s%v
@@ -207,8 +219,16 @@ contains
             ! drift: the largest |E^n - E^0| over the run; ratio: the largest |E^n - E^0|/bound_n
             drift = max(drift, abs(energy - e0))
             ratio = max(ratio, abs(energy - e0)/bound)
+            ! the balance: the same bound (the ledger's drift covers the beam, the theta-terms
+            ! and the five-term sum at both ends), plus the potential and D_c at both ends
+            balance = full_balance(s)
+            balance_drift = max(balance_drift, abs(balance - b0))
+            balance_ratio = max(balance_ratio, abs(balance - b0)/(bound + ends_bound + &
+                                gamma_n(8)*(s%contact_potential() + abs(s%dissipated_contact_damping))))
          end do
          engaged = all(seen)
+         numerical = s%dissipated_numerical
+         damped = s%dissipated_contact_damping > 0
       end associate
    end subroutine run
 
@@ -260,8 +280,8 @@ contains
       type(prepared_scene) :: prepared
       real(dp), parameter :: thetas(2) = [1.0_dp, 0.75_dp]
       character(len=8), parameter :: rules(2) = [character(len=8) :: 'gradient', 'mean']
-      real(dp) :: drift, ratio, numerical
-      logical :: rigid_hit, damped
+      real(dp) :: drift, ratio, numerical, energy_drift, energy_ratio, bound
+      logical :: rigid_hit, damped, engaged
       integer :: i, r
       character(len=80) :: label
       scene = read_test_scene(trim(path))
@@ -273,7 +293,8 @@ contains
             scene%theta = thetas(i)
             scene%compliant_rule = rules(r)
             call prepare_test_scene(scene, prepared)
-            call run_balance(scene, prepared, drift, ratio, numerical, rigid_hit, damped)
+            call run(scene, prepared, energy_drift, bound, energy_ratio, engaged, rigid_hit, drift, ratio, &
+                     numerical, damped)
             write (output_unit, '(a,f5.2,a,a8,a,es10.3,a,es10.3,a,es10.3,a)') 'theta = ', thetas(i), ', rule ', &
                rules(r), ': max |B^n - B^0| = ', drift, ' J, largest |B^n - B^0|/bound_n ', ratio, &
                ', dissipated_numerical ', numerical, ' J'
@@ -284,56 +305,6 @@ contains
          end do
       end do
    end subroutine balance_checks
-
-   !> One run of `scene`: the largest |B^n - B^0| (J) and |B^n - B^0|/bound_n, the final
-   !! dissipated_numerical, whether the rigid stop was hit and the contact damping took energy.
-   subroutine run_balance(scene, prepared, drift, ratio, numerical, rigid_hit, damped)
-      type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(in) :: prepared
-      real(dp), intent(out) :: drift, ratio, numerical
-      logical, intent(out) :: rigid_hit, damped
-      class(time_stepper), allocatable :: s
-      type(energy_ledger) :: ledger
-      real(dp), allocatable :: u0(:), v0(:), p0(:), p1(:)
-      real(dp) :: b0, balance, spring_step, linear, squares, ends_bound
-      integer :: n, steps, stat
-      character(len=256) :: errmsg
-      call start_time_stepper(scene, prepared, s, stat, errmsg)
-      if (stat /= 0) error stop 'cannot start the stepper'
-      steps = nint(scene%t_end/scene%dt)
-      b0 = full_balance(s)
-      ends_bound = gamma_n(4)*s%contact_potential() + gamma_n(8)*(s%contact_potential() + &
-                   abs(s%dissipated_contact_damping))
-      call ledger%start(s)
-      drift = 0
-      ratio = 0
-      linear = 0
-      squares = 0
-      rigid_hit = .false.
-      do n = 1, steps
-         u0 = s%u
-         v0 = s%v
-         p0 = s%spring_penetrations(u0)
-         call ledger%before_step(s)
-         call s%step(stat, errmsg)
-         if (stat /= 0) error stop 'step failed'
-         call ledger%after_step(s)
-         if (s%active_count > 0) rigid_hit = rigid_hit .or. any(abs(s%impulse(1:s%active_count)) > 0)
-         p1 = s%spring_penetrations(s%u)
-         spring_step = spring_step_bound(s, u0, v0, p0, p1)
-         linear = linear + spring_step
-         squares = squares + spring_step**2
-         balance = full_balance(s)
-         ! the ledger's drift (beam, theta-terms, the five-term sum at both ends), the springs'
-         ! steps combined like the ledger's b_k, and the potential and D_c at both ends
-         ratio = max(ratio, abs(balance - b0)/(ledger%drift() + min(linear, hoeffding_lambda*sqrt(squares)) + &
-                     ends_bound + gamma_n(4)*s%contact_potential() + gamma_n(8)*(s%contact_potential() + &
-                     abs(s%dissipated_contact_damping))))
-         drift = max(drift, abs(balance - b0))
-      end do
-      numerical = s%dissipated_numerical
-      damped = s%dissipated_contact_damping > 0
-   end subroutine run_balance
 
    !> B = E - W + D as /energy/balance forms it (E with the stops' potential, D with the
    !! contact damping).
