@@ -17,9 +17,9 @@ module vibrobeam_dynamics
    use vibrobeam_text, only: real_text
    use vibrobeam_scene, only: scene_type, step_count
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_recorder, only: dynamics_recorder
-   use vibrobeam_results, only: result_files, run_summary
+   use vibrobeam_result_files, only: result_files, run_summary
    use vibrobeam_checkpoint, only: checkpoint_slots
    use vibrobeam_state_record, only: state_record
    use vibrobeam_progress, only: progress_meter

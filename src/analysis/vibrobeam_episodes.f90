@@ -22,7 +22,7 @@
 !! rigid stop's micro-impacts into what a compliant stop shows as one interval of force.
 module vibrobeam_episodes
    use vibrobeam_kinds, only: dp, int64
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_hdf5_series, only: h5_series
    use vibrobeam_state_record, only: state_record

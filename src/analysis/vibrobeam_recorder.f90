@@ -32,7 +32,7 @@ module vibrobeam_recorder
    use vibrobeam_reduction, only: reduced_basis
    use vibrobeam_contact_set, only: contact_value
    use vibrobeam_cantilever_exact, only: cantilever_frequency
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_hdf5_series, only: h5_series, h5_array
    use vibrobeam_state_record, only: state_record

@@ -1,5 +1,5 @@
-!> From a validated scene to everything a run needs (STYLE.md data flow: scene ->
-!! discrete model): the beam model, its contact points, its loads and its initial state.
+!> From a validated scene to everything a run needs (scene -> discrete model in the data
+!! flow of CONTRIBUTING.md, "Architecture"): the beam model, its contact points, its loads and its initial state.
 !! Used by the program and by the verification drivers, so both run the same set-up.
 module vibrobeam_setup
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -13,13 +13,13 @@ module vibrobeam_setup
    use vibrobeam_loads, only: load_set, build_loads
    use vibrobeam_initial_state, only: mode_field, initial_velocity
    use vibrobeam_static, only: solve_static
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_velocity_stepper, only: velocity_stepper
    use vibrobeam_position_stepper, only: position_stepper
    use vibrobeam_state_record, only: state_record
    use vibrobeam_checkpoint, only: read_checkpoint
    use vibrobeam_restart_check, only: check_compatible
-   use vibrobeam_contact_solver, only: contact_method_code
+   use vibrobeam_contact_projector, only: contact_method_code
    use vibrobeam_compliant_law, only: rule_code
    use vibrobeam_reduction, only: reduced_basis, build_reduction, reduce_model, reduce_contacts, reduce_loads, &
                                   reduce_state, default_reduction_frequency

@@ -7,7 +7,7 @@
 !! (`contact_projector%project_admissible`, the machinery of a contact step). Reactions
 !! are the multipliers P_c (N; per unit mass when the beam is given by k2), positive
 !! upwards. With compliant stops (docs/theory.md section 8) the potential gains
-!! sum_j Phi_j(p_j(U)) and Newton's method of `vibrobeam_compliant_solve` finds the
+!! sum_j Phi_j(p_j(U)) and Newton's method of `vibrobeam_compliant_solver` finds the
 !! minimizer (rigid bounds held by the same projection in each iteration's metric); the
 !! reaction of a contact point then adds its springs' forces s_j k_j p_j^a (no damping in
 !! statics).
@@ -15,9 +15,9 @@ module vibrobeam_static
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_factor, band_solve
    use vibrobeam_contact_set, only: contact_set
-   use vibrobeam_contact_solver, only: contact_projector
+   use vibrobeam_contact_projector, only: contact_projector
    use vibrobeam_compliant_law, only: spring_set, rule_mean
-   use vibrobeam_compliant_solve, only: compliant_solver, rigid_admissible
+   use vibrobeam_compliant_solver, only: compliant_solver, rigid_admissible
    implicit none
    private
    public :: solve_static

@@ -8,7 +8,7 @@
 !! no object or attribute can be created; `finish` writes into what exists).
 module vibrobeam_step_observer
    use vibrobeam_kinds, only: dp
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_state_record, only: state_record
    implicit none

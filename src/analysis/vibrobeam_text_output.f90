@@ -6,7 +6,7 @@
 !! Names follow the HDF5 file: results/run.h5 gives results/run_tip.dat, ...
 !! (`text_file_name`). Each file is written under its own temporary name
 !! (`unique_temporary_name`), every write checked, closed and synced; the caller renames
-!! the set (`vibrobeam_results: publish_files`). Line 1 of each file names the run
+!! the set (`vibrobeam_result_files: publish_files`). Line 1 of each file names the run
 !! ('# vibrobeam run <run_id> (<file>.h5)', the /run run_id attribute), line 2 its
 !! columns and units.
 module vibrobeam_text_output

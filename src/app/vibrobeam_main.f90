@@ -19,7 +19,7 @@ program vibrobeam_main
    use vibrobeam_static, only: solve_static
    use vibrobeam_setup, only: prepared_scene, prepare_scene
    use vibrobeam_dynamics, only: run_dynamics, run_outcome
-   use vibrobeam_results, only: result_files, run_summary, publish_files
+   use vibrobeam_result_files, only: result_files, run_summary, publish_files
    use vibrobeam_text_output, only: derived_file, derive_text_files
    use vibrobeam_hdf5_base, only: close_library
    use vibrobeam_progress, only: progress_meter

@@ -7,7 +7,7 @@ module vibrobeam_sweep_check
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_resolution_advice, only: resolution_advice_text, advice_time_step
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, sweep_points, point_scene, point_windows, &
       task_count, max_settle_windows

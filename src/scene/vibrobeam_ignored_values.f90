@@ -12,7 +12,7 @@ module vibrobeam_ignored_values
    use vibrobeam_text, only: integer_text, real_text
    use vibrobeam_scene, only: scene_type, scene_variables
    use vibrobeam_namelist_scanned, only: scanned_file
-   use vibrobeam_namelist_values, only: namelist_variable, variable_index
+   use vibrobeam_namelist_schema, only: namelist_variable, variable_index
    implicit none
    private
    public :: ignored_values

@@ -22,7 +22,7 @@
 module vibrobeam_scene
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
-   use vibrobeam_namelist_values, only: namelist_variable
+   use vibrobeam_namelist_schema, only: namelist_variable
    use vibrobeam_schema_visitor, only: schema_visitor, integer_row, keyword_row, unset, is_unset, keyword_length, &
       path_length
    use vibrobeam_schema_operations, only: schema_table, schema_checker, schema_lister, scene_entry => schema_entry

@@ -16,7 +16,7 @@ module vibrobeam_scene_read
    use vibrobeam_text, only: integer_text
    use vibrobeam_scene, only: scene_type, max_obstacles, max_points, scene_variables, visit_scene
    use vibrobeam_obstacles, only: obstacle_type
-   use vibrobeam_namelist_values, only: namelist_variable
+   use vibrobeam_namelist_schema, only: namelist_variable
    use vibrobeam_namelist_scan, only: scanned_file, scan_namelist_file
    use vibrobeam_schema_operations, only: schema_reader
    use vibrobeam_sweep_input, only: sweep_input, visit_sweep, max_sweep_values

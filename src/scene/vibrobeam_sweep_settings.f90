@@ -23,7 +23,7 @@ module vibrobeam_sweep_settings
    use vibrobeam_sorting, only: sorted
    use vibrobeam_scene, only: scene_type, scene_variables, validate_scene, max_obstacles, max_sweep_values, &
       parameter_length, forcing_of, keyword_length
-   use vibrobeam_namelist_values, only: namelist_variable, kind_real, range_text, variable_index, choices_text
+   use vibrobeam_namelist_schema, only: namelist_variable, kind_real, range_text, variable_index, choices_text
    use vibrobeam_namelist_tokens, only: lowercase
    use vibrobeam_scene_values, only: real_input, set_real_input
    use vibrobeam_model, only: beam_model, build_model

@@ -29,10 +29,10 @@ module vibrobeam_position_stepper
    use vibrobeam_model, only: beam_model
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
-   use vibrobeam_stepper, only: time_stepper, save_stepper_state, restore_stepper_state
+   use vibrobeam_time_stepper, only: time_stepper, save_stepper_state, restore_stepper_state
    use vibrobeam_state_record, only: state_record
    use vibrobeam_compliant_law, only: end_force, stop_potential
-   use vibrobeam_compliant_solve, only: rigid_admissible
+   use vibrobeam_compliant_solver, only: rigid_admissible
    implicit none
    private
    public :: position_stepper

@@ -19,7 +19,7 @@
 !!
 !! Compliant stops (docs/theory.md section 8): their force enters step 3 implicitly, as
 !! dt sum_j s_j f_j H_j^T with f_j the step force of `vibrobeam_compliant_law` at the
-!! penetrations of U^{n+1}; `vibrobeam_compliant_solve` solves the step by Newton's method
+!! penetrations of U^{n+1}; `vibrobeam_compliant_solver` solves the step by Newton's method
 !! with the rigid projection inside each iteration (`compliant_step`).
 module vibrobeam_velocity_stepper
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -29,10 +29,10 @@ module vibrobeam_velocity_stepper
    use vibrobeam_model, only: beam_model
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
-   use vibrobeam_stepper, only: time_stepper, save_stepper_state, restore_stepper_state
+   use vibrobeam_time_stepper, only: time_stepper, save_stepper_state, restore_stepper_state
    use vibrobeam_state_record, only: state_record
    use vibrobeam_compliant_law, only: end_force, stop_potential
-   use vibrobeam_compliant_solve, only: rigid_active
+   use vibrobeam_compliant_solver, only: rigid_active
    implicit none
    private
    public :: velocity_stepper

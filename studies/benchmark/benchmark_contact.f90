@@ -33,7 +33,7 @@ program benchmark_contact
    use vibrobeam_sorting, only: median
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_band, only: band_matvec, band_solve, band_factor, band_cholesky
    use vibrobeam_static, only: solve_static
    use vibrobeam_contact_set, only: contact_value
@@ -387,7 +387,7 @@ contains
 
    !> solve_static, with the pivoting limited to 2000 pivots.
    subroutine static_solve(prepared, method, u, reaction, iterations, stat, errmsg)
-      use vibrobeam_contact_solver, only: contact_projector
+      use vibrobeam_contact_projector, only: contact_projector
       type(prepared_scene), intent(in) :: prepared
       character(len=*), intent(in) :: method
       real(dp), intent(out) :: u(:), reaction(:)

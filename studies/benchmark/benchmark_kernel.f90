@@ -32,7 +32,7 @@ program benchmark_kernel
    use vibrobeam_modes, only: compute_modes
    use vibrobeam_scene, only: scene_type, obstacle_type, validate_scene
    use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    implicit none
 
    integer, parameter :: sizes(*) = [40, 200, 400, 2000, 10000, 100000]   !! J

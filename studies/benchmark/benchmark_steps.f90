@@ -45,7 +45,7 @@ program benchmark_steps
    use vibrobeam_initial_state, only: mode_field
    use vibrobeam_static, only: solve_static
    use vibrobeam_velocity_stepper, only: velocity_stepper
-   use vibrobeam_contact_solver, only: regime_band, delassus_limit
+   use vibrobeam_contact_projector, only: regime_band, delassus_limit
    use vibrobeam_band, only: band_solve, band_matvec
    implicit none
 

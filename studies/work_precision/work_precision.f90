@@ -38,7 +38,7 @@ program work_precision
    use vibrobeam_scene, only: scene_type, validate_scene, unset
    use vibrobeam_test_support, only: read_test_scene
    use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_model, only: point_row
    use vibrobeam_cantilever_exact, only: cantilever_frequency, cantilever_mode_shape
    implicit none

@@ -41,7 +41,7 @@ program work_precision_reduced
    use vibrobeam_scene, only: scene_type
    use vibrobeam_test_support, only: read_test_scene, prepare_test_scene
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_model, only: node_row
    use vibrobeam_recorder, only: default_episode_gap
    implicit none

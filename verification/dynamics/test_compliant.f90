@@ -49,7 +49,7 @@ program test_compliant
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
    use vibrobeam_static, only: solve_static
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_contact_set, only: contact_set
    use vibrobeam_compliant_law, only: stop_potential
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_add, band_factor, band_matvec, band_solve

@@ -41,7 +41,7 @@ program test_energy
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_contact_set, only: contact_value, no_bound
    use vibrobeam_roundoff_bounds, only: energy_ledger, stepper_balance
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene

@@ -20,7 +20,7 @@ program test_first_impact
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_contact_set, only: contact_value
    use vibrobeam_cantilever_exact, only: cantilever_frequency
    use vibrobeam_roundoff_bounds, only: gamma_n

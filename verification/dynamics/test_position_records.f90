@@ -18,7 +18,7 @@ program test_position_records
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_band, only: band_matvec
    use vibrobeam_contact_set, only: contact_value
    use vibrobeam_roundoff_bounds, only: energy_ledger, gamma_n, abs_band_times

@@ -6,7 +6,7 @@
 program list_input_variables
    use vibrobeam_kinds, only: output_unit
    use vibrobeam_scene, only: scene_variables
-   use vibrobeam_namelist_values, only: namelist_variable, kind_real, kind_integer, kind_logical
+   use vibrobeam_namelist_schema, only: namelist_variable, kind_real, kind_integer, kind_logical
    implicit none
    type(namelist_variable), allocatable :: table(:)
    integer :: k

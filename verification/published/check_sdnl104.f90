@@ -21,7 +21,7 @@ program check_sdnl104
    use vibrobeam_roundoff_bounds, only: balance_bounds_at, gamma_n
    use vibrobeam_static_bounds, only: static_error_bounds
    use vibrobeam_static, only: solve_static
-   use vibrobeam_contact_solver, only: delassus_limit
+   use vibrobeam_contact_projector, only: delassus_limit
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
    implicit none
    real(dp), parameter :: length = 1, radius = 0.1_dp, young = 1e10_dp, density = 1e6_dp

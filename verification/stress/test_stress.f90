@@ -43,7 +43,7 @@ program test_stress
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_velocity_stepper, only: velocity_stepper
    use vibrobeam_band, only: symmetric_band, band_matvec, band_solve
    use vibrobeam_contact_set, only: contact_set, contact_value, no_bound

@@ -35,8 +35,8 @@ module vibrobeam_roundoff_bounds
    use vibrobeam_kinds, only: dp, error_unit
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_matvec, band_solve
    use vibrobeam_contact_set, only: contact_set, contact_value, no_bound
-   use vibrobeam_contact_solver, only: regime_band
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_contact_projector, only: regime_band
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_velocity_stepper, only: velocity_stepper
    use vibrobeam_position_stepper, only: position_stepper
    use vibrobeam_scene, only: scene_type

@@ -40,7 +40,7 @@ program test_contact_projection
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_allocate, band_add, band_factor, band_entry, &
                              band_matvec, band_solve
    use vibrobeam_contact_set, only: contact_set, contact_value, no_bound
-   use vibrobeam_contact_solver, only: contact_projector
+   use vibrobeam_contact_projector, only: contact_projector
    use vibrobeam_model, only: beam_model, build_model, node_row
    use vibrobeam_test_support, only: test_counter, band_abs_times, band_condition, dense_lcp_reference
    use vibrobeam_lapack, only: dgesv

@@ -12,7 +12,7 @@ program test_input_limits
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp, pi
    use vibrobeam_scene, only: scene_variables
-   use vibrobeam_namelist_values, only: namelist_variable, variable_index
+   use vibrobeam_namelist_schema, only: namelist_variable, variable_index
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_band, only: symmetric_band, band_combination
    use vibrobeam_highest_frequency, only: highest_frequency

@@ -20,7 +20,7 @@ program test_scene_values
    use vibrobeam_scene_values, only: real_input, set_real_input
    use vibrobeam_schema_operations, only: schema_table
    use vibrobeam_sweep_input, only: sweep_input, visit_sweep
-   use vibrobeam_namelist_values, only: kind_real
+   use vibrobeam_namelist_schema, only: kind_real
    use vibrobeam_test_support, only: test_counter
    implicit none
    type(test_counter) :: t

@@ -11,7 +11,7 @@
 !! `vibrobeam_statistics_layout`.
 module vibrobeam_statistics
    use vibrobeam_kinds, only: dp, int64
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_state_record, only: state_record
    use vibrobeam_step_observer, only: step_observer, step_events
    use vibrobeam_batch_blocks, only: block_accumulator, standard_error

@@ -21,7 +21,7 @@ module vibrobeam_sweep_file
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
    use vibrobeam_model, only: beam_model
-   use vibrobeam_results, only: result_files, run_summary
+   use vibrobeam_result_files, only: result_files, run_summary
    use vibrobeam_progress, only: progress_meter
    use vibrobeam_statistics_layout, only: statistics_layout, group_beam, group_energy
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, task_count

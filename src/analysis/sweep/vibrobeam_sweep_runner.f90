@@ -23,7 +23,7 @@ module vibrobeam_sweep_runner
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper
-   use vibrobeam_stepper, only: time_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_recorder, only: dynamics_recorder
    use vibrobeam_dynamics, only: run_dynamics, run_outcome
    use vibrobeam_state_record, only: state_record

@@ -5,7 +5,7 @@
 !!
 !! `h5_writer` writes into a temporary file `<final>.<pid>-<token>.tmp` in the final
 !! file's directory (`vibrobeam_filesystem: unique_temporary_name`); only `commit` (or a
-!! caller that `finish`es the file and renames it itself, src/analysis/vibrobeam_results.f90)
+!! caller that `finish`es the file and renames it itself, src/analysis/vibrobeam_result_files.f90)
 !! publishes it under `<final>`, so a result file under its final name is always complete;
 !! `discard` deletes the temporary file and leaves `<final>` untouched.
 !!

@@ -22,7 +22,7 @@ module vibrobeam_namelist_scan
    use vibrobeam_text, only: integer_text
    use vibrobeam_namelist_tokens, only: token, tokenize, abbreviated, lowercase, t_end, t_word, t_string, &
       t_group, t_dollar, t_slash, t_equals, t_open, t_close, t_comma, t_bad
-   use vibrobeam_namelist_values, only: namelist_variable, scanned_value, form_word, form_string, form_null, &
+   use vibrobeam_namelist_schema, only: namelist_variable, scanned_value, form_word, form_string, form_null, &
       value_problem, allowed_text, element_label, shown_value, integer_value, is_name, first_match, &
       variable_index, group_names
    use vibrobeam_namelist_scanned, only: scanned_file, scanned_item

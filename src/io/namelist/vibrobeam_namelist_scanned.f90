@@ -6,7 +6,7 @@
 module vibrobeam_namelist_scanned
    use vibrobeam_text, only: integer_text
    use vibrobeam_namelist_tokens, only: abbreviated
-   use vibrobeam_namelist_values, only: namelist_variable, scanned_value, form_word, form_string, form_null, &
+   use vibrobeam_namelist_schema, only: namelist_variable, scanned_value, form_word, form_string, form_null, &
       shown_value, variable_index
    implicit none
    private

@@ -16,7 +16,7 @@ module vibrobeam_schema_operations
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_namelist_tokens, only: lowercase
-   use vibrobeam_namelist_values, only: namelist_variable, kind_real, kind_integer, kind_logical, kind_string, &
+   use vibrobeam_namelist_schema, only: namelist_variable, kind_real, kind_integer, kind_logical, kind_string, &
       choices_text, form_null, variable_index, real_range_problem, integer_range_problem
    use vibrobeam_namelist_scanned, only: scanned_file
    use vibrobeam_schema_visitor, only: schema_visitor, is_unset, unset_integer

@@ -22,7 +22,7 @@
 module vibrobeam_schema_visitor
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
-   use vibrobeam_namelist_values, only: namelist_variable, kind_real, kind_integer, kind_logical, kind_string
+   use vibrobeam_namelist_schema, only: namelist_variable, kind_real, kind_integer, kind_logical, kind_string
    implicit none
    private
    public :: schema_visitor, real_row, integer_row, keyword_row, text_row, logical_row

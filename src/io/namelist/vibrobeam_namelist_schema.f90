@@ -7,7 +7,7 @@
 !! Reals are checked on their text: the decimal exponent is computed from the digits
 !! (`real_exponent`), so that 1e400 or 1e-400 is refused without being converted (the
 !! conversion of 1e400 traps under -ffpe-trap=overflow inside the run-time library).
-module vibrobeam_namelist_values
+module vibrobeam_namelist_schema
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
@@ -386,4 +386,4 @@ contains
       allocate (groups(count))
       groups = found(1:count)
    end function group_names
-end module vibrobeam_namelist_values
+end module vibrobeam_namelist_schema

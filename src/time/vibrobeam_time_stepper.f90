@@ -1,18 +1,18 @@
-!> What every time stepper of vibrobeam holds and offers (STYLE.md: the one-step
+!> What every time stepper of vibrobeam holds and offers (the one-step
 !! integrator, separate from the system and from the contact solver). The velocity-based
 !! scheme (theory §3, `vibrobeam_velocity_stepper`) and the position-based one (theory §4,
 !! `vibrobeam_position_stepper`) extend it; the recorder and the run loop see only this.
-module vibrobeam_stepper
+module vibrobeam_time_stepper
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_status, only: stat_residual_check_failed
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_matvec, band_combination, band_factor
    use vibrobeam_model, only: beam_model
    use vibrobeam_contact_set, only: contact_set
-   use vibrobeam_contact_solver, only: contact_projector
+   use vibrobeam_contact_projector, only: contact_projector
    use vibrobeam_loads, only: load_set
    use vibrobeam_state_record, only: state_record
    use vibrobeam_compliant_law, only: stop_potential, rule_gradient
-   use vibrobeam_compliant_solve, only: compliant_solver
+   use vibrobeam_compliant_solver, only: compliant_solver
    use vibrobeam_contact_set, only: contact_value
    implicit none
    private
@@ -304,4 +304,4 @@ contains
       real(dp) :: y(size(x)), z(size(x))
       call self%damping_into(x, y, z)
    end function damping_times
-end module vibrobeam_stepper
+end module vibrobeam_time_stepper

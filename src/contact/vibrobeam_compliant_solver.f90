@@ -33,11 +33,11 @@
 !! the rule's force at the accepted penetrations (`law_force`) differ by the remaining
 !! residual: the steppers book its work and stop a run in which it is not negligible
 !! (docs/theory.md section 8, "Accuracy").
-module vibrobeam_compliant_solve
+module vibrobeam_compliant_solver
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_factor, band_solve, band_matvec, band_add
    use vibrobeam_contact_set, only: contact_set, contact_value
-   use vibrobeam_contact_solver, only: contact_projector
+   use vibrobeam_contact_projector, only: contact_projector
    use vibrobeam_compliant_law, only: spring_set, step_force
    implicit none
    private
@@ -235,4 +235,4 @@ contains
          if (contacts%dofs(i, c) /= 0) r(contacts%dofs(i, c)) = r(contacts%dofs(i, c)) + w*contacts%weights(i, c)
       end do
    end subroutine add_row
-end module vibrobeam_compliant_solve
+end module vibrobeam_compliant_solver

@@ -14,7 +14,7 @@
 !! Any failure before the renames deletes every temporary file and leaves what was at the
 !! target untouched. Each .dat file's first line names the run id that /run holds, so a
 !! reader can tell a .dat file of another run.
-module vibrobeam_results
+module vibrobeam_result_files
    use, intrinsic :: iso_c_binding, only: c_long
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_version, only: version_string
@@ -266,4 +266,4 @@ contains
       if (stat == 0) call self%h5%write_real_1d('/static/reaction', reaction, 'N', stat, errmsg)
       if (stat == 0) call self%h5%write_real_1d('/static/contact_x', contact_x, 'm', stat, errmsg)
    end subroutine write_static
-end module vibrobeam_results
+end module vibrobeam_result_files

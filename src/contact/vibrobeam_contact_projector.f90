@@ -24,7 +24,7 @@
 !! State kept between projections (the warm start; a restarted run must restore it to be
 !! bitwise identical): `warm_side`. The cached factors in `system` depend only on the held
 !! set and are recomputed identically when absent, so they need not be saved.
-module vibrobeam_contact_solver
+module vibrobeam_contact_projector
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_cholesky
    use vibrobeam_contact_set, only: contact_set, no_bound
@@ -221,4 +221,4 @@ contains
       self%iterations = report%active_set_iterations + report%interior_iterations
       self%interior_iterations = report%interior_iterations
    end subroutine take_report
-end module vibrobeam_contact_solver
+end module vibrobeam_contact_projector
