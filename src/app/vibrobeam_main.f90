@@ -266,24 +266,28 @@ contains
       call finish(exit_ok)
    end subroutine run_modes
 
+   !> A static analysis. A failed solve (no convergence, or an answer that fails its
+   !! a-posteriori check) publishes its last iterate marked 'failed' with the reason in
+   !! /static, and exits with status 3 (docs/output.md, "Exit status").
    subroutine run_static()
       real(dp), allocatable :: u(:), reaction(:)
       type(result_files) :: files
       type(progress_meter) :: meter
       type(run_summary) :: summary
       type(static_report) :: report
-      integer :: iterations
+      integer :: iterations, solve_stat
+      character(len=message_length) :: solve_message
       logical :: text_skipped
       associate (model => prepared%model, contacts => prepared%contacts, loads => prepared%loads)
       call meter%init(scene%progress)
       allocate (u(model%unknowns), reaction(contacts%count))
-      call solve_static(model, contacts, loads%at(0.0_dp), u, reaction, iterations, stat, errmsg, &
+      call solve_static(model, contacts, loads%at(0.0_dp), u, reaction, iterations, solve_stat, solve_message, &
                         scene%contact_max_iterations, report)
-      if (stat /= 0) call fail(exit_numerical_failure, errmsg)
+      if (solve_stat /= 0) summary%status = 'failed'
       call files%open(scene, model, stat, errmsg)
       if (stat == 0) call files%write_static(nodal_displacement(model, u), contacts%x, reaction, stat, errmsg)
       if (stat == 0) call files%write_static_accuracy(report%error_estimate, report%error_bound, report%position_bound, &
-                                                      report%iterations, '', stat, errmsg)
+                                                      report%iterations, trim(solve_message), stat, errmsg)
       summary%wall_seconds = meter%elapsed()
       summary%iterations_total = iterations
       summary%iterations_max = iterations
@@ -293,6 +297,13 @@ contains
       if (stat /= 0) then
          call files%discard()
          call fail(exit_other_error, errmsg)
+      end if
+      if (solve_stat /= 0) then
+         write (error_unit, '(a)') 'vibrobeam: static equilibrium failed: '//trim(solve_message)
+         write (error_unit, '(a)') 'vibrobeam: the last iterate, not an equilibrium, written to '//trim(scene%file)// &
+            ' (/run status = ''failed'', the reason in /static failure)'
+         call stop_if_interrupted(text_skipped)
+         call finish(exit_numerical_failure)
       end if
       write (output_unit, '(a,i0,a,es9.2,a)') 'vibrobeam: static equilibrium with ', count(abs(reaction) > 0), &
          ' contact points in contact (displacements to ', report%position_bound, ' m) written to '//trim(scene%file)
