@@ -374,8 +374,8 @@ contains
       real(dp), allocatable :: targets(:), compliance(:), reaction(:), moment(:), moment_error(:), rounding(:), &
                                reaction_error(:), miss(:), correction_z(:), correction_u(:), correction_reaction(:), &
                                line_error(:), zeros(:), unused(:), u_abs(:)
-      real(dp) :: spring_force, slope, missed
-      integer :: c, k, m, n
+      real(dp) :: spring_force, slope, missed, previous_miss
+      integer :: c, k, m, n, step
       logical :: supported(size(included))
       n = flexibility%unknowns
       do c = 1, size(included)
@@ -405,26 +405,37 @@ contains
       call held_equilibrium(flexibility, free_curvature, curvature_error, contacts%node(held), targets, compliance, &
                             state%z, state%u, reaction, moment, moment_error, rounding, reaction_error, stat, errmsg)
       if (stat /= 0) return
-      ! one step of iterative refinement of the positions: the held nodes miss their targets
-      ! by the rounding accumulated along the beam (1e-16 m at N = 1e5 with B-splines,
-      ! smooth), more than the gaps that decide a contact near a touchdown (4e-18 m one node
-      ! before it); the same solve with no load and the misses as targets corrects them to
-      ! the local rounding (1e-19 m). Not the reactions: the misses also hold that local
-      ! rounding, node to node, whose fourth difference over h^3 (EI 16 eps |w|/h^3, 0.4 N
-      ! at N = 1e5 against reactions of 2e-4 N on a floor) would swamp them; they keep the
-      ! accuracy of the first solve
+      ! iterative refinement. Rigid supports only: one step, of the positions: the held
+      ! nodes miss their targets by the rounding accumulated along the beam (1e-16 m at
+      ! N = 1e5 with B-splines, smooth), more than the gaps that decide a contact near a
+      ! touchdown (4e-18 m one node before it); the same solve with no load and the misses as
+      ! targets corrects them to the local rounding (1e-19 m). Not the reactions: the misses
+      ! also hold that local rounding, node to node, whose fourth difference over h^3
+      ! (EI 16 eps |w|/h^3, 0.4 N at N = 1e5 against reactions of 2e-4 N on a floor) would
+      ! swamp them; they keep the accuracy of the first solve. With elastic supports their
+      ! law w = t - c P is part of the equations, and soft springs on short spans make them
+      ! ill-conditioned (a compliant floor: EI c/h^3 >> 1); there the whole solution is
+      ! refined, up to 4 steps while the largest miss falls (each step gains a factor
+      ! eps cond), and a spring's force changes with its miss by at most its stiffness
       allocate (miss(m), correction_z(n), correction_u(n), correction_reaction(m), zeros(n), unused(2*m + 2))
-      do k = 1, m
-         miss(k) = targets(k) - compliance(k)*reaction(k) - contact_value(contacts, held(k), state%u)
-      end do
       zeros = 0
-      ! (the correction's own bounds are second order: those of the first solve stand)
-      call held_equilibrium(flexibility, zeros, zeros, contacts%node(held), miss, compliance, correction_z, correction_u, &
-                            correction_reaction, unused(1:m + 1), unused(m + 2:2*m + 2), unused(1:m), unused(m + 1:2*m), &
-                            stat, errmsg)
-      if (stat /= 0) return
-      state%z = state%z + correction_z
-      state%u = state%u + correction_u
+      previous_miss = huge(1.0_dp)
+      do step = 1, merge(4, 1, any(compliance > 0))
+         do k = 1, m
+            miss(k) = targets(k) - compliance(k)*reaction(k) - contact_value(contacts, held(k), state%u)
+         end do
+         if (m == 0) exit
+         if (.not. maxval(abs(miss)) < previous_miss) exit
+         previous_miss = maxval(abs(miss))
+         ! (the correction's own bounds are second order: those of the first solve stand)
+         call held_equilibrium(flexibility, zeros, zeros, contacts%node(held), miss, compliance, correction_z, &
+                               correction_u, correction_reaction, unused(1:m + 1), unused(m + 2:2*m + 2), unused(1:m), &
+                               unused(m + 1:2*m), stat, errmsg)
+         if (stat /= 0) return
+         state%z = state%z + correction_z
+         state%u = state%u + correction_u
+         if (any(compliance > 0)) reaction = reaction + correction_reaction
+      end do
       state%reaction = 0
       state%rounding = 0
       state%reaction_bound = 0
@@ -505,6 +516,10 @@ contains
       real(dp), allocatable :: recomputed(:), bound(:), rounding_bound(:), w(:), w_check(:), w_bound(:)
       real(dp) :: excess, force_c, slope, gap
       integer :: c, worst
+      !> what to do about it: the one known cause is soft springs on many nodes
+      character(len=*), parameter :: advice = '; not trusted. Compliant stops far softer than the beam '// &
+         'between many nodes make the equations ill-conditioned: use fewer elements or stiffer stops '// &
+         '(docs/method.md, "Statics")'
       stat = 0
       errmsg = ''
       report%unknown_bound = state%unknown_bound
@@ -529,7 +544,7 @@ contains
          stat = stat_residual_check_failed
          write (errmsg, '(a,es10.3,a,es10.3,a,es10.3,a)') 'the static answer fails its check: at x = ', &
             model%x(worst), ' m the displacement differs from K^-1 (F + H^T P) by ', abs(w(worst) - w_check(worst)), &
-            ' m, beyond its round-off bound ', w_bound(worst), ' m'
+            ' m, beyond its round-off bound ', w_bound(worst), ' m'//advice
          return
       end if
       do c = 1, contacts%count
@@ -552,7 +567,7 @@ contains
             stat = stat_residual_check_failed
             write (errmsg, '(a,es10.3,a,es10.3,a,es10.3,a)') 'the static answer fails its check: at the contact '// &
                'point x = ', contacts%x(c), ' m the position misses its bound or spring law by ', excess, &
-               ' m, beyond its round-off bound ', state%tolerance(c), ' m'
+               ' m, beyond its round-off bound ', state%tolerance(c), ' m'//advice
             return
          end if
       end do
