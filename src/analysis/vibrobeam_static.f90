@@ -11,7 +11,7 @@
 !! Why not the contact projection of the steppers in the metric K: every solve with K (its
 !! band Cholesky, the held problem K_RR, the Delassus matrix of a floor) loses digits like
 !! cond(K) ~ N^4, and the run answered wrong with status 'ok' (issue 23: the free tip off by
-!! 5.5e-3 at N = 1e4 and by 100 % at N = 1e5, a floor with no contact at N = 1e5). Here
+!! 1.1e-2 at N = 1e4 and by 100 % at N = 1e5, a floor with no contact at N = 1e5). Here
 !! nothing of order J is factored (docs/method.md, "Statics"):
 !! - the free equilibrium K^-1 F by double integration (`vibrobeam_flexibility`);
 !! - every linear solve with a set of held nodes in curvatures, as a three-moment system
@@ -82,6 +82,9 @@ module vibrobeam_static
       real(dp), allocatable :: unknown_bound(:)   !! (J) bound of the error of each unknown
       real(dp) :: reaction_sum_bound = 0          !! bound of the error of the sum of the reactions (N)
       real(dp), allocatable :: u(:), z(:)    !! (J) unknowns and curvature
+      !> the springs of contact point c are spring_index(spring_first(c):spring_first(c+1)-1)
+      !! (so that a point's springs cost their number, not the count of all springs)
+      integer, allocatable :: spring_first(:), spring_index(:)
    end type static_state
 
 contains
@@ -108,6 +111,7 @@ contains
       real(dp), allocatable :: free_curvature(:), curvature_error(:)
       integer :: limit
       iterations = 0
+      u = 0
       reaction = 0
       call flexibility%setup(model, stat, errmsg)
       if (stat /= 0) return
@@ -147,6 +151,7 @@ contains
       allocate (state%position(n), state%tolerance(n), state%reached(n), state%reaction(n), state%rounding(n), &
                 state%reaction_bound(n), source=0.0_dp)
       allocate (state%unknown_bound(flexibility%unknowns), source=0.0_dp)
+      call index_springs(contacts, state)
       allocate (state%released(n), source=.false.)
       allocate (state%releases(n), source=0)
       allocate (state%u(flexibility%unknowns), state%z(flexibility%unknowns))
@@ -262,6 +267,8 @@ contains
       write (errmsg, '(a,i0,a,i0,a)') 'static contact: no equilibrium after ', limit, ' active-set iterations (', c, &
          ' contact points still change side'//trim(merge(', compliant stops not settled', '                             ', &
          .not. springs_settled))//'); raise &solver contact_max_iterations'
+      if (.not. springs_settled) errmsg = trim(errmsg)//', or use fewer elements or stiffer stops (soft springs on '// &
+                                          'many nodes, docs/method.md "Statics")'
    end subroutine settle_level
 
    !> The sides the iterate asks for: a held point whose rigid reaction pulls is freed; a
@@ -281,7 +288,7 @@ contains
       do c = 1, size(included)
          if (.not. included(c)) cycle
          if (state%side(c) /= 0) then
-            if (state%side(c)*rigid_reaction(contacts, c, state%reaction(c), state%position(c)) < 0) side(c) = 0
+            if (state%side(c)*rigid_reaction(contacts, state, c, state%reaction(c), state%position(c)) < 0) side(c) = 0
             cycle
          end if
          margin = state%reached(c)
@@ -296,29 +303,62 @@ contains
 
    !> The rigid bound's share of the reaction P at point c: P minus the springs' forces at
    !! the point's position.
-   pure real(dp) function rigid_reaction(contacts, c, total, position)
+   pure real(dp) function rigid_reaction(contacts, state, c, total, position)
       type(contact_set), intent(in) :: contacts
+      type(static_state), intent(in) :: state
       integer, intent(in) :: c
       real(dp), intent(in) :: total, position
       real(dp) :: force, slope
-      call spring_law(contacts, c, position, force, slope)
+      call spring_law(contacts, state, c, position, force, slope)
       rigid_reaction = total - force
    end function rigid_reaction
 
+   !> The springs of each contact point (state%spring_first, state%spring_index): counted,
+   !! then listed in the order of their points.
+   pure subroutine index_springs(contacts, state)
+      type(contact_set), intent(in) :: contacts
+      type(static_state), intent(inout) :: state
+      integer :: j, c, next(contacts%count)
+      allocate (state%spring_first(contacts%count + 1), source=0)
+      allocate (state%spring_index(contacts%springs%count))
+      do j = 1, contacts%springs%count
+         c = contacts%springs%point(j)
+         state%spring_first(c + 1) = state%spring_first(c + 1) + 1
+      end do
+      state%spring_first(1) = 1
+      do c = 1, contacts%count
+         state%spring_first(c + 1) = state%spring_first(c + 1) + state%spring_first(c)
+      end do
+      next = state%spring_first(1:contacts%count)
+      do j = 1, contacts%springs%count
+         c = contacts%springs%point(j)
+         state%spring_index(next(c)) = j
+         next(c) = next(c) + 1
+      end do
+   end subroutine index_springs
+
+   !> Whether contact point c carries springs.
+   pure logical function has_springs(state, c)
+      type(static_state), intent(in) :: state
+      integer, intent(in) :: c
+      has_springs = state%spring_first(c + 1) > state%spring_first(c)
+   end function has_springs
+
    !> Sum over the springs of point c at displacement w: force sum s_j f_j(p_j) (N, upwards)
    !! and its derivative with respect to -w, sum f_j'(p_j) (N/m), p_j = s_j (g_j - w).
-   pure subroutine spring_law(contacts, c, w, force, slope)
+   pure subroutine spring_law(contacts, state, c, w, force, slope)
       type(contact_set), intent(in) :: contacts
+      type(static_state), intent(in) :: state
       integer, intent(in) :: c
       real(dp), intent(in) :: w
       real(dp), intent(out) :: force, slope
       real(dp) :: p
-      integer :: j
+      integer :: k, j
       force = 0
       slope = 0
       associate (springs => contacts%springs)
-         do j = 1, springs%count
-            if (springs%point(j) /= c) cycle
+         do k = state%spring_first(c), state%spring_first(c + 1) - 1
+            j = state%spring_index(k)
             p = springs%sign(j)*(springs%level(j) - w)
             force = force + springs%sign(j)*elastic_force(springs%stiffness(j), springs%exponent(j), p)
             slope = slope + elastic_slope(springs%stiffness(j), springs%exponent(j), p)
@@ -347,8 +387,8 @@ contains
       largest_move = 0
       do c = 1, size(included)
          if (.not. included(c) .or. state%side(c) /= 0) cycle
-         if (.not. any(contacts%springs%point == c)) cycle
-         call spring_law(contacts, c, state%position(c), force, slope)
+         if (.not. has_springs(state, c)) cycle
+         call spring_law(contacts, state, c, state%position(c), force, slope)
          worst_force = max(worst_force, abs(force - state%reaction(c)))
          largest_force = max(largest_force, abs(force), abs(state%reaction(c)))
          worst_move = max(worst_move, abs(state%position(c) - previous(c)))
@@ -380,8 +420,8 @@ contains
       n = flexibility%unknowns
       do c = 1, size(included)
          supported(c) = included(c) .and. state%side(c) /= 0
-         if (included(c) .and. state%side(c) == 0 .and. any(contacts%springs%point == c)) then
-            call spring_law(contacts, c, state%position(c), spring_force, slope)
+         if (included(c) .and. state%side(c) == 0 .and. has_springs(state, c)) then
+            call spring_law(contacts, state, c, state%position(c), spring_force, slope)
             supported(c) = slope > 0
          end if
       end do
@@ -397,7 +437,7 @@ contains
             targets(k) = contacts%upper(c)
          else
             ! P = F0 + d (w0 - w) = d (t - w): t = w0 + F0/d, compliance 1/d
-            call spring_law(contacts, c, state%position(c), spring_force, slope)
+            call spring_law(contacts, state, c, state%position(c), spring_force, slope)
             targets(k) = state%position(c) + spring_force/slope
             compliance(k) = 1/slope
          end if
@@ -558,7 +598,7 @@ contains
             if (abs(state%reaction(c)) > 0) then
                ! an elastic support: its force on the law, to the law's slope times the
                ! position bound and 1024 eps of the force (Newton's test)
-               call spring_law(contacts, c, state%position(c), force_c, slope)
+               call spring_law(contacts, state, c, state%position(c), force_c, slope)
                gap = abs(force_c - state%reaction(c)) - 1024*epsilon(1.0_dp)*max(abs(force_c), abs(state%reaction(c)))
                if (slope > 0) excess = max(excess, gap/slope)
             end if
