@@ -58,6 +58,7 @@ module vibrobeam_result_files
       procedure :: discard => discard_results
       procedure :: write_modes
       procedure :: write_static
+      procedure :: write_static_accuracy
    end type result_files
 
    interface
@@ -266,4 +267,21 @@ contains
       if (stat == 0) call self%h5%write_real_1d('/static/reaction', reaction, 'N', stat, errmsg)
       if (stat == 0) call self%h5%write_real_1d('/static/contact_x', contact_x, 'm', stat, errmsg)
    end subroutine write_static
+
+   !> The /static attributes of a static solve's accuracy (docs/output.md): the a-posteriori
+   !! error estimate and its bound (m), the bound of the contact points' positions (m), the
+   !! active-set iterations, and `failure` (the reason) when the solve failed.
+   subroutine write_static_accuracy(self, error_estimate, error_bound, position_bound, iterations, failure, stat, errmsg)
+      class(result_files), intent(inout) :: self
+      real(dp), intent(in) :: error_estimate, error_bound, position_bound
+      integer, intent(in) :: iterations
+      character(len=*), intent(in) :: failure   !! '' when the solve succeeded
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      call self%h5%attr_real('/static', 'error_estimate', error_estimate, stat, errmsg)
+      if (stat == 0) call self%h5%attr_real('/static', 'error_bound', error_bound, stat, errmsg)
+      if (stat == 0) call self%h5%attr_real('/static', 'position_bound', position_bound, stat, errmsg)
+      if (stat == 0) call self%h5%attr_int('/static', 'iterations', iterations, stat, errmsg)
+      if (stat == 0 .and. len(failure) > 0) call self%h5%attr_string('/static', 'failure', failure, stat, errmsg)
+   end subroutine write_static_accuracy
 end module vibrobeam_result_files

@@ -217,9 +217,8 @@ contains
             prepared%u0 = mode_field(model, scene%initial%displacement_mode, scene%initial%displacement_amplitude)
          case ('static')
             allocate (reaction(contacts%count))
-            call solve_static(model%stiffness, contacts, prepared%loads%at(0.0_dp), scene%solver%contact_solver, &
-                              prepared%u0, reaction, iterations, stat, errmsg, scene%solver%contact_max_iterations, &
-                              trim(scene%solver%contact_method))
+            call solve_static(model, contacts, prepared%loads%at(0.0_dp), prepared%u0, reaction, iterations, stat, &
+                              errmsg, scene%solver%contact_max_iterations)
             if (stat /= 0) then
                errmsg = '&initial displacement = ''static'': '//trim(errmsg)
                stat = stat_numerical_failure

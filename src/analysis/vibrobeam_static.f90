@@ -1,85 +1,615 @@
-!> Static equilibrium against the obstacles (theory §7 "Static contact", &analysis kind =
-!! 'static' and &initial displacement = 'static'):
+!> Static equilibrium against the obstacles (theory §5 "Statics", &analysis kind = 'static'
+!! and &initial displacement = 'static'):
 !!
-!!     U = argmin 1/2 U^T K U - F^T U   subject to   g1(x_c) <= H_c U <= g2(x_c),
+!!     U = argmin 1/2 U^T K U - F^T U + sum_j Phi_j(p_j(U))   subject to   g1(x_c) <= H_c U <= g2(x_c),
 !!
-!! i.e. the projection of U_free = K^-1 F onto the admissible set in the metric K
-!! (`contact_projector%project_admissible`, the machinery of a contact step). Reactions
-!! are the multipliers P_c (N; per unit mass when the beam is given by k2), positive
-!! upwards. With compliant stops (docs/theory.md section 8) the potential gains
-!! sum_j Phi_j(p_j(U)) and Newton's method of `vibrobeam_compliant_solver` finds the
-!! minimizer (rigid bounds held by the same projection in each iteration's metric); the
-!! reaction of a contact point then adds its springs' forces s_j k_j p_j^a (no damping in
-!! statics).
+!! rigid bounds at the contact points and the potentials Phi_j of the compliant stops
+!! (docs/theory.md section 8; no damping in statics). Reactions are the forces of the
+!! obstacles on the beam at the contact points (N; per unit mass when the beam is given by
+!! k2), positive upwards: a rigid bound's multiplier plus the springs' forces there.
+!!
+!! Why not the contact projection of the steppers in the metric K: every solve with K (its
+!! band Cholesky, the held problem K_RR, the Delassus matrix of a floor) loses digits like
+!! cond(K) ~ N^4, and the run answered wrong with status 'ok' (issue 23: the free tip off by
+!! 1.1e-2 at N = 1e4 and by 100 % at N = 1e5, a floor with no contact at N = 1e5). Here
+!! nothing of order J is factored (docs/method.md, "Statics"):
+!! - the free equilibrium K^-1 F by double integration (`vibrobeam_flexibility`);
+!! - every linear solve with a set of held nodes in curvatures, as a three-moment system
+!!   (`vibrobeam_support_moments`: tridiagonal, condition <= 3; compliant stops linearized
+!!   as elastic supports, pentadiagonal);
+!! - the set by an active-set Newton iteration (a held node whose reaction pulls is freed,
+!!   a free node beyond its bound is held, every compliant stop linearized at the iterate),
+!!   block changes while their number reaches new minima and Murty's least-index single
+!!   change otherwise (Judice & Pires 1994, as in theory §5), started on nested subsets of
+!!   the contact points (every 2^l-th node and the ends of each run of nodes, coarsest
+!!   first), so that each level only moves the ends of the contact zones by a node or two;
+!! - an a-posteriori check (`check_equilibrium`): the held nodes on their bounds, the free
+!!   ones within them and the springs' forces on their laws to the derived round-off bound
+!!   of the positions, and U against K^-1 (F + H^T P) recomputed independently to its
+!!   bound. An answer that fails it is not returned as a solution: stat /= 0, and the
+!!   caller publishes it marked 'failed' (exit status 3).
 module vibrobeam_static
    use vibrobeam_kinds, only: dp
-   use vibrobeam_band, only: symmetric_band, band_cholesky, band_factor, band_solve
-   use vibrobeam_contact_set, only: contact_set
-   use vibrobeam_contact_projector, only: contact_projector
-   use vibrobeam_compliant_law, only: spring_set, rule_mean
-   use vibrobeam_compliant_solver, only: compliant_solver, rigid_admissible
+   use vibrobeam_status, only: stat_no_convergence, stat_residual_check_failed
+   use vibrobeam_model, only: beam_model, nodal_displacement
+   use vibrobeam_flexibility, only: cantilever_flexibility, flexibility_rounding
+   use vibrobeam_support_moments, only: held_equilibrium, add_moment_line
+   use vibrobeam_contact_set, only: contact_set, contact_value, no_bound
+   use vibrobeam_compliant_law, only: elastic_force, elastic_slope
+   use vibrobeam_contact_system, only: scatter_rows
    implicit none
    private
-   public :: solve_static
+   public :: solve_static, static_report
+
+   !> Contact points in the coarsest level of the nested subsets (fewer: one level).
+   integer, parameter :: coarsest_points = 32
+   !> Active-set iterations (held-set solves) allowed per level when `max_iterations` is 0.
+   integer, parameter :: default_level_iterations = 100
+
+   !> What a static solve did and how accurate its answer is (/static attributes).
+   type :: static_report
+      integer :: iterations = 0          !! held-set solves (each O(J))
+      integer :: levels = 0              !! nested subsets of contact points solved
+      real(dp) :: error_estimate = 0     !! max over the nodes |u - (K^-1 (F + H^T P))_node| (m)
+      real(dp) :: error_bound = 0        !! the largest round-off bound it was compared with (m)
+      real(dp) :: position_bound = 0     !! the largest bound of a nodal displacement's round-off (m)
+      real(dp) :: displacement_scale = 0 !! max |u| over the nodes (m)
+      real(dp), allocatable :: unknown_bound(:)   !! (J) derived bound of the round-off of each unknown
+      real(dp), allocatable :: reaction_bound(:)  !! (contact points) derived bound of the round-off of each reaction (N)
+      !> derived bound of the round-off of the sum of the reactions (N): the moments' errors
+      !! telescope in the sum, sum_j P_j = (lambda_0 - lambda_1)/L_1, leaving theirs at the
+      !! first span; each slope (lambda_(j-1) - lambda_j)/L_j is computed once and enters two
+      !! reactions with opposite signs, so of the rounding of forming the P_j only that of
+      !! the first slope (2 eps) and of each final subtraction (eps |P_j|) remains
+      real(dp) :: reaction_sum_bound = 0
+   end type static_report
+
+   !> The iterate of the active-set Newton iteration.
+   type :: static_state
+      integer, allocatable :: side(:)        !! (contact points) +1 lower bound held, -1 upper, 0 not
+      real(dp), allocatable :: position(:)   !! (contact points) H_c U (m)
+      real(dp), allocatable :: tolerance(:)  !! (contact points) round-off bound of the position (m)
+      !> (contact points) the accuracy the positions reach (m): 4 times the largest miss of a
+      !! held point plus 16 eps of the point's scale
+      real(dp), allocatable :: reached(:)
+      !> (contact points) freed in this level because its reaction pulled: held again only
+      !! beyond its bound by more than `reached`
+      logical, allocatable :: released(:)
+      integer, allocatable :: releases(:)    !! (contact points) times freed for pulling in this level
+      real(dp), allocatable :: reaction(:)   !! (contact points) P_c (N), 0 where not supported
+      real(dp), allocatable :: rounding(:)   !! (contact points) bound of the rounding of P_c formed from lambda (N)
+      real(dp), allocatable :: reaction_bound(:)  !! (contact points) bound of the error of P_c (N)
+      real(dp), allocatable :: unknown_bound(:)   !! (J) bound of the error of each unknown
+      real(dp) :: reaction_sum_bound = 0          !! bound of the error of the sum of the reactions (N)
+      real(dp), allocatable :: u(:), z(:)    !! (J) unknowns and curvature
+      !> the springs of contact point c are spring_index(spring_first(c):spring_first(c+1)-1)
+      !! (so that a point's springs cost their number, not the count of all springs)
+      integer, allocatable :: spring_first(:), spring_index(:)
+   end type static_state
 
 contains
 
-   subroutine solve_static(stiffness, contacts, force, contact_regime, u, reaction, iterations, stat, errmsg, &
-                           max_iterations, contact_method)
-      type(symmetric_band), intent(in) :: stiffness
+   !> Solve the static problem of the model under the loads `force` (theory §5 "Statics").
+   !! stat: 0; stat_no_convergence (the active set or the compliant stops did not settle
+   !! within the iterations allowed); stat_residual_check_failed (the answer fails its
+   !! a-posteriori check); stat_linear_solver_failure. On failure u and reaction hold the
+   !! last iterate (published marked 'failed' by the program).
+   subroutine solve_static(model, contacts, force, u, reaction, iterations, stat, errmsg, max_iterations, report)
+      type(beam_model), intent(in) :: model
       type(contact_set), intent(in) :: contacts
       real(dp), intent(in) :: force(:)                 !! F (J)
-      character(len=*), intent(in) :: contact_regime   !! 'auto' | 'delassus' | 'band'
       real(dp), intent(out) :: u(:)                    !! equilibrium (J)
       real(dp), intent(out) :: reaction(:)             !! (contacts%count) P_c, 0 if not in contact
       integer, intent(out) :: iterations, stat
       character(len=*), intent(out) :: errmsg
-      integer, intent(in), optional :: max_iterations  !! pivots allowed per projection (&solver contact_max_iterations; 0: default)
-      character(len=*), intent(in), optional :: contact_method   !! 'newton' (default) | 'pivoting'
-      type(band_cholesky) :: factor
-      type(contact_projector) :: projector
-      real(dp) :: u_free(size(force))
-      type(compliant_solver) :: compliant
-      type(spring_set) :: springs
-      integer :: j
-      integer :: no_points(0)
-      real(dp) :: no_values(0)
+      !> held-set solves allowed per level (&solver contact_max_iterations; 0: the default, 100)
+      integer, intent(in), optional :: max_iterations
+      type(static_report), intent(out), optional :: report
+      type(cantilever_flexibility) :: flexibility
+      type(static_state) :: state
+      type(static_report) :: done
+      real(dp), allocatable :: free_curvature(:), curvature_error(:)
+      integer :: limit
       iterations = 0
+      u = 0
       reaction = 0
-      call band_factor(stiffness, factor, stat, errmsg)
+      call flexibility%setup(model, stat, errmsg)
       if (stat /= 0) return
-      u_free = force
-      call band_solve(factor, u_free)
-      u = u_free
-      if (contacts%count == 0) return
-      if (present(contact_method)) then
-         call projector%setup(stiffness, factor, contacts, contact_regime, contact_method)
-      else
-         call projector%setup(stiffness, factor, contacts, contact_regime)
+      allocate (free_curvature(model%unknowns))
+      call flexibility%curvature_of_loads(force, free_curvature)
+      allocate (curvature_error(model%unknowns))
+      call flexibility%curvature_magnitude(abs(force), curvature_error)
+      curvature_error = flexibility_rounding(model%elements)*curvature_error
+      limit = default_level_iterations
+      if (present(max_iterations)) then
+         if (max_iterations > 0) limit = max_iterations
       end if
-      if (present(max_iterations)) projector%max_iterations = max_iterations
-      if (contacts%springs%count == 0) then
-         call projector%project_admissible(u_free, u, reaction, iterations, stat, errmsg, force)
+      call settle(flexibility, contacts, force, free_curvature, curvature_error, limit, state, done, stat, errmsg)
+      u = state%u
+      reaction = state%reaction
+      iterations = done%iterations
+      if (stat == 0) call check_equilibrium(flexibility, model, contacts, force, state, done, stat, errmsg)
+      if (present(report)) report = done
+   end subroutine solve_static
+
+   !> The active-set Newton iteration on nested subsets of the contact points (module
+   !! documentation), from the free equilibrium.
+   subroutine settle(flexibility, contacts, force, free_curvature, curvature_error, limit, state, report, stat, errmsg)
+      type(cantilever_flexibility), intent(in) :: flexibility
+      type(contact_set), intent(in) :: contacts
+      real(dp), intent(in) :: force(:), free_curvature(:), curvature_error(:)
+      integer, intent(in) :: limit
+      type(static_state), intent(inout) :: state
+      type(static_report), intent(inout) :: report
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer, allocatable :: finest_level(:)
+      integer :: n, level, top, c
+      logical, allocatable :: included(:)
+      n = contacts%count
+      allocate (state%side(n), source=0)
+      allocate (state%position(n), state%tolerance(n), state%reached(n), state%reaction(n), state%rounding(n), &
+                state%reaction_bound(n), source=0.0_dp)
+      allocate (state%unknown_bound(flexibility%unknowns), source=0.0_dp)
+      call index_springs(contacts, state)
+      allocate (state%released(n), source=.false.)
+      allocate (state%releases(n), source=0)
+      allocate (state%u(flexibility%unknowns), state%z(flexibility%unknowns))
+      call solve_supported(flexibility, contacts, force, free_curvature, curvature_error, [(.false., c=1, n)], state, stat, errmsg)
+      if (stat /= 0 .or. n == 0) return
+      ! level of each point: the largest l with node divisible by 2^l; the ends of each run of
+      ! consecutive nodes (a punctual stop is both) belong to every level
+      allocate (finest_level(n))
+      do c = 1, n
+         finest_level(c) = trailz(contacts%node(c))
+         if (c == 1) then
+            finest_level(c) = huge(1)
+         else if (contacts%node(c - 1) /= contacts%node(c) - 1) then
+            finest_level(c) = huge(1)
+         end if
+         if (c == n) then
+            finest_level(c) = huge(1)
+         else if (contacts%node(c + 1) /= contacts%node(c) + 1) then
+            finest_level(c) = huge(1)
+         end if
+      end do
+      top = 0
+      do while (count(finest_level >= top) > coarsest_points .and. top < 30)
+         top = top + 1
+      end do
+      do level = top, 0, -1
+         included = finest_level >= level
+         if (level < top) then
+            if (count(included) == count(finest_level >= level + 1)) cycle
+         end if
+         report%levels = report%levels + 1
+         state%released = .false.
+         state%releases = 0
+         call settle_level(flexibility, contacts, force, free_curvature, curvature_error, included, limit, state, report, &
+                           stat, errmsg)
+         if (stat /= 0) then
+            write (errmsg, '(a,i0,a,i0,a)') trim(errmsg)//' (level ', level, ': ', count(included), ' of the contact points)'
+            return
+         end if
+      end do
+   end subroutine settle
+
+   !> Iterate on the points `included` until no held point pulls, no free point lies beyond
+   !! a bound and every compliant stop's force matches its law at the iterate.
+   subroutine settle_level(flexibility, contacts, force, free_curvature, curvature_error, included, limit, state, report, &
+                           stat, errmsg)
+      type(cantilever_flexibility), intent(in) :: flexibility
+      type(contact_set), intent(in) :: contacts
+      real(dp), intent(in) :: force(:), free_curvature(:), curvature_error(:)
+      logical, intent(in) :: included(:)
+      integer, intent(in) :: limit
+      type(static_state), intent(inout) :: state
+      type(static_report), intent(inout) :: report
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: new_side(size(included)), changes, best, since_best, iteration, c, first, amnesties
+      logical :: springs_settled
+      real(dp), allocatable :: previous(:)
+      allocate (previous, source=state%position)
+      stat = 0
+      errmsg = ''
+      best = huge(1)
+      since_best = 0
+      amnesties = 0
+      do iteration = 1, limit + 1
+         new_side = proposed_sides(contacts, included, state)
+         springs_settled = compliant_settled(contacts, included, state, previous, iteration > 1)
+         changes = count(new_side /= state%side)
+         if (changes == 0 .and. springs_settled .and. amnesties < 2) then
+            ! settled; points freed earlier for pulling may pull no more now that the set
+            ! changed around them (a floor's nodes freed while the touchdown moved): once or
+            ! twice, forget why they were freed and let them be held again if they touch;
+            ! not those freed twice already (a point that pulls when held and touches within
+            ! round-off when free: either answer holds to round-off, and free is final)
+            where (state%releases < 2) state%released = .false.
+            new_side = proposed_sides(contacts, included, state)
+            changes = count(new_side /= state%side)
+            amnesties = amnesties + 1
+            best = huge(1)
+            since_best = 0
+         end if
+         if (changes == 0 .and. springs_settled) return
+         if (iteration > limit) exit
+         ! block changes while their number reaches new minima; after 3 block changes
+         ! without one, Murty's least-index rule (one change) until it does
+         if (changes < best) then
+            best = changes
+            since_best = 0
+         else
+            since_best = since_best + 1
+         end if
+         if (since_best > 3 .and. changes > 0) then
+            first = findloc(new_side /= state%side, .true., dim=1)
+            if (new_side(first) == 0) then
+               state%released(first) = .true.
+               state%releases(first) = state%releases(first) + 1
+            end if
+            state%side(first) = new_side(first)
+         else
+            where (new_side == 0 .and. state%side /= 0)
+               state%released = .true.
+               state%releases = state%releases + 1
+            end where
+            state%side = new_side
+         end if
+         previous = state%position
+         call solve_supported(flexibility, contacts, force, free_curvature, curvature_error, included, state, stat, errmsg)
+         report%iterations = report%iterations + 1
+         if (stat /= 0) return
+      end do
+      stat = stat_no_convergence
+      c = count(new_side /= state%side)
+      write (errmsg, '(a,i0,a,i0,a)') 'static contact: no equilibrium after ', limit, ' active-set iterations (', c, &
+         ' contact points still change side'//trim(merge(', compliant stops not settled', '                             ', &
+         .not. springs_settled))//'); raise &solver contact_max_iterations'
+      if (.not. springs_settled) errmsg = trim(errmsg)//', or use fewer elements or stiffer stops (soft springs on '// &
+                                          'many nodes, docs/method.md "Statics")'
+   end subroutine settle_level
+
+   !> The sides the iterate asks for: a held point whose rigid reaction pulls is freed; a
+   !! free point at or beyond a bound within the accuracy the positions reach is held there
+   !! (its reaction then decides: positions cannot tell a node that touches from one that
+   !! misses by less than their round-off, e.g. the nodes of a floor between held ones at
+   !! N = 1e5 sag by 4e-23 m), unless it was freed for pulling in this level, which is held
+   !! again only when it lies beyond the bound by more than that accuracy.
+   pure function proposed_sides(contacts, included, state) result(side)
+      type(contact_set), intent(in) :: contacts
+      logical, intent(in) :: included(:)
+      type(static_state), intent(in) :: state
+      integer :: side(size(included))
+      integer :: c
+      real(dp) :: margin
+      side = state%side
+      do c = 1, size(included)
+         if (.not. included(c)) cycle
+         if (state%side(c) /= 0) then
+            if (state%side(c)*rigid_reaction(contacts, state, c, state%reaction(c), state%position(c)) < 0) side(c) = 0
+            cycle
+         end if
+         margin = state%reached(c)
+         if (state%released(c)) margin = -state%reached(c)
+         if (contacts%lower(c) > -no_bound .and. state%position(c) < contacts%lower(c) + margin) then
+            side(c) = 1
+         else if (contacts%upper(c) < no_bound .and. state%position(c) > contacts%upper(c) - margin) then
+            side(c) = -1
+         end if
+      end do
+   end function proposed_sides
+
+   !> The rigid bound's share of the reaction P at point c: P minus the springs' forces at
+   !! the point's position.
+   pure real(dp) function rigid_reaction(contacts, state, c, total, position)
+      type(contact_set), intent(in) :: contacts
+      type(static_state), intent(in) :: state
+      integer, intent(in) :: c
+      real(dp), intent(in) :: total, position
+      real(dp) :: force, slope
+      call spring_law(contacts, state, c, position, force, slope)
+      rigid_reaction = total - force
+   end function rigid_reaction
+
+   !> The springs of each contact point (state%spring_first, state%spring_index): counted,
+   !! then listed in the order of their points.
+   pure subroutine index_springs(contacts, state)
+      type(contact_set), intent(in) :: contacts
+      type(static_state), intent(inout) :: state
+      integer :: j, c, next(contacts%count)
+      allocate (state%spring_first(contacts%count + 1), source=0)
+      allocate (state%spring_index(contacts%springs%count))
+      do j = 1, contacts%springs%count
+         c = contacts%springs%point(j)
+         state%spring_first(c + 1) = state%spring_first(c + 1) + 1
+      end do
+      state%spring_first(1) = 1
+      do c = 1, contacts%count
+         state%spring_first(c + 1) = state%spring_first(c + 1) + state%spring_first(c)
+      end do
+      next = state%spring_first(1:contacts%count)
+      do j = 1, contacts%springs%count
+         c = contacts%springs%point(j)
+         state%spring_index(next(c)) = j
+         next(c) = next(c) + 1
+      end do
+   end subroutine index_springs
+
+   !> Whether contact point c carries springs.
+   pure logical function has_springs(state, c)
+      type(static_state), intent(in) :: state
+      integer, intent(in) :: c
+      has_springs = state%spring_first(c + 1) > state%spring_first(c)
+   end function has_springs
+
+   !> Sum over the springs of point c at displacement w: force sum s_j f_j(p_j) (N, upwards)
+   !! and its derivative with respect to -w, sum f_j'(p_j) (N/m), p_j = s_j (g_j - w).
+   pure subroutine spring_law(contacts, state, c, w, force, slope)
+      type(contact_set), intent(in) :: contacts
+      type(static_state), intent(in) :: state
+      integer, intent(in) :: c
+      real(dp), intent(in) :: w
+      real(dp), intent(out) :: force, slope
+      real(dp) :: p
+      integer :: k, j
+      force = 0
+      slope = 0
+      associate (springs => contacts%springs)
+         do k = state%spring_first(c), state%spring_first(c + 1) - 1
+            j = state%spring_index(k)
+            p = springs%sign(j)*(springs%level(j) - w)
+            force = force + springs%sign(j)*elastic_force(springs%stiffness(j), springs%exponent(j), p)
+            slope = slope + elastic_slope(springs%stiffness(j), springs%exponent(j), p)
+         end do
+      end associate
+   end subroutine spring_law
+
+   !> Newton's test for the compliant stops (theory §8, "Solving the step"): at every
+   !! included point with springs and no rigid bound held, the force of the linearization
+   !! (the reaction solved for; 0 at a point not supported) matches the law at the new
+   !! iterate to 1024 eps of the largest force, or (after a Newton step) the positions
+   !! stopped changing (1024 eps of the largest).
+   pure logical function compliant_settled(contacts, included, state, previous, stepped) result(settled)
+      type(contact_set), intent(in) :: contacts
+      logical, intent(in) :: included(:)
+      type(static_state), intent(in) :: state
+      real(dp), intent(in) :: previous(:)
+      logical, intent(in) :: stepped     !! previous is the iterate before the last solve
+      real(dp) :: force, slope, worst_force, largest_force, worst_move, largest_move
+      integer :: c
+      settled = .true.
+      if (contacts%springs%count == 0) return
+      worst_force = 0
+      largest_force = 0
+      worst_move = 0
+      largest_move = 0
+      do c = 1, size(included)
+         if (.not. included(c) .or. state%side(c) /= 0) cycle
+         if (.not. has_springs(state, c)) cycle
+         call spring_law(contacts, state, c, state%position(c), force, slope)
+         worst_force = max(worst_force, abs(force - state%reaction(c)))
+         largest_force = max(largest_force, abs(force), abs(state%reaction(c)))
+         worst_move = max(worst_move, abs(state%position(c) - previous(c)))
+         largest_move = max(largest_move, abs(state%position(c)))
+      end do
+      settled = worst_force <= 1024*epsilon(1.0_dp)*largest_force .or. &
+                (stepped .and. worst_move <= 1024*epsilon(1.0_dp)*largest_move)
+   end function compliant_settled
+
+   !> Solve with the current sides held and the springs of the free included points
+   !! linearized at the current positions (elastic supports); update positions, reactions,
+   !! their round-off bounds and the accuracy the positions reach.
+   subroutine solve_supported(flexibility, contacts, force, free_curvature, curvature_error, included, state, stat, errmsg)
+      type(cantilever_flexibility), intent(in) :: flexibility
+      type(contact_set), intent(in) :: contacts
+      real(dp), intent(in) :: force(:), free_curvature(:)
+      real(dp), intent(in) :: curvature_error(:)   !! bound of the error of free_curvature
+      logical, intent(in) :: included(:)
+      type(static_state), intent(inout) :: state
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer, allocatable :: held(:)
+      real(dp), allocatable :: targets(:), compliance(:), reaction(:), moment(:), moment_error(:), rounding(:), &
+                               reaction_error(:), miss(:), correction_z(:), correction_u(:), correction_reaction(:), &
+                               line_error(:), zeros(:), unused(:), u_abs(:)
+      real(dp) :: spring_force, slope, missed, previous_miss
+      integer :: c, k, m, n, step
+      logical :: supported(size(included))
+      n = flexibility%unknowns
+      do c = 1, size(included)
+         supported(c) = included(c) .and. state%side(c) /= 0
+         if (included(c) .and. state%side(c) == 0 .and. has_springs(state, c)) then
+            call spring_law(contacts, state, c, state%position(c), spring_force, slope)
+            supported(c) = slope > 0
+         end if
+      end do
+      held = pack([(c, c=1, size(included))], supported)
+      m = size(held)
+      allocate (targets(m), compliance(m), reaction(m), moment(0:m), moment_error(0:m), rounding(m), reaction_error(m))
+      do k = 1, m
+         c = held(k)
+         compliance(k) = 0
+         if (state%side(c) > 0) then
+            targets(k) = contacts%lower(c)
+         else if (state%side(c) < 0) then
+            targets(k) = contacts%upper(c)
+         else
+            ! P = F0 + d (w0 - w) = d (t - w): t = w0 + F0/d, compliance 1/d
+            call spring_law(contacts, state, c, state%position(c), spring_force, slope)
+            targets(k) = state%position(c) + spring_force/slope
+            compliance(k) = 1/slope
+         end if
+      end do
+      call held_equilibrium(flexibility, free_curvature, curvature_error, contacts%node(held), targets, compliance, &
+                            state%z, state%u, reaction, moment, moment_error, rounding, reaction_error, stat, errmsg)
+      if (stat /= 0) return
+      ! iterative refinement. Rigid supports only: one step, of the positions: the held
+      ! nodes miss their targets by the rounding accumulated along the beam (1e-16 m at
+      ! N = 1e5 with B-splines, smooth), more than the gaps that decide a contact near a
+      ! touchdown (4e-18 m one node before it); the same solve with no load and the misses as
+      ! targets corrects them to the local rounding (1e-19 m). Not the reactions: the misses
+      ! also hold that local rounding, node to node, whose fourth difference over h^3
+      ! (EI 16 eps |w|/h^3, 0.4 N at N = 1e5 against reactions of 2e-4 N on a floor) would
+      ! swamp them; they keep the accuracy of the first solve. With elastic supports their
+      ! law w = t - c P is part of the equations, and soft springs on short spans make them
+      ! ill-conditioned (a compliant floor: EI c/h^3 >> 1); there the whole solution is
+      ! refined, up to 4 steps while the largest miss falls (each step gains a factor
+      ! eps cond), and a spring's force changes with its miss by at most its stiffness
+      allocate (miss(m), correction_z(n), correction_u(n), correction_reaction(m), zeros(n), unused(2*m + 2))
+      zeros = 0
+      previous_miss = huge(1.0_dp)
+      do step = 1, merge(4, 1, any(compliance > 0))
+         do k = 1, m
+            miss(k) = targets(k) - compliance(k)*reaction(k) - contact_value(contacts, held(k), state%u)
+         end do
+         if (m == 0) exit
+         if (.not. maxval(abs(miss)) < previous_miss) exit
+         previous_miss = maxval(abs(miss))
+         ! (the correction's own bounds are second order: those of the first solve stand)
+         call held_equilibrium(flexibility, zeros, zeros, contacts%node(held), miss, compliance, correction_z, &
+                               correction_u, correction_reaction, unused(1:m + 1), unused(m + 2:2*m + 2), unused(1:m), &
+                               unused(m + 1:2*m), stat, errmsg)
+         if (stat /= 0) return
+         state%z = state%z + correction_z
+         state%u = state%u + correction_u
+         if (any(compliance > 0)) reaction = reaction + correction_reaction
+      end do
+      state%reaction = 0
+      state%rounding = 0
+      state%reaction_bound = 0
+      state%reaction(held) = reaction
+      state%rounding(held) = rounding
+      state%reaction_bound(held) = reaction_error
+      state%reaction_sum_bound = 0
+      if (m > 0) state%reaction_sum_bound = (moment_error(0) + moment_error(min(1, m)) + &
+                                             2*epsilon(1.0_dp)*abs(moment(0) - moment(min(1, m))))/ &
+                                            flexibility%position(contacts%node(held(1))) + &
+                                            epsilon(1.0_dp)*sum(abs(reaction))
+      do c = 1, size(included)
+         state%position(c) = contact_value(contacts, c, state%u)
+      end do
+      ! the unknowns' round-off (module documentation): the flexibility's of F and of the
+      ! reactions (|kappa| <= the curvature magnitude of |F| + |H^T| |P|), and the moment
+      ! line's error integrated (T has non-negative coefficients)
+      call flexibility%magnitude(abs(force) + rows_transpose(contacts, abs(state%reaction), n), state%unknown_bound)
+      allocate (line_error(n), source=0.0_dp)
+      call add_moment_line(flexibility, contacts%node(held), moment_error(0:m - 1)/flexibility%ei, line_error)
+      call flexibility%displacement_of_curvature(line_error, correction_u)
+      state%unknown_bound = flexibility_rounding(flexibility%elements)*state%unknown_bound + correction_u
+      missed = 0
+      do k = 1, m
+         if (compliance(k) > 0) cycle
+         missed = max(missed, abs(state%position(held(k)) - targets(k)))
+      end do
+      ! a point's position bound: its row applied to the unknowns' bound, the rounding of the
+      ! B-spline row weights and of the row product (32 eps |H_c| |U|; the row weights are
+      ! >= 0), and that of the bound (4 eps |g|)
+      u_abs = abs(state%u)
+      do c = 1, size(included)
+         state%tolerance(c) = contact_value(contacts, c, state%unknown_bound) + &
+                              32*epsilon(1.0_dp)*contact_value(contacts, c, u_abs) + &
+                              4*epsilon(1.0_dp)*finite_bound_scale(contacts, c)
+         state%reached(c) = min(4*missed + 16*epsilon(1.0_dp)*max(abs(state%position(c)), finite_bound_scale(contacts, c)), &
+                                state%tolerance(c))
+      end do
+   end subroutine solve_supported
+
+   !> H^T p: the generalized forces of forces p_c at the contact points.
+   pure function rows_transpose(contacts, p, unknowns) result(f)
+      type(contact_set), intent(in) :: contacts
+      real(dp), intent(in) :: p(:)
+      integer, intent(in) :: unknowns   !! J
+      real(dp) :: f(unknowns)
+      integer :: c
+      f = 0
+      call scatter_rows(contacts, [(c, c=1, contacts%count)], p, f)
+   end function rows_transpose
+
+   !> The largest |bound| of point c among its finite ones (0 if none).
+   pure real(dp) function finite_bound_scale(contacts, c)
+      type(contact_set), intent(in) :: contacts
+      integer, intent(in) :: c
+      finite_bound_scale = 0
+      if (contacts%lower(c) > -no_bound) finite_bound_scale = abs(contacts%lower(c))
+      if (contacts%upper(c) < no_bound) finite_bound_scale = max(finite_bound_scale, abs(contacts%upper(c)))
+   end function finite_bound_scale
+
+   !> The a-posteriori check of a static answer (module documentation), and the report of
+   !! its accuracy:
+   !! - the nodal displacements against K^-1 (F + H^T P) computed independently (the loads
+   !!   and the reactions summed from the tip), to the round-off of both computations (each
+   !!   `flexibility_rounding` of the magnitude of |F| + |H^T| |P|) and of forming P from
+   !!   the moments (`rounding`); the moments' own error is common to both and cancels;
+   !! - held points on their bounds, free points within them and elastic supports on their
+   !!   spring law, to the bound of their positions (`tolerance`).
+   subroutine check_equilibrium(flexibility, model, contacts, force, state, report, stat, errmsg)
+      type(cantilever_flexibility), intent(inout) :: flexibility
+      type(beam_model), intent(in) :: model
+      type(contact_set), intent(in) :: contacts
+      real(dp), intent(in) :: force(:)
+      type(static_state), intent(in) :: state
+      type(static_report), intent(inout) :: report
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp), allocatable :: recomputed(:), bound(:), rounding_bound(:), w(:), w_check(:), w_bound(:)
+      real(dp) :: excess, force_c, slope, gap
+      integer :: c, worst
+      !> what to do about it: the one known cause is soft springs on many nodes
+      character(len=*), parameter :: advice = '; not trusted. Compliant stops far softer than the beam '// &
+         'between many nodes make the equations ill-conditioned: use fewer elements or stiffer stops '// &
+         '(docs/method.md, "Statics")'
+      stat = 0
+      errmsg = ''
+      report%unknown_bound = state%unknown_bound
+      report%reaction_bound = state%reaction_bound
+      report%reaction_sum_bound = state%reaction_sum_bound
+      recomputed = force + rows_transpose(contacts, state%reaction, model%unknowns)
+      call flexibility%solve(recomputed)
+      allocate (bound(model%unknowns), rounding_bound(model%unknowns))
+      call flexibility%magnitude(abs(force) + rows_transpose(contacts, abs(state%reaction), model%unknowns), bound)
+      call flexibility%magnitude(rows_transpose(contacts, state%rounding, model%unknowns), rounding_bound)
+      allocate (w(model%elements + 1), w_check(model%elements + 1), w_bound(model%elements + 1))
+      w = nodal_displacement(model, state%u)
+      w_check = nodal_displacement(model, recomputed)
+      w_bound = 2*flexibility_rounding(model%elements)*nodal_displacement(model, bound) + &
+                (1 + flexibility_rounding(model%elements))*nodal_displacement(model, rounding_bound)
+      report%error_estimate = maxval(abs(w - w_check))
+      report%error_bound = maxval(w_bound)
+      report%displacement_scale = maxval(abs(w))
+      report%position_bound = maxval(nodal_displacement(model, state%unknown_bound))
+      worst = maxloc(abs(w - w_check) - w_bound, dim=1)
+      if (abs(w(worst) - w_check(worst)) > w_bound(worst)) then
+         stat = stat_residual_check_failed
+         write (errmsg, '(a,es10.3,a,es10.3,a,es10.3,a)') 'the static answer fails its check: at x = ', &
+            model%x(worst), ' m the displacement differs from K^-1 (F + H^T P) by ', abs(w(worst) - w_check(worst)), &
+            ' m, beyond its round-off bound ', w_bound(worst), ' m'//advice
          return
       end if
-      springs = contacts%springs
-      springs%damping = 0
-      call compliant%setup(springs, rule_mean, contact_regime, projector_method())
-      ! p_j(U) = s_j g_j - s_j H_j U: q = s g, motion and force scales 1; the 'mean' rule with
-      ! theta = 1 takes the force at the end, f(p(U)), with p0 unused
-      call compliant%solve(springs, contacts, stiffness, projector, u_free, springs%sign*springs%level, &
-                           springs%level*0, 1.0_dp, 1.0_dp, 1.0_dp, 1.0_dp, rigid_admissible, no_points, no_values, &
-                           no_values, u, reaction, stat, errmsg)
-      iterations = compliant%iterations
-      if (stat /= 0) return
-      do j = 1, springs%count
-         reaction(springs%point(j)) = reaction(springs%point(j)) + springs%sign(j)*compliant%force(j)
+      do c = 1, contacts%count
+         excess = 0
+         if (state%side(c) > 0) then
+            excess = abs(state%position(c) - contacts%lower(c))
+         else if (state%side(c) < 0) then
+            excess = abs(state%position(c) - contacts%upper(c))
+         else
+            excess = max(contacts%lower(c) - state%position(c), state%position(c) - contacts%upper(c), 0.0_dp)
+            if (abs(state%reaction(c)) > 0) then
+               ! an elastic support: its force on the law, to the law's slope times the
+               ! position bound and 1024 eps of the force (Newton's test)
+               call spring_law(contacts, state, c, state%position(c), force_c, slope)
+               gap = abs(force_c - state%reaction(c)) - 1024*epsilon(1.0_dp)*max(abs(force_c), abs(state%reaction(c)))
+               if (slope > 0) excess = max(excess, gap/slope)
+            end if
+         end if
+         if (excess > state%tolerance(c)) then
+            stat = stat_residual_check_failed
+            write (errmsg, '(a,es10.3,a,es10.3,a,es10.3,a)') 'the static answer fails its check: at the contact '// &
+               'point x = ', contacts%x(c), ' m the position misses its bound or spring law by ', excess, &
+               ' m, beyond its round-off bound ', state%tolerance(c), ' m'//advice
+            return
+         end if
       end do
-   contains
-      function projector_method() result(name)
-         character(len=:), allocatable :: name
-         name = 'newton'
-         if (present(contact_method)) name = contact_method
-      end function projector_method
-   end subroutine solve_static
+   end subroutine check_equilibrium
 end module vibrobeam_static

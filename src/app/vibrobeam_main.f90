@@ -16,7 +16,7 @@ program vibrobeam_main
    use vibrobeam_check_report, only: check_report, make_check_report, check_report_text, scene_warnings
    use vibrobeam_model, only: nodal_displacement
    use vibrobeam_modes, only: compute_modes
-   use vibrobeam_static, only: solve_static
+   use vibrobeam_static, only: solve_static, static_report
    use vibrobeam_setup, only: prepared_scene, prepare_scene
    use vibrobeam_dynamics, only: run_dynamics, run_outcome
    use vibrobeam_result_files, only: result_files, run_summary, publish_files
@@ -266,21 +266,28 @@ contains
       call finish(exit_ok)
    end subroutine run_modes
 
+   !> A static analysis. A failed solve (no convergence, or an answer that fails its
+   !! a-posteriori check) publishes its last iterate marked 'failed' with the reason in
+   !! /static, and exits with status 3 (docs/output.md, "Exit status").
    subroutine run_static()
       real(dp), allocatable :: u(:), reaction(:)
       type(result_files) :: files
       type(progress_meter) :: meter
       type(run_summary) :: summary
-      integer :: iterations
+      type(static_report) :: report
+      integer :: iterations, solve_stat
+      character(len=message_length) :: solve_message
       logical :: text_skipped
       associate (model => prepared%model, contacts => prepared%contacts, loads => prepared%loads)
       call meter%init(scene%output%progress)
       allocate (u(model%unknowns), reaction(contacts%count))
-      call solve_static(model%stiffness, contacts, loads%at(0.0_dp), scene%solver%contact_solver, u, reaction, &
-                        iterations, stat, errmsg, scene%solver%contact_max_iterations, trim(scene%solver%contact_method))
-      if (stat /= 0) call fail(exit_numerical_failure, errmsg)
+      call solve_static(model, contacts, loads%at(0.0_dp), u, reaction, iterations, solve_stat, solve_message, &
+                        scene%solver%contact_max_iterations, report)
+      if (solve_stat /= 0) summary%status = 'failed'
       call files%open(scene, model, stat, errmsg)
       if (stat == 0) call files%write_static(nodal_displacement(model, u), contacts%x, reaction, stat, errmsg)
+      if (stat == 0) call files%write_static_accuracy(report%error_estimate, report%error_bound, report%position_bound, &
+                                                      report%iterations, trim(solve_message), stat, errmsg)
       summary%wall_seconds = meter%elapsed()
       summary%iterations_total = iterations
       summary%iterations_max = iterations
@@ -291,8 +298,15 @@ contains
          call files%discard()
          call fail(exit_other_error, errmsg)
       end if
-      write (output_unit, '(a,i0,a)') 'vibrobeam: static equilibrium with ', count(abs(reaction) > 0), &
-         ' contact points in contact written to '//trim(scene%output%file)
+      if (solve_stat /= 0) then
+         write (error_unit, '(a)') 'vibrobeam: static equilibrium failed: '//trim(solve_message)
+         write (error_unit, '(a)') 'vibrobeam: the last iterate, not an equilibrium, written to '//trim(scene%output%file)// &
+            ' (/run status = ''failed'', the reason in /static failure)'
+         call stop_if_interrupted(text_skipped)
+         call finish(exit_numerical_failure)
+      end if
+      write (output_unit, '(a,i0,a,es9.2,a)') 'vibrobeam: static equilibrium with ', count(abs(reaction) > 0), &
+         ' contact points in contact (displacements to ', report%position_bound, ' m) written to '//trim(scene%output%file)
       call stop_if_interrupted(text_skipped)
       end associate
       call finish(exit_ok)

@@ -21,7 +21,9 @@
 !!    free velocity recomputed from the step's impulses.
 !! C. Statics: the tip lift-off (liftoff_tip_static.nml) for N = 10^3, 10^4, 10^5 and the
 !!    mid-span lift-off (liftoff_static.nml) for N = 10^3, 10^4, with both methods
-!!    (pivoting limited to 2000 pivots).
+!!    (pivoting limited to 2000 pivots): the contact projection in the metric K, the statics
+!!    of vibrobeam before issue 23 (`band_static_solve`; the program now solves statics in
+!!    curvatures, studies/static_cost).
 !! D. The regime threshold: the 'newton' method in the 'delassus' and the 'band' regime
 !!    on the press and the bouncing slap, N = 4 ... 128 (contact points = N), median time
 !!    per step.
@@ -34,8 +36,8 @@ program benchmark_contact
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
    use vibrobeam_time_stepper, only: time_stepper
-   use vibrobeam_band, only: band_matvec, band_solve, band_factor, band_cholesky
-   use vibrobeam_static, only: solve_static
+   use vibrobeam_band, only: band_matvec, band_solve
+   use vibrobeam_band_statics, only: band_static_solve
    use vibrobeam_contact_set, only: contact_value
    use vibrobeam_test_support, only: read_test_scene, prepare_test_scene
    implicit none
@@ -342,7 +344,7 @@ contains
             call prepare_test_scene(scene, prepared)
             allocate (u(prepared%model%unknowns), reaction(prepared%contacts%count))
             call system_clock(start, rate)
-            call static_solve(prepared, methods(method), u, reaction, iterations, stat, errmsg)
+            call band_static_solve(prepared, 'band', methods(method), 2000, u, reaction, iterations, stat, errmsg)
             call system_clock(finish)
             call liftoff_measures(scene, prepared, u, reaction, k == 1, lifted, continuum, deflection_error, largest)
             write (unit, '(a20,i9,2x,a8,2x,a6,f8.2,i12,i19,es18.8,f15.6,f11.6,es18.3,es14.2)') static_scenes(k), &
@@ -384,26 +386,6 @@ contains
          deflection_error = u(n - 1)/(q*b**4/(72*ei)) - 1
       end if
    end subroutine liftoff_measures
-
-   !> solve_static, with the pivoting limited to 2000 pivots.
-   subroutine static_solve(prepared, method, u, reaction, iterations, stat, errmsg)
-      use vibrobeam_contact_projector, only: contact_projector
-      type(prepared_scene), intent(in) :: prepared
-      character(len=*), intent(in) :: method
-      real(dp), intent(out) :: u(:), reaction(:)
-      integer, intent(out) :: iterations, stat
-      character(len=*), intent(out) :: errmsg
-      type(band_cholesky) :: factor
-      type(contact_projector) :: projector
-      real(dp), allocatable :: u_free(:), force(:)
-      force = prepared%loads%at(0.0_dp)
-      call band_factor(prepared%model%stiffness, factor, stat, errmsg)
-      u_free = force
-      call band_solve(factor, u_free)
-      call projector%setup(prepared%model%stiffness, factor, prepared%contacts, 'band', method)
-      projector%max_iterations = 2000
-      call projector%project_admissible(u_free, u, reaction, iterations, stat, errmsg, force)
-   end subroutine static_solve
 
    subroutine part_regimes(unit)
       integer, intent(in) :: unit

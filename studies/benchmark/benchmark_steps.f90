@@ -264,7 +264,7 @@ contains
       if (contacts%count /= elements) call fail('case (b): expected a contact point at every node', contacts%count, '')
       allocate (u0(model%unknowns), reaction(contacts%count))
       allocate (v0(model%unknowns), source=0.0_dp)
-      call solve_static(model%stiffness, contacts, loads%at(0.0_dp), regime, u0, reaction, iterations, stat, errmsg)
+      call solve_static(model, contacts, loads%at(0.0_dp), u0, reaction, iterations, stat, errmsg)
       if (stat /= 0) call fail('case (b): solve_static', stat, errmsg)
       if (count(reaction > 0) /= contacts%count) &
          call fail('case (b): the static equilibrium does not touch the obstacle at every node', &

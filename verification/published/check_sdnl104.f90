@@ -10,8 +10,8 @@
 !!    by step: evaluation of the energies, every step's rounding, the impacts'
 !!    complementarity).
 !! 3. Static: /static/reaction = |F| - 3 EI g/L^3 (exact for Hermite elements) to its
-!!    round-off bound (`static_error_bounds`, the static solve repeated here), plus the
-!!    rounding of the closed form (gamma_8 (|F| + 3 EI g/L^3)).
+!!    derived round-off bound (`static_report`'s reaction_bound, the static solve repeated
+!!    here), plus the rounding of the closed form (gamma_8 (|F| + 3 EI g/L^3)).
 program check_sdnl104
    use vibrobeam_kinds, only: dp, output_unit, pi
    use vibrobeam_hdf5, only: read_real_1d
@@ -19,9 +19,7 @@ program check_sdnl104
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene
    use vibrobeam_roundoff_bounds, only: balance_bounds_at, gamma_n
-   use vibrobeam_static_bounds, only: static_error_bounds
-   use vibrobeam_static, only: solve_static
-   use vibrobeam_contact_projector, only: delassus_limit
+   use vibrobeam_static, only: solve_static, static_report
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
    implicit none
    real(dp), parameter :: length = 1, radius = 0.1_dp, young = 1e10_dp, density = 1e6_dp
@@ -30,9 +28,9 @@ program check_sdnl104
    type(test_counter) :: t
    character(len=512) :: dynamics_file, static_file, dynamics_input, static_input, errmsg
    real(dp), allocatable :: impact_time(:), kinetic(:), elastic(:), work(:), reaction(:), time(:), bounds(:), &
-                            u_static(:), r_static(:), u_error(:), r_error(:)
+                            u_static(:), r_static(:)
    integer :: iterations
-   character(len=16) :: regime
+   type(static_report) :: static_accuracy
    real(dp) :: area, inertia, rho_s, ei, omega(modes), low, high, middle, exact_reaction, drift, ratio
    integer :: stat, k, iteration
    type(scene_type) :: scene
@@ -90,19 +88,14 @@ program check_sdnl104
       exact_reaction, ' N'
    scene = read_test_scene(trim(static_input))
    call prepare_test_scene(scene, prepared)
-   allocate (u_static(prepared%model%unknowns), r_static(prepared%contacts%count), u_error(prepared%model%unknowns), &
-             r_error(prepared%contacts%count))
-   call solve_static(prepared%model%stiffness, prepared%contacts, prepared%loads%at(0.0_dp), scene%solver%contact_solver, &
-                     u_static, r_static, iterations, stat, errmsg)
+   allocate (u_static(prepared%model%unknowns), r_static(prepared%contacts%count))
+   call solve_static(prepared%model, prepared%contacts, prepared%loads%at(0.0_dp), u_static, r_static, iterations, &
+                     stat, errmsg, report=static_accuracy)
    call t%check_true('repeat the static solve for its round-off bound', stat == 0, errmsg)
    if (t%failed > 0) call t%finish('check_sdnl104')
-   regime = scene%solver%contact_solver   ! 'auto' chooses as the projector does
-   if (regime == 'auto') regime = merge('band    ', 'delassus', prepared%contacts%count > delassus_limit)
-   call static_error_bounds(prepared%model%stiffness, prepared%contacts, prepared%loads%at(0.0_dp), u_static, &
-                            r_static, trim(regime), u_error, r_error)
    call t%check_close('static reaction on the rigid stop (N), |error| within its round-off bound', &
                       abs(reaction(1) - exact_reaction), 0.0_dp, 1.0_dp, &
-                      r_error(1) + gamma_n(8)*(abs(force) + 3*ei*gap/length**3))
+                      static_accuracy%reaction_bound(1) + gamma_n(8)*(abs(force) + 3*ei*gap/length**3))
    call t%finish('check_sdnl104')
 contains
    !> Tip displacement of the beam at rest loaded by F at the tip from t = 0 (no contact).

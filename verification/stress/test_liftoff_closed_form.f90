@@ -41,26 +41,23 @@
 !!    element of the continuum a (2b);
 !! 2. no node with a gap above the round-off bound delta_w carries a reaction (exactly 0:
 !!    the active-set finish), and no reaction is negative;
-!! 3. w and R against the discrete reference within the derived round-off bounds:
-!!    the solver's u is refined to a residual at the rounding of K u - F,
-!!    gamma_12 (|K||u| + |F|) per row; the error it leaves is at most that residual
-!!    times the largest response of the lifted segment to a unit nodal force or moment
-!!    (cantilever with a spring root: a^3/(3EI) + a^2/k_c for force -> w, and so on;
-!!    mid-span: the pinned-pinned segment bounds the spring-supported one), summed over
-!!    the rows; a reaction adds |K| times those position bounds;
+!! 3. w and R against the discrete reference within the derived round-off bounds of the
+!!    solver (`static_report`: unknown_bound, reaction_bound; derivation in
+!!    src/model/vibrobeam_support_moments.f90 and src/analysis/vibrobeam_static.f90), plus
+!!    16 eps of the reference's own terms;
 !! 4. tip (centre) deflection against the continuum closed form, after the discrete
 !!    difference th_t a (th_t b/2) derived above, to the round-off bound;
 !! 5. sum of reactions against |q|(L - h/2) - F (the translation rows of K sum to the
-!!    clamp's term -(6 EI/h^2) th_1 alone) to the rounding of those rows and of the sum
-!!    plus (6 EI/h^2) |th_1|, and against the continuum |q| L - F to |q| h/2 + that.
+!!    clamp's term -(6 EI/h^2) th_1 alone) to the solver's bound of the sum, the rounding
+!!    of the sum and (6 EI/h^2) |th_1|, and against the continuum |q| L - F to |q| h/2 + that.
 !!
 !! usage: test_liftoff_closed_form SCENE.nml tip|mid N...
 program test_liftoff_closed_form
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene
-   use vibrobeam_static, only: solve_static
-   use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene, band_abs_times
+   use vibrobeam_static, only: solve_static, static_report
+   use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
    implicit none
 
    type(test_counter) :: t
@@ -179,13 +176,11 @@ contains
    subroutine check_scene(scene)
       type(scene_type), intent(in) :: scene
       type(prepared_scene) :: prepared
-      real(dp), allocatable :: u(:), reaction(:), force(:), u_ref(:), r_ref(:), row_scale(:), bound_u(:), bound_r(:), &
+      real(dp), allocatable :: u(:), reaction(:), force(:), u_ref(:), r_ref(:), bound_u(:), bound_r(:), &
                                trial_u(:), trial_r(:)
-      real(dp) :: h, q, f, ei, a, length, k_c, flex_fw, flex_mw, flex_ft, flex_mt, delta_w, delta_t, theta_t, &
-                  trial_theta, continuum, predicted, deflection, sum_bound, lifted_length
-      integer :: n, j, m, m_ref, stat, iterations, found, lifted, solver_lifted, first_diff, probe, distance, &
-                 touch_nodes(2), window
-      real(dp) :: zone_rows
+      real(dp) :: h, q, f, ei, a, length, delta_w, theta_t, trial_theta, continuum, predicted, deflection, sum_bound
+      integer :: n, j, m, m_ref, stat, iterations, found, lifted, solver_lifted, first_diff, probe, window
+      type(static_report) :: report
       logical :: ok
       character(len=512) :: errmsg
       character(len=200) :: detail, label
@@ -198,9 +193,8 @@ contains
       ei = prepared%model%ei
       if (q <= 0 .or. f <= 0 .or. prepared%contacts%count /= n) error stop 'test_liftoff_closed_form: scene shape'
       force = prepared%loads%at(0.0_dp)
-      allocate (u(2*n), reaction(n), u_ref(2*n), r_ref(n), trial_u(2*n), trial_r(n), row_scale(2*n), bound_r(2*n))
-      call solve_static(prepared%model%stiffness, prepared%contacts, force, 'band', u, reaction, iterations, stat, errmsg, &
-                        contact_method='newton')
+      allocate (u(2*n), reaction(n), u_ref(2*n), r_ref(n), trial_u(2*n), trial_r(n))
+      call solve_static(prepared%model, prepared%contacts, force, u, reaction, iterations, stat, errmsg, report=report)
       write (label, '(a,a,i0)') trim(kind), ' N = ', n
       call t%check_true(trim(label)//': solve_static succeeds', stat == 0, trim(errmsg))
       ! continuum lifted length (tip) or half-width (mid-span)
@@ -224,39 +218,13 @@ contains
       write (detail, '(a,i0)') 'candidates that satisfy the optimality conditions: ', found
       call t%check_true(trim(label)//': exactly one discrete touchdown', found == 1, trim(detail))
       if (found /= 1) return
-      touch_nodes = merge([n - m_ref, n - m_ref], [n/2 - m_ref, n/2 + m_ref], kind == 'tip')
       ! round-off bounds (module comment, item 3)
-      k_c = 2*sqrt(3.0_dp)*ei/h
-      lifted_length = merge(m_ref*h, 2*m_ref*h, kind == 'tip')
-      if (kind == 'tip') then
-         flex_fw = lifted_length**3/(3*ei) + lifted_length**2/k_c
-         flex_mw = lifted_length**2/(2*ei) + lifted_length/k_c
-         flex_ft = flex_mw
-         flex_mt = lifted_length/ei + 1/k_c
-      else   ! pinned-pinned segment of length l
-         flex_fw = lifted_length**3/(48*ei)
-         flex_mw = lifted_length**2/(8*ei)
-         flex_ft = lifted_length**2/(16*ei)
-         flex_mt = lifted_length/(3*ei)
-      end if
-      row_scale = rounding_gamma(12)*(band_abs_times(prepared%model%stiffness, u) + abs(force))
-      delta_w = flex_fw*sum(row_scale(1::2)) + flex_mw*sum(row_scale(2::2))
-      delta_t = flex_ft*sum(row_scale(1::2)) + flex_mt*sum(row_scale(2::2))
-      allocate (bound_u(2*n))
-      bound_u(1::2) = delta_w + 16*epsilon(1.0_dp)*abs(u_ref(1::2))
-      bound_u(2::2) = delta_t + 16*epsilon(1.0_dp)*abs(u_ref(2::2))
-      where (reaction > 0) bound_u(1::2) = 0   ! held points sit exactly on the floor (level 0)
-      ! zone rotations: the chain passes an error at the touchdown on damped by |r| per
-      ! node, and each of its rows adds at most its own rounding over k_c/(1 + |r|)
-      zone_rows = maxval(row_scale(2::2), mask=reaction > 0)
-      do j = 1, n
-         if (.not. abs(reaction(j)) > 0) cycle
-         distance = minval(abs(j - touch_nodes))
-         bound_u(2*j) = delta_t*abs(r)**distance + 2*zone_rows*h/(2*sqrt(3.0_dp)*ei) + &
-                        16*epsilon(1.0_dp)*abs(u_ref(2*j))
-      end do
-      bound_r = row_scale + band_abs_times(prepared%model%stiffness, bound_u)
-      bound_r = bound_r(1::2) + 16*epsilon(1.0_dp)*(q*h + f + 12*ei/h**2*maxval(abs(u_ref(2::2))))
+      ! round-off bounds (module comment, item 3): the solver's derived bounds of each
+      ! unknown and each reaction, plus the reference's own rounding
+      allocate (bound_u(2*n), bound_r(n))
+      bound_u = report%unknown_bound + 16*epsilon(1.0_dp)*abs(u_ref)
+      delta_w = maxval(report%unknown_bound(1::2))
+      bound_r = report%reaction_bound + 16*epsilon(1.0_dp)*(q*h + f + 12*ei/h**2*maxval(abs(u_ref(2::2))))
       ! 1. the lifted set
       lifted = count(.not. abs(r_ref) > 0)
       solver_lifted = count(.not. abs(reaction) > 0)
@@ -311,9 +279,9 @@ contains
       end if
       ! 5. sum of reactions
       ! the translation rows of K sum to the clamp's share of element 1 only (every other
-      ! element's rows sum to 0): sum R = |q|(L - h/2) - F - (6 EI/h^2) th_1 + (the rounding
-      ! of every translation row, the lifted rows' residuals included) + that of the sum
-      sum_bound = rounding_gamma(n)*sum(abs(reaction)) + sum(row_scale(1::2)) + &
+      ! element's rows sum to 0): sum R = |q|(L - h/2) - F - (6 EI/h^2) th_1, to the bound of
+      ! each reaction and the rounding of the sum
+      sum_bound = rounding_gamma(n)*sum(abs(reaction)) + report%reaction_sum_bound + &
                   6*ei/h**2*(abs(u_ref(2)) + bound_u(2))
       write (output_unit, '(a,es22.15,a,es22.15,a,es10.3,a,es10.3)') '  sum of reactions ', sum(reaction), &
          ', discrete |q|(L - h/2) - F = ', q*(length - h/2) - f, ', bound ', sum_bound, '; continuum |q| L - F = ', &

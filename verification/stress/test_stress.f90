@@ -34,8 +34,9 @@
 !!
 !! usage: test_stress SCENE.nml [ELEMENTS]
 !!        test_stress SCENE.nml static N_REFERENCE N_CHECK
-!! The static form compares `solve_static` (method 'newton') with the dense LCP of the
-!! explicitly formed Delassus matrix H K^-1 H^T (dense Cholesky of K, `solve_lcp`) at
+!! The static form compares `solve_static` (in curvatures, docs/method.md "Statics") with
+!! the dense LCP of the explicitly formed Delassus matrix H K^-1 H^T (dense Cholesky of K,
+!! `solve_lcp`) at
 !! N_REFERENCE elements, to 1e-10 and to the derived tolerance 4 (J + m) eps cond(K),
 !! and checks the equilibrium K u - F = H^T R, the signs, bounds and complementarity at
 !! N_CHECK.
@@ -266,7 +267,7 @@ contains
             m = contacts%count
             f = prepared%loads%at(0.0_dp)
             allocate (u(stiffness%n), r(m))
-            call solve_static(stiffness, contacts, f, 'band', u, r, iterations, stat, errmsg, contact_method='newton')
+            call solve_static(prepared%model, contacts, f, u, r, iterations, stat, errmsg)
             call t%check_true('solve_static succeeds', stat == 0, trim(errmsg))
             kappa = band_condition(stiffness)
             ! equilibrium K u - F = H^T R, to the round-off of the products
