@@ -31,7 +31,6 @@ module vibrobeam_recorder
    use vibrobeam_model, only: beam_model, nodal_displacement, point_row, node_row
    use vibrobeam_reduction, only: reduced_basis
    use vibrobeam_contact_set, only: contact_value
-   use vibrobeam_cantilever_exact, only: cantilever_frequency
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_hdf5_series, only: h5_series, h5_array
@@ -130,11 +129,11 @@ module vibrobeam_recorder
 contains
 
    !> The default of &output episode_gap: 0.05 of the period 2 pi/omega_1 of the first mode
-   !! of the clamped-free beam (closed form, `cantilever_frequency`) (s).
-   function default_episode_gap(length, k2) result(gap)
-      real(dp), intent(in) :: length, k2
+   !! of the continuum on the model's supports (closed form, `boundary%natural_frequency`) (s).
+   function default_episode_gap(model) result(gap)
+      type(beam_model), intent(in) :: model
       real(dp) :: gap
-      gap = 0.05_dp*2*acos(-1.0_dp)/cantilever_frequency(1, length, k2)
+      gap = 0.05_dp*2*acos(-1.0_dp)/model%boundary%natural_frequency(1, model%length, model%ei/model%rho_s)
    end function default_episode_gap
 
    !> Set up for a run that ends at step `last_step`. `v0` is the initial velocity of the
@@ -192,7 +191,7 @@ contains
       allocate (self%events%observed(1 + size(self%point_x), 2))
       call self%spectrum%init(self%every*scene%time%dt, last_step/self%every + 1)
       gap = scene%output%episode_gap
-      if (is_unset(gap)) gap = default_episode_gap(model%length, model%ei/model%rho_s)
+      if (is_unset(gap)) gap = default_episode_gap(model)
       call self%episodes%init(stepper%contacts%x, gap, self%write_rows)
       allocate (self%events%closed_point(contacts), self%events%closed_impulse(contacts), self%events%opened(contacts))
       forcing = forcing_of(scene, omega, phase)

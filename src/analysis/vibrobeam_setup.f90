@@ -64,7 +64,8 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       call build_model(scene%mesh%basis, scene%mesh%elements, scene%beam%length, scene%beam%rho_s(), scene%beam%ei(), &
-                       prepared%model, stat, errmsg)
+                       prepared%model, stat, errmsg, &
+                       boundary=scene%beam%boundary)
       if (stat /= 0) return
       call build_contact_points(scene%obstacles, prepared%model, prepared%contacts, warnings, stat, errmsg)
       if (stat /= 0) return

@@ -26,7 +26,6 @@ module vibrobeam_check_report
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type, is_unset
    use vibrobeam_model, only: beam_model
-   use vibrobeam_cantilever_exact, only: cantilever_frequency
    use vibrobeam_highest_frequency, only: highest_frequency
    use vibrobeam_output_target, only: result_size, estimate_result_size
    use vibrobeam_resolution_advice, only: resolution_advice_text
@@ -79,7 +78,7 @@ contains
       character(len=*), intent(out) :: errmsg
       integer :: n
       do n = 1, listed_modes
-         report%omega(n) = cantilever_frequency(n, scene%beam%length, k2_of(scene))
+         report%omega(n) = scene%beam%boundary%natural_frequency(n, scene%beam%length, k2_of(scene))
       end do
       report%unknowns = model%unknowns
       call highest_frequency(model, report%omega_max, stat, errmsg)
@@ -106,7 +105,8 @@ contains
       integer :: n
       real(dp) :: time_scale, beam_stiffness, mass
       logical :: with_advice
-      text = 'natural frequencies of the clamped-free beam (continuum closed form; the obstacles are ignored):'// &
+      text = 'natural frequencies of the '//scene%beam%boundary%name()//' beam (continuum closed form; the '// &
+             'obstacles are ignored):'// &
              new_line('a')
       do n = 1, listed_modes
          text = text//'  mode '//integer_text(n)//': omega = '//g(report%omega(n))//' rad/s, f = '// &
@@ -163,7 +163,7 @@ contains
          if (o%x_to - o%x_from > 1e-9_dp*scene%beam%length/scene%mesh%elements) k = k*(o%x_to - o%x_from)
          ! ei() is k2 = EI/(rho S) when the beam is given by k2: then per unit rho S, like k
          beam_stiffness = 3*scene%beam%ei()/x**3
-         omega1 = cantilever_frequency(1, scene%beam%length, k2_of(scene))
+         omega1 = scene%beam%boundary%natural_frequency(1, scene%beam%length, k2_of(scene))
          effective_mass = beam_stiffness/omega1**2
          time_scale = pi*sqrt(effective_mass/(k + beam_stiffness))
       end associate
@@ -178,7 +178,7 @@ contains
       integer :: i
       text = ''
       if (scene%analysis%kind == 'dynamics') then
-         omega1 = cantilever_frequency(1, scene%beam%length, k2_of(scene))
+         omega1 = scene%beam%boundary%natural_frequency(1, scene%beam%length, k2_of(scene))
          steps = 2*pi/(omega1*scene%time%dt)
          if (steps < steps_per_period_wanted) &
             call add('&time dt = '//real_text(scene%time%dt)//' s gives '//g(steps)//' steps per period of mode 1 '// &
@@ -234,8 +234,9 @@ contains
       if (scene%initial%velocity /= 'zero') call consider(abs(scene%initial%velocity_amplitude), 'the initial velocity '// &
                                                   '(&initial velocity_amplitude)')
       if (scene%initial%displacement == 'mode') &
-         call consider(abs(scene%initial%displacement_amplitude)*cantilever_frequency(scene%initial%displacement_mode, &
-                                                                              scene%beam%length, k2_of(scene)), &
+         call consider(abs(scene%initial%displacement_amplitude)* &
+                       scene%beam%boundary%natural_frequency(scene%initial%displacement_mode, scene%beam%length, &
+                                                             k2_of(scene)), &
                        'a free oscillation of the initial displacement (displacement_amplitude x omega_'// &
                        integer_text(scene%initial%displacement_mode)//')')
       if (abs(scene%load%base_acceleration) > 0) then
@@ -249,7 +250,7 @@ contains
       length = scene%beam%length
       a = scene%load%point_position
       deflection = abs(scene%load%distributed)*length**4/(8*ei) + abs(scene%load%point_force)*a**2*(3*length - a)/(6*ei)
-      call consider(deflection*cantilever_frequency(1, length, k2_of(scene)), &
+      call consider(deflection*scene%beam%boundary%natural_frequency(1, length, k2_of(scene)), &
                     'a free oscillation in mode 1 with the static tip deflection under the loads ('// &
                     g(deflection)//' m) as amplitude (a resonant load moves faster)')
    contains
@@ -275,7 +276,7 @@ contains
       omega_limit = 2*pi/(steps_per_period_wanted*scene%time%dt)
       resolved_modes = 0
       do n = 1, min(listed_modes, scene%mesh%unknowns())
-         if (cantilever_frequency(n, scene%beam%length, k2_of(scene)) > omega_limit) return
+         if (scene%beam%boundary%natural_frequency(n, scene%beam%length, k2_of(scene)) > omega_limit) return
          resolved_modes = n
       end do
       if (resolved_modes < listed_modes) return

@@ -13,7 +13,6 @@ module vibrobeam_resolution_advice
    use vibrobeam_kinds, only: dp, pi
    use vibrobeam_text, only: integer_text
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_cantilever_exact, only: cantilever_frequency
    implicit none
    private
    public :: resolution_advice_text, advice_time_step, elements_converged, steps_per_period_converged
@@ -32,7 +31,7 @@ contains
    !! mode 1 of the clamped-free beam (continuum closed form, theory §7).
    real(dp) function advice_time_step(scene)
       type(scene_type), intent(in) :: scene
-      advice_time_step = 2*pi/(cantilever_frequency(1, scene%beam%length, scene%beam%ei()/scene%beam%rho_s())* &
+      advice_time_step = 2*pi/(scene%beam%boundary%natural_frequency(1, scene%beam%length, scene%beam%ei()/scene%beam%rho_s())* &
                                steps_per_period_converged)
    end function advice_time_step
 

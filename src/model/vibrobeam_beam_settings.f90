@@ -5,6 +5,7 @@ module vibrobeam_beam_settings
    use vibrobeam_kinds, only: dp
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, unset, is_unset, &
       unset_integer, keyword_length
+   use vibrobeam_boundary, only: boundary_conditions
    implicit none
    private
    public :: beam_settings, mesh_settings, visit_beam, visit_mesh
@@ -20,6 +21,7 @@ module vibrobeam_beam_settings
       real(dp) :: inertia = unset             !! I (m^4)
       real(dp) :: rayleigh_mass = 0           !! a in C = a M + b K (1/s)
       real(dp) :: rayleigh_stiffness = 0      !! b in C = a M + b K (s)
+      type(boundary_conditions) :: boundary   !! the supports at the ends (clamped-free)
    contains
       procedure :: physical                   !! given by E, rho, S, I?
       procedure :: rho_s                      !! mass per unit length (kg/m)

@@ -34,6 +34,7 @@
 module vibrobeam_flexibility
    use vibrobeam_kinds, only: dp
    use vibrobeam_lapack, only: dpttrf, dpttrs, poison_failed_solve
+   use vibrobeam_status, only: stat_invalid_argument
    use vibrobeam_model, only: beam_model
    implicit none
    private
@@ -71,15 +72,23 @@ module vibrobeam_flexibility
 
 contains
 
-   !> Prepare K^-1 for the model (clamped at x = 0). stat /= 0 only if G cannot be
-   !! factored (a model with a non-positive element length or EI).
+   !> Prepare K^-1 for the model, which must be clamped at x = 0 and free at x = L (the
+   !! double integration starts at the clamp). stat = stat_invalid_argument for other
+   !! supports; otherwise stat /= 0 only if G cannot be factored (a model with a
+   !! non-positive element length or EI).
    subroutine setup(self, model, stat, errmsg)
       class(cantilever_flexibility), intent(out) :: self
       type(beam_model), intent(in) :: model
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: e, i, m, n
-      self%hermite = model%basis == 'hermite'
+      if (.not. model%boundary%is_clamped_free()) then
+         stat = stat_invalid_argument
+         errmsg = 'the flexibility by double integration is that of the clamped-free beam, not of a '// &
+                  model%boundary%name()//' one'
+         return
+      end if
+      self%hermite = model%hermite
       self%unknowns = model%unknowns
       self%elements = model%elements
       self%h = model%h

@@ -14,7 +14,6 @@
 module vibrobeam_initial_state
    use vibrobeam_kinds, only: dp
    use vibrobeam_model, only: beam_model, interpolate_field
-   use vibrobeam_cantilever_exact, only: cantilever_mode_shape
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, text_row, &
       keyword_length, path_length
    implicit none
@@ -65,8 +64,8 @@ contains
       real(dp) :: value(model%elements), slope(model%elements)
       integer :: i
       do i = 1, model%elements
-         value(i) = cantilever_mode_shape(mode, model%x(i + 1), model%length, 0)
-         slope(i) = cantilever_mode_shape(mode, model%x(i + 1), model%length, 1)
+         value(i) = model%boundary%mode_shape(mode, model%x(i + 1), model%length, 0)
+         slope(i) = model%boundary%mode_shape(mode, model%x(i + 1), model%length, 1)
       end do
       u = amplitude*interpolate_field(model, value, slope)
    end function mode_field
@@ -81,7 +80,7 @@ contains
       case ('mode')
          v = mode_field(model, initial%velocity_mode, initial%velocity_amplitude)
       case ('uniform')
-         if (model%basis == 'bspline') then
+         if (.not. model%hermite) then
             v = initial%velocity_amplitude   ! B-spline coefficients: bounded by them, no overshoot
          else
             v = interpolate_field(model, [(initial%velocity_amplitude, i=1, model%elements)], &

@@ -3,17 +3,20 @@
 !!
 !! Two bases, both with M and K of 3 sub-diagonals kept in LAPACK band storage
 !! (`vibrobeam_band`):
-!! - 'hermite': Hermite cubic elements, unknowns (w_1, theta_1, ..., w_N, theta_N), J = 2N
-!!   (node 0 is clamped and carries no unknown);
+!! - 'hermite': Hermite cubic elements, degrees of freedom (w_0, theta_0, ..., w_N, theta_N);
 !! - 'bspline': cubic B-splines on the open uniform knot vector (`vibrobeam_bspline`),
-!!   unknowns the coefficients c_3..c_{N+3}, J = N + 1 (the clamp u(0) = u_x(0) = 0 sets
-!!   c_1 = c_2 = 0). The displacement at a node is a combination of 3 coefficients.
+!!   degrees of freedom the coefficients c_1..c_{N+3}. The displacement at a node is a
+!!   combination of 3 coefficients.
+!! The supports (`vibrobeam_boundary`) hold some of them; the others are the unknowns, in
+!! order. For the clamped-free beam: (w_1, theta_1, ..., w_N, theta_N), J = 2N, or
+!! c_3..c_{N+3}, J = N + 1 (the clamp u(0) = u_x(0) = 0 sets c_1 = c_2 = 0).
 module vibrobeam_model
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_allocate, band_add
    use vibrobeam_hermite, only: hermite_shape, hermite_element_mass, hermite_element_stiffness
    use vibrobeam_bspline, only: bspline_knots, bspline_shape
    use vibrobeam_lapack, only: dgbsv, poison_failed_solve
+   use vibrobeam_boundary, only: boundary_conditions
    implicit none
    private
    public :: beam_model, build_model, point_row, node_row, nodal_displacement
@@ -41,6 +44,10 @@ module vibrobeam_model
       real(dp), allocatable :: knots(:)      !! B-spline knots (N + 7), B-splines only
       type(symmetric_band) :: mass           !! M, (J x J, 3 sub-diagonals)
       type(symmetric_band) :: stiffness      !! K, (J x J, 3 sub-diagonals)
+      type(boundary_conditions) :: boundary  !! the supports at the ends
+      logical :: hermite = .true.            !! the basis is 'hermite' (else 'bspline')
+      !> unknown of each degree of freedom of the basis (module header), 0 where a support holds it
+      integer, allocatable :: unknown_of(:)
    end type beam_model
 
    abstract interface
@@ -54,8 +61,9 @@ module vibrobeam_model
 
 contains
 
-   !> Assemble the model of a clamped-free beam of N elements of the given basis.
-   subroutine build_model(basis, elements, length, rho_s, ei, model, stat, errmsg)
+   !> Assemble the model of a beam of N elements of the given basis, on the supports
+   !! `boundary` (clamped-free when absent).
+   subroutine build_model(basis, elements, length, rho_s, ei, model, stat, errmsg, boundary)
       character(len=*), intent(in) :: basis  !! 'hermite' | 'bspline'
       integer, intent(in) :: elements        !! N >= 1
       real(dp), intent(in) :: length         !! L > 0 (m)
@@ -64,11 +72,15 @@ contains
       type(beam_model), intent(out) :: model
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      type(boundary_conditions), intent(in), optional :: boundary
       real(dp) :: element_mass(4, 4), element_stiffness(4, 4), n(4), d2n(4), x, w
       integer :: e, a, b, dofs(4), i, g
+      logical, allocatable :: held(:)
+      logical :: expressible
       stat = 0
       errmsg = ''
       model%basis = basis
+      if (present(boundary)) model%boundary = boundary
       model%elements = elements
       model%length = length
       model%h = length/elements
@@ -77,19 +89,32 @@ contains
       model%x = [(length*i/elements, i=0, elements)]
       select case (basis)
       case ('hermite')
-         model%unknowns = 2*elements
+         model%hermite = .true.
       case ('bspline')
-         model%unknowns = elements + 1
+         model%hermite = .false.
          model%knots = bspline_knots(elements, length)
       case default
          stat = 1
          errmsg = 'basis '''//trim(basis)//''' is not available'
          return
       end select
+      call model%boundary%basis_dof_held(model%hermite, elements, held, expressible)
+      if (.not. expressible) then
+         stat = 1
+         errmsg = 'the '//model%boundary%name()//' supports cannot be expressed in the '''//trim(basis)//''' basis'
+         return
+      end if
+      allocate (model%unknown_of(size(held)), source=0)
+      model%unknowns = 0
+      do i = 1, size(held)
+         if (held(i)) cycle
+         model%unknowns = model%unknowns + 1
+         model%unknown_of(i) = model%unknowns
+      end do
       call band_allocate(model%mass, model%unknowns, bandwidth)
       call band_allocate(model%stiffness, model%unknowns, bandwidth)
       do e = 1, elements
-         if (basis == 'hermite') then
+         if (model%hermite) then
             element_mass = rho_s*hermite_element_mass(model%h)
             element_stiffness = ei*hermite_element_stiffness(model%h)
          else
@@ -119,17 +144,16 @@ contains
    end subroutine build_model
 
    !> Global unknowns of element e (1..N) in the order of the element's shape functions;
-   !! 0 marks a clamped degree of freedom, which has no unknown.
+   !! 0 marks a degree of freedom a support holds, which has no unknown.
    pure function element_dofs(model, e) result(dofs)
       type(beam_model), intent(in) :: model
       integer, intent(in) :: e
       integer :: dofs(4)
-      if (model%basis == 'hermite') then
-         dofs = [2*e - 3, 2*e - 2, 2*e - 1, 2*e]
+      if (model%hermite) then
+         dofs = model%unknown_of(2*e - 1:2*e + 2)   ! (w, theta) of nodes e - 1 and e
       else
-         dofs = [e - 2, e - 1, e, e + 1]   ! B_e..B_{e+3}, unknown index = basis index - 2
+         dofs = model%unknown_of(e:e + 3)           ! B_e..B_{e+3}
       end if
-      where (dofs < 1) dofs = 0
    end function element_dofs
 
    !> Shape functions of element e at x (derivative of order `order`).
@@ -138,7 +162,7 @@ contains
       integer, intent(in) :: e, order
       real(dp), intent(in) :: x
       real(dp) :: n(4)
-      if (model%basis == 'hermite') then
+      if (model%hermite) then
          n = hermite_shape((x - model%x(e))/model%h, model%h, order)
       else
          n = bspline_shape(model%knots, e, x, order)
@@ -170,9 +194,10 @@ contains
       integer, intent(in) :: node
       integer, intent(out) :: dofs(4)
       real(dp), intent(out) :: weights(4)
-      if (model%basis == 'hermite') then
-         dofs = [2*node - 1, 0, 0, 0]
+      if (model%hermite) then
+         dofs = [model%unknown_of(2*node + 1), 0, 0, 0]   ! w of the node
          weights = [1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]
+         if (dofs(1) == 0) weights(1) = 0
       else
          dofs = element_dofs(model, node)
          weights = bspline_shape(model%knots, node, model%x(node + 1), 0)
@@ -181,18 +206,22 @@ contains
       end if
    end subroutine node_row
 
-   !> Displacement at the N+1 nodes (node 0 included, where it is 0) from the unknowns.
+   !> Displacement at the N+1 nodes x_0..x_N from the unknowns (0 where a support holds it).
    pure function nodal_displacement(model, u) result(w)
       type(beam_model), intent(in) :: model
       real(dp), intent(in) :: u(:)   !! (J) unknowns
       real(dp) :: w(model%elements + 1)
       integer :: i, a, dofs(4)
       real(dp) :: weights(4)
-      w(1) = 0
-      if (model%basis == 'hermite') then
-         w(2:) = u(1:model%unknowns:2)
+      if (model%hermite) then
+         do i = 0, model%elements
+            w(i + 1) = 0
+            if (model%unknown_of(2*i + 1) /= 0) w(i + 1) = u(model%unknown_of(2*i + 1))
+         end do
          return
       end if
+      w(1) = 0   ! u(0) = c_1
+      if (model%unknown_of(1) /= 0) w(1) = u(model%unknown_of(1))
       do i = 1, model%elements
          call node_row(model, i, dofs, weights)
          w(i + 1) = 0
@@ -272,7 +301,8 @@ contains
       end do
    end function point_load_vector
 
-   !> Unknowns of a field given by its value and slope at the nodes x_1..x_N.
+   !> Unknowns of a field given by its value and slope at the nodes x_1..x_N, for the
+   !! clamped-free beam (the caller checks `model%boundary%is_clamped_free()`).
    !! Hermite: the interpolant w_i = value(i), theta_i = slope(i). B-splines: the spline
    !! through value(1..N) at the nodes with slope(N) at the tip (N + 1 conditions for the
    !! N + 1 unknowns; the clamp gives u = u_x = 0 at x = 0), solved as a band system.
@@ -284,7 +314,7 @@ contains
       integer, parameter :: kl = 3, ku = 3
       real(dp) :: ab(2*kl + ku + 1, model%unknowns), weights(4)
       integer :: ipiv(model%unknowns), i, a, dofs(4), info, n
-      if (model%basis == 'hermite') then
+      if (model%hermite) then
          u(1::2) = value
          u(2::2) = slope
          return

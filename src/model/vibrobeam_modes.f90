@@ -54,7 +54,7 @@ contains
       character(len=*), intent(out) :: errmsg
       character(len=*), intent(in), optional :: method  !! 'lanczos' | 'dense'
       real(dp), allocatable :: eigenvalues(:)
-      integer :: n, k
+      integer :: n, k, node
       real(dp) :: tip, bending, inertia
       logical :: dense
       stat = 0
@@ -93,12 +93,18 @@ contains
          omega = sqrt(eigenvalues)
       end if
       allocate (shapes(model%elements + 1, count))
+      node = model%boundary%normalization_node(model%elements)
       do k = 1, count
          shapes(:, k) = nodal_displacement(model, vectors(:, k))
-         tip = shapes(model%elements + 1, k)
+         ! scaled to 1 at a free end (the tip of a cantilever), else at its largest value
+         if (node >= 0) then
+            tip = shapes(node + 1, k)
+         else
+            tip = shapes(maxloc(abs(shapes(:, k)), dim=1), k)
+         end if
          if (abs(tip) <= tiny(tip)) then
             stat = 1
-            write (errmsg, '(a,i0,a)') 'mode ', k, ' has zero tip displacement and cannot be normalized'
+            write (errmsg, '(a,i0,a)') 'mode ', k, ' has zero displacement at its free end and cannot be normalized'
             return
          end if
          shapes(:, k) = shapes(:, k)/tip

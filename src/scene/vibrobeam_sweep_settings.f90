@@ -162,7 +162,8 @@ contains
          if (stat == 0) then
             call build_model(trial%mesh%basis, trial%mesh%elements, trial%beam%length, trial%beam%rho_s(), &
                trial%beam%ei(), model, &
-                             stat, errmsg)
+                             stat, errmsg, &
+                             boundary=trial%beam%boundary)
             warnings = ''
             if (stat == 0) call build_contact_points(trial%obstacles, model, contacts, warnings, stat, errmsg)
          end if

@@ -214,7 +214,7 @@ contains
          lost_start = 0
          episodes = 0
          last_impulse = -huge(1.0_dp)
-         gap = default_episode_gap(prepared%model%length, prepared%model%ei/prepared%model%rho_s)
+         gap = default_episode_gap(prepared%model)
          s%first_impact = -1
          call cpu_time(start)
          do n = 1, steps
