@@ -19,7 +19,7 @@ module vibrobeam_dynamics
    use vibrobeam_setup, only: prepared_scene, start_time_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_recorder, only: dynamics_recorder
-   use vibrobeam_result_files, only: result_files, run_summary
+   use vibrobeam_result_files, only: result_files, run_summary, run_outcome
    use vibrobeam_checkpoint, only: checkpoint_slots
    use vibrobeam_state_record, only: state_record
    use vibrobeam_progress, only: progress_meter
@@ -27,24 +27,11 @@ module vibrobeam_dynamics
    use vibrobeam_statistics, only: statistics_result
    implicit none
    private
-   public :: run_dynamics, run_outcome, flush_seconds
+   public :: run_dynamics, flush_seconds
 
    !> Wall time between two flushes of the temporary file (s).
    real(dp), parameter :: flush_seconds = 2
 
-   !> What a run reports back to the program.
-   type :: run_outcome
-      character(len=16) :: status = 'ok'       !! 'ok' | 'failed' | 'interrupted' (/run status)
-      logical :: text_skipped = .false.        !! a signal stopped the text derivation
-      integer(int64) :: steps = 0              !! global step number at the end
-      integer(int64) :: impacts = 0
-      real(dp) :: wall_seconds = 0
-      real(dp) :: max_penetration = 0
-      logical :: compliant = .false.           !! the scene has compliant stops
-      real(dp) :: peak_force = 0               !! their largest |force| over every step (N)
-      character(len=512) :: failure = ''
-      character(len=64) :: run_id = ''         !! /run run_id of the published result
-   end type run_outcome
 
 contains
 

@@ -29,7 +29,7 @@ module vibrobeam_result_files
    use vibrobeam_progress, only: progress_meter
    implicit none
    private
-   public :: result_files, run_summary, new_run_id, publish_files
+   public :: result_files, run_summary, run_outcome, new_run_id, publish_files
 
    !> Bytes reserved for the /run status attribute ('running', 'ok', 'failed', 'interrupted').
    integer, parameter :: status_capacity = 16
@@ -55,6 +55,7 @@ module vibrobeam_result_files
       procedure :: set_run
       procedure :: set_flushed
       procedure :: publish
+      procedure :: finish
       procedure :: discard => discard_results
       procedure :: write_modes
       procedure :: write_static
@@ -68,6 +69,23 @@ module vibrobeam_result_files
          integer(c_long) :: kb
       end function c_peak_rss_kb
    end interface
+
+   !> What a run (modes, static or dynamics) reports back to the program.
+   type :: run_outcome
+      character(len=16) :: status = 'ok'       !! 'ok' | 'failed' | 'interrupted' (/run status)
+      logical :: text_skipped = .false.        !! a signal stopped the text derivation
+      integer(int64) :: steps = 0              !! global step number at the end
+      integer(int64) :: impacts = 0
+      real(dp) :: wall_seconds = 0
+      real(dp) :: max_penetration = 0
+      logical :: compliant = .false.           !! the scene has compliant stops
+      real(dp) :: peak_force = 0               !! their largest |force| over every step (N)
+      character(len=512) :: failure = ''
+      character(len=64) :: run_id = ''         !! /run run_id of the published result
+      real(dp), allocatable :: omega(:)        !! kind = 'modes': the natural frequencies written (rad/s)
+      integer :: in_contact = 0                !! kind = 'static': contact points in contact
+      real(dp) :: position_bound = 0           !! kind = 'static': bound of the displacements' round-off (m)
+   end type run_outcome
 
 contains
 
@@ -237,6 +255,23 @@ contains
       end if
       call lock%release()
    end subroutine publish_files
+
+   !> The end of a modes or static result: /run from `summary`, then publication (a signal
+   !! during the text derivation stops it unless the run was already interrupted). With
+   !! stat /= 0 on entry (an earlier write failed), or when either step fails, the
+   !! temporary file is discarded instead: nothing is published, earlier results stay.
+   subroutine finish(self, summary, meter, text_skipped, stat, errmsg)
+      class(result_files), intent(inout) :: self
+      type(run_summary), intent(in) :: summary
+      type(progress_meter), intent(inout) :: meter
+      logical, intent(out) :: text_skipped
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      text_skipped = .false.
+      if (stat == 0) call self%set_run(summary, stat, errmsg)
+      if (stat == 0) call self%publish(meter, summary%status /= 'interrupted', text_skipped, stat, errmsg)
+      if (stat /= 0) call self%discard()
+   end subroutine finish
 
    !> Remove the temporary file; `final_name` is untouched.
    subroutine discard_results(self)

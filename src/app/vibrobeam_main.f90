@@ -6,7 +6,7 @@
 !! (docs/output.md, "Exit status").
 program vibrobeam_main
    use, intrinsic :: iso_c_binding, only: c_int
-   use vibrobeam_kinds, only: dp, error_unit, output_unit
+   use vibrobeam_kinds, only: error_unit, output_unit
    use vibrobeam_status, only: exit_ok, exit_other_error, exit_invalid_input, exit_numerical_failure, &
                                exit_interrupted, message_length, stat_numerical_failure
    use vibrobeam_version, only: version_string
@@ -14,12 +14,11 @@ program vibrobeam_main
    use vibrobeam_scene_read, only: read_scene, namelist_groups_text
    use vibrobeam_output_target, only: check_output_target
    use vibrobeam_check_report, only: check_report, make_check_report, check_report_text, scene_warnings
-   use vibrobeam_model, only: nodal_displacement
-   use vibrobeam_modes, only: compute_modes
-   use vibrobeam_static, only: solve_static, static_report
+   use vibrobeam_modal_analysis, only: run_modal
+   use vibrobeam_static_analysis, only: run_equilibrium
    use vibrobeam_setup, only: prepared_scene, prepare_scene
-   use vibrobeam_dynamics, only: run_dynamics, run_outcome
-   use vibrobeam_result_files, only: result_files, run_summary, publish_files
+   use vibrobeam_dynamics, only: run_dynamics
+   use vibrobeam_result_files, only: run_outcome, publish_files
    use vibrobeam_text_output, only: derived_file, derive_text_files
    use vibrobeam_hdf5_base, only: close_library
    use vibrobeam_progress, only: progress_meter
@@ -240,29 +239,14 @@ contains
       end associate
    end subroutine print_resolved_scene
 
+   !> A modes run: compute, publish, print the frequencies (docs/output.md, "Natural modes").
    subroutine run_modes()
-      real(dp), allocatable :: omega(:), shapes(:,:), vectors(:,:)
-      type(result_files) :: files
-      type(progress_meter) :: meter
-      type(run_summary) :: summary
-      logical :: text_skipped
-      associate (model => prepared%model)
-      call meter%init(scene%output%progress)
-      call compute_modes(model, scene%analysis%modes, omega, shapes, vectors, stat, errmsg)
+      type(run_outcome) :: outcome
+      call run_modal(scene, prepared, outcome, stat, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
-      call files%open(scene, model, stat, errmsg)
-      if (stat == 0) call files%write_modes(omega, shapes, stat, errmsg)
-      summary%wall_seconds = meter%elapsed()
-      if (interrupt_requested()) summary%status = 'interrupted'
-      if (stat == 0) call files%set_run(summary, stat, errmsg)
-      if (stat == 0) call files%publish(meter, summary%status /= 'interrupted', text_skipped, stat, errmsg)
-      if (stat /= 0) then
-         call files%discard()
-         call fail(exit_other_error, errmsg)
-      end if
-      write (output_unit, '(a,i0,a)') 'vibrobeam: ', size(omega), ' natural modes written to '//trim(scene%output%file)
-      call stop_if_interrupted(text_skipped)
-      end associate
+      write (output_unit, '(a,i0,a)') 'vibrobeam: ', size(outcome%omega), ' natural modes written to '// &
+         trim(scene%output%file)
+      call stop_if_interrupted(outcome%text_skipped)
       call finish(exit_ok)
    end subroutine run_modes
 
@@ -270,45 +254,20 @@ contains
    !! a-posteriori check) publishes its last iterate marked 'failed' with the reason in
    !! /static, and exits with status 3 (docs/output.md, "Exit status").
    subroutine run_static()
-      real(dp), allocatable :: u(:), reaction(:)
-      type(result_files) :: files
-      type(progress_meter) :: meter
-      type(run_summary) :: summary
-      type(static_report) :: report
-      integer :: iterations, solve_stat
-      character(len=message_length) :: solve_message
-      logical :: text_skipped
-      associate (model => prepared%model, contacts => prepared%contacts, loads => prepared%loads)
-      call meter%init(scene%output%progress)
-      allocate (u(model%unknowns), reaction(contacts%count))
-      call solve_static(model, contacts, loads%at(0.0_dp), u, reaction, iterations, solve_stat, solve_message, &
-                        scene%solver%contact_max_iterations, report)
-      if (solve_stat /= 0) summary%status = 'failed'
-      call files%open(scene, model, stat, errmsg)
-      if (stat == 0) call files%write_static(nodal_displacement(model, u), contacts%x, reaction, stat, errmsg)
-      if (stat == 0) call files%write_static_accuracy(report%error_estimate, report%error_bound, report%position_bound, &
-                                                      report%iterations, trim(solve_message), stat, errmsg)
-      summary%wall_seconds = meter%elapsed()
-      summary%iterations_total = iterations
-      summary%iterations_max = iterations
-      if (interrupt_requested()) summary%status = 'interrupted'
-      if (stat == 0) call files%set_run(summary, stat, errmsg)
-      if (stat == 0) call files%publish(meter, summary%status /= 'interrupted', text_skipped, stat, errmsg)
-      if (stat /= 0) then
-         call files%discard()
-         call fail(exit_other_error, errmsg)
-      end if
-      if (solve_stat /= 0) then
-         write (error_unit, '(a)') 'vibrobeam: static equilibrium failed: '//trim(solve_message)
-         write (error_unit, '(a)') 'vibrobeam: the last iterate, not an equilibrium, written to '//trim(scene%output%file)// &
-            ' (/run status = ''failed'', the reason in /static failure)'
-         call stop_if_interrupted(text_skipped)
+      type(run_outcome) :: outcome
+      call run_equilibrium(scene, prepared, outcome, stat, errmsg)
+      if (stat /= 0) call fail(exit_other_error, errmsg)
+      if (outcome%status == 'failed') then
+         write (error_unit, '(a)') 'vibrobeam: static equilibrium failed: '//trim(outcome%failure)
+         write (error_unit, '(a)') 'vibrobeam: the last iterate, not an equilibrium, written to '// &
+            trim(scene%output%file)//' (/run status = ''failed'', the reason in /static failure)'
+         call stop_if_interrupted(outcome%text_skipped)
          call finish(exit_numerical_failure)
       end if
-      write (output_unit, '(a,i0,a,es9.2,a)') 'vibrobeam: static equilibrium with ', count(abs(reaction) > 0), &
-         ' contact points in contact (displacements to ', report%position_bound, ' m) written to '//trim(scene%output%file)
-      call stop_if_interrupted(text_skipped)
-      end associate
+      write (output_unit, '(a,i0,a,es9.2,a)') 'vibrobeam: static equilibrium with ', outcome%in_contact, &
+         ' contact points in contact (displacements to ', outcome%position_bound, ' m) written to '// &
+         trim(scene%output%file)
+      call stop_if_interrupted(outcome%text_skipped)
       call finish(exit_ok)
    end subroutine run_static
 

@@ -25,7 +25,8 @@ module vibrobeam_sweep_runner
    use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_recorder, only: dynamics_recorder
-   use vibrobeam_dynamics, only: run_dynamics, run_outcome
+   use vibrobeam_dynamics, only: run_dynamics
+   use vibrobeam_result_files, only: run_outcome
    use vibrobeam_state_record, only: state_record
    use vibrobeam_contact_set, only: contact_value
    use vibrobeam_statistics, only: statistics_result
