@@ -47,8 +47,6 @@ module vibrobeam_hdf5
    use vibrobeam_hdf5_base, only: no_id, buffer_length, initialize_library, fail, describe, &
       valid_path, link_exists, h5_reason, attribute_outcome, put_scalar_attribute, &
       put_string_attribute, rewrite_attribute, close_dataspace, close_property_list
-   use vibrobeam_hdf5_reader, only: read_real_1d, read_real_2d, read_int_1d, read_real_scalar, &
-      read_attr_real, read_attr_int, read_attr_string, h5_path_exists
    use hdf5, only: hid_t, hsize_t, h5kind_to_type, H5_REAL_KIND, H5_INTEGER_KIND, &
       h5fcreate_f, h5fclose_f, h5fflush_f, H5F_ACC_TRUNC_F, H5F_SCOPE_GLOBAL_F, &
       H5F_CLOSE_STRONG_F, H5F_LIBVER_LATEST_F, &
@@ -61,9 +59,6 @@ module vibrobeam_hdf5
    implicit none
    private
    public :: h5_writer
-   public :: read_real_1d, read_real_2d, read_int_1d, read_real_scalar
-   public :: read_attr_real, read_attr_int, read_attr_string
-   public :: h5_path_exists
 
    interface
       !> int vb_h5_disable_evictions(hid_t fapl);  (src/io/hdf5/vibrobeam_hdf5_swmr.c)
