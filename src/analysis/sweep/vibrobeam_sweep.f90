@@ -14,7 +14,7 @@
 !! shared out, and the program asks the BLAS for one thread (`limit_blas_threads`).
 module vibrobeam_sweep
    !$ use omp_lib, only: omp_get_max_threads
-   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, prepare_scene
@@ -26,7 +26,7 @@ module vibrobeam_sweep
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, sweep_points, point_scene, task_count
    use vibrobeam_sweep_runner, only: point_result, start_state, task_start, point_sink, run_task
    use vibrobeam_sweep_journal, only: sweep_journal, done_ok, done_failed
-   use vibrobeam_sweep_partial, only: sweep_partial, sweep_fingerprint, partial_directory
+   use vibrobeam_sweep_partial, only: sweep_partial, sweep_fingerprint
    use vibrobeam_sweep_file, only: write_sweep_file, sweep_counts
    use vibrobeam_sweep_transport, only: transport_rank, transport_ranks, owns_task, transport_barrier, &
       transport_max, share_failure

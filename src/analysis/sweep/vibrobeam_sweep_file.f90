@@ -27,8 +27,8 @@ module vibrobeam_sweep_file
    use vibrobeam_model, only: beam_model
    use vibrobeam_results, only: result_files, run_summary, publish_step
    use vibrobeam_progress, only: progress_meter
-   use vibrobeam_filesystem, only: directory_of, directory_listing, rename_file, link_file, remove_file, &
-      file_exists, process_id, temporary_suffix
+   use vibrobeam_filesystem, only: directory_of, rename_file, remove_file, file_exists, process_id, temporary_suffix
+   use vibrobeam_directory_entries, only: directory_listing, link_file
    use vibrobeam_hdf5_series, only: h5_table
    use vibrobeam_statistics_layout, only: statistics_layout, group_beam, group_energy
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, task_count

@@ -31,7 +31,7 @@ module vibrobeam_sweep_journal
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_hdf5_series, only: h5_series, h5_table
-   use vibrobeam_sweep_runner, only: point_result, start_state, status_ok, status_failed, status_interrupted
+   use vibrobeam_sweep_runner, only: point_result, start_state, status_ok, status_failed
    implicit none
    private
    public :: sweep_journal, journal_name, pack_record, message_words, record_length

@@ -20,12 +20,13 @@ module vibrobeam_sweep_partial
    use vibrobeam_text, only: integer_text
    use vibrobeam_version, only: version_string
    use vibrobeam_scene, only: scene_type, scene_entry, scene_entries
-   use vibrobeam_filesystem, only: make_parent_directories, touch_file, directory_lock, directory_listing, &
-      remove_file, remove_directory, file_exists, temporary_suffix
+   use vibrobeam_filesystem, only: make_parent_directories, directory_lock, remove_file, file_exists, &
+      temporary_suffix
+   use vibrobeam_directory_entries, only: directory_listing, touch_file, remove_directory
    use vibrobeam_hdf5_reader, only: h5_reader
    use vibrobeam_sweep_settings, only: sweep_settings
    use vibrobeam_sweep_runner, only: start_state
-   use vibrobeam_sweep_journal, only: done_none, done_ok, done_failed, done_interrupted, message_words
+   use vibrobeam_sweep_journal, only: done_none, done_ok, done_failed, message_words
    implicit none
    private
    public :: sweep_partial, partial_directory, sweep_fingerprint, partial_point_file
