@@ -35,11 +35,12 @@ twin() {
   sed -e "s|'$1.h5'|'$2.h5'|" -e "s|text = .false.|text = .false., progress = .true.|" "$1.nml" > "$2.nml"
 }
 # start NAME [COMMAND...]: run COMMAND (default vibrobeam) on NAME.nml in a process group of
-# its own (`background` is its id), stdout and stderr into NAME.out and NAME.err
+# its own (`background` is its id), stdout and stderr into NAME.out and NAME.err; the input
+# is named by its full path, which no other test's processes have (pgrep below)
 start() {
   local name=$1; shift
   [ $# -eq 0 ] && set -- "$vibrobeam"
-  setsid "$@" "$name.nml" > "$name.out" 2> "$name.err" &
+  setsid "$@" "$work/$name.nml" > "$name.out" 2> "$name.err" &
   background=$!
 }
 # after_commit NAME: wait until the run started on NAME.nml reports a wall time past 1.5 s
@@ -60,7 +61,7 @@ stop_all() {
   kill -9 -- "-$background" 2> /dev/null
   wait "$background" 2> /dev/null
   background=''
-  while pids=$(pgrep -f "vibrobeam $1.nml"); do
+  while pids=$(pgrep -f "vibrobeam $work/$1.nml"); do
     kill -9 $pids 2> /dev/null
     sleep 0.1
     waited=$((waited + 1))
@@ -135,7 +136,7 @@ mpi)
     after_commit $signal || { failed=1; continue; }
     # (the process group's leader is mpirun; the other processes running the input are the ranks)
     case $signal in
-      rank) kill -TERM "$(pgrep -f "vibrobeam $signal.nml" | grep -v -x "$background" | tail -1)" ;;
+      rank) kill -TERM "$(pgrep -f "vibrobeam $work/$signal.nml" | grep -v -x "$background" | tail -1)" ;;
       usr1) kill -USR1 "$background" ;;
       term) kill -TERM "$background" ;;
     esac

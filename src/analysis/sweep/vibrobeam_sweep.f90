@@ -14,7 +14,7 @@
 !! shared out, and the program asks the BLAS for one thread (`limit_blas_threads`).
 module vibrobeam_sweep
    !$ use omp_lib, only: omp_get_max_threads
-   use vibrobeam_kinds, only: dp
+   use vibrobeam_kinds, only: dp, error_unit
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
    use vibrobeam_setup, only: prepared_scene, prepare_scene
@@ -107,7 +107,11 @@ contains
       call layout%init(1 + size(first_scene%points), first%contacts%count, size(first_scene%obstacles))
       fingerprint = sweep_fingerprint(scene, settings, base)
       ! the partial directory: rank 0 makes and locks it, then every rank reads it
-      if (rank == 0) call partial%open(trim(scene%file), fingerprint, stat, errmsg)
+      if (rank == 0) then
+         call partial%open(trim(scene%file), fingerprint, stat, errmsg)
+         if (stat == 0 .and. len(partial%notes) > 0) &
+            write (error_unit, '(a)', advance='no') 'vibrobeam: warning: '//partial%notes
+      end if
       call share_failure(stat, errmsg)
       if (stat /= 0) return
       if (rank /= 0) call partial%inspect(trim(scene%file), fingerprint, stat, errmsg, locked_here=.true.)
