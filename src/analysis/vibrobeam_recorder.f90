@@ -69,8 +69,10 @@ module vibrobeam_recorder
       real(dp) :: last_output_time = 0               !! its time (s)
       integer :: tip_contact = 0                     !! contact point at the tip, 0 if none
       real(dp) :: tip_impulse = 0                    !! tip impulse since the last output (N s)
-      logical, allocatable :: in_contact(:)          !! contact point had an impulse last step
-      logical, allocatable :: touched(:)             !! work space of `after_step`: an impulse this step
+      !> contact point had a rigid impulse last step (the springs' force does not count:
+      !! a rigid obstacle behind a spring still logs its impacts)
+      logical, allocatable :: in_contact(:)
+      logical, allocatable :: touched(:)             !! work space of `after_step`: in contact this step
       real(dp), allocatable :: contact_time(:)       !! time spent in contact per point (s)
       real(dp) :: max_penetration = 0                !! over every step (m)
       real(dp) :: max_penetration_time = 0
@@ -363,9 +365,11 @@ contains
       end do
    end function penetration
 
-   !> Bookkeeping after every step (module documentation). An impact is an impulse at a
-   !! contact point that received none in the previous step (nor rested on its obstacle
-   !! at t = 0) and approached its obstacle (docs/method.md).
+   !> Bookkeeping after every step (module documentation). An impact is a rigid impulse at
+   !! a contact point that received none in the previous step (nor rested on its obstacle
+   !! at t = 0) and approached its obstacle (docs/method.md), whatever force compliant stops
+   !! on the same point exert: a spring in front of a rigid wall does not hide the wall's
+   !! impacts. The springs' force counts for the time in contact only.
    subroutine after_step(self, stepper, stat, errmsg)
       class(dynamics_recorder), intent(inout) :: self
       class(time_stepper), intent(in) :: stepper
@@ -391,6 +395,8 @@ contains
          end if
          if (c == self%tip_contact) self%tip_impulse = self%tip_impulse + stepper%impulse(k)
       end do
+      ! the next step's impact test sees the rigid impulses only
+      self%in_contact = now
       if (self%compliant) then
          ! stepper%contact_force holds the true force at every contact point after every
          ! step; the run statistics take their force statistics from it (observe_step).
@@ -399,7 +405,6 @@ contains
          self%peak_force = max(self%peak_force, abs(stepper%contact_force))
       end if
       where (now) self%contact_time = self%contact_time + stepper%dt
-      self%in_contact = now
       end associate
       depth = penetration(stepper)
       if (depth > self%max_penetration) then

@@ -68,7 +68,7 @@ contains
       if (stat /= 0) return
       call build_loads(scene, prepared%model, rho_s_of(scene), prepared%loads)
       if (scene%kind == 'dynamics' .and. len_trim(scene%from_file) > 0) then
-         call resume_from_file(scene, prepared, stat, errmsg)
+         call resume_from_file(scene, prepared, warnings, stat, errmsg)
          return
       end if
       call initial_displacement(scene, prepared, stat, errmsg)
@@ -135,28 +135,35 @@ contains
    end subroutine reduce_scene
 
    !> The initial state of a run that continues the checkpoint of &initial from_file
-   !! (docs/output.md, "Checkpoint and restart"): the file must match the scene; t_end
-   !! must lie after the checkpoint; when the obstacle bounds changed, the state must
+   !! (docs/output.md, "Checkpoint and restart"): the file must match the scene in its
+   !! model, time scheme, contact points and compliant stops; its checkpoint must match its
+   !! checksum (one without a checksum, of vibrobeam 0.2.0, is continued with a warning);
+   !! t_end must lie after the checkpoint; when the obstacle bounds changed, the state must
    !! satisfy the new ones.
-   subroutine resume_from_file(scene, prepared, stat, errmsg)
+   subroutine resume_from_file(scene, prepared, warnings, stat, errmsg)
       type(scene_type), intent(in) :: scene
       type(prepared_scene), intent(inout) :: prepared
+      character(len=:), allocatable, intent(inout) :: warnings
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer(int64) :: steps
-      logical :: same_bounds
+      logical :: same_bounds, verified
       real(dp) :: value
       character(len=:), allocatable :: file
       integer :: c
       file = trim(scene%from_file)
       associate (contacts => prepared%contacts)
-         call check_compatible(file, scene, contacts%x, contacts%lower, contacts%upper, same_bounds, stat, errmsg)
+         call check_compatible(file, scene, contacts%x, contacts%lower, contacts%upper, same_bounds, stat, errmsg, &
+                               stops=.true.)
          if (stat /= 0) return
-         call read_checkpoint(file, prepared%resume, prepared%resume_time, stat, errmsg)
+         call read_checkpoint(file, prepared%resume, prepared%resume_time, stat, errmsg, verified)
          if (stat /= 0) then
             errmsg = '&initial from_file = '''//file//''': '//trim(errmsg)
             return
          end if
+         if (.not. verified) warnings = warnings//'&initial from_file = '''//file//''': its checkpoint carries '// &
+            'no checksum (written by vibrobeam 0.2.0): it is continued without a check that it is undamaged'// &
+            new_line('a')
          allocate (prepared%u0(prepared%model%unknowns), prepared%v0(prepared%model%unknowns))
          call prepared%resume%get_reals('stepper.u', prepared%u0, stat, errmsg)
          if (stat == 0) call prepared%resume%get_reals('stepper.v', prepared%v0, stat, errmsg)

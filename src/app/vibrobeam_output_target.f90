@@ -1,10 +1,10 @@
 !> Checks of where a run will write, made before anything is computed or written: the
 !! result file must be a new or replaceable file (not an existing directory, not the input
 !! file, not one of the text files derived from its name, on a path the system can
-!! create), `&initial from_file` must be a readable file, and the results of a dynamics
-!! run must fit: their estimated size (`estimate_result_size`) below a hard limit and
-!! below the free space of the target file system. Failures are invalid input (the
-!! program exits 2 and writes nothing).
+!! create, on a file system that stores files), `&initial from_file` must be a readable
+!! file, and the results of a dynamics run must fit: their estimated size
+!! (`estimate_result_size`) below a hard limit and below the free space of the target file
+!! system. Failures are invalid input (the program exits 2 and writes nothing).
 !!
 !! The run's writer guards the same things at write time; these checks are the ones a
 !! user meets first, before an afternoon of computing.
@@ -59,10 +59,10 @@ module vibrobeam_output_target
          integer(c_size_t), value, intent(in) :: size
          integer(c_int) :: status
       end function c_real_path
-      function c_free_bytes(path, bytes) result(status) bind(C, name='vibrobeam_free_bytes')
+      function c_free_bytes(path, bytes, size) result(status) bind(C, name='vibrobeam_free_bytes')
          import :: c_char, c_int, c_double
          character(kind=c_char), intent(in) :: path(*)
-         real(c_double), intent(out) :: bytes
+         real(c_double), intent(out) :: bytes, size
          integer(c_int) :: status
       end function c_free_bytes
    end interface
@@ -84,7 +84,8 @@ contains
       character(len=:), allocatable :: file, directory, name, resolved, input_resolved, stem, shown
       character(len=:), allocatable :: existing
       type(result_size) :: estimate
-      real(dp) :: free
+      real(dp) :: free, capacity
+      logical :: known_space
       stat = 1
       file = trim(scene%file)
       if (len(file) == 0) then
@@ -119,6 +120,13 @@ contains
          return
       end if
       stat = 1
+      ! a file system that stores nothing (/proc, /sys): every run would fail to write
+      known_space = c_free_bytes(c_string(existing), free, capacity) == 0
+      if (known_space .and. capacity <= 0) then
+         errmsg = shown//': '''//abbreviated(existing, 60)//''' is on a file system without storage (size 0, '// &
+                  'such as /proc or /sys): give a path on a disk'
+         return
+      end if
       ! the input file: the same file under any name (links included), or the same path
       if (c_same_file(c_string(file), c_string(input_file)) == 1) then
          errmsg = shown//' is the input file: the results would replace it; give another name'
@@ -173,7 +181,7 @@ contains
             errmsg = size_message(estimate)//', more than the limit of '//bytes_text(max_result_bytes)//size_advice()
             return
          end if
-         if (c_free_bytes(c_string(existing), free) == 0) then
+         if (known_space) then
             if (estimate%total_bytes > free) then
                errmsg = size_message(estimate)//', more than the '//bytes_text(free)//' free on the file system of '''// &
                         abbreviated(existing, 60)//''''//size_advice()
@@ -357,7 +365,8 @@ contains
    logical function free_bytes(path, bytes)
       character(len=*), intent(in) :: path
       real(dp), intent(out) :: bytes
-      free_bytes = c_free_bytes(c_string(path), bytes) == 0
+      real(dp) :: capacity
+      free_bytes = c_free_bytes(c_string(path), bytes, capacity) == 0
    end function free_bytes
 
    !> realpath(3) of an existing path; '' when it cannot be resolved.

@@ -25,9 +25,14 @@
 !!
 !!     max_j |f_j(p_j(y)) - f_j^k - d_j^k (p_j(y) - p_j^k)| <= tol max_j |f_j(p_j(y))|,
 !!
-!! tol = 1024 eps (the forces are then exact to round-off), or the penetrations stop
-!! changing, max_j |p_j(y) - p_j^k| <= tol max_j |p_j(y)|. At most `max_newton` iterations;
-!! otherwise stat = 1 (the run stops with exit 3).
+!! tol = 1024 eps (the forces are then exact to round-off), or every spring's penetration
+!! stops changing to its own round-off, |p_j(y) - p_j^k| <= tol (|q_j| + m |H_j| |y|) for
+!! every j (the size of the terms p_j is computed from: a spring engaged by 1e-16 m beside
+!! one 2 mm away is judged on its own scale). At most `max_newton` iterations; otherwise
+!! stat = 1 (the run stops with exit 3). The force the accepted step applied (`force`) and
+!! the rule's force at the accepted penetrations (`law_force`) differ by the remaining
+!! residual: the steppers book its work and stop a run in which it is not negligible
+!! (docs/theory.md section 8, "Accuracy").
 module vibrobeam_compliant_solve
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_factor, band_solve, band_matvec, band_add
@@ -51,6 +56,9 @@ module vibrobeam_compliant_solve
       real(dp), allocatable :: p1(:)                 !! penetrations at the solution (m)
       real(dp), allocatable :: force(:)              !! step force f_j the momentum equation applied (N)
       real(dp), allocatable :: elastic(:)            !! its elastic part (N)
+      !> the rule's force f_j(p0_j, p1_j) at the accepted penetrations (N): `force` up to
+      !! the Newton residual
+      real(dp), allocatable :: law_force(:)
       integer :: iterations = 0, linear_solves = 0
    contains
       procedure :: setup
@@ -67,10 +75,12 @@ contains
       self%rule = rule
       self%regime = regime
       self%method = method
-      allocate (self%p1(springs%count), self%force(springs%count), self%elastic(springs%count))
+      allocate (self%p1(springs%count), self%force(springs%count), self%elastic(springs%count), &
+                self%law_force(springs%count))
       self%p1 = 0
       self%force = 0
       self%elastic = 0
+      self%law_force = 0
    end subroutine setup
 
    !> Solve the step (module comment). `q` (per spring) and `motion_scale` m define
@@ -94,7 +104,7 @@ contains
       real(dp), intent(out) :: x(:), impulse(:)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp), dimension(springs%count) :: p, f, slope, elastic, p_new, f_new, slope_new, elastic_new
+      real(dp), dimension(springs%count) :: p, f, slope, elastic, p_new, f_new, slope_new, elastic_new, floor
       real(dp) :: y_free(size(x)), rhs(size(x)), residual, scale
       integer :: it, j, iterations
       logical :: engaged
@@ -149,12 +159,12 @@ contains
             residual = max(residual, abs(f_new(j) - f(j) - slope(j)*(p_new(j) - p(j))))
          end do
          ! the forces the momentum equation used are f + slope (p_new - p); they agree with
-         ! f(p_new) to the tolerance
-         if (residual <= tol*scale .or. &
-             maxval(abs(p_new - p)) <= tol*maxval(abs(p_new))) then
+         ! f(p_new) to the tolerance, or no spring's penetration moves beyond its round-off
+         if (residual <= tol*scale .or. all(abs(p_new - p) <= tol*floor)) then
             self%p1 = p_new
             self%force = f + slope*(p_new - p)   ! what the momentum equation applied
             self%elastic = elastic_new
+            self%law_force = f_new
             return
          end if
          p = p_new
@@ -164,14 +174,22 @@ contains
       end do
       stat = 1
       write (errmsg, '(a,i0,a,es10.3,a)') 'the compliant stops did not converge in ', max_newton, &
-         ' Newton iterations (force residual ', residual, ' N); reduce dt'
+         ' Newton iterations (force residual ', residual, ' N); reduce dt, or the stiffness of a stop '// &
+         'whose contact time scale (vibrobeam --check) is far below dt'
    contains
+      !> Penetrations, forces, slopes and elastic parts at xx; `floor` the size of the terms
+      !! of each penetration, |q_j| + m |H_j| |xx| (its round-off is eps times that).
       subroutine evaluate(xx, pp, ff, ss, ee)
          real(dp), intent(in) :: xx(:)
          real(dp), intent(out) :: pp(:), ff(:), ss(:), ee(:)
-         integer :: i
+         integer :: i, a
          do i = 1, springs%count
             pp(i) = q(i) - springs%sign(i)*motion_scale*contact_value(contacts, springs%point(i), xx)
+            floor(i) = abs(q(i))
+            do a = 1, 4
+               if (contacts%dofs(a, springs%point(i)) /= 0) floor(i) = floor(i) + motion_scale* &
+                  abs(contacts%weights(a, springs%point(i))*xx(contacts%dofs(a, springs%point(i))))
+            end do
             call step_force(self%rule, springs%stiffness(i), springs%exponent(i), springs%damping(i), theta, dt, &
                             p0(i), pp(i), ff(i), ss(i), ee(i))
          end do

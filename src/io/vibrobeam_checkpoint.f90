@@ -3,18 +3,24 @@
 !!
 !! Layout: /checkpoint/state_1/<item> and, when checkpoints are also written during the
 !! run (&output checkpoint_seconds > 0), /checkpoint/state_2/<item>: one 1-d dataset per
-!! item of a `state_record` (reals as doubles, integers as 64-bit integers). The
-!! attributes of /checkpoint say which slot holds the latest complete state: `current`
+!! item of a `state_record` (reals as doubles, integers as 64-bit integers). Each slot
+!! group carries the attribute `checksum`, the CRC-64 of its state (`record_checksum`).
+!! The attributes of /checkpoint say which slot holds the latest complete state: `current`
 !! (0: none yet, 1 or 2), its `step` and `time` (s), and `items` (the item names, each
 !! followed by ':r' or ':i', separated by blanks). A new checkpoint goes into the slot
-!! that is not current; only after its data are flushed does `current` change (and is
-!! flushed), so a run killed at any moment leaves `current` pointing at a complete state.
-!! The datasets are created once, before the file enters SWMR mode, and rewritten in place.
+!! that is not current, with its checksum; only after its data are flushed does `current`
+!! change (and is flushed), so a run killed at any moment leaves `current` pointing at a
+!! complete state. The datasets are created once, before the file enters SWMR mode, and
+!! rewritten in place.
 !!
-!! Restart (`read_checkpoint`, `check_compatible`): `&initial from_file` names a result
-!! file (published, or the temporary file of a killed run); the scene must match it in
-!! basis, elements, length, beam data, scheme, dt, theta, gamma and contact points (count
-!! and x); loads, restitution, obstacle levels and outputs may change.
+!! Restart (`read_checkpoint`, `check_compatible`): `&initial from_file`
+!! names a result file (published, or the temporary file of a killed run); its checkpoint
+!! is read only when its checksum matches the state (one without a checksum, written by
+!! vibrobeam 0.2.0, is read and reported as not verified). The scene must match the file
+!! in its model (basis, elements, reduction, length, beam data), its time scheme (scheme,
+!! dt, theta, gamma) and its contact points (count and x); a single run's continuation
+!! also in its compliant stops. Loads, restitution, rigid obstacle levels,
+!! a stop's damping and outputs may change.
 module vibrobeam_checkpoint
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: integer_text, real_text
@@ -23,9 +29,10 @@ module vibrobeam_checkpoint
    use vibrobeam_hdf5_series, only: h5_array
    use vibrobeam_hdf5_reader, only: h5_reader
    use vibrobeam_state_record, only: state_record, state_item
+   use vibrobeam_checksum, only: crc64_start, crc64_words, crc64_text, crc64_finish
    implicit none
    private
-   public :: checkpoint_slots, read_checkpoint, check_compatible
+   public :: checkpoint_slots, read_checkpoint, check_compatible, record_checksum
 
    !> The checkpoint datasets of an open result file.
    type :: checkpoint_slots
@@ -39,9 +46,10 @@ module vibrobeam_checkpoint
    end type checkpoint_slots
 
    !> Root attributes (resolved input) that must match between a checkpoint and the scene
-   !! that continues it.
-   character(len=*), parameter :: matching(11) = [character(len=32) :: 'mesh.basis', 'mesh.elements', &
-      'beam.length', 'beam.mass_per_length', 'beam.bending_stiffness', 'beam.rayleigh_mass', &
+   !! that continues it: what the state's unknowns are (the model) and what its velocities
+   !! mean (the time scheme).
+   character(len=*), parameter :: matching(12) = [character(len=32) :: 'mesh.basis', 'mesh.elements', &
+      'mesh.reduction', 'beam.length', 'beam.mass_per_length', 'beam.bending_stiffness', 'beam.rayleigh_mass', &
       'beam.rayleigh_stiffness', 'time.scheme', 'time.dt', 'time.theta', 'time.gamma']
 
 contains
@@ -71,14 +79,18 @@ contains
             end do
          end associate
       end do
+      do s = 1, slots
+         call writer%attr_int64(slot_path(s), 'checksum', 0_int64, stat, errmsg)
+         if (stat /= 0) return
+      end do
       call writer%attr_string('/checkpoint', 'items', trim(items), stat, errmsg)
       if (stat == 0) call writer%attr_int64('/checkpoint', 'current', 0_int64, stat, errmsg)
       if (stat == 0) call writer%attr_int64('/checkpoint', 'step', 0_int64, stat, errmsg)
       if (stat == 0) call writer%attr_real('/checkpoint', 'time', 0.0_dp, stat, errmsg)
    end subroutine slots_create
 
-   !> Write `record` (shaped as at `create`) of step `step`, time `time` into the slot that
-   !! is not current, flush, then make it current and flush again.
+   !> Write `record` (shaped as at `create`) of step `step`, time `time` and its checksum
+   !! into the slot that is not current, flush, then make it current and flush again.
    subroutine slots_write(self, writer, record, step, time, stat, errmsg)
       class(checkpoint_slots), intent(inout) :: self
       type(h5_writer), intent(inout) :: writer
@@ -100,7 +112,8 @@ contains
          end associate
          if (stat /= 0) return
       end do
-      call writer%flush(stat, errmsg)
+      call writer%rewrite_attr(slot_path(slot), 'checksum', record_checksum(record), stat, errmsg)
+      if (stat == 0) call writer%flush(stat, errmsg)
       if (stat == 0) call writer%rewrite_attr('/checkpoint', 'current', int(slot, int64), stat, errmsg)
       if (stat == 0) call writer%rewrite_attr('/checkpoint', 'step', step, stat, errmsg)
       if (stat == 0) call writer%rewrite_attr('/checkpoint', 'time', time, stat, errmsg)
@@ -119,6 +132,30 @@ contains
          end do
       end do
    end subroutine slots_close
+
+   !> The CRC-64 (`vibrobeam_checksum`) of a state: for each item in order, its name's
+   !! length and characters, its type (0 reals, 1 integers), its size and its values (a
+   !! real's bit pattern), so that a changed bit, name, type or size changes it.
+   pure integer(int64) function record_checksum(record)
+      type(state_record), intent(in) :: record
+      integer(int64) :: crc
+      integer :: k
+      crc = crc64_start()
+      do k = 1, record%count
+         associate (item => record%items(k))
+            call crc64_words(crc, [int(len_trim(item%name), int64)])
+            call crc64_text(crc, trim(item%name))
+            if (item%integers) then
+               call crc64_words(crc, [1_int64, int(size(item%int64s), int64)])
+               call crc64_words(crc, item%int64s)
+            else
+               call crc64_words(crc, [0_int64, int(size(item%reals), int64)])
+               call crc64_words(crc, transfer(item%reals, 0_int64, size(item%reals)))
+            end if
+         end associate
+      end do
+      record_checksum = crc64_finish(crc)
+   end function record_checksum
 
    !> True when a and b have the same bits (the file stores every value exactly).
    elemental logical function same_bits(a, b)
@@ -142,23 +179,27 @@ contains
    end function item_size
 
    !> Read the latest complete checkpoint of `filename` into `record`; `time` is its time.
-   subroutine read_checkpoint(filename, record, time, stat, errmsg)
+   !! The state must match the checksum of its slot (stat = 1 otherwise: the file is
+   !! damaged); `verified` (optional) is false when the slot carries no checksum (a file of
+   !! vibrobeam 0.2.0), which is read unverified.
+   subroutine read_checkpoint(filename, record, time, stat, errmsg, verified)
       character(len=*), intent(in) :: filename
       type(state_record), intent(out) :: record
       real(dp), intent(out) :: time
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      logical, intent(out), optional :: verified
       type(h5_reader) :: file
       character(len=:), allocatable :: items, name
-      integer(int64) :: current
+      integer(int64) :: current, checksum
       integer :: start, finish
       time = 0
+      if (present(verified)) verified = .false.
       call file%open(filename, stat, errmsg)
       if (stat /= 0) return
       read_items: block
          if (.not. file%exists('/checkpoint')) then
-            stat = 1
-            errmsg = '''' // trim(filename) // ''' holds no checkpoint (not a dynamics result of vibrobeam 0.2 or later)'
+            call no_checkpoint(filename, stat, errmsg)
             exit read_items
          end if
          call file%attr_int64('/checkpoint', 'current', current, stat, errmsg)
@@ -180,6 +221,17 @@ contains
             call read_item(name(1:len(name) - 2), name(len(name):len(name)) == 'i')
             if (stat /= 0) exit read_items
          end do
+         if (.not. file%has_attr(slot_path(int(current)), 'checksum')) exit read_items
+         call file%attr_int64(slot_path(int(current)), 'checksum', checksum, stat, errmsg)
+         if (stat /= 0) exit read_items
+         if (checksum /= record_checksum(record)) then
+            stat = 1
+            errmsg = 'its latest checkpoint (/checkpoint/state_'//integer_text(int(current))//', t = '// &
+                     real_text(time)//' s) fails its checksum: the file is damaged and cannot be continued '// &
+                     '(continue an undamaged copy, or run again)'
+            exit read_items
+         end if
+         if (present(verified)) verified = .true.
       end block read_items
       call file%close()
    contains
@@ -200,22 +252,40 @@ contains
       end subroutine read_item
    end subroutine read_checkpoint
 
-   !> Check that `filename`'s run matches `scene` (module documentation) and has the
-   !! contact points `contact_x`. stat = 1 with a message naming the first mismatch.
-   !! `same_bounds`: the obstacle bounds at the contact points are those of the file.
-   subroutine check_compatible(filename, scene, contact_x, lower, upper, same_bounds, stat, errmsg)
+   !> stat = 1: `filename` is no result of a dynamics run.
+   subroutine no_checkpoint(filename, stat, errmsg)
+      character(len=*), intent(in) :: filename
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      stat = 1
+      errmsg = '''' // trim(filename) // ''' holds no checkpoint (not a dynamics result of vibrobeam 0.2 or later)'
+   end subroutine no_checkpoint
+
+   !> Check that `filename`'s run matches `scene` in its model and time scheme
+   !! (`matching`) and has the contact points `contact_x`; with `stops` (a run that
+   !! continues the checkpoint, not a sweep that starts from its U and V), also in its
+   !! compliant stops: a stop's force and stored energy are part of the state that a run
+   !! continues (the running sums of the energy balance include them), so every obstacle
+   !! that is compliant in the file or in the scene keeps its kind, side, extent, levels,
+   !! stiffness and exponent; its damping may change, and so may rigid obstacles (their
+   !! levels are checked against the state by the caller). stat = 1 with a message naming
+   !! the first mismatch. `same_bounds`: the obstacle bounds at the contact points are
+   !! those of the file.
+   subroutine check_compatible(filename, scene, contact_x, lower, upper, same_bounds, stat, errmsg, stops)
       character(len=*), intent(in) :: filename
       type(scene_type), intent(in) :: scene
       real(dp), intent(in) :: contact_x(:), lower(:), upper(:)
       logical, intent(out) :: same_bounds
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      logical, intent(in), optional :: stops
+      character(len=*), parameter :: stops_why = '; a compliant stop''s force and stored energy are part of '// &
+         'the checkpoint: each obstacle keeps its kind (rigid or compliant), and a compliant one its side, '// &
+         'extent, levels, stiffness and exponent (its damping may change, rigid obstacles may move)'
       type(h5_reader) :: file
       type(scene_entry), allocatable :: list(:)
-      character(len=:), allocatable :: text, prefix
+      character(len=:), allocatable :: prefix, why
       real(dp), allocatable :: x(:), file_lower(:), file_upper(:)
-      real(dp) :: value
-      integer(int64) :: number
       integer :: i, k
       same_bounds = .false.
       prefix = '&initial from_file = '''//trim(filename)//''': '
@@ -226,37 +296,22 @@ contains
       end if
       allocate (list, source=scene_entries(scene))
       compare: block
+         if (.not. file%exists('/checkpoint')) then
+            call no_checkpoint(filename, stat, errmsg)
+            errmsg = prefix//trim(errmsg)
+            exit compare
+         end if
          do k = 1, size(matching)
             do i = size(list), 1, -1
                if (list(i)%name == matching(k)) exit
             end do
             if (i == 0) cycle
-            associate (item => list(i))
-               select case (item%kind)
-               case ('real')
-                  call file%attr_real('/', trim(item%name), value, stat, errmsg)
-                  if (stat == 0 .and. .not. same_bits(value, item%real_value)) then
-                     call mismatch(trim(item%name), real_text(value), real_text(item%real_value))
-                     exit compare
-                  end if
-               case ('integer')
-                  call file%attr_int64('/', trim(item%name), number, stat, errmsg)
-                  if (stat == 0 .and. number /= item%integer_value) then
-                     call mismatch(trim(item%name), integer_text(int(number)), integer_text(item%integer_value))
-                     exit compare
-                  end if
-               case default
-                  call file%attr_string('/', trim(item%name), text, stat, errmsg)
-                  if (stat == 0 .and. text /= trim(item%string_value)) then
-                     call mismatch(trim(item%name), ''''//text//'''', ''''//trim(item%string_value)//'''')
-                     exit compare
-                  end if
-               end select
-            end associate
-            if (stat /= 0) then
-               errmsg = prefix//trim(errmsg)
-               exit compare
-            end if
+            why = '; the model (basis, elements, reduction, length, beam data), the time scheme (scheme, dt, '// &
+                  'theta, gamma) and the contact points must match'
+            if (matching(k) == 'mesh.reduction') why = ': a reduced run''s state holds reduced coordinates, '// &
+               'not the values of the mesh'
+            call compare_entry(file, list(i), prefix, why, stat, errmsg)
+            if (stat /= 0) exit compare
          end do
          call file%read_reals('/contact/x', x, stat, errmsg)
          if (stat /= 0) then
@@ -264,12 +319,18 @@ contains
             exit compare
          end if
          if (size(x) /= size(contact_x)) then
-            call mismatch('contact points', integer_text(size(x)), integer_text(size(contact_x)))
+            call mismatch(prefix, 'contact points', integer_text(size(x)), integer_text(size(contact_x)), why, &
+                          stat, errmsg)
          else if (.not. all(same_bits(x, contact_x))) then
             k = findloc(same_bits(x, contact_x), .false., dim=1)
-            call mismatch('contact point '//integer_text(k)//' x', real_text(x(k)), real_text(contact_x(k)))
+            call mismatch(prefix, 'contact point '//integer_text(k)//' x', real_text(x(k)), real_text(contact_x(k)), &
+                          why, stat, errmsg)
          end if
          if (stat /= 0) exit compare
+         if (present(stops)) then
+            if (stops) call compare_stops()
+            if (stat /= 0) exit compare
+         end if
          call file%read_reals('/contact/lower', file_lower, stat, errmsg)
          if (stat == 0) call file%read_reals('/contact/upper', file_upper, stat, errmsg)
          if (stat /= 0) then
@@ -280,11 +341,90 @@ contains
       end block compare
       call file%close()
    contains
-      subroutine mismatch(name, in_file, in_scene)
-         character(len=*), intent(in) :: name, in_file, in_scene
-         stat = 1
-         errmsg = prefix//name//' is '//in_file//' in the file and '//in_scene//' in this scene; basis, '// &
-                  'elements, length, beam data, scheme, dt, theta, gamma and contact points must match'
-      end subroutine mismatch
+      !> The compliant stops of the file against the scene's (see above).
+      subroutine compare_stops()
+         character(len=*), parameter :: compared(7) = [character(len=10) :: 'side', 'x_from', 'x_to', &
+                                                        'level_from', 'level_to', 'stiffness', 'exponent']
+         character(len=:), allocatable :: item
+         integer(int64) :: file_count
+         real(dp) :: file_stiffness
+         logical :: file_compliant, scene_compliant
+         integer :: i, k, e
+         call file%attr_int64('/', 'obstacles.count', file_count, stat, errmsg)
+         if (stat /= 0) then
+            errmsg = prefix//trim(errmsg)
+            return
+         end if
+         do i = 1, max(int(file_count), size(scene%obstacles))
+            item = '('//integer_text(i)//')'
+            file_compliant = .false.
+            if (i <= file_count) then
+               call file%attr_real('/', 'obstacles.stiffness'//item, file_stiffness, stat, errmsg)
+               if (stat /= 0) then
+                  errmsg = prefix//trim(errmsg)
+                  return
+               end if
+               file_compliant = file_stiffness > 0
+            end if
+            scene_compliant = .false.
+            if (i <= size(scene%obstacles)) scene_compliant = scene%obstacles(i)%stiffness > 0
+            if (.not. (file_compliant .or. scene_compliant)) cycle
+            if (i > file_count .or. i > size(scene%obstacles)) then
+               call mismatch(prefix, 'obstacles.count', integer_text(int(file_count)), &
+                             integer_text(size(scene%obstacles)), '; obstacle '//integer_text(i)// &
+                             ' is a compliant stop in '//trim(merge('the file  ', 'this scene', i <= file_count))// &
+                             stops_why, stat, errmsg)
+               return
+            end if
+            do k = 1, size(compared)
+               do e = size(list), 1, -1
+                  if (list(e)%name == 'obstacles.'//trim(compared(k))//item) exit
+               end do
+               call compare_entry(file, list(e), prefix, stops_why, stat, errmsg)
+               if (stat /= 0) return
+            end do
+         end do
+      end subroutine compare_stops
    end subroutine check_compatible
+
+   !> Compare the root attribute of `item`'s name in `file` with `item` (reals bitwise).
+   !! stat = 1 with the mismatch message (`mismatch`, ending with `why`), or with the
+   !! reader's message prefixed by `prefix`.
+   subroutine compare_entry(file, item, prefix, why, stat, errmsg)
+      type(h5_reader), intent(in) :: file
+      type(scene_entry), intent(in) :: item
+      character(len=*), intent(in) :: prefix, why
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=:), allocatable :: text
+      real(dp) :: value
+      integer(int64) :: number
+      select case (item%kind)
+      case ('real')
+         call file%attr_real('/', trim(item%name), value, stat, errmsg)
+         if (stat == 0 .and. .not. same_bits(value, item%real_value)) &
+            call mismatch(prefix, trim(item%name), real_text(value), real_text(item%real_value), why, stat, errmsg)
+      case ('integer')
+         call file%attr_int64('/', trim(item%name), number, stat, errmsg)
+         if (stat == 0 .and. number /= item%integer_value) &
+            call mismatch(prefix, trim(item%name), integer_text(int(number)), integer_text(item%integer_value), why, &
+                          stat, errmsg)
+      case default
+         call file%attr_string('/', trim(item%name), text, stat, errmsg)
+         if (stat == 0 .and. text /= trim(item%string_value)) &
+            call mismatch(prefix, trim(item%name), ''''//text//'''', ''''//trim(item%string_value)//'''', why, &
+                          stat, errmsg)
+      end select
+      if (stat /= 0 .and. index(errmsg, prefix) /= 1) errmsg = prefix//trim(errmsg)
+   end subroutine compare_entry
+
+   !> stat = 1 and the message 'PREFIX NAME is IN_FILE in the file and IN_SCENE in this
+   !! scene WHY'.
+   subroutine mismatch(prefix, name, in_file, in_scene, why, stat, errmsg)
+      character(len=*), intent(in) :: prefix, name, in_file, in_scene, why
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      stat = 1
+      errmsg = prefix//name//' is '//in_file//' in the file and '//in_scene//' in this scene'//why
+   end subroutine mismatch
 end module vibrobeam_checkpoint

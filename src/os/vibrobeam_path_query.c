@@ -46,12 +46,14 @@ int vibrobeam_real_path(const char *path, char *resolved, size_t size)
     return 0;
 }
 
-/* Bytes available to an unprivileged user on the file system holding `path`
- * (statvfs(3): f_bavail blocks of f_frsize bytes). 0 on success, -1 on failure. */
-int vibrobeam_free_bytes(const char *path, double *bytes)
+/* Bytes available to an unprivileged user on the file system holding `path`, and its
+ * size (statvfs(3): f_bavail and f_blocks blocks of f_frsize bytes; a size of 0 is a
+ * file system without storage, such as /proc or /sys). 0 on success, -1 on failure. */
+int vibrobeam_free_bytes(const char *path, double *bytes, double *size)
 {
     struct statvfs info;
     if (statvfs(path, &info) != 0) return -1;
     *bytes = (double)info.f_bavail * (double)info.f_frsize;
+    *size = (double)info.f_blocks * (double)info.f_frsize;
     return 0;
 }

@@ -10,14 +10,16 @@
 !! scanner's tokens, never from comparing a value with a marker.
 module vibrobeam_input
    use vibrobeam_kinds, only: dp
-   use vibrobeam_text, only: integer_text
+   use vibrobeam_text, only: integer_text, real_text
    use vibrobeam_scene, only: scene_type, max_obstacles, max_points, scene_variables, path_length, &
       keyword_length, unknowns_of
    use vibrobeam_namelist_tokens, only: lowercase
-   use vibrobeam_namelist_values, only: namelist_variable, range_text, variable_index
+   use vibrobeam_namelist_values, only: namelist_variable, range_text, variable_index, real_range_problem, &
+      integer_range_problem
    use vibrobeam_namelist_scan, only: scanned_file, scan_namelist_file
    use vibrobeam_scene, only: max_sweep_values, parameter_length
    use vibrobeam_sweep_settings, only: sweep_settings
+   use vibrobeam_ignored_values, only: ignored_values
    implicit none
    private
    public :: read_scene, namelist_groups_text
@@ -72,7 +74,21 @@ contains
       ! the default number of modes applies only to kind = 'modes', and never beyond J
       if (scene%kind == 'modes' .and. .not. scanned%is_given('analysis', 'modes') .and. scene%elements >= 1) &
          scene%modes = min(default_modes, unknowns_of(scene))
-      if (present(warnings)) call ignored_values(scanned, scene, warnings)
+      if (present(warnings)) call ignored_values(scanned, scene, swept_inputs(), warnings)
+
+   contains
+      !> The inputs the &sweep varies, 'group.variable' without an element index.
+      function swept_inputs() result(names)
+         character(len=parameter_length), allocatable :: names(:)
+         integer :: a, open
+         allocate (names(0))
+         if (.not. present(sweep)) return
+         do a = 1, 2
+            names = [character(len=parameter_length) :: names, lowercase(sweep%axis(a)%parameter)]
+            open = index(names(size(names)), '(')
+            if (open > 0) names(size(names)) = names(size(names))(1:open - 1)
+         end do
+      end function swept_inputs
    end subroutine read_scene
 
    !> '&beam &mesh ... &output': every group a file may hold.
@@ -88,43 +104,6 @@ contains
          text = text//'&'//trim(table(k)%group)
       end do
    end function namelist_groups_text
-
-   !> A warning for each value given that the analysis does not use.
-   subroutine ignored_values(scanned, scene, warnings)
-      type(scanned_file), intent(in) :: scanned
-      type(scene_type), intent(in) :: scene
-      character(len=:), allocatable, intent(inout) :: warnings
-      character(len=*), parameter :: unused_by_modes(6) = [character(len=9) :: 'obstacles', 'impact', 'time', &
-                                                            'initial', 'load', 'solver']
-      character(len=*), parameter :: unused_by_static(3) = [character(len=9) :: 'impact', 'time', 'initial']
-      integer :: k
-      if (scene%kind /= 'modes' .and. scanned%is_given('analysis', 'modes')) &
-         call add('&analysis modes = '//integer_text(scene%modes)//' is ignored: kind = '''//trim(scene%kind)// &
-                  ''' computes no natural modes')
-      if (scanned%is_given('beam', 'k2') .and. (scanned%is_given('beam', 'youngs_modulus') .or. &
-          scanned%is_given('beam', 'density') .or. scanned%is_given('beam', 'area') .or. &
-          scanned%is_given('beam', 'inertia'))) &
-         call add('&beam k2 is ignored: youngs_modulus, density, area and inertia are given (k2 = EI/(rho S))')
-      select case (scene%kind)
-      case ('modes')
-         do k = 1, size(unused_by_modes)
-            if (scanned%group_given(trim(unused_by_modes(k)))) &
-               call add('&'//trim(unused_by_modes(k))//' is ignored: kind = ''modes'' computes the modes of the '// &
-                        'free cantilever')
-         end do
-      case ('static')
-         do k = 1, size(unused_by_static)
-            if (scanned%group_given(trim(unused_by_static(k)))) &
-               call add('&'//trim(unused_by_static(k))//' is ignored: kind = ''static'' solves for the '// &
-                        'equilibrium under the loads at t = 0')
-         end do
-      end select
-   contains
-      subroutine add(line)
-         character(len=*), intent(in) :: line
-         warnings = warnings//line//new_line('a')
-      end subroutine add
-   end subroutine ignored_values
 
    !> After a namelist read of one canonical record: false on success; otherwise true,
    !! with a message naming the assignment (the scanner accepted it, so this is a
@@ -508,6 +487,7 @@ contains
       namelist /sweep/ parameter, values, from, to, count, spacing, mode, parameter2, values2, from2, to2, count2, &
          spacing2, settle, measure, settle_periods, measure_periods, steady_tolerance, keep_runs
       character(len=:), allocatable :: record
+      type(namelist_variable), allocatable :: table(:)
       integer :: ios, k, i
       character(len=256) :: iomsg
       stat = 0
@@ -525,6 +505,17 @@ contains
          read (record, nml=sweep, iostat=ios, iomsg=iomsg)
          if (read_failed(ios, iomsg, scanned%label(k), stat, errmsg)) return
       end do
+      ! the windows and counts given, against their hard ranges (the values of the
+      ! parameter are checked against the parameter's range by resolve_sweep)
+      table = scene_variables()
+      call check_real('settle', settle)
+      call check_real('measure', measure)
+      call check_real('settle_periods', settle_periods)
+      call check_real('measure_periods', measure_periods)
+      call check_real('steady_tolerance', steady_tolerance)
+      call check_integer('count', count)
+      call check_integer('count2', count2)
+      if (stat /= 0) return
       settings%axis(1)%parameter = parameter
       settings%axis(2)%parameter = parameter2
       call axis_values(1, values, from, to, count, spacing, '')
@@ -544,6 +535,30 @@ contains
          settings%level_to_given(i) = scanned%is_given('obstacles', 'level_to', i)
       end do
    contains
+      !> A real of &sweep, when given, against its row of `scene_variables`.
+      subroutine check_real(name, value)
+         character(len=*), intent(in) :: name
+         real(dp), intent(in) :: value
+         character(len=:), allocatable :: problem
+         if (stat /= 0 .or. .not. scanned%is_given('sweep', name)) return
+         problem = real_range_problem(table(variable_index(table, 'sweep', name)), value)
+         if (len(problem) == 0) return
+         stat = 1
+         errmsg = '&sweep '//name//' = '//real_text(value)//' '//problem
+      end subroutine check_real
+
+      !> An integer of &sweep, when given, against its row of `scene_variables`.
+      subroutine check_integer(name, value)
+         character(len=*), intent(in) :: name
+         integer, intent(in) :: value
+         character(len=:), allocatable :: problem
+         if (stat /= 0 .or. .not. scanned%is_given('sweep', name)) return
+         problem = integer_range_problem(table(variable_index(table, 'sweep', name)), value)
+         if (len(problem) == 0) return
+         stat = 1
+         errmsg = '&sweep '//name//' = '//integer_text(value)//' '//problem
+      end subroutine check_integer
+
       !> The leading elements given of values (without gaps), or the range.
       subroutine axis_values(a, list, first, last, number, kind, suffix)
          integer, intent(in) :: a, number

@@ -17,7 +17,7 @@ module vibrobeam_scene
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_namelist_values, only: namelist_variable, variable_index, range_text, choices_text, &
-      kind_real, kind_integer, kind_logical, kind_string
+      kind_real, kind_integer, kind_logical, kind_string, real_range_problem
    implicit none
    private
    public :: scene_type, obstacle_type, scene_entry, max_obstacles, max_points, unset
@@ -525,20 +525,12 @@ contains
          character(len=*), intent(in) :: group, name
          real(dp), intent(in) :: value
          character(len=*), intent(in), optional :: item
-         type(namelist_variable) :: variable
-         character(len=:), allocatable :: label
+         character(len=:), allocatable :: label, problem
          if (stat /= 0) return
-         variable = entry_of(group, name)
          label = '&'//group//' '//name
          if (present(item)) label = label//item
-         if (.not. ieee_is_finite(value)) then
-            call fail(label//' = '//real_text(value)//' is not a finite number: allowed '//range_text(variable))
-         else if (value < variable%lowest .or. value > variable%highest) then
-            call fail(label//' = '//real_text(value)//' is outside '//range_text(variable))
-         else if (abs(value) > 0 .and. abs(value) < variable%smallest_nonzero) then
-            call fail(label//' = '//real_text(value)//' is too small in magnitude: write 0 or a magnitude of at least '// &
-                      real_text(variable%smallest_nonzero)//'; allowed '//range_text(variable))
-         end if
+         problem = real_range_problem(entry_of(group, name), value)
+         if (len(problem) > 0) call fail(label//' = '//real_text(value)//' '//problem)
       end subroutine check_real
 
       subroutine check_integer(group, name, value)

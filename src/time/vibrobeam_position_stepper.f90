@@ -174,11 +174,10 @@ contains
             stat = 3
             return
          end if
+         call self%check_compliant_work(p0, c%p1, stat, errmsg)
+         if (stat /= 0) return
          ! energy: the beam's half-step energy loses sum f dpbar; Phi(pbar) stores it
-         self%dissipated_contact_damping = self%dissipated_contact_damping + sum((c%force - c%elastic)*(c%p1 - p0))
-         self%dissipated_numerical = self%dissipated_numerical + sum(c%elastic*(c%p1 - p0)) - &
-            sum(stop_potential(springs%stiffness, springs%exponent, c%p1) - &
-                stop_potential(springs%stiffness, springs%exponent, p0))
+         call self%compliant_energy(p0, c%p1)
          self%contact_force = 0
          do j = 1, springs%count
             self%contact_force(springs%point(j)) = self%contact_force(springs%point(j)) + springs%sign(j)* &

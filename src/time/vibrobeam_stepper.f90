@@ -4,6 +4,7 @@
 !! `vibrobeam_position_stepper`) extend it; the recorder and the run loop see only this.
 module vibrobeam_stepper
    use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_status, only: stat_residual_check_failed
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_matvec, band_combination, band_factor
    use vibrobeam_model, only: beam_model
    use vibrobeam_contact_points, only: contact_set
@@ -15,7 +16,12 @@ module vibrobeam_stepper
    use vibrobeam_contact_points, only: contact_value
    implicit none
    private
-   public :: time_stepper, save_stepper_state, restore_stepper_state
+   public :: time_stepper, save_stepper_state, restore_stepper_state, unresolved_fraction
+
+   !> The largest share of the energy scale the compliant stops' unresolved work may reach
+   !! before the run stops as a numerical failure (docs/theory.md section 8, "Accuracy"):
+   !! sqrt(eps), the energy to half its digits.
+   real(dp), parameter :: unresolved_fraction = sqrt(epsilon(1.0_dp))
 
    type, abstract :: time_stepper
       real(dp) :: dt = 0, theta = 0.5_dp, restitution = 1
@@ -48,6 +54,11 @@ module vibrobeam_stepper
                                              !! 0 for theta = 1/2; 0 for the position scheme
       ! compliant stops (docs/theory.md section 8); unused when contacts%springs%count = 0
       real(dp) :: dissipated_contact_damping = 0   !! energy taken by the stops' damping (J)
+      !> sum over the steps of |sum_j (f_j - f_j^law)(p_j^{n+1} - p_j^n)|: the work of the
+      !! force residual Newton's method left (J; part of dissipated_numerical, signed there)
+      real(dp) :: unresolved_work = 0
+      !> the energy scale max(|E|, |W|, |D|) at the last comparison with unresolved_work (J)
+      real(dp) :: energy_scale = 0
       integer :: compliant_rule = rule_gradient    !! how a step takes the stop force (vibrobeam_compliant_law)
       type(compliant_solver) :: compliant          !! the step's Newton solve with springs
       !> force of the compliant stops on each contact point at t (N, positive upwards;
@@ -59,6 +70,7 @@ module vibrobeam_stepper
       procedure :: elastic_energy
       procedure :: contact_potential
       procedure :: compliant_energy
+      procedure :: check_compliant_work
       procedure :: spring_penetrations
       procedure :: set_up_system
       procedure :: damping_times
@@ -119,26 +131,63 @@ contains
       end associate
    end function contact_potential
 
-   !> Energy bookkeeping of the compliant stops over the step that ends at `u_new` (call it
-   !! before U^n is replaced): the beam lost sum_j f_j (p_j^{n+1} - p_j^n) to the stops (f_j
-   !! the force the step applied), of which Phi_j(p^{n+1}) - Phi_j(p^n) is stored,
-   !! (f_j - elastic_j) dp_j >= 0 is taken by the contact damping and the rest,
+   !> Energy bookkeeping of the compliant stops over a step whose penetrations go from p0
+   !! to p1 (both schemes: the velocity scheme's p(U^n), p(U^{n+1}); the position scheme's
+   !! half-step ones): the beam lost sum_j f_j (p1_j - p0_j) to the stops (f_j the force
+   !! the step applied), of which Phi_j(p1) - Phi_j(p0) is stored, (f_j^law - elastic_j) dp_j
+   !! >= 0 is taken by the contact damping (f^law the rule's force at p0, p1, elastic its
+   !! elastic part) and the rest is the time discretization's, `dissipated_numerical`:
    !! elastic_j dp_j - dPhi_j (round-off for the 'gradient' rule; the 'mean' rule's error at
-   !! a step that engages or releases a stop), is the time discretization's: it goes to
-   !! `dissipated_numerical` (docs/theory.md section 8).
-   subroutine compliant_energy(self, u_new)
+   !! a step that engages or releases a stop) and (f_j - f_j^law) dp_j, the work of the
+   !! residual Newton's method left (docs/theory.md section 8, "Energy" and "Accuracy").
+   subroutine compliant_energy(self, p0, p1)
       class(time_stepper), intent(inout) :: self
-      real(dp), intent(in) :: u_new(:)
-      real(dp) :: p0(self%contacts%springs%count), p1(self%contacts%springs%count)
+      real(dp), intent(in) :: p0(:), p1(:)
       associate (springs => self%contacts%springs, c => self%compliant)
-         p0 = self%spring_penetrations(self%u)
-         p1 = self%spring_penetrations(u_new)
-         self%dissipated_contact_damping = self%dissipated_contact_damping + sum((c%force - c%elastic)*(p1 - p0))
+         self%dissipated_contact_damping = self%dissipated_contact_damping + sum((c%law_force - c%elastic)*(p1 - p0))
          self%dissipated_numerical = self%dissipated_numerical + sum(c%elastic*(p1 - p0)) - &
             sum(stop_potential(springs%stiffness, springs%exponent, p1) - &
-                stop_potential(springs%stiffness, springs%exponent, p0))
+                stop_potential(springs%stiffness, springs%exponent, p0)) + sum((c%force - c%law_force)*(p1 - p0))
       end associate
    end subroutine compliant_energy
+
+   !> After the compliant solve of a step whose penetrations go from p0 to p1, before the
+   !! step is taken: the work of the force residual Newton's method left, |sum_j (f_j -
+   !! f_j^law)(p1_j - p0_j)|, is added to `unresolved_work`; stat_residual_check_failed
+   !! (the run stops, exit 3) when the sum exceeds unresolved_fraction of the energy scale
+   !! max(|E|, |W|, |D|) (evaluated, at the start of the step, only when the sum passes
+   !! the fraction of the last scale). The rule's energy identity then no longer holds to
+   !! half the digits: a stop too stiff for the arithmetic at this dt (docs/theory.md
+   !! section 8, "Accuracy").
+   subroutine check_compliant_work(self, p0, p1, stat, errmsg)
+      class(time_stepper), intent(inout) :: self
+      real(dp), intent(in) :: p0(:), p1(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp) :: total, dissipated
+      character(len=24) :: text(3)
+      stat = 0
+      errmsg = ''
+      total = self%unresolved_work + abs(sum((self%compliant%force - self%compliant%law_force)*(p1 - p0)))
+      if (total > unresolved_fraction*self%energy_scale) then
+         dissipated = self%dissipated_impacts + self%dissipated_damping + self%dissipated_numerical + &
+                      self%dissipated_contact_damping
+         self%energy_scale = max(self%energy_scale, abs(self%kinetic_energy() + self%elastic_energy() + &
+                                 self%contact_potential()), abs(self%work), abs(dissipated))
+         if (total > unresolved_fraction*self%energy_scale) then
+            stat = stat_residual_check_failed
+            write (text(1), '(es10.3)') total
+            write (text(2), '(es10.3)') total/max(self%energy_scale, tiny(1.0_dp))
+            write (text(3), '(es10.3)') unresolved_fraction
+            errmsg = 'the compliant stops are not resolved: the force residual of their Newton solves has done '// &
+                     trim(adjustl(text(1)))//' J of work, '//trim(adjustl(text(2)))//' of the energy scale (at most '// &
+                     trim(adjustl(text(3)))//'); a stop is too stiff for dt: reduce dt or its stiffness '// &
+                     '(docs/theory.md section 8, "Accuracy")'
+            return
+         end if
+      end if
+      self%unresolved_work = total
+   end subroutine check_compliant_work
 
    !> What both schemes set up the same way: the data of the run, the iteration matrix
    !! W = mass_coefficient M + stiffness_coefficient K (each scheme gives its own
@@ -195,6 +244,7 @@ contains
       if (self%contacts%springs%count > 0) then
          call record%put_reals('stepper.contact_damping', [self%dissipated_contact_damping])
          call record%put_reals('stepper.contact_force', self%contact_force)
+         call record%put_reals('stepper.compliant_accuracy', [self%unresolved_work, self%energy_scale])
       end if
    end subroutine save_stepper_state
 
@@ -213,6 +263,13 @@ contains
          call record%get_reals('stepper.contact_damping', sums(1:1), stat, errmsg)
          if (stat == 0) self%dissipated_contact_damping = sums(1)
          if (stat == 0) call record%get_reals('stepper.contact_force', self%contact_force, stat, errmsg)
+         if (stat == 0) call record%get_reals('stepper.energy_sums', sums, stat, errmsg)
+      end if
+      ! checkpoints written before issue 23 do not hold it: the sum starts again at 0
+      if (stat == 0 .and. self%contacts%springs%count > 0 .and. record%find('stepper.compliant_accuracy') > 0) then
+         call record%get_reals('stepper.compliant_accuracy', sums(1:2), stat, errmsg)
+         if (stat == 0) self%unresolved_work = sums(1)
+         if (stat == 0) self%energy_scale = sums(2)
          if (stat == 0) call record%get_reals('stepper.energy_sums', sums, stat, errmsg)
       end if
       if (stat /= 0) return

@@ -51,7 +51,8 @@ module vibrobeam_velocity_stepper
       ! u = U^n, v = V^n; work = sum F^{n+theta}.(U^{n+1} - U^n),
       ! dissipated_impacts = -sum P.H (V^{n+1} + V^n)/2,
       ! dissipated_damping = sum dt V^{n+theta}.C V^{n+theta},
-      ! dissipated_numerical = sum (theta - 1/2) (dV.M dV + dU.K dU - P.H dV)
+      ! dissipated_numerical = sum (theta - 1/2) (dV.M dV + dU.K dU - P.H dV) + the springs' rule error
+      !                        (`compliant_energy`; the springs take no part in the theta-term)
    contains
       procedure :: init
       procedure :: step
@@ -105,7 +106,7 @@ contains
       class(velocity_stepper), intent(inout) :: self
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp) :: predicted, e_c, spring_power
+      real(dp) :: predicted, e_c
       integer :: c, m
       logical :: finite
       ! every vector lives in the stepper's work space (allocated by `init`); the new state
@@ -155,10 +156,8 @@ contains
       end associate
       ! 3. projection (with no active point it is the identity: V^{n+1} = V_free), with the
       ! compliant stops' forces when the scene has any
-      spring_power = 0
       if (self%contacts%springs%count > 0) then
-         call self%compliant_step(self%v_free, self%signs(1:m), self%offsets(1:m), self%v_new, spring_power, &
-                                  stat, errmsg)
+         call self%compliant_step(self%v_free, self%signs(1:m), self%offsets(1:m), self%v_new, stat, errmsg)
          if (stat /= 0) return
          call complete(self%v_new)
       else if (m > 0) then
@@ -212,15 +211,19 @@ contains
             end do
             finite = ieee_is_finite(total)
             if (.not. finite) return
-            ! energy bookkeeping (docs/method.md "Energies"; theory §6). With dV = V^{n+1} - V^n,
-            ! dU = U^{n+1} - U^n = dt V^{n+theta}, the step equations give exactly
+            ! energy bookkeeping (docs/method.md "Energies"; theory §6 and §8). With
+            ! dV = V^{n+1} - V^n, dU = U^{n+1} - U^n = dt V^{n+theta}, the step equations give exactly
             !   E^{n+1} - E^n = F^{n+theta}.dU - dt V^{n+theta}.C V^{n+theta}
-            !                   + P.H (V^{n+1} + V^n)/2 - (theta - 1/2) (dV.M dV + dU.K dU - P.H dV),
+            !                   + P.H (V^{n+1} + V^n)/2 - (theta - 1/2) (dV.M dV + dU.K dU - P.H dV)
+            !                   - sum_j f_j (p_j^{n+1} - p_j^n),
             ! so the impacts take -P.H (V^{n+1} + V^n)/2 (>= 0 by Newton's law with e_c <= 1 on
-            ! approaching points and e_c = 1 on separating ones) and the theta-method the last
-            ! term (0 for theta = 1/2; >= 0 in every step without impulses for theta > 1/2).
+            ! approaching points and e_c = 1 on separating ones) and the theta-method the
+            ! (theta - 1/2) term (0 for theta = 1/2; >= 0 in every step without impulses for
+            ! theta > 1/2). The springs' impulses dt s_j f_j H_j^T do the work
+            ! dt s_j f_j H_j V^{n+theta} = -f_j dp_j whole, booked by `compliant_energy`: they
+            ! have no part in the theta-term (theory §8, "Energy").
             if (self%loads%present) self%work = self%work + work
-            impulse_power = spring_power
+            impulse_power = 0
             do k = 1, m
                self%velocity_after(k) = contact_value(self%contacts, self%active(k), v_next)
                self%dissipated_impacts = self%dissipated_impacts - 0.5_dp*self%impulse(k)* &
@@ -241,7 +244,8 @@ contains
                self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)* &
                                            (dot_product(rhs, work_vector) - impulse_power)
             end if
-            if (self%contacts%springs%count > 0) call self%compliant_energy(u_new)
+            if (self%contacts%springs%count > 0) &
+               call self%compliant_energy(self%spring_penetrations(u), self%spring_penetrations(u_new))
          end associate
       end subroutine complete
    end subroutine step
@@ -249,12 +253,12 @@ contains
    !> Step 3 with compliant stops: V^{n+1} from Newton's method on
    !! W (V - V_free) = dt sum_j s_j f_j(p_j) H_j^T + H^T P, p_j = s_j (g_j - H_j U^{n+1}),
    !! U^{n+1} = U^n + dt ((1 - theta) V^n + theta V), with the rigid projection of the
-   !! active points inside each iteration. spring_power = sum_j dt s_j f_j H_j (V^{n+1} - V^n),
-   !! the springs' part of the theta-method's term. stat 3 when Newton fails (exit 3).
-   subroutine compliant_step(self, v_free, signs, offsets, v_new, spring_power, stat, errmsg)
+   !! active points inside each iteration. stat 3 when Newton fails (exit 3), or the
+   !! failure of `check_compliant_work` when the force residual it left is not negligible.
+   subroutine compliant_step(self, v_free, signs, offsets, v_new, stat, errmsg)
       class(velocity_stepper), intent(inout) :: self
       real(dp), intent(in) :: v_free(:), signs(:), offsets(:)
-      real(dp), intent(out) :: v_new(:), spring_power
+      real(dp), intent(out) :: v_new(:)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp) :: p0(self%contacts%springs%count), q(self%contacts%springs%count)
@@ -273,11 +277,10 @@ contains
             stat = 3
             return
          end if
-         spring_power = 0
+         call self%check_compliant_work(p0, self%compliant%p1, stat, errmsg)
+         if (stat /= 0) return
          self%contact_force = 0
          do j = 1, springs%count
-            spring_power = spring_power + dt*springs%sign(j)*self%compliant%force(j)* &
-                           contact_value(self%contacts, springs%point(j), v_new - self%v)
             self%contact_force(springs%point(j)) = self%contact_force(springs%point(j)) + springs%sign(j)* &
                end_force(springs%stiffness(j), springs%exponent(j), springs%damping(j), dt, p0(j), self%compliant%p1(j))
          end do

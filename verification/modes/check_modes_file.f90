@@ -1,15 +1,16 @@
 !> Verification driver: reads /modes/frequency and /modes/shape from a vibrobeam result
 !! file and compares them with the closed-form cantilever (theory §7) for the beam given on
 !! the command line:  check_modes_file FILE L E RHO AREA INERTIA FREQUENCY_TOLERANCE SHAPE_TOLERANCE
-!! Frequencies are compared in Hz; shapes at the nodes (tip value 1) with the closed form.
+!! Frequencies are compared in Hz (the roots beta_n L quoted to 20 digits,
+!! scripts/cantilever_roots.py); shapes at the nodes (tip value 1) with the closed form.
 program check_modes_file
    use vibrobeam_kinds, only: dp, output_unit, pi
    use vibrobeam_hdf5, only: read_real_1d, read_real_2d
    use vibrobeam_cantilever_exact, only: cantilever_mode_shape
    use vibrobeam_test_support, only: test_counter
    implicit none
-   real(dp), parameter :: beta_l(6) = [1.8751040687_dp, 4.6940911330_dp, 7.8547574382_dp, &
-                                       10.9955407349_dp, 14.1371683910_dp, 17.2787595321_dp]
+   real(dp), parameter :: beta_l(6) = [1.8751040687119611664_dp, 4.6940911329741745764_dp, 7.8547574382376125649_dp, &
+                                       10.995540734875466991_dp, 14.137168391046470581_dp, 17.278759532088236334_dp]
    type(test_counter) :: t
    character(len=512) :: file, argument
    real(dp) :: length, young, density, area, inertia, tolerance, shape_tolerance, exact_hz, shape_error

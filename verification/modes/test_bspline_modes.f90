@@ -6,7 +6,7 @@
 !!    exceeds 1e-9: must lie in [3.7, 4.5].
 !! 2. Per unknown: at equal numbers of unknowns J (Hermite N = J/2, B-splines N = J - 1),
 !!    B-splines are more accurate than Hermite elements for each of the first 6 modes,
-!!    for J = 16, 32, 64 (errors above the 1e-11 floor of the reference values).
+!!    for J = 16, 32, 64 (the reference roots are quoted to 20 digits, scripts/cantilever_roots.py).
 !! Prints both tables (README, "Choosing a discretization").
 program test_bspline_modes
    use vibrobeam_kinds, only: dp, output_unit
@@ -16,8 +16,8 @@ program test_bspline_modes
    implicit none
    type(test_counter) :: t
    integer, parameter :: modes = 6, meshes(6) = [4, 8, 16, 32, 64, 128], unknowns(3) = [16, 32, 64]
-   real(dp), parameter :: beta_l(modes) = [1.8751040687_dp, 4.6940911330_dp, 7.8547574382_dp, &
-                                           10.9955407349_dp, 14.1371683910_dp, 17.2787595321_dp]
+   real(dp), parameter :: beta_l(modes) = [1.8751040687119611664_dp, 4.6940911329741745764_dp, 7.8547574382376125649_dp, &
+                                           10.995540734875466991_dp, 14.137168391046470581_dp, 17.278759532088236334_dp]
    real(dp) :: error(size(meshes), modes), hermite(modes), spline(modes), order
    integer :: k, n
    character(len=64) :: label

@@ -1,11 +1,14 @@
 !> Verification: natural frequencies of a cantilever (k2 = 1, L = 1) from the Hermite model
 !! against the closed form omega_n = (beta_n L)^2 sqrt(k2)/L^2 with the beta_n L of theory §7
-!! (quoted to 11 digits, so the reference is good to ~1e-10 relative).
+!! (quoted to 20 digits from scripts/cantilever_roots.py, so the reference is exact to the
+!! rounding of a double, ~1e-16 relative; with the 11 digits quoted before, its error was
+!! up to 1.3e-11 relative, 2.5 % of mode 1's error at N = 64).
 !! Acceptance (issue 2): relative error of mode 1 below 1e-7 at N = 32; observed order of
 !! convergence between 3.7 and 4.3 for modes 1-4, fitted by least squares on log(error)
 !! against log(h) over the asymptotic range N >= 8 (at N = 4 mode 4 has less than one
-!! element per half wave) and where the error exceeds 1e-9 (below that the reference's 11
-!! digits and round-off dominate). Prints the table that README quotes.
+!! element per half wave) and where the error exceeds 1e-9 (below that the round-off of the
+!! computed frequencies, ~1e-13 relative, starts to bend the fit). Prints the table that
+!! README quotes.
 program test_modes_convergence
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_model, only: beam_model, build_model
@@ -14,8 +17,8 @@ program test_modes_convergence
    implicit none
    type(test_counter) :: t
    integer, parameter :: meshes(5) = [4, 8, 16, 32, 64], modes = 6
-   real(dp), parameter :: beta_l(modes) = [1.8751040687_dp, 4.6940911330_dp, 7.8547574382_dp, &
-                                           10.9955407349_dp, 14.1371683910_dp, 17.2787595321_dp]
+   real(dp), parameter :: beta_l(modes) = [1.8751040687119611664_dp, 4.6940911329741745764_dp, 7.8547574382376125649_dp, &
+                                           10.995540734875466991_dp, 14.137168391046470581_dp, 17.278759532088236334_dp]
    real(dp), parameter :: floor_error = 1e-9_dp
    type(beam_model) :: model
    real(dp), allocatable :: omega(:), shapes(:,:), vectors(:,:)

@@ -7,8 +7,11 @@
 !! the file, the HDF5 path and the operation that failed, with the reason HDF5 recorded
 !! (`h5_reason`: the C library's errno text when there is one, e.g. 'No space left on
 !! device'); nothing stops or prints. HDF5's automatic error-stack printing is switched off
-!! when the library is initialised here. This module owns the library's initialisation
-!! (`h5open_f`); `close_library` is called once, by the program, before it exits.
+!! by `initialize_library`, which every file opening or creation calls: the switch belongs
+!! to the calling thread in a thread-safe HDF5 (each thread has its own error stack, born
+!! with printing on), and a sweep's OpenMP threads write their points' files themselves.
+!! This module owns the library's initialisation (`h5open_f`); `close_library` is called
+!! once, by the program, before it exits.
 module vibrobeam_hdf5_base
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_int64_t, c_null_char
    use vibrobeam_kinds, only: dp, int64
@@ -84,8 +87,11 @@ contains
       end do
    end function h5_reason
 
-   !> Initialise the HDF5 library once per process and switch off its automatic
-   !! error-stack printing (failures are reported through stat/errmsg instead).
+   !> Initialise the HDF5 library once per process, and switch off its automatic
+   !! error-stack printing for the calling thread (failures are reported through
+   !! stat/errmsg instead). Called before every file is opened or created, so that each
+   !! thread that uses HDF5 has switched the printing off before its first HDF5 call on a
+   !! file; the switch costs a few instructions.
    subroutine initialize_library(stat, errmsg)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
@@ -93,18 +99,16 @@ contains
 
       stat = 0
       errmsg = ''
-      if (library_initialized) return
-      call h5open_f(hdferr)
-      if (hdferr < 0) then
-         call fail(stat, errmsg, 'cannot initialise the HDF5 library (h5open_f)')
-         return
+      if (.not. library_initialized) then
+         call h5open_f(hdferr)
+         if (hdferr < 0) then
+            call fail(stat, errmsg, 'cannot initialise the HDF5 library (h5open_f)')
+            return
+         end if
+         library_initialized = .true.
       end if
       call h5eset_auto_f(0, hdferr)
-      if (hdferr < 0) then
-         call fail(stat, errmsg, 'cannot switch off HDF5 automatic error printing')
-         return
-      end if
-      library_initialized = .true.
+      if (hdferr < 0) call fail(stat, errmsg, 'cannot switch off HDF5 automatic error printing')
    end subroutine initialize_library
 
    !> Set stat = 1 and errmsg = message, followed by the reason HDF5 recorded for its last

@@ -35,6 +35,7 @@ module vibrobeam_hdf5_reader
       procedure :: open => reader_open
       procedure :: close => reader_close
       procedure :: exists => reader_exists
+      procedure :: has_attr => reader_has_attr
       procedure :: shape => reader_shape
       procedure :: read_rows => reader_read_rows
       procedure :: read_reals => reader_read_reals
@@ -76,6 +77,23 @@ contains
       exists = .false.
       if (self%file_id /= no_id) exists = link_exists(self%file_id, path)
    end function reader_exists
+
+   !> True when the object `object_path` of the open file exists and has the attribute
+   !! `name`.
+   function reader_has_attr(self, object_path, name) result(exists)
+      class(h5_reader), intent(in) :: self
+      character(len=*), intent(in) :: object_path, name
+      logical :: exists
+      integer(hid_t) :: object_id
+      integer :: hdferr, close_error
+      exists = .false.
+      if (.not. self%exists(object_path)) return
+      call h5oopen_f(self%file_id, trim(object_path), object_id, hdferr)
+      if (hdferr < 0) return
+      call h5aexists_f(object_id, trim(name), exists, hdferr)
+      if (hdferr < 0) exists = .false.
+      call h5oclose_f(object_id, close_error)
+   end function reader_has_attr
 
    !> The dimensions of dataset `path` in Fortran order (columns first, rows last; a 1-d
    !! dataset of n values gives [n]).

@@ -1,12 +1,14 @@
 !> What a value of a namelist variable may be: the schema entry of a variable (kind,
 !! extent, longest string, hard range, keywords, unit), the checks of a value as written
-!! before any conversion (`value_problem`), and the texts of what is allowed that every
-!! message about a variable ends with.
+!! before any conversion (`value_problem`), the checks of a converted number against the
+!! hard range (`real_range_problem`, `integer_range_problem`), and the texts of what is
+!! allowed that every message about a variable ends with.
 !!
 !! Reals are checked on their text: the decimal exponent is computed from the digits
 !! (`real_exponent`), so that 1e400 or 1e-400 is refused without being converted (the
 !! conversion of 1e400 traps under -ffpe-trap=overflow inside the run-time library).
 module vibrobeam_namelist_values
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_namelist_tokens, only: abbreviated, lowercase
@@ -15,7 +17,8 @@ module vibrobeam_namelist_values
    public :: namelist_variable, scanned_value
    public :: kind_real, kind_integer, kind_logical, kind_string
    public :: form_word, form_string, form_null
-   public :: value_problem, allowed_text, range_text, choices_text, element_label, shown_value
+   public :: value_problem, real_range_problem, integer_range_problem
+   public :: allowed_text, range_text, choices_text, element_label, shown_value
    public :: real_exponent, integer_value, is_name, first_match, variable_index, group_names
 
    integer, parameter :: kind_real = 1, kind_integer = 2, kind_logical = 3, kind_string = 4
@@ -110,6 +113,35 @@ contains
          end if
       end select
    end function value_problem
+
+   !> '' when the converted real `value` lies in the hard range of `variable` (finite,
+   !! inside [lowest, highest], and 0 or at least `smallest_nonzero` in magnitude),
+   !! otherwise the reason and what is allowed, to follow 'group name = value'.
+   function real_range_problem(variable, value) result(problem)
+      type(namelist_variable), intent(in) :: variable
+      real(dp), intent(in) :: value
+      character(len=:), allocatable :: problem
+      problem = ''
+      if (.not. ieee_is_finite(value)) then
+         problem = 'is not a finite number: '//allowed_text(variable)
+      else if (value < variable%lowest .or. value > variable%highest) then
+         problem = 'is outside '//range_text(variable)
+      else if (abs(value) > 0 .and. abs(value) < variable%smallest_nonzero) then
+         problem = 'is too small in magnitude: write 0 or a magnitude of at least '// &
+                   real_text(variable%smallest_nonzero)//'; '//allowed_text(variable)
+      end if
+   end function real_range_problem
+
+   !> '' when the integer `value` lies in the hard range of `variable`, otherwise
+   !! 'is outside [lowest, highest]'.
+   function integer_range_problem(variable, value) result(problem)
+      type(namelist_variable), intent(in) :: variable
+      integer, intent(in) :: value
+      character(len=:), allocatable :: problem
+      problem = ''
+      if (value < variable%lowest_integer .or. value > variable%highest_integer) &
+         problem = 'is outside '//range_text(variable)
+   end function integer_range_problem
 
    !> 'allowed ...' for a variable: its range, its choices or its form.
    function allowed_text(variable) result(text)

@@ -1,0 +1,213 @@
+!> Warnings for values that the file gives and the run does not use (docs/input.md,
+!! "Warnings"): a value that is silently ignored leaves its author believing it acted.
+!! Which variables were given comes from the scanner (`scanned_file`), never from
+!! comparing a value with its default.
+!!
+!! A value is ignored because of another value of the scene (a mode number beside
+!! displacement = 'zero', a frequency beside a zero amplitude, an exponent on a rigid
+!! stop); when a sweep varies that other value (`swept`), the value may act at some points
+!! and no warning is given.
+module vibrobeam_ignored_values
+   use vibrobeam_kinds, only: dp
+   use vibrobeam_text, only: integer_text, real_text
+   use vibrobeam_scene, only: scene_type, scene_variables
+   use vibrobeam_namelist_scanned, only: scanned_file
+   use vibrobeam_namelist_values, only: namelist_variable, variable_index
+   implicit none
+   private
+   public :: ignored_values
+
+contains
+
+   !> Append to `warnings` one line for each value given that the analysis does not use.
+   !! `swept`: the inputs a sweep varies, as 'group.variable' in lower case, without an
+   !! element index (none for a single run).
+   subroutine ignored_values(scanned, scene, swept, warnings)
+      type(scanned_file), intent(in) :: scanned
+      type(scene_type), intent(in) :: scene
+      character(len=*), intent(in) :: swept(:)
+      character(len=:), allocatable, intent(inout) :: warnings
+      character(len=*), parameter :: unused_by_modes(6) = [character(len=9) :: 'obstacles', 'impact', 'time', &
+                                                            'initial', 'load', 'solver']
+      character(len=*), parameter :: unused_by_static(3) = [character(len=9) :: 'impact', 'time', 'initial']
+      !> &initial variables that describe the initial state
+      character(len=*), parameter :: initial_state(6) = [character(len=22) :: 'displacement', 'displacement_mode', &
+                                                          'displacement_amplitude', 'velocity', 'velocity_mode', &
+                                                          'velocity_amplitude']
+      character(len=:), allocatable :: kind_reason, item
+      logical :: any_compliant, any_rigid
+      integer :: k, i
+      kind_reason = 'kind = '''//trim(scene%kind)//''''
+      if (scene%kind /= 'modes' .and. scanned%is_given('analysis', 'modes')) &
+         call add('&analysis modes = '//integer_text(scene%modes)//' is ignored: '//kind_reason// &
+                  ' computes no natural modes')
+      if (scanned%is_given('beam', 'k2') .and. (scanned%is_given('beam', 'youngs_modulus') .or. &
+          scanned%is_given('beam', 'density') .or. scanned%is_given('beam', 'area') .or. &
+          scanned%is_given('beam', 'inertia'))) &
+         call add('&beam k2 is ignored: youngs_modulus, density, area and inertia are given (k2 = EI/(rho S))')
+      select case (scene%kind)
+      case ('modes')
+         do k = 1, size(unused_by_modes)
+            if (scanned%group_given(trim(unused_by_modes(k)))) &
+               call add('&'//trim(unused_by_modes(k))//' is ignored: kind = ''modes'' computes the modes of the '// &
+                        'free cantilever')
+         end do
+      case ('static')
+         do k = 1, size(unused_by_static)
+            if (scanned%group_given(trim(unused_by_static(k)))) &
+               call add('&'//trim(unused_by_static(k))//' is ignored: kind = ''static'' solves for the '// &
+                        'equilibrium under the loads at t = 0')
+         end do
+      end select
+
+      ! &beam damping and &output histories: dynamics only
+      if (scene%kind /= 'dynamics') then
+         call given_real('beam', 'rayleigh_mass', scene%rayleigh_mass, kind_reason//' has no damping')
+         call given_real('beam', 'rayleigh_stiffness', scene%rayleigh_stiffness, kind_reason//' has no damping')
+         ! what shapes a dynamics run's histories, statistics and checkpoints
+         item = ' is ignored: '//kind_reason//' writes no histories (they belong to kind = ''dynamics'')'
+         if (scanned%is_given('output', 'every')) call add('&output every = '//integer_text(scene%every)//item)
+         if (scanned%is_given('output', 'field_every')) &
+            call add('&output field_every = '//integer_text(scene%field_every)//item)
+         if (scanned%is_given('output', 'points', 1)) call add('&output points'//item)
+         call given_real('output', 'measure_from', scene%measure_from, item(14:))
+         call given_real('output', 'checkpoint_seconds', scene%checkpoint_seconds, item(14:))
+         call given_real('output', 'episode_gap', scene%episode_gap, item(14:))
+         if (scanned%is_given('output', 'poincare_load')) &
+            call add('&output poincare_load = '''//trim(scene%poincare_load)//''''//item)
+      end if
+
+      ! &mesh: the reduction steps a dynamics run only
+      if (scene%reduction /= 'none' .and. scene%kind /= 'dynamics') then
+         call add('&mesh reduction = '''//trim(scene%reduction)//''' is ignored: '//kind_reason// &
+                  ' solves the full model (the reduction is for kind = ''dynamics'')')
+      end if
+      if (scene%reduction == 'none' .or. scene%kind /= 'dynamics') then
+         if (scanned%is_given('mesh', 'reduction_modes')) &
+            call add('&mesh reduction_modes = '//integer_text(scene%reduction_modes)//' is ignored: '// &
+                     reduction_reason())
+         call given_real('mesh', 'reduction_frequency', scene%reduction_frequency, reduction_reason())
+      end if
+
+      if (scene%kind == 'modes') return
+
+      ! &obstacles: what a rigid or a punctual obstacle does not use
+      any_compliant = any(scene%obstacles%stiffness > 0) .or. is_swept('obstacles.stiffness')
+      any_rigid = any(scene%obstacles%stiffness <= 0) .or. is_swept('obstacles.stiffness')
+      do i = 1, size(scene%obstacles)
+         item = '('//integer_text(i)//')'
+         associate (o => scene%obstacles(i))
+            if (o%stiffness <= 0 .and. scanned%is_given('obstacles', 'exponent', i) .and. &
+                .not. is_swept('obstacles.stiffness')) &
+               call add('&obstacles exponent'//item//' = '//real_text(o%exponent)//' is ignored: obstacle '// &
+                        integer_text(i)//' is rigid (stiffness'//item//' = 0); the exponent shapes the force of a '// &
+                        'compliant stop')
+            if (o%x_to <= o%x_from .and. scanned%is_given('obstacles', 'level_to', i) .and. &
+                .not. (is_swept('obstacles.x_from') .or. is_swept('obstacles.x_to'))) &
+               call add('&obstacles level_to'//item//' = '//real_text(o%level_to)//' m is ignored: obstacle '// &
+                        integer_text(i)//' is punctual (x_to = x_from = '//real_text(o%x_from)// &
+                        ' m): its level is level_from'//item)
+         end associate
+      end do
+
+      ! &load: a frequency, phase or position of a load whose amplitude is zero
+      if (abs(scene%distributed) <= 0 .and. .not. is_swept('load.distributed')) then
+         call given_real('load', 'distributed_frequency', scene%distributed_frequency, 'distributed = 0')
+         call given_real('load', 'distributed_phase', scene%distributed_phase, 'distributed = 0')
+      end if
+      if (abs(scene%point_force) <= 0 .and. .not. is_swept('load.point_force')) then
+         call given_real('load', 'point_frequency', scene%point_frequency, 'point_force = 0')
+         call given_real('load', 'point_position', scene%point_position, 'point_force = 0')
+      end if
+      if (abs(scene%base_amplitude) <= 0 .and. abs(scene%base_acceleration) <= 0 .and. &
+          .not. (is_swept('load.base_amplitude') .or. is_swept('load.base_acceleration'))) &
+         call given_real('load', 'base_frequency', scene%base_frequency, 'base_amplitude = 0 and base_acceleration = 0')
+      if (scene%kind == 'static') then
+         ! the loads at t = 0: cos(0) = 1 for the harmonic ones, sin(0) = 0 for the base's
+         ! (a frequency beside a zero amplitude has had its warning above)
+         if (abs(scene%distributed) > 0) call given_real('load', 'distributed_frequency', &
+                                                         scene%distributed_frequency, kind_reason//' takes the loads at t = 0')
+         if (abs(scene%point_force) > 0) call given_real('load', 'point_frequency', scene%point_frequency, &
+                                                         kind_reason//' takes the loads at t = 0')
+         call given_real('load', 'base_amplitude', scene%base_amplitude, kind_reason//' takes the loads at t = 0, '// &
+                         'where the base excitation''s load (sin 0) is 0')
+         call given_real('load', 'base_acceleration', scene%base_acceleration, kind_reason//' takes the loads at '// &
+                         't = 0, where the base excitation''s load (sin 0) is 0')
+         if (abs(scene%base_amplitude) > 0 .or. abs(scene%base_acceleration) > 0) &
+            call given_real('load', 'base_frequency', scene%base_frequency, kind_reason//' takes the loads at '// &
+                            't = 0, where the base excitation''s load (sin 0) is 0')
+      end if
+
+      if (scene%kind /= 'dynamics') return
+
+      ! &time and &impact: what the scheme or the obstacles do not use
+      if (scene%scheme == 'position') call given_real('time', 'gamma', scene%gamma, &
+                                                      'scheme = ''position'' activates contacts by position')
+      if (.not. any_compliant .and. scanned%is_given('time', 'compliant_rule')) &
+         call add('&time compliant_rule = '''//trim(scene%compliant_rule)//''' is ignored: no obstacle is compliant '// &
+                  '(stiffness > 0)')
+      if (.not. any_rigid) then
+         call given_real('impact', 'restitution', scene%restitution, 'no obstacle is rigid (impacts happen at '// &
+                         'rigid obstacles only)')
+         if (scanned%is_given('impact', 'separating_points')) &
+            call add('&impact separating_points = '''//trim(scene%separating_points)//''' is ignored: no obstacle '// &
+                     'is rigid (impacts happen at rigid obstacles only)')
+      end if
+
+      ! &initial: the checkpoint's state, or the shape a keyword does not use
+      if (len_trim(scene%from_file) > 0) then
+         do k = 1, size(initial_state)
+            if (scanned%is_given('initial', trim(initial_state(k)))) &
+               call add('&initial '//trim(initial_state(k))//' is ignored: from_file continues the state of its '// &
+                        'checkpoint')
+         end do
+         return
+      end if
+      if (scene%displacement /= 'mode') then
+         if (scanned%is_given('initial', 'displacement_mode')) &
+            call add('&initial displacement_mode = '//integer_text(scene%displacement_mode)//' is ignored: '// &
+                     'displacement = '''//trim(scene%displacement)//'''')
+         call given_real('initial', 'displacement_amplitude', scene%displacement_amplitude, &
+                         'displacement = '''//trim(scene%displacement)//'''')
+      end if
+      if (scene%velocity /= 'mode' .and. scanned%is_given('initial', 'velocity_mode')) &
+         call add('&initial velocity_mode = '//integer_text(scene%velocity_mode)//' is ignored: velocity = '''// &
+                  trim(scene%velocity)//'''')
+      if (scene%velocity == 'zero') &
+         call given_real('initial', 'velocity_amplitude', scene%velocity_amplitude, 'velocity = ''zero''')
+   contains
+      subroutine add(line)
+         character(len=*), intent(in) :: line
+         warnings = warnings//line//new_line('a')
+      end subroutine add
+
+      !> The warning for the real group.name, when given: 'value unit is ignored: reason'.
+      subroutine given_real(group, name, value, reason)
+         character(len=*), intent(in) :: group, name, reason
+         real(dp), intent(in) :: value
+         type(namelist_variable), allocatable :: table(:)
+         type(namelist_variable) :: variable
+         character(len=:), allocatable :: unit
+         if (.not. scanned%is_given(group, name)) return
+         allocate (table, source=scene_variables())
+         variable = table(variable_index(table, group, name))
+         unit = trim(variable%unit)
+         if (len(unit) > 0) unit = ' '//unit
+         call add('&'//group//' '//name//' = '//real_text(value)//unit//' is ignored: '//reason)
+      end subroutine given_real
+
+      logical function is_swept(name)
+         character(len=*), intent(in) :: name
+         is_swept = any(swept == name)
+      end function is_swept
+
+      function reduction_reason() result(text)
+         character(len=:), allocatable :: text
+         if (scene%kind /= 'dynamics') then
+            text = kind_reason//' solves the full model'
+         else
+            text = 'reduction = ''none'''
+         end if
+      end function reduction_reason
+   end subroutine ignored_values
+end module vibrobeam_ignored_values

@@ -1,0 +1,78 @@
+#!/usr/bin/env python3
+"""Bitwise comparison of two vibrobeam result files (HDF5), for refactorings that must not
+change any result: every group, dataset and attribute of each file must exist in the other
+with the same type, shape and bytes. Only what describes the process rather than the
+result is left out: /run run_id, wall_seconds and peak_memory_kb, the root attribute
+`program` (the path of the executable) and a sweep's /sweep/wall_seconds (per point).
+
+usage: compare_results.py A.h5 B.h5     exit 0 identical, 1 different (each difference
+                                        listed), 2 a file cannot be read
+Needs h5py (Debian python3-h5py).
+"""
+import sys
+
+import h5py
+import numpy
+
+VOLATILE = {("/run", "run_id"), ("/run", "wall_seconds"), ("/run", "peak_memory_kb"), ("/", "program")}
+VOLATILE_DATASETS = {"/sweep/wall_seconds"}
+
+
+def items(handle):
+    """Every object of the file: path -> (kind, object)."""
+    found = {"/": handle}
+    handle.visititems(lambda name, obj: found.__setitem__("/" + name, obj))
+    return found
+
+
+def same_bytes(a, b):
+    a, b = numpy.asarray(a), numpy.asarray(b)
+    if a.dtype != b.dtype or a.shape != b.shape:
+        return False
+    if a.dtype.kind in "OSU":   # strings: compare as Python values
+        return a.tolist() == b.tolist()
+    return a.tobytes() == b.tobytes()
+
+
+def compare(path_a, path_b):
+    differences = []
+    with h5py.File(path_a, "r") as file_a, h5py.File(path_b, "r") as file_b:
+        objects_a, objects_b = items(file_a), items(file_b)
+        for path in sorted(set(objects_a) | set(objects_b)):
+            if path not in objects_b or path not in objects_a:
+                differences.append(f"{path}: only in {'A' if path in objects_a else 'B'}")
+                continue
+            a, b = objects_a[path], objects_b[path]
+            if type(a) is not type(b):
+                differences.append(f"{path}: a {type(a).__name__} in A, a {type(b).__name__} in B")
+                continue
+            if isinstance(a, h5py.Dataset) and path not in VOLATILE_DATASETS and not same_bytes(a[()], b[()]):
+                differences.append(f"{path}: the values differ (A {a.dtype}{a.shape}, B {b.dtype}{b.shape})")
+            for name in sorted(set(a.attrs) | set(b.attrs)):
+                if (path, name) in VOLATILE:
+                    continue
+                if name not in a.attrs or name not in b.attrs:
+                    differences.append(f"{path} attribute {name}: only in {'A' if name in a.attrs else 'B'}")
+                elif not same_bytes(a.attrs[name], b.attrs[name]):
+                    differences.append(f"{path} attribute {name}: {a.attrs[name]!r} in A, {b.attrs[name]!r} in B")
+    return differences
+
+
+def main(argv):
+    if len(argv) != 3:
+        print(__doc__, file=sys.stderr)
+        return 2
+    try:
+        differences = compare(argv[1], argv[2])
+    except OSError as error:
+        print(f"compare_results: {error}", file=sys.stderr)
+        return 2
+    if differences:
+        print(f"{argv[1]} and {argv[2]} differ in {len(differences)} place(s):")
+        print("\n".join(differences[:50]))
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
