@@ -43,16 +43,28 @@ start() {
   setsid "$@" "$work/$name.nml" > "$name.out" 2> "$name.err" &
   background=$!
 }
-# after_commit NAME: wait until the run started on NAME.nml reports a wall time past 1.5 s
-# (its journal is committed every second), then return 0; 1 when it ended before
-after_commit() {
-  local waited=0
-  until grep -q -E "wall ([2-9]|1\.[5-9]|[1-9][0-9])" "$1.err" 2> /dev/null; do
-    sleep 0.1
-    waited=$((waited + 1))
-    kill -0 "$background" 2> /dev/null || { echo "  $1 ended before it could be stopped:"; cat "$1.err"; return 1; }
-    [ $waited -lt 1200 ] || { echo "  $1 reports no progress"; return 1; }
+# reference MAKER NAME [COMMAND...]: make NAME.nml with `MAKER NAME COUNT` and run it whole,
+# with more values (COUNT) until it lasts at least 3 s on this machine (a stopped run must
+# have had a journal commit, every second, and not have ended); sets `count` and `seconds`
+reference() {
+  local maker=$1 name=$2 start; shift 2
+  [ $# -eq 0 ] && set -- "$vibrobeam"
+  count=10
+  while :; do
+    $maker "$name" $count
+    start=$(date +%s.%N)
+    "$@" "$name.nml" > "$name.out" 2> "$name.err" || { echo "FAIL $name"; cat "$name.err"; failed=1; return 1; }
+    seconds=$(awk "BEGIN {print $(date +%s.%N) - $start}")
+    echo "$name: $count values a line, $seconds s"
+    awk "BEGIN {exit !($seconds >= 3)}" && return 0
+    count=$(awk "BEGIN {print int($count * 4 / ($seconds + 0.2)) + 1}")
   done
+}
+# halfway NAME: wait half the reference's time (`seconds`, at least 1.5 s: past a commit),
+# then return 0 if the run started on NAME.nml is still going, 1 if it ended
+halfway() {
+  sleep "$(awk "BEGIN {print $seconds / 2}")"
+  kill -0 "$background" 2> /dev/null || { echo "FAIL $1 ended before it could be stopped:"; cat "$1.err"; return 1; }
 }
 # stop_all NAME: SIGKILL to the process group of the run on NAME.nml, and to any of its
 # processes still there (an MPI rank may have left the group)
@@ -83,18 +95,23 @@ resumed() {
   "$compare" same "$reference.h5" "$name.h5" || failed=1
 }
 
-# independent points, and up-down lines of a map (each a task of 2 x 10 points)
-scene independent 200 velocity "" "" \
-  "\&sweep parameter = 'load.point_frequency', from = 150, to = 250, count = 60, settle = 0.5, measure = 0.5 /"
-scene map 200 position "" "" \
-  "\&sweep parameter = 'load.point_frequency', from = 180, to = 220, count = 10, mode = 'up-down', parameter2 = 'obstacles.level_from(2)', values2 = 4e-4, 5e-4, 6e-4, 7e-4, settle = 0.4, measure = 0.4 /"
+# independent NAME COUNT: COUNT independent points; map NAME COUNT: 4 up-down lines of COUNT
+# values (each a task of 2 COUNT points)
+independent() {
+  scene "$1" 200 velocity "" "" \
+    "\&sweep parameter = 'load.point_frequency', from = 150, to = 250, count = $2, settle = 0.5, measure = 0.5 /"
+}
+map() {
+  scene "$1" 200 position "" "" \
+    "\&sweep parameter = 'load.point_frequency', from = 180, to = 220, count = $2, mode = 'up-down', parameter2 = 'obstacles.level_from(2)', values2 = 4e-4, 5e-4, 6e-4, 7e-4, settle = 0.4, measure = 0.4 /"
+}
 
 case $mode in
 threads)
-  run independent OMP_NUM_THREADS=2
+  reference independent independent env OMP_NUM_THREADS=2 "$vibrobeam"
   twin independent killed
   start killed env OMP_NUM_THREADS=2 "$vibrobeam"
-  if after_commit killed; then
+  if halfway killed; then
     stop_all killed
     # another input into the same file: refused, the partial sweep left as it is
     sed -e "s|restitution = 0.7|restitution = 0.6|" killed.nml > other.nml
@@ -107,10 +124,10 @@ threads)
   else
     failed=1
   fi
-  run map OMP_NUM_THREADS=2
+  reference map map env OMP_NUM_THREADS=2 "$vibrobeam"
   twin map interrupted
   start interrupted env OMP_NUM_THREADS=2 "$vibrobeam"
-  if after_commit interrupted; then
+  if halfway interrupted; then
     kill -INT "$background"; wait "$background"; status=$?; background=''
     expect 'SIGINT: exit status 4' exit_is $status 4
     expect "SIGINT: published as 'interrupted'" test "$(run_status interrupted.h5)" = interrupted
@@ -121,10 +138,10 @@ threads)
   fi
   ;;
 mpi)
-  OMP_NUM_THREADS=1 "${mpi[@]}" "$vibrobeam" map.nml > map.out 2> map.err || { echo "FAIL mpirun map"; cat map.err; failed=1; }
+  reference map map env OMP_NUM_THREADS=1 "${mpi[@]}" "$vibrobeam"
   twin map killed
   start killed env OMP_NUM_THREADS=1 "${mpi[@]}" "$vibrobeam"
-  if after_commit killed; then
+  if halfway killed; then
     stop_all killed
     resumed killed map env OMP_NUM_THREADS=1 "${mpi[@]}" "$vibrobeam"
   else
@@ -133,7 +150,7 @@ mpi)
   for signal in rank usr1 term; do
     twin map $signal
     start $signal env OMP_NUM_THREADS=1 "${mpi[@]}" "$vibrobeam"
-    after_commit $signal || { failed=1; continue; }
+    halfway $signal || { failed=1; continue; }
     # (the process group's leader is mpirun; the other processes running the input are the ranks)
     case $signal in
       rank) kill -TERM "$(pgrep -f "vibrobeam $work/$signal.nml" | grep -v -x "$background" | tail -1)" ;;
