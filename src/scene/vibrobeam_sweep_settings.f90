@@ -106,11 +106,6 @@ contains
       call check_keyword('mode', settings%mode)
       call check_keyword('spacing', settings%axis(1)%spacing)
       call check_keyword('spacing2', settings%axis(2)%spacing)
-      call check_range('settle', settings%settle)
-      call check_range('measure', settings%measure)
-      call check_range('settle_periods', settings%settle_periods)
-      call check_range('measure_periods', settings%measure_periods)
-      call check_range('steady_tolerance', settings%steady_tolerance)
       if (stat /= 0) return
       do a = 1, 2
          if (a == 2 .and. len_trim(settings%axis(2)%parameter) == 0) then
@@ -199,20 +194,6 @@ contains
          stat = 1
          errmsg = message
       end subroutine fail
-
-      !> A real of &sweep against the range of its row in `scene_variables` (the scanner
-      !! checks a value's form and magnitude, not its range).
-      subroutine check_range(name, value)
-         character(len=*), intent(in) :: name
-         real(dp), intent(in) :: value
-         type(namelist_variable), allocatable :: table(:)
-         type(namelist_variable) :: variable
-         if (stat /= 0) return
-         allocate (table, source=scene_variables())
-         variable = table(variable_index(table, 'sweep', name))
-         if (value >= variable%lowest .and. value <= variable%highest) return
-         call fail('&sweep '//name//' = '//real_text(value)//' is outside '//range_text(variable))
-      end subroutine check_range
 
       !> A keyword of &sweep against the choices of its row in `scene_variables`.
       subroutine check_keyword(name, value)
