@@ -16,7 +16,7 @@ module vibrobeam_dynamics
    use vibrobeam_kinds, only: dp, int64, error_unit
    use vibrobeam_text, only: real_text
    use vibrobeam_scene, only: scene_type, step_count
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_setup, only: prepared_scene, start_time_stepper, release_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_recorder, only: dynamics_recorder
    use vibrobeam_result_files, only: result_files, run_summary, run_outcome
@@ -132,6 +132,7 @@ contains
          call meter%end_line()
          if (present(statistics)) statistics = recorder%window_statistics(stepper)
          if (present(final_state)) final_state = record
+         call release_stepper(stepper)   ! (a sweep's keep_runs runs this once per point)
          return
       end block run
       ! an I/O failure: nothing is published
@@ -139,6 +140,7 @@ contains
       !$omp critical (vibrobeam_hdf5)
       call files%discard()
       !$omp end critical (vibrobeam_hdf5)
+      call release_stepper(stepper)
       if (stat == 0) stat = 1
 
    contains

@@ -9,7 +9,9 @@
 !!  3. under an exclusive lock on the target directory (flock), the HDF5 file and then
 !!     every .dat file are renamed onto their final names, the .dat files of the same
 !!     stem that this result does not produce (left by an earlier run) are removed, and
-!!     the directory is synced. Concurrent runs with one output path thus publish one
+!!     the directory is synced. A result with more files than these (a sweep's point
+!!     files) passes a `publish_step`, whose `prepare` runs under the lock before the
+!!     first rename and `commit` after the last. Concurrent runs with one output path thus publish one
 !!     after the other, and the last publisher's set is what remains.
 !! Any failure before the renames deletes every temporary file and leaves what was at the
 !! target untouched. Each .dat file's first line names the run id that /run holds, so a
@@ -29,7 +31,7 @@ module vibrobeam_result_files
    use vibrobeam_progress, only: progress_meter
    implicit none
    private
-   public :: result_files, run_summary, run_outcome, new_run_id, publish_files
+   public :: result_files, run_summary, run_outcome, new_run_id, publish_files, publish_step
 
    !> Bytes reserved for the /run status attribute ('running', 'ok', 'failed', 'interrupted').
    integer, parameter :: status_capacity = 16
@@ -61,6 +63,24 @@ module vibrobeam_result_files
       procedure :: write_static
       procedure :: write_static_accuracy
    end type result_files
+
+   !> More files published with a result, under the same directory lock (module
+   !! documentation): `prepare` before the result's first rename (a failure there leaves
+   !! every file as it was), `commit` after its last.
+   type, abstract :: publish_step
+   contains
+      procedure(publish_step_action), deferred :: prepare
+      procedure(publish_step_action), deferred :: commit
+   end type publish_step
+
+   abstract interface
+      subroutine publish_step_action(self, stat, errmsg)
+         import :: publish_step
+         class(publish_step), intent(inout) :: self
+         integer, intent(out) :: stat
+         character(len=*), intent(out) :: errmsg
+      end subroutine publish_step_action
+   end interface
 
    interface
       !> long vb_peak_rss_kb(void);  (src/os/vibrobeam_posix_files.c)
@@ -103,18 +123,21 @@ contains
 
    !> Create the HDF5 file (temporary name) with the root attributes (version, every
    !! resolved input value with its unit, the resolved scene as text), /mesh/x and the
-   !! /run attributes (status 'running', run_id; the others 0 until `set_run`).
-   subroutine open_results(self, scene, model, stat, errmsg)
+   !! /run attributes (status 'running', run_id; the others 0 until `set_run`). With
+   !! `unbuffered`, HDF5 keeps no sieve buffer (a sweep file writes ~100 datasets a block
+   !! of points at a time: one buffer of up to 64 KiB each otherwise).
+   subroutine open_results(self, scene, model, stat, errmsg, unbuffered)
       class(result_files), intent(inout) :: self
       type(scene_type), intent(in) :: scene
       type(beam_model), intent(in) :: model
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      logical, intent(in), optional :: unbuffered
       type(scene_entry), allocatable :: list(:)
       integer :: i
       self%text = scene%output%text
       self%run_id = new_run_id()
-      call self%h5%create(trim(scene%output%file), stat, errmsg)
+      call self%h5%create(trim(scene%output%file), stat, errmsg, unbuffered)
       if (stat /= 0) return
       call self%h5%attr_string('/', 'program', 'vibrobeam', stat, errmsg)
       if (stat == 0) call self%h5%attr_string('/', 'version', version_string, stat, errmsg)
@@ -202,14 +225,15 @@ contains
    !> Publish the result (module documentation). With `stop_on_signal`, a signal that
    !! arrives while the .dat files are derived stops that (`text_skipped`): the HDF5 file
    !! is then published alone (its stale .dat files removed) and `vibrobeam --text`
-   !! derives them later.
-   subroutine publish(self, meter, stop_on_signal, text_skipped, stat, errmsg)
+   !! derives them later. `also`: more files to publish with it (`publish_step`).
+   subroutine publish(self, meter, stop_on_signal, text_skipped, stat, errmsg, also)
       class(result_files), intent(inout) :: self
       type(progress_meter), intent(inout) :: meter
       logical, intent(in) :: stop_on_signal
       logical, intent(out) :: text_skipped
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      class(publish_step), intent(inout), optional :: also
       type(derived_file), allocatable :: files(:)
       character(len=:), allocatable :: final_name, temporary
       text_skipped = .false.
@@ -223,23 +247,31 @@ contains
          call derive_text_files(temporary, final_name, meter, stop_on_signal, files, text_skipped, stat, errmsg)
          if (stat /= 0) return
       end if
-      call publish_files(temporary, final_name, files, stat, errmsg)
+      call publish_files(temporary, final_name, files, stat, errmsg, also)
       if (stat /= 0) call discard_derived(files)
    end subroutine publish
 
    !> Rename `temporary` (if not '') onto `final_name` and each derived file onto its final
    !! name, remove the stem's .dat files not among them, sync the directory; all under an
-   !! exclusive lock on the directory.
-   subroutine publish_files(temporary, final_name, files, stat, errmsg)
+   !! exclusive lock on the directory, with the `prepare` and `commit` of `also`.
+   subroutine publish_files(temporary, final_name, files, stat, errmsg, also)
       character(len=*), intent(in) :: temporary, final_name
       type(derived_file), intent(in) :: files(:)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      class(publish_step), intent(inout), optional :: also
       type(directory_lock) :: lock
       character(len=512) :: message
       integer :: k, ignored
       call lock%acquire(directory_of(final_name), stat, errmsg)
       if (stat /= 0) return
+      if (present(also)) then
+         call also%prepare(stat, errmsg)
+         if (stat /= 0) then
+            call lock%release()
+            return
+         end if
+      end if
       if (len(temporary) > 0) call rename_file(temporary, final_name, stat, errmsg)
       do k = 1, size(files)
          if (stat /= 0) exit
@@ -251,7 +283,8 @@ contains
             if (file_exists(text_file_name(final_name, trim(text_suffixes(k))))) &
                call remove_file(text_file_name(final_name, trim(text_suffixes(k))), ignored, message)
          end do
-         call sync_directory_of(final_name, stat, errmsg)
+         if (present(also)) call also%commit(stat, errmsg)
+         if (stat == 0) call sync_directory_of(final_name, stat, errmsg)
       end if
       call lock%release()
    end subroutine publish_files

@@ -382,92 +382,61 @@ contains
       end subroutine dynamics_files
 
       !> A sweep file (docs/output.md, "Sweep file"): STEM_sweep.dat, one row per point,
-      !! and STEM_poincare.dat, one row per kept Poincare sample.
+      !! and STEM_poincare.dat, one row per kept Poincare sample; read a block of
+      !! `sweep_block` points (samples) at a time, so memory does not grow with the sweep.
       subroutine sweep_files()
-         character(len=*), parameter :: pairs(10) = [character(len=40) :: 'beam/impact_rate', 'beam/episode_rate', &
+         character(len=*), parameter :: pairs(9) = [character(len=40) :: 'beam/impact_rate', 'beam/episode_rate', &
             'beam/episode_impulse_mean', 'beam/episode_impulse_max', 'beam/contact_force', 'energy/power_input', &
-            'energy/power_impacts', 'energy/power_damping', 'energy/power_dissipated', '']
+            'energy/power_impacts', 'energy/power_damping', 'energy/power_dissipated']
          !> Force statistics of the compliant stops, at the contact point with the largest
          !! force_peak summed over the points (the most loaded spring; zeros without one).
          character(len=*), parameter :: force_names(7) = [character(len=28) :: 'force_peak', 'force_mean', &
             'force_contact_mean', 'force_contact_rms', 'force_contact_fraction', 'force_episode_duration_mean', &
             'force_episode_duration_max']
-         real(dp), allocatable :: force_values(:, :), contact_x(:)
-         real(dp) :: largest_sum
-         integer :: contacts, loaded
-         real(dp) :: loaded_x
+         integer, parameter :: sweep_block = 4096
+         real(dp), allocatable :: contact_x(:), sums(:), column(:), rows(:, :), table(:, :)
+         integer(int64), allocatable :: dims(:)
+         ! (table(column, point): the block's columns of STEM_sweep.dat or STEM_poincare.dat)
+         real(dp) :: largest_sum, loaded_x, previous_line
+         integer :: contacts, loaded, n, k, j, first, count, observation, samples, peaks
          type(text_sink) :: sink
-         real(dp), allocatable :: parameter(:), parameter2(:), direction(:), line(:), status(:), settled(:), &
-                                  transient(:), rms(:), rms_error(:), largest(:), largest_error(:), frequency(:), &
-                                  values(:, :), errors(:, :), column(:), sample_point(:), sample_direction(:), &
-                                  sample_parameter(:), sample_parameter2(:), sample_time(:), u(:), v(:)
-         integer :: n, k, j, observation, samples
          character(len=:), allocatable :: first_label, second_label
-         call file%read_reals('/sweep/parameter', parameter, stat, errmsg)
-         if (stat /= 0) return
-         n = size(parameter)
-         allocate (parameter2(n), source=0.0_dp)
-         if (file%exists('/sweep/parameter2')) call file%read_reals('/sweep/parameter2', parameter2, stat, errmsg)
-         if (stat == 0) call file%read_reals('/sweep/direction', direction, stat, errmsg)
-         if (stat == 0) call file%read_reals('/sweep/line', line, stat, errmsg)
-         if (stat == 0) call file%read_reals('/sweep/status', status, stat, errmsg)
-         if (stat == 0) call file%read_reals('/sweep/settled', settled, stat, errmsg)
-         if (stat == 0) call file%read_reals('/sweep/transient', transient, stat, errmsg)
+         logical :: second_axis
+         n = int(rows_of('/sweep/parameter'))
+         second_axis = file%exists('/sweep/parameter2')
          if (stat == 0) call file%read_reals('/sweep/statistics/points/x', column, stat, errmsg)
-         if (stat /= 0) return
-         observation = size(column)
-         allocate (rms(n), rms_error(n), largest(n), largest_error(n), frequency(n))
-         ! the tip is the first observation point of each row
-         call file%read_reals('/sweep/statistics/points/displacement_rms', column, stat, errmsg)
-         if (stat == 0) rms(:) = column(1::observation)
-         if (stat == 0) call file%read_reals('/sweep/statistics/points/displacement_rms_error', column, stat, errmsg)
-         if (stat == 0) rms_error(:) = column(1::observation)
-         if (stat == 0) call file%read_reals('/sweep/statistics/points/displacement_max', column, stat, errmsg)
-         if (stat == 0) largest(:) = column(1::observation)
-         if (stat == 0) call file%read_reals('/sweep/statistics/points/displacement_max_error', column, stat, errmsg)
-         if (stat == 0) largest_error(:) = column(1::observation)
-         if (stat == 0) call file%read_reals('/sweep/statistics/spectrum/peak_frequency', column, stat, errmsg)
-         if (stat /= 0) return
-         frequency(:) = column(1::max(1, size(column)/max(1, n)))
-         allocate (values(n, size(pairs) - 1), errors(n, size(pairs) - 1))
-         do k = 1, size(pairs) - 1
-            call file%read_reals('/sweep/statistics/'//trim(pairs(k)), column, stat, errmsg)
-            if (stat /= 0) return
-            values(:, k) = column
-            call file%read_reals('/sweep/statistics/'//trim(pairs(k))//'_error', column, stat, errmsg)
-            if (stat /= 0) return
-            errors(:, k) = column
-         end do
-         call file%read_reals('/sweep/statistics/contacts/x', contact_x, stat, errmsg)
+         if (stat == 0) observation = size(column)
+         if (stat == 0) call file%shape('/sweep/statistics/spectrum/peak_frequency', dims, stat, errmsg)
+         if (stat == 0) peaks = int(dims(1))   ! (peaks, points)
+         if (stat == 0) call file%read_reals('/sweep/statistics/contacts/x', contact_x, stat, errmsg)
          if (stat /= 0) return
          contacts = size(contact_x)
-         allocate (force_values(n, 2*size(force_names)), source=0.0_dp)
+         ! the most loaded contact point: force_peak summed over the points in their order
          loaded = 0
          if (contacts > 0) then
-            ! (contacts, points) stored: column((k - 1) contacts + c) is point k at contact point c
-            call file%read_reals('/sweep/statistics/contacts/force_peak', column, stat, errmsg)
-            if (stat /= 0) return
+            allocate (sums(contacts), source=0.0_dp)
+            do first = 1, n, sweep_block
+               count = min(sweep_block, n - first + 1)
+               if (allocated(rows)) deallocate (rows)
+               allocate (rows(contacts, count))
+               call block_rows('/sweep/statistics/contacts/force_peak', first, rows)
+               if (stat /= 0) return
+               do k = 1, count
+                  sums = sums + rows(:, k)
+               end do
+            end do
             largest_sum = 0
             do j = 1, contacts
-               if (sum(column(j::contacts)) <= largest_sum) cycle
-               largest_sum = sum(column(j::contacts))
+               if (sums(j) <= largest_sum) cycle
+               largest_sum = sums(j)
                loaded = j
             end do
          end if
          loaded_x = 0
          if (loaded > 0) loaded_x = contact_x(loaded)
-         do j = 1, size(force_names)
-            if (loaded == 0) exit
-            call file%read_reals('/sweep/statistics/contacts/'//trim(force_names(j)), column, stat, errmsg)
-            if (stat /= 0) return
-            force_values(:, 2*j - 1) = column(loaded::contacts)
-            call file%read_reals('/sweep/statistics/contacts/'//trim(force_names(j))//'_error', column, stat, errmsg)
-            if (stat /= 0) return
-            force_values(:, 2*j) = column(loaded::contacts)
-         end do
          call axis_label('/sweep/parameter', first_label)
          second_label = 'none'
-         if (file%exists('/sweep/parameter2')) call axis_label('/sweep/parameter2', second_label)
+         if (second_axis) call axis_label('/sweep/parameter2', second_label)
          if (stat /= 0) return
          call open_sink(sink, 'sweep', 'point  line  direction (+1 up, -1 down, 0 independent)  parameter: '// &
                         first_label//'  parameter2: '//second_label//'  status (0 ok)  settled (1, 0, -1 not '// &
@@ -479,39 +448,93 @@ contains
                         'the compliant stops'' force at x = '//real_text(loaded_x)//' m (0: no spring; docs/statistics.md): '// &
                         'peak (N)  mean (N)  mean in contact (N)'// &
                         '  RMS in contact (N)  contact fraction (1)  mean episode duration (s)  longest episode (s)')
-         do k = 1, n
-            if (k > 1) then
-               if (nint(line(k)) /= nint(line(k - 1))) call put_line(sink, '')
-            end if
-            call put_row(sink, 'wide', [real(k, dp), line(k), direction(k), parameter(k), parameter2(k), status(k), &
-                                        settled(k), transient(k), rms(k), rms_error(k), largest(k), largest_error(k), &
-                                        (values(k, j), errors(k, j), j = 1, size(pairs) - 1), frequency(k), &
-                                        force_values(k, :)])
+         ! the columns of a block of points: table(column, point)
+         previous_line = 0
+         do first = 1, n, sweep_block
+            count = min(sweep_block, n - first + 1)
+            if (allocated(table)) deallocate (table)
+            allocate (table(12 + 2*size(pairs) + 1 + 2*size(force_names), count), source=0.0_dp)
+            table(1, :) = [(real(k, dp), k = first, first + count - 1)]
+            call block_column('/sweep/line', 1, 1, first, table(2, :))
+            call block_column('/sweep/direction', 1, 1, first, table(3, :))
+            call block_column('/sweep/parameter', 1, 1, first, table(4, :))
+            if (second_axis) call block_column('/sweep/parameter2', 1, 1, first, table(5, :))
+            call block_column('/sweep/status', 1, 1, first, table(6, :))
+            call block_column('/sweep/settled', 1, 1, first, table(7, :))
+            call block_column('/sweep/transient', 1, 1, first, table(8, :))
+            ! the tip is the first observation point of each row
+            call block_column('/sweep/statistics/points/displacement_rms', observation, 1, first, table(9, :))
+            call block_column('/sweep/statistics/points/displacement_rms_error', observation, 1, first, &
+                              table(10, :))
+            call block_column('/sweep/statistics/points/displacement_max', observation, 1, first, table(11, :))
+            call block_column('/sweep/statistics/points/displacement_max_error', observation, 1, first, &
+                              table(12, :))
+            do j = 1, size(pairs)
+               call block_column('/sweep/statistics/'//trim(pairs(j)), 1, 1, first, table(11 + 2*j, :))
+               call block_column('/sweep/statistics/'//trim(pairs(j))//'_error', 1, 1, first, table(12 + 2*j, :))
+            end do
+            call block_column('/sweep/statistics/spectrum/peak_frequency', peaks, 1, first, &
+                              table(13 + 2*size(pairs), :))
+            do j = 1, size(force_names)
+               if (loaded == 0) exit
+               call block_column('/sweep/statistics/contacts/'//trim(force_names(j)), contacts, loaded, first, &
+                                 table(12 + 2*size(pairs) + 2*j, :))
+               call block_column('/sweep/statistics/contacts/'//trim(force_names(j))//'_error', contacts, loaded, &
+                                 first, table(13 + 2*size(pairs) + 2*j, :))
+            end do
+            if (stat /= 0) return
+            do k = 1, count
+               if (first + k > 2 .and. nint(table(2, k)) /= nint(previous_line)) call put_line(sink, '')
+               previous_line = table(2, k)
+               call put_row(sink, 'wide', table(:, k))
+            end do
          end do
          call close_sink(sink)
          if (stat /= 0) return
          samples = int(rows_of('/sweep/poincare/time'))
          if (stat /= 0) return
-         call file%read_reals('/sweep/poincare/point', sample_point, stat, errmsg)
-         if (stat == 0) call file%read_reals('/sweep/poincare/direction', sample_direction, stat, errmsg)
-         if (stat == 0) call file%read_reals('/sweep/poincare/parameter', sample_parameter, stat, errmsg)
-         allocate (sample_parameter2(samples), source=0.0_dp)
-         if (stat == 0 .and. file%exists('/sweep/poincare/parameter2')) &
-            call file%read_reals('/sweep/poincare/parameter2', sample_parameter2, stat, errmsg)
-         if (stat == 0) call file%read_reals('/sweep/poincare/time', sample_time, stat, errmsg)
-         if (stat == 0) call file%read_reals('/sweep/poincare/displacement', u, stat, errmsg)
-         if (stat == 0) call file%read_reals('/sweep/poincare/velocity', v, stat, errmsg)
-         if (stat /= 0) return
          call open_sink(sink, 'poincare', 'parameter: '//first_label//'  parameter2: '//second_label// &
                         '  direction  point  time in the point''s run (s)  '// &
                         'tip displacement (m)  tip velocity (m/s), at phase 0 of the forcing')
-         do k = 1, samples
-            call put_row(sink, 'wide', [sample_parameter(k), sample_parameter2(k), sample_direction(k), &
-                                        sample_point(k), sample_time(k), u((k - 1)*observation + 1), &
-                                        v((k - 1)*observation + 1)])
+         do first = 1, samples, sweep_block
+            count = min(sweep_block, samples - first + 1)
+            if (allocated(table)) deallocate (table)
+            allocate (table(7, count), source=0.0_dp)
+            call block_column('/sweep/poincare/parameter', 1, 1, first, table(1, :))
+            if (second_axis) call block_column('/sweep/poincare/parameter2', 1, 1, first, table(2, :))
+            call block_column('/sweep/poincare/direction', 1, 1, first, table(3, :))
+            call block_column('/sweep/poincare/point', 1, 1, first, table(4, :))
+            call block_column('/sweep/poincare/time', 1, 1, first, table(5, :))
+            call block_column('/sweep/poincare/displacement', observation, 1, first, table(6, :))
+            call block_column('/sweep/poincare/velocity', observation, 1, first, table(7, :))
+            if (stat /= 0) return
+            do k = 1, count
+               call put_row(sink, 'wide', table(:, k))
+            end do
          end do
          call close_sink(sink)
       end subroutine sweep_files
+
+      !> Rows first .. first + size(rows, 2) - 1 of the dataset `path` of size(rows, 1)
+      !! values a row (1 for a 1-d dataset).
+      subroutine block_rows(path, first, rows)
+         character(len=*), intent(in) :: path
+         integer, intent(in) :: first
+         real(dp), intent(out), contiguous :: rows(:, :)
+         rows = 0
+         if (stat == 0) call file%read_rows(path, int(first, int64), rows, stat, errmsg)
+      end subroutine block_rows
+
+      !> Value `which` of the rows first .. of the dataset `path` of `columns` values a row
+      !! (1-d: columns = which = 1), into `column`.
+      subroutine block_column(path, columns, which, first, column)
+         character(len=*), intent(in) :: path
+         integer, intent(in) :: columns, which, first
+         real(dp), intent(inout) :: column(:)
+         real(dp) :: rows(columns, size(column))
+         call block_rows(path, first, rows)
+         if (stat == 0) column = rows(which, :)
+      end subroutine block_column
 
       !> 'load.base_frequency (rad/s)': the name and unit attributes of an axis.
       subroutine axis_label(path, label)

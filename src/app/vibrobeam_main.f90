@@ -25,8 +25,8 @@ program vibrobeam_main
    use vibrobeam_signals, only: watch_signals, interrupt_requested, interrupt_name
    use vibrobeam_sweep_settings, only: sweep_settings, resolve_sweep, sweep_points, point_scene
    use vibrobeam_sweep, only: run_sweep, sweep_outcome, sweep_threads
-   use vibrobeam_sweep_check, only: sweep_check_text
-   use vibrobeam_sweep_transport, only: transport_start, transport_stop, transport_rank, transport_ranks
+   use vibrobeam_sweep_check, only: write_sweep_check, check_sweep_files
+   use vibrobeam_sweep_transport, only: transport_start, transport_stop, transport_rank, transport_ranks, share_failure
    use vibrobeam_blas_threads, only: limit_blas_threads
    implicit none
 
@@ -34,7 +34,7 @@ program vibrobeam_main
    type(prepared_scene) :: prepared
    type(sweep_settings) :: sweep
    character(len=message_length) :: errmsg
-   character(len=:), allocatable :: input_file, warnings, blas_warning
+   character(len=:), allocatable :: input_file, warnings, blas_warning, resume
    logical :: check_only, text_only
    integer :: stat
 
@@ -51,7 +51,7 @@ program vibrobeam_main
       call resolve_sweep(sweep, scene, stat, errmsg)
       if (stat /= 0) call fail(exit_invalid_input, errmsg)
    end if
-   call check_output_target(scene, input_file, stat, errmsg)
+   call check_output_target(scene, input_file, stat, errmsg, check_size=.not. sweep%present)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    ! one BLAS thread unless VIBROBEAM_BLAS_THREADS says otherwise; a sweep's tasks share the
    ! cores themselves (docs/sweeps.md, "Parallel runs")
@@ -63,6 +63,14 @@ program vibrobeam_main
          call prepare_scene(point_scene(scene, sweep, points(1)), prepared, warnings, stat, errmsg)
       end associate
       if (stat /= 0 .and. stat /= stat_numerical_failure) call fail(exit_invalid_input, '&sweep point 1: '//errmsg)
+      ! the files it writes, its start state, its partial directory, its size (rank 0 looks:
+      ! the others would see its lock as another run's)
+      stat = 0
+      resume = ''
+      if (transport_rank() == 0) call check_sweep_files(scene, sweep, input_file, prepared%contacts%count, resume, &
+                                                        stat, errmsg)
+      call share_failure(stat, errmsg)
+      if (stat /= 0) call fail(exit_invalid_input, errmsg)
    else
       call prepare_scene(scene, prepared, warnings, stat, errmsg)
       if (stat == stat_numerical_failure) call fail(exit_numerical_failure, errmsg)
@@ -75,8 +83,7 @@ program vibrobeam_main
    if (check_only) then
       if (transport_rank() == 0) then
          call print_resolved_scene()
-         if (sweep%present) write (output_unit, '(a)', advance='no') &
-            sweep_check_text(scene, sweep, sweep_threads(), transport_ranks())
+         if (sweep%present) call write_sweep_check(output_unit, scene, sweep, sweep_threads(), transport_ranks(), resume)
       end if
       call finish(exit_ok)
    end if
@@ -206,7 +213,7 @@ contains
          '(every variable is optional; see docs/input.md for units, defaults and ranges).', &
          '', &
          'exit status: 0 success, 2 invalid input (nothing written), 3 numerical failure', &
-         '(results up to the failure published, marked failed), 4 interrupted by SIGINT/SIGTERM', &
+         '(results up to the failure published, marked failed), 4 interrupted by SIGINT/SIGTERM/SIGUSR1', &
          '(results up to the interruption published, marked interrupted), 1 I/O or other error', &
          '(nothing published, earlier results untouched).'
    end subroutine print_help
@@ -298,9 +305,10 @@ contains
       call finish(exit_ok)
    end subroutine run_dynamics_scene
 
-   !> A sweep (docs/sweeps.md): every point, the sweep file, and the exit status: 0, 3 when
-   !! a point failed (the sweep file is published, the failed points marked), 4 when
-   !! interrupted.
+   !> A sweep (docs/sweeps.md): every point not yet done, the sweep file, and the exit
+   !! status: 0, 3 when a point failed (the sweep file is published, the failed points
+   !! marked), 4 when interrupted (published with the points done; rerun to go on), 1 when
+   !! its files cannot be written (nothing published; the points done are kept for a rerun).
    subroutine run_sweep_input()
       type(sweep_outcome) :: outcome
       call run_sweep(scene, sweep, outcome, stat, errmsg)
@@ -309,14 +317,19 @@ contains
       if (transport_rank() /= 0) then
          if (outcome%status == 'interrupted') call finish(exit_interrupted)
          if (outcome%failed > 0) call finish(exit_numerical_failure)
+         if (interrupt_requested()) call finish(exit_interrupted)
          call finish(exit_ok)
       end if
-      write (output_unit, '(a,i0,a,i0,a,i0,a,f0.2,a,i0,a,i0,a)') 'vibrobeam: sweep of ', outcome%points, ' points (', &
-         outcome%failed, ' failed, ', outcome%interrupted, ' interrupted), ', outcome%wall_seconds, ' s on ', &
-         outcome%threads, ' threads x ', outcome%ranks, ' processes; written to '//trim(scene%output%file)
+      write (output_unit, '(a,i0,a)', advance='no') 'vibrobeam: sweep of ', outcome%points, ' points ('
+      if (outcome%resumed > 0) write (output_unit, '(i0,a)', advance='no') outcome%resumed, &
+         ' done before, from '//trim(scene%output%file)//'.partial, '
+      write (output_unit, '(i0,a,i0,a,f0.2,a,i0,a,i0,a)') outcome%failed, ' failed, ', outcome%interrupted, &
+         ' interrupted), ', outcome%wall_seconds, ' s on ', outcome%threads, ' threads x ', outcome%ranks, &
+         ' processes; written to '//trim(scene%output%file)
       if (outcome%status == 'interrupted') then
-         write (error_unit, '(a)') 'vibrobeam: interrupted by '//interrupt_name()//'; the points done are in '// &
-            trim(scene%output%file)//' (/run status = ''interrupted'')'
+         write (error_unit, '(a,i0,a)') 'vibrobeam: interrupted by '//signal_name()//'; the points done are in '// &
+            trim(scene%output%file)//' (/run status = ''interrupted''), ', outcome%not_run + outcome%interrupted, &
+            ' to run: run the same input again to go on (they are kept in '//trim(scene%output%file)//'.partial)'
          call stop_if_interrupted(outcome%text_skipped)
          call finish(exit_interrupted)
       end if
@@ -362,6 +375,13 @@ contains
       write (output_unit, '(a,i0,a)') 'vibrobeam: ', size(files), ' text files derived from '//file
       call finish(exit_ok)
    end subroutine run_text
+
+   !> The signal that interrupted this process, or (under mpirun) another rank.
+   function signal_name() result(name)
+      character(len=:), allocatable :: name
+      name = interrupt_name()
+      if (len(name) == 0) name = 'a signal to another rank'
+   end function signal_name
 
    !> 's' unless `count` is 1, for the messages.
    pure function plural(count) result(suffix)

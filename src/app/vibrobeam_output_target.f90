@@ -17,6 +17,8 @@ module vibrobeam_output_target
    implicit none
    private
    public :: check_output_target, estimate_result_size, result_size, max_result_bytes
+   ! for the checks of a sweep's files (vibrobeam_sweep_check)
+   public :: real_path, resolve_directory, split_path, join, bytes_text, free_bytes
 
    !> Largest result set a run may write (bytes): 2^40, one tebibyte.
    real(dp), parameter :: max_result_bytes = 1099511627776.0_dp
@@ -70,12 +72,15 @@ module vibrobeam_output_target
 contains
 
    !> Refuse a result path or a result size that cannot work (see the module comment).
-   !! `input_file` is the namelist file as given on the command line.
-   subroutine check_output_target(scene, input_file, stat, errmsg)
+   !! `input_file` is the namelist file as given on the command line. `check_size` false:
+   !! the result size is checked elsewhere (a sweep's, `vibrobeam_sweep_check`, whose
+   !! points set their own t_end).
+   subroutine check_output_target(scene, input_file, stat, errmsg, check_size)
       type(scene_type), intent(in) :: scene
       character(len=*), intent(in) :: input_file
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      logical, intent(in), optional :: check_size
       character(len=:), allocatable :: file, directory, name, resolved, input_resolved, stem, shown
       character(len=:), allocatable :: existing
       type(result_size) :: estimate
@@ -160,6 +165,13 @@ contains
              join(resolved, name) == real_path(trim(scene%initial%from_file))) then
             errmsg = shown//' is the file that &initial from_file continues; the continued result holds '// &
                      'only what follows its checkpoint: give it another name'
+            return
+         end if
+      end if
+      if (present(check_size)) then
+         if (.not. check_size) then
+            stat = 0
+            errmsg = ''
             return
          end if
       end if
@@ -347,6 +359,15 @@ contains
       character(len=*), intent(in) :: path
       path_kind = c_path_kind(c_string(path))
    end function path_kind
+
+   !> The bytes free for an unprivileged user on the file system of the existing `path`;
+   !! .false. when it cannot be told.
+   logical function free_bytes(path, bytes)
+      character(len=*), intent(in) :: path
+      real(dp), intent(out) :: bytes
+      real(dp) :: capacity
+      free_bytes = c_free_bytes(c_string(path), bytes, capacity) == 0
+   end function free_bytes
 
    !> realpath(3) of an existing path; '' when it cannot be resolved.
    function real_path(path) result(resolved)

@@ -1,33 +1,268 @@
-!> What `vibrobeam --check` prints for a sweep (docs/sweeps.md, "Checking a sweep"): the
-!! points in the order they run, with their line, direction, start and windows; the cost
-!! (steps in all, and a wall-time estimate from timing a few steps of the first point);
-!! what runs in parallel; and the resolution advice for the statistics.
+!> The checks of a sweep before it runs, and what `vibrobeam --check` prints for it
+!! (docs/sweeps.md, "Checking a sweep").
+!!
+!! `check_sweep_files`, for a run and for --check alike: the files a sweep writes or
+!! removes (its point files 'STEM_pointNNNN.h5', those of an earlier set that it removes,
+!! its partial directory, its text files) must not be the input file nor the file
+!! &initial from_file continues, and a point file's name must not be a directory; the
+!! start state of &initial from_file must fit the first point's scene; the partial
+!! directory must not hold a sweep of another input; and what the sweep writes (its file,
+!! its journals and, with keep_runs, every point's result over the point's own windows)
+!! must fit the size limit and the free space. Failures are invalid input (exit status 2).
+!!
+!! `write_sweep_check`: the points in the order they run, with their line, direction,
+!! start and windows; the cost (steps in all, and a wall-time estimate from timing a few
+!! steps of the first point); what runs in parallel; what a run finds in the partial
+!! directory; and the resolution advice for the statistics. Written line by line, so the
+!! time is linear in the number of points.
 module vibrobeam_sweep_check
-   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_text, only: real_text, integer_text
-   use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper
+   use vibrobeam_scene, only: scene_type, forcing_of
+   use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper, release_stepper
    use vibrobeam_time_stepper, only: time_stepper
+   use vibrobeam_filesystem, only: file_exists
+   use vibrobeam_namelist_tokens, only: abbreviated
+   use vibrobeam_statistics_layout, only: statistics_layout
+   use vibrobeam_poincare, only: kept_samples
    use vibrobeam_resolution_advice, only: resolution_advice_text, advice_time_step
+   use vibrobeam_output_target, only: estimate_result_size, result_size, max_result_bytes, real_path, &
+      resolve_directory, split_path, join, bytes_text, free_bytes
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, sweep_points, point_scene, point_windows, &
       task_count, max_settle_windows
+   use vibrobeam_sweep_runner, only: point_file_name
+   use vibrobeam_sweep_journal, only: record_length, message_words
+   use vibrobeam_sweep_partial, only: partial_directory
+   use vibrobeam_sweep, only: inspect_partial
    implicit none
    private
-   public :: sweep_check_text, resolution_advice
+   public :: write_sweep_check, check_sweep_files, resolution_advice
 
    !> The cost estimate times steps of the first point after `warm_up_steps`, for at least
    !! `timed_seconds` of wall time or `timed_steps` steps.
    integer, parameter :: warm_up_steps = 50, timed_steps = 20000
    real(dp), parameter :: timed_seconds = 0.05_dp
+   !> Characters of a row of STEM_sweep.dat (45 columns) and of STEM_poincare.dat (7).
+   real(dp), parameter :: sweep_row_characters = 45*24, poincare_row_characters = 7*24
 
 contains
 
-   !> The --check report of a resolved sweep; `threads` and `ranks` as the run would use.
-   function sweep_check_text(scene, settings, threads, ranks) result(text)
+   !> The checks of the files of a resolved sweep (module documentation); `input_file` as
+   !! given on the command line, `contact_points` those of the first point. `resume`: what
+   !! a run finds in the partial directory ('' when there is none). stat = 2 on a failure.
+   subroutine check_sweep_files(scene, settings, input_file, contact_points, resume, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(sweep_settings), intent(in) :: settings
+      character(len=*), intent(in) :: input_file
+      integer, intent(in) :: contact_points
+      character(len=:), allocatable, intent(out) :: resume
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(sweep_point), allocatable :: points(:)
+      integer :: done
+      resume = ''
+      allocate (points, source=sweep_points(settings))
+      call check_names(scene, settings, input_file, size(points), stat, errmsg)
+      if (stat /= 0) return
+      call inspect_partial(scene, settings, done, resume, stat, errmsg)
+      if (stat /= 0) then
+         stat = 2
+         return
+      end if
+      call check_size(scene, settings, points, contact_points, stat, errmsg)
+   end subroutine check_sweep_files
+
+   !> The input file and &initial from_file against every name the sweep writes or removes.
+   subroutine check_names(scene, settings, input_file, n, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(sweep_settings), intent(in) :: settings
+      character(len=*), intent(in) :: input_file
+      integer, intent(in) :: n
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=:), allocatable :: directory, name, resolved, existing, stem, shown
+      integer :: k
+      stat = 0
+      errmsg = ''
+      shown = '&output file = '''//abbreviated(trim(scene%output%file), 60)//''''
+      call split_path(trim(scene%output%file), directory, name)
+      call resolve_directory(directory, resolved, existing, stat, errmsg)
+      if (stat /= 0) then
+         errmsg = shown//': '//trim(errmsg)
+         stat = 2
+         return
+      end if
+      stem = name
+      if (len(stem) > 3) then
+         if (stem(len(stem) - 2:) == '.h5') stem = stem(1:len(stem) - 3)
+      end if
+      call against(input_file, 'the input file')
+      if (stat == 0 .and. len_trim(scene%initial%from_file) > 0) call against(trim(scene%initial%from_file), '&initial from_file')
+      if (stat /= 0 .or. .not. settings%keep_runs) return
+      do k = 1, n
+         if (.not. file_exists(point_file_name(trim(scene%output%file), k)//'/')) cycle
+         stat = 2
+         errmsg = '&sweep keep_runs = .true.: the result file of point '//integer_text(k)//', '''// &
+                  abbreviated(point_file_name(trim(scene%output%file), k), 80)//''', is a directory: remove it or give '// &
+                  '&output file another name'
+         return
+      end do
+   contains
+      !> `path` (the file named by `what`) is none of the sweep's files.
+      subroutine against(path, what)
+         character(len=*), intent(in) :: path, what
+         character(len=:), allocatable :: full, base, partial
+         integer :: k
+         full = real_path(path)
+         if (len(full) == 0) return
+         base = full(index(full, '/', back=.true.) + 1:)
+         ! a point file: written with keep_runs, removed when an earlier set's
+         if (full == join(resolved, base) .and. len(base) > len(stem) + 9) then
+            if (base(1:len(stem) + 6) == stem//'_point') then
+               k = point_number(base)
+               if (k > 0) then
+                  stat = 2
+                  if (settings%keep_runs .and. k <= n) then
+                     errmsg = '&sweep keep_runs = .true. would write the result of point '//integer_text(k)// &
+                              ' over '//what//' '''//abbreviated(path, 60)//''''
+                     if (path /= base) errmsg = trim(errmsg)//' ('''//base//''')'
+                     errmsg = trim(errmsg)//': give &output file another name'
+                  else
+                     errmsg = shown//': publishing the sweep removes the point files '''//stem// &
+                              '_pointNNNN.h5'' beside it that are not part of its set (those of an earlier '// &
+                              'sweep), and '//what//' '''//abbreviated(path, 60)//''' is one: give &output file '// &
+                              'another name or move the file'
+                  end if
+                  return
+               end if
+            end if
+         end if
+         ! inside the partial directory, which the sweep removes once complete
+         partial = join(resolved, name)//'.partial/'
+         if (len(full) > len(partial)) then
+            if (full(1:len(partial)) == partial) then
+               stat = 2
+               errmsg = shown//': '//what//' '''//abbreviated(path, 60)//''' is inside the sweep''s partial '// &
+                        'directory '''//partial_directory(trim(scene%output%file))//''', which the sweep removes when '// &
+                        'it is complete: move the file'
+               return
+            end if
+         end if
+         ! the sweep's text files (the input file is checked by check_output_target)
+         if (scene%output%text .and. what /= 'the input file') then
+            if (full == join(resolved, stem//'_sweep.dat') .or. full == join(resolved, stem//'_poincare.dat')) then
+               stat = 2
+               errmsg = shown//' would write the text file '''//base//''', which is '//what//': give &output '// &
+                        'file another name'
+            end if
+         end if
+      end subroutine against
+
+      !> k when `base` is exactly point_file_name's name of point k (at least 4 digits), else 0.
+      integer function point_number(base)
+         character(len=*), intent(in) :: base
+         character(len=:), allocatable :: digits
+         integer :: ios
+         point_number = 0
+         digits = base(len(stem) + 7:len(base) - 3)
+         if (base(len(base) - 2:) /= '.h5' .or. len(digits) < 4 .or. len(digits) > 9) return
+         if (verify(digits, '0123456789') /= 0) return
+         read (digits, *, iostat=ios) point_number
+         if (ios /= 0) point_number = 0
+         if (point_number < 1) return
+         if (point_file_name(stem//'.h5', point_number) /= base) point_number = 0
+      end function point_number
+   end subroutine check_names
+
+   !> What the sweep writes against the size limit and the free space: its file and its
+   !! journals (both exist when it is published), its text files, and with keep_runs the
+   !! result of every point over the point's own windows (with steady_tolerance > 0, the
+   !! longest transient it may need).
+   subroutine check_size(scene, settings, points, contact_points, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(sweep_settings), intent(in) :: settings
+      type(sweep_point), intent(in) :: points(:)
+      integer, intent(in) :: contact_points
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(statistics_layout) :: layout
+      type(scene_type) :: local
+      type(result_size) :: estimate
+      character(len=:), allocatable :: directory, name, resolved, existing
+      integer(int64) :: settle_steps, measure_steps
+      real(dp) :: sweep_bytes, run_bytes, text_bytes, free, omega, kept, total
+      integer :: k, observations
+      stat = 0
+      errmsg = ''
+      observations = 1 + size(scene%output%points)
+      call layout%init(observations, contact_points, size(scene%obstacles))
+      sweep_bytes = 0
+      run_bytes = 0
+      text_bytes = 0
+      do k = 1, size(points)
+         local = point_scene(scene, settings, points(k))
+         call point_windows(settings, local, settle_steps, measure_steps, stat, errmsg)
+         if (stat /= 0) return
+         kept = 0
+         if (forcing_of(local, omega) /= 'none') kept = min(real(kept_samples, dp), &
+                                                            measure_steps*local%time%dt*omega/(2*pi) + 1)
+         ! the sweep file's row and its samples, the journal's record, message and samples
+         sweep_bytes = sweep_bytes + 8*(15 + 2*layout%size) + kept*(24 + 16*observations) + &
+                       8*record_length(layout%size) + 4*(message_words + 1) + kept*8*(1 + 2*observations)
+         if (scene%output%text) text_bytes = text_bytes + sweep_row_characters + kept*poincare_row_characters
+         if (settings%keep_runs) then
+            local%output%text = .false.
+            if (settings%steady_tolerance > 0) &
+               local%time%t_end = (settle_steps + max_settle_windows*measure_steps)*local%time%dt
+            estimate = estimate_result_size(local)
+            run_bytes = run_bytes + estimate%hdf5_bytes
+         end if
+      end do
+      total = sweep_bytes + text_bytes + run_bytes
+      call split_path(trim(scene%output%file), directory, name)
+      call resolve_directory(directory, resolved, existing, stat, errmsg)
+      if (stat /= 0) then
+         stat = 0
+         errmsg = ''
+         return
+      end if
+      if (total > max_result_bytes) then
+         stat = 2
+         errmsg = size_message()//', more than the limit of '//bytes_text(max_result_bytes)//size_advice()
+      else if (free_bytes(existing, free)) then
+         if (total > free) then
+            stat = 2
+            errmsg = size_message()//', more than the '//bytes_text(free)//' free on the file system of '''// &
+                     abbreviated(existing, 60)//''''//size_advice()
+         end if
+      end if
+   contains
+      function size_message() result(text)
+         character(len=:), allocatable :: text
+         text = '&sweep: '//integer_text(size(points))//' points would write about '//bytes_text(total)// &
+                ' (the sweep file and its journals '//bytes_text(sweep_bytes)
+         if (scene%output%text) text = text//', its text files '//bytes_text(text_bytes)
+         if (settings%keep_runs) text = text//', the points'' result files of keep_runs '//bytes_text(run_bytes)
+         text = text//')'
+      end function size_message
+      function size_advice() result(text)
+         character(len=:), allocatable :: text
+         if (settings%keep_runs) then
+            text = ': set keep_runs = .false., raise &output every and field_every, or shorten the windows'
+         else
+            text = ': sweep fewer points, or make room'
+         end if
+      end function size_advice
+   end subroutine check_size
+
+   !> The --check report of a resolved sweep to `unit`; `threads` and `ranks` as the run
+   !! would use; `resume` what a run finds in the partial directory ('' when nothing).
+   subroutine write_sweep_check(unit, scene, settings, threads, ranks, resume)
+      integer, intent(in) :: unit
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
       integer, intent(in) :: threads, ranks
-      character(len=:), allocatable :: text
+      character(len=*), intent(in) :: resume
       type(sweep_point), allocatable :: points(:)
       type(scene_type) :: local
       integer(int64) :: settle_steps, measure_steps, total_steps
@@ -35,17 +270,21 @@ contains
       real(dp) :: seconds_per_step
       character(len=256) :: errmsg
       character(len=32) :: direction, start
+      character(len=:), allocatable :: line, settle_text, measure_text
+      integer(int64) :: settle_shown, measure_shown   ! bits of the windows whose text is made
       allocate (points, source=sweep_points(settings))
       tasks = task_count(points)
-      text = 'sweep of '//trim(settings%axis(1)%parameter)
-      if (len_trim(settings%axis(2)%parameter) > 0) text = text//' x '//trim(settings%axis(2)%parameter)// &
+      line = 'sweep of '//trim(settings%axis(1)%parameter)
+      if (len_trim(settings%axis(2)%parameter) > 0) line = line//' x '//trim(settings%axis(2)%parameter)// &
                                                            ' ('//integer_text(size(settings%axis(2)%values))//' lines)'
-      text = text//', mode '''//trim(settings%mode)//''': '//integer_text(size(points))//' points in '// &
-             integer_text(tasks)//' tasks'//new_line('a')
-      text = text//'  point  line  direction  start      '//pad(settings%axis(1)%parameter, 22)
-      if (len_trim(settings%axis(2)%parameter) > 0) text = text//pad(settings%axis(2)%parameter, 22)
-      text = text//'  settle (s)    measure (s)'//new_line('a')
+      write (unit, '(a)') line//', mode '''//trim(settings%mode)//''': '//integer_text(size(points))//' points in '// &
+         integer_text(tasks)//' tasks'
+      line = '  point  line  direction  start      '//pad(settings%axis(1)%parameter, 22)
+      if (len_trim(settings%axis(2)%parameter) > 0) line = line//pad(settings%axis(2)%parameter, 22)
+      write (unit, '(a)') line//'  settle (s)    measure (s)'
       total_steps = 0
+      settle_shown = transfer(-1.0_dp, 1_int64)
+      measure_shown = settle_shown
       do k = 1, size(points)
          local = point_scene(scene, settings, points(k))
          call point_windows(settings, local, settle_steps, measure_steps, stat, errmsg)
@@ -61,36 +300,51 @@ contains
          end select
          start = 'scene'
          if (points(k)%start_point > 0) start = 'point '//integer_text(points(k)%start_point)
-         text = text//'  '//pad(integer_text(k), 7)//pad(integer_text(points(k)%line), 6)//pad(direction, 11)// &
+         line = '  '//pad(integer_text(k), 7)//pad(integer_text(points(k)%line), 6)//pad(direction, 11)// &
                 pad(start, 11)//pad(real_text(points(k)%value(1)), 22)
-         if (len_trim(settings%axis(2)%parameter) > 0) text = text//pad(real_text(points(k)%value(2)), 22)
-         text = text//pad(real_text(settle_steps*local%time%dt), 14)//real_text(measure_steps*local%time%dt)//new_line('a')
+         if (len_trim(settings%axis(2)%parameter) > 0) line = line//pad(real_text(points(k)%value(2)), 22)
+         ! (windows in seconds are the same at every point: their text is made once)
+         if (transfer(settle_steps*local%time%dt, 1_int64) /= settle_shown) then
+            settle_shown = transfer(settle_steps*local%time%dt, 1_int64)
+            settle_text = pad(real_text(settle_steps*local%time%dt), 14)
+         end if
+         if (transfer(measure_steps*local%time%dt, 1_int64) /= measure_shown) then
+            measure_shown = transfer(measure_steps*local%time%dt, 1_int64)
+            measure_text = real_text(measure_steps*local%time%dt)
+         end if
+         write (unit, '(a)') line//settle_text//measure_text
       end do
       if (settings%steady_tolerance > 0) then
-         text = text//'steady state: after settle, windows of measure until the RMS tip displacement and the '// &
-                'impact rate of two consecutive windows agree within '//real_text(settings%steady_tolerance)// &
-                ', at most '//integer_text(max_settle_windows)//' windows'//new_line('a')
+         write (unit, '(a)') 'steady state: after settle, windows of measure until the RMS tip displacement and the '// &
+            'impact rate of two consecutive windows agree within '//real_text(settings%steady_tolerance)// &
+            ', at most '//integer_text(max_settle_windows)//' windows'
       end if
       seconds_per_step = time_per_step(scene, settings, points(1))
       workers = max(1, min(tasks, threads*ranks))
-      text = text//'cost: '//real_text(real(total_steps, dp))//' steps in all'
-      if (settings%steady_tolerance > 0) text = text//' at most'
+      line = 'cost: '//real_text(real(total_steps, dp))//' steps in all'
+      if (settings%steady_tolerance > 0) line = line//' at most'
       if (seconds_per_step > 0) then
-         text = text//', about '//seconds(total_steps*seconds_per_step)//' s of one core ('// &
+         line = line//', about '//seconds(total_steps*seconds_per_step)//' s of one core ('// &
                 seconds(seconds_per_step*1e6_dp)//' us a step of point 1), about '// &
                 seconds(total_steps*seconds_per_step/workers)//' s on '//integer_text(workers)//' workers'
       end if
-      text = text//new_line('a')
-      text = text//'parallel: '//integer_text(tasks)//' independent tasks ('
+      write (unit, '(a)') line
+      line = 'parallel: '//integer_text(tasks)//' independent tasks ('
       if (settings%mode == 'independent') then
-         text = text//'one per point'
+         line = line//'one per point'
       else
-         text = text//'one per line; the points of a continuation branch run in sequence'
+         line = line//'one per line; the points of a continuation branch run in sequence'
       end if
-      text = text//') on '//integer_text(threads)//' threads x '//integer_text(ranks)//' processes'//new_line('a')
-      if (settings%keep_runs) text = text//'keep_runs: every point''s result is also written, as '// &
-                                     'STEM_pointNNNN.h5 beside '//trim(scene%output%file)//new_line('a')
-      text = text//resolution_advice(scene, settings)
+      write (unit, '(a)') line//') on '//integer_text(threads)//' threads x '//integer_text(ranks)//' processes'
+      if (settings%keep_runs) write (unit, '(a)') 'keep_runs: every point''s result is also written, as '// &
+         'STEM_pointNNNN.h5 beside '//trim(scene%output%file)//', published with it as one set'
+      if (len(resume) > 0) then
+         write (unit, '(a)') resume
+      else
+         write (unit, '(a)') 'partial directory: none; a run streams its points into '''// &
+            partial_directory(trim(scene%output%file))//''' (rerunning this input after a kill goes on from there)'
+      end if
+      write (unit, '(a)', advance='no') resolution_advice(scene, settings)
    contains
       pure function pad(word, width) result(out)
          character(len=*), intent(in) :: word
@@ -115,7 +369,7 @@ contains
             out = trim(adjustl(buffer))
          end if
       end function seconds
-   end function sweep_check_text
+   end subroutine write_sweep_check
 
    !> Wall time of one step of the point's scheme (s), timed over a few steps; 0 when the
    !! point cannot be prepared.
@@ -150,6 +404,7 @@ contains
       end do
       call system_clock(finish)
       seconds = real(finish - start, dp)/rate/max(1, n)
+      call release_stepper(stepper)
    end function time_per_step
 
    !> The resolution advice for the statistics of a sweep (`vibrobeam_resolution_advice`),

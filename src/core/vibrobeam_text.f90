@@ -22,9 +22,8 @@ contains
    function real_text(value) result(text)
       real(dp), intent(in) :: value
       character(len=:), allocatable :: text
-      character(len=40) :: buffer, format
-      real(dp) :: back
-      integer :: digits, e, ios, exponent
+      character(len=40) :: buffer
+      integer :: digits, e, exponent, low, high
       if (ieee_is_nan(value)) then
          text = 'NaN'
          return
@@ -33,16 +32,19 @@ contains
          text = trim(adjustl(text))
          return
       end if
-      do digits = 0, 17
-         if (abs(value) < tiny(value) .or. (abs(value) >= 1e-3_dp .and. abs(value) < 1e6_dp)) then
-            write (format, '(a,i0,a)') '(f0.', digits, ')'
+      ! the fewest digits that read back exactly, by bisection: with more digits the text
+      ! only comes closer to the value, so the digits that read back form a range [d, 17]
+      low = 0
+      high = 17
+      do while (low < high)
+         digits = (low + high)/2
+         if (reads_back(digits)) then
+            high = digits
          else
-            write (format, '(a,i0,a)') '(es30.', digits, 'e3)'
+            low = digits + 1
          end if
-         write (buffer, format) value
-         read (buffer, *, iostat=ios) back
-         if (ios == 0 .and. transfer(back, 1_int64) == transfer(value, 1_int64)) exit   ! bitwise: reads back exactly
       end do
+      call write_digits(low)
       buffer = adjustl(buffer)
       if (buffer(1:1) == '.') buffer = '0'//buffer(1:len(buffer) - 1)
       if (buffer(1:2) == '-.') buffer = '-0'//buffer(2:len(buffer) - 1)
@@ -60,5 +62,27 @@ contains
          write (buffer, '(i0)') exponent
          text = text//'e'//trim(buffer)
       end if
+   contains
+      !> `value` with `digits` digits after the point into `buffer`.
+      subroutine write_digits(digits)
+         integer, intent(in) :: digits
+         character(len=40) :: format
+         if (abs(value) < tiny(value) .or. (abs(value) >= 1e-3_dp .and. abs(value) < 1e6_dp)) then
+            write (format, '(a,i0,a)') '(f0.', digits, ')'
+         else
+            write (format, '(a,i0,a)') '(es30.', digits, 'e3)'
+         end if
+         write (buffer, format) value
+      end subroutine write_digits
+
+      !> `value` written with `digits` digits reads back to the same bits.
+      logical function reads_back(digits)
+         integer, intent(in) :: digits
+         real(dp) :: back
+         integer :: ios
+         call write_digits(digits)
+         read (buffer, *, iostat=ios) back
+         reads_back = ios == 0 .and. transfer(back, 1_int64) == transfer(value, 1_int64)   ! bitwise
+      end function reads_back
    end function real_text
 end module vibrobeam_text

@@ -1,5 +1,5 @@
-!> Small POSIX file-system helpers (mkdir -p, rename, remove, existence, fsync, a lock on a
-!! directory, unique temporary names) and atomic text output, through `bind(C)`
+!> Small POSIX file-system helpers (mkdir -p, rename, remove, existence, fsync, a lock on
+!! a directory or file, unique temporary names) and atomic text output, through `bind(C)`
 !! interfaces to the C library and to src/os/vibrobeam_posix_files.c.
 !!
 !! Every procedure returns `stat` (0 = success) and `errmsg` (blank on success, otherwise a
@@ -30,6 +30,7 @@ module vibrobeam_filesystem
    public :: text_file, open_text_for_atomic_write, write_text_line, write_text_row, finish_text_file, &
       discard_text_file
    public :: process_id, utc_stamp, random_hex
+   public :: c_string
 
    !> Suffix of every temporary file name (`unique_temporary_name`).
    character(len=*), parameter :: temporary_suffix = '.tmp'
@@ -46,8 +47,10 @@ module vibrobeam_filesystem
       integer(c_int) :: descriptor = -1
    contains
       procedure :: acquire => lock_acquire
+      procedure :: try_acquire => lock_try_acquire
       procedure :: release => lock_release
    end type directory_lock
+
 
    !> Permission bits for new directories (octal 0777, reduced by the process umask as
    !! `mkdir -p` does).
@@ -117,6 +120,14 @@ module vibrobeam_filesystem
          integer(c_int), intent(out) :: fd
          integer(c_int) :: error
       end function c_lock
+
+      !> int vb_try_lock(const char *path, int *fd);  (0, errno, or -1: held elsewhere)
+      function c_try_lock(path, fd) result(error) bind(C, name='vb_try_lock')
+         import :: c_char, c_int
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int), intent(out) :: fd
+         integer(c_int) :: error
+      end function c_try_lock
 
       !> int vb_unlock(int fd);
       function c_unlock(fd) result(error) bind(C, name='vb_unlock')
@@ -378,6 +389,25 @@ contains
       end if
    end subroutine lock_acquire
 
+   !> Take an exclusive lock on the existing file or directory `path` without waiting:
+   !! `busy` (and stat = 0) when another process holds it.
+   subroutine lock_try_acquire(self, path, busy, stat, errmsg)
+      class(directory_lock), intent(inout) :: self
+      character(len=*), intent(in) :: path
+      logical, intent(out) :: busy
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(c_int) :: error_number
+      stat = 0
+      errmsg = ''
+      error_number = c_try_lock(c_string(path), self%descriptor)
+      busy = error_number == -1
+      if (error_number /= 0 .and. .not. busy) then
+         stat = 1
+         errmsg = 'cannot lock ''' // trim(path) // ''': ' // error_text(error_number)
+      end if
+   end subroutine lock_try_acquire
+
    !> Release the lock (a no-op when none is held).
    subroutine lock_release(self)
       class(directory_lock), intent(inout) :: self
@@ -492,7 +522,8 @@ contains
    ! ---------------------------------------------------------------------------------
    ! private helpers
 
-   !> `path` without trailing blanks, as a NUL-terminated C string.
+   !> `path` without trailing blanks, as a NUL-terminated C string (for the other modules
+   !! of src/os that call the C library).
    pure function c_string(path) result(string)
       character(len=*), intent(in) :: path
       character(kind=c_char, len=:), allocatable :: string

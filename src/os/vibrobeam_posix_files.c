@@ -1,5 +1,5 @@
 /* Files and the process's identity, for src/os/vibrobeam_filesystem.f90 and the text
- * output: fsync, flock, a random token and a UTC stamp for temporary names, the peak
+ * output: fsync, flock, links, directory listings, a random token and a UTC stamp for temporary names, the peak
  * resident set size, and text files whose every write(2) is checked. Every function
  * returns 0 or an errno value and never prints; the Fortran side turns that into a
  * message. */
@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <dirent.h>
 #include <sys/file.h>
 #include <sys/random.h>
 #include <sys/resource.h>
@@ -49,6 +50,23 @@ int vb_lock(const char *path, int *fd)
     return 0;
 }
 
+/* Exclusive flock(2) on the existing file or directory `path` without waiting: -1 when
+ * another open file description holds it (another process), else 0 or errno; `*fd` keeps
+ * the lock until vb_unlock. */
+int vb_try_lock(const char *path, int *fd)
+{
+    *fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (*fd < 0) return errno;
+    while (flock(*fd, LOCK_EX | LOCK_NB) != 0) {
+        if (errno == EINTR) continue;
+        int error = errno;
+        close(*fd);
+        *fd = -1;
+        return error == EWOULDBLOCK ? -1 : error;
+    }
+    return 0;
+}
+
 int vb_unlock(int fd)
 {
     if (fd < 0) return 0;
@@ -57,6 +75,50 @@ int vb_unlock(int fd)
 }
 
 long vb_process_id(void) { return (long)getpid(); }
+
+/* Create the empty file `path` when it does not exist (an existing one is kept). */
+int vb_touch(const char *path)
+{
+    int fd = open(path, O_WRONLY | O_CREAT | O_CLOEXEC, 0666);
+    if (fd < 0) return errno;
+    if (close(fd) != 0) return errno;
+    return 0;
+}
+
+/* A second name `to` (which must not exist) for the file `from` (link(2)). */
+int vb_link(const char *from, const char *to) { return link(from, to) != 0 ? errno : 0; }
+
+/* Remove the empty directory `path`. */
+int vb_remove_directory(const char *path) { return rmdir(path) != 0 ? errno : 0; }
+
+/* The entries of a directory, one name at a time ("." and ".." left out). */
+void *vb_directory_open(const char *path, int *error)
+{
+    DIR *directory = opendir(path);
+    *error = directory == NULL ? errno : 0;
+    return directory;
+}
+
+/* The next name into `buffer` (not NUL-terminated); its length, 0 at the end, -1 when it
+ * is longer than `length`. */
+int vb_directory_next(void *handle, char *buffer, int length)
+{
+    struct dirent *entry;
+    size_t size;
+    do {
+        entry = readdir((DIR *)handle);
+        if (entry == NULL) return 0;
+    } while (strcmp(entry->d_name, ".") == 0 || strcmp(entry->d_name, "..") == 0);
+    size = strlen(entry->d_name);
+    if (size > (size_t)length) return -1;
+    memcpy(buffer, entry->d_name, size);
+    return (int)size;
+}
+
+void vb_directory_close(void *handle)
+{
+    if (handle != NULL) closedir((DIR *)handle);
+}
 
 /* 64 random bits (getrandom), or the monotonic clock's nanoseconds when the kernel has
  * no entropy to give without blocking. */

@@ -12,10 +12,13 @@
 /* ---------------------------------------------------------------------------------
  * Signals */
 
-/* The signal that asked the run to stop (SIGINT or SIGTERM), 0 while none did. */
+/* The signal that asked the run to stop (SIGINT, SIGTERM or SIGUSR1), 0 while none did.
+ * SIGUSR1 is there for runs under OpenMPI's mpirun, which forwards it to every rank and
+ * keeps their exit status, where SIGINT/SIGTERM to mpirun end the job with status 1
+ * (docs/sweeps.md, "Parallel runs"). */
 static volatile sig_atomic_t interrupt_signal = 0;
 
-/* First SIGINT/SIGTERM: remember it and give both signals back their default action,
+/* First SIGINT/SIGTERM/SIGUSR1: remember it and give them back their default action,
  * so a second one ends the process at once (async-signal-safe: sigaction only). */
 static void on_interrupt(int signal_number)
 {
@@ -26,6 +29,7 @@ static void on_interrupt(int signal_number)
     interrupt_signal = signal_number;
     sigaction(SIGINT, &default_action, NULL);
     sigaction(SIGTERM, &default_action, NULL);
+    sigaction(SIGUSR1, &default_action, NULL);
 }
 
 int vb_install_interrupt_handlers(void)
@@ -39,6 +43,7 @@ int vb_install_interrupt_handlers(void)
     action.sa_flags = SA_RESTART;
     if (sigaction(SIGINT, &action, NULL) != 0) return errno;
     if (sigaction(SIGTERM, &action, NULL) != 0) return errno;
+    if (sigaction(SIGUSR1, &action, NULL) != 0) return errno;
     return 0;
 }
 

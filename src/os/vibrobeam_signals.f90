@@ -1,4 +1,4 @@
-!> Interruption by SIGINT or SIGTERM (docs/output.md, "Interruption"): the C handlers of
+!> Interruption by SIGINT, SIGTERM or SIGUSR1 (docs/output.md, "Interruption"): the C handlers of
 !! src/os/vibrobeam_posix_signals.c only record the signal; the run loop asks `interrupt_requested`
 !! after each step, finishes it, publishes a complete result marked 'interrupted' and the
 !! program exits with status 4. A second signal ends the process at once (the first one
@@ -12,7 +12,7 @@ module vibrobeam_signals
    public :: watch_signals, interrupt_requested, interrupt_name
 
    !> Linux signal numbers (signal(7), x86 and ARM).
-   integer(c_int), parameter :: sigint = 2, sigterm = 15
+   integer(c_int), parameter :: sigint = 2, sigusr1 = 10, sigterm = 15
 
    interface
       function c_install_interrupt_handlers() result(error) bind(C, name='vb_install_interrupt_handlers')
@@ -31,7 +31,7 @@ module vibrobeam_signals
 
 contains
 
-   !> Install the SIGINT/SIGTERM handlers and ignore SIGXFSZ. Called by the program
+   !> Install the SIGINT/SIGTERM/SIGUSR1 handlers and ignore SIGXFSZ. Called by the program
    !! before it creates any file.
    subroutine watch_signals(stat, errmsg)
       integer, intent(out) :: stat
@@ -47,12 +47,12 @@ contains
       end if
    end subroutine watch_signals
 
-   !> True once SIGINT or SIGTERM has arrived.
+   !> True once SIGINT, SIGTERM or SIGUSR1 has arrived.
    logical function interrupt_requested()
       interrupt_requested = c_interrupt_signal() /= 0
    end function interrupt_requested
 
-   !> 'SIGINT', 'SIGTERM' or '' (none yet).
+   !> 'SIGINT', 'SIGTERM', 'SIGUSR1' or '' (none yet).
    function interrupt_name() result(name)
       character(len=:), allocatable :: name
       select case (c_interrupt_signal())
@@ -60,6 +60,8 @@ contains
          name = 'SIGINT'
       case (sigterm)
          name = 'SIGTERM'
+      case (sigusr1)
+         name = 'SIGUSR1'
       case (0)
          name = ''
       case default

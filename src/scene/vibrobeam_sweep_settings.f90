@@ -95,8 +95,9 @@ contains
       type(beam_model) :: model
       type(contact_set) :: contacts
       character(len=:), allocatable :: warnings
-      integer(int64) :: settle_steps, measure_steps
-      integer :: k, a, contact_count, total
+      integer(int64) :: settle_steps, measure_steps, total
+      integer :: k, a, contact_count
+      logical :: same_model, same_contacts
       stat = 0
       errmsg = ''
       if (scene%analysis%kind /= 'dynamics') then
@@ -147,25 +148,34 @@ contains
                    'use mode = ''independent'' or reduction = ''none''')
       end if
       if (stat /= 0) return
-      total = size(settings%axis(1)%values)*max(1, size(settings%axis(2)%values))
+      ! (in 64 bits: 65536 x 65536 values make 2^32 points)
+      total = int(size(settings%axis(1)%values), int64)*max(1, size(settings%axis(2)%values))
       if (settings%mode == 'up-down') total = 2*total
       if (total > max_sweep_points) then
-         call fail('&sweep: '//integer_text(total)//' points; at most '//integer_text(max_sweep_points))
+         warnings = '&sweep: '//integer_text(size(settings%axis(1)%values))//' values'
+         if (len_trim(settings%axis(2)%parameter) > 0) &
+            warnings = warnings//' x '//integer_text(size(settings%axis(2)%values))//' values2'
+         if (settings%mode == 'up-down') warnings = warnings//' x 2 branches'
+         call fail(warnings//' make '//real_text(real(total, dp))//' points; at most '// &
+                   integer_text(max_sweep_points))
          return
       end if
       allocate (points, source=sweep_points(settings))
+      ! the model and the contact points change only with a parameter of &beam, &mesh or
+      ! &obstacles: otherwise those of the first point serve every point
+      same_model = .not. any(settings%axis%group == 'beam' .or. settings%axis%group == 'mesh')
+      same_contacts = same_model .and. .not. any(settings%axis%group == 'obstacles')
       contact_count = -1
       do k = 1, size(points)
          trial = point_scene(scene, settings, points(k))
          call validate_scene(trial, stat, errmsg)
          if (stat == 0) call point_windows(settings, trial, settle_steps, measure_steps, stat, errmsg)
-         if (stat == 0) then
-            call build_model(trial%mesh%basis, trial%mesh%elements, trial%beam%length, trial%beam%rho_s(), &
-               trial%beam%ei(), model, &
-                             stat, errmsg, &
-                             boundary=trial%beam%boundary)
+         if (stat == 0 .and. (k == 1 .or. .not. same_model)) &
+            call build_model(trial%mesh%basis, trial%mesh%elements, trial%beam%length, trial%beam%rho_s(), trial%beam%ei(), model, &
+                             stat, errmsg)
+         if (stat == 0 .and. (k == 1 .or. .not. same_contacts)) then
             warnings = ''
-            if (stat == 0) call build_contact_points(trial%obstacles, model, contacts, warnings, stat, errmsg)
+            call build_contact_points(trial%obstacles, model, contacts, warnings, stat, errmsg)
          end if
          if (stat == 0 .and. contact_count >= 0 .and. contacts%count /= contact_count) then
             stat = 1
@@ -348,13 +358,13 @@ contains
    function sweep_points(settings) result(points)
       type(sweep_settings), intent(in) :: settings
       type(sweep_point), allocatable :: points(:)
-      real(dp), allocatable :: ascending(:), line_values(:)
-      integer :: lines, line, k, n, task
+      real(dp), allocatable :: ascending(:)
+      integer :: lines, line, k, n, task, filled
       n = size(settings%axis(1)%values)
       lines = max(1, size(settings%axis(2)%values))
-      allocate (ascending(size(settings%axis(1)%values)))
-      ascending = sorted(settings%axis(1)%values)
-      allocate (points(0))
+      allocate (points(lines*merge(2*n, n, settings%mode == 'up-down')))
+      ascending = increasing(settings%axis(1)%values)
+      filled = 0
       task = 0
       do line = 1, lines
          select case (settings%mode)
@@ -372,21 +382,20 @@ contains
          case default   ! 'up-down'
             task = task + 1
             call branch(ascending, 1, 0)
-            call branch(ascending(n:1:-1), -1, size(points))
+            call branch(ascending(n:1:-1), -1, filled)
          end select
       end do
    contains
-      !> A branch over `line_values` in their order, the first point starting from point `first_start`.
+      !> A branch over `values` in their order, the first point starting from point `first_start`.
       subroutine branch(values, direction, first_start)
          real(dp), intent(in) :: values(:)
          integer, intent(in) :: direction, first_start
          integer :: j
-         line_values = values
-         do j = 1, size(line_values)
+         do j = 1, size(values)
             if (j == 1) then
-               call add(line_values(j), direction, first_start)
+               call add(values(j), direction, first_start)
             else
-               call add(line_values(j), direction, size(points))
+               call add(values(j), direction, filled)
             end if
          end do
       end subroutine branch
@@ -394,16 +403,33 @@ contains
       subroutine add(value, direction, start)
          real(dp), intent(in) :: value
          integer, intent(in) :: direction, start
-         type(sweep_point) :: point
-         point%line = line
-         point%direction = direction
-         point%start_point = start
-         point%task = task
-         point%value(1) = value
-         if (size(settings%axis(2)%values) > 0) point%value(2) = settings%axis(2)%values(line)
-         points = [points, point]
+         filled = filled + 1
+         points(filled)%line = line
+         points(filled)%direction = direction
+         points(filled)%start_point = start
+         points(filled)%task = task
+         points(filled)%value(1) = value
+         if (size(settings%axis(2)%values) > 0) points(filled)%value(2) = settings%axis(2)%values(line)
       end subroutine add
    end function sweep_points
+
+   !> `values` in increasing order: as they are or reversed when they are monotone (every
+   !! range from, to, count), sorted otherwise (values given one by one, at most
+   !! max_sweep_values of them).
+   function increasing(values) result(out)
+      real(dp), intent(in) :: values(:)
+      real(dp), allocatable :: out(:)
+      integer :: n
+      n = size(values)
+      if (all(values(2:) >= values(:n - 1))) then
+         out = values
+      else if (all(values(2:) <= values(:n - 1))) then
+         out = values(n:1:-1)
+      else
+         allocate (out(n))
+         out = sorted(values)
+      end if
+   end function increasing
 
    !> Number of tasks of `points`.
    pure integer function task_count(points)

@@ -11,7 +11,8 @@
 #   failure  a point whose contact solver fails is marked failed, the sweep goes on and
 #            exits with status 3 (independent points, and a continuation branch)
 #   interrupt SIGINT during a sweep: exit status 4, the sweep file published with /run
-#            status 'interrupted' and the points not finished marked
+#            status 'interrupted' and the points not finished marked, the points done
+#            kept in the partial directory
 set -uo pipefail
 mode=$1; vibrobeam=$2; compare=$3; mpirun=${4:-mpirun}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -20,16 +21,8 @@ trap 'rm -rf "$work"' EXIT
 cd "$work"
 failed=0
 
-scene() {  # scene NAME FREQUENCY SCHEME T_END OUTPUT SWEEP
-  sed -e "s|@FILE@|$1.h5|" -e "s|@FREQUENCY@|$2|" -e "s|@SCHEME@|$3|" -e "s|@T_END@|$4|" \
-      -e "s|@OUTPUT@|$5|" -e "s|@SWEEP@|$6|" "$here/scene.nml.in" > "$1.nml"
-}
-run() {  # run NAME [ENVIRONMENT...]: exit status 0 expected
-  local name=$1; shift
-  if ! env "$@" "$vibrobeam" "$name.nml" > "$name.out" 2> "$name.err"; then
-    echo "FAIL: vibrobeam $name.nml"; cat "$name.err"; failed=1
-  fi
-}
+# shellcheck source=sweep_common.sh
+. "$here/sweep_common.sh"
 
 case $mode in
 point)
@@ -98,7 +91,7 @@ failure)
 END
     "$vibrobeam" failure.nml > failure.out 2> failure.err
     status=$?
-    statuses=$(h5dump -A 0 -d /sweep/status failure.h5 | sed -n "s/.*(0): *\\(.*\\)/\\1/p" | tr -d " ")
+    statuses=$(statuses failure.h5)
     echo "$sweep_mode: exit status $status, /sweep/status $statuses"
     if [ $status -ne 3 ]; then echo "FAIL exit status $status, expected 3"; cat failure.err; failed=1; fi
     case $sweep_mode in
@@ -121,11 +114,12 @@ interrupt)
   echo "exit status $status"
   if [ $status -ne 4 ]; then echo "FAIL exit status $status, expected 4"; cat long.err; failed=1; fi
   h5dump -a /run/status long.h5 | grep -q '"interrupted"' || { echo "FAIL /run status is not 'interrupted'"; failed=1; }
-  statuses=$(h5dump -A 0 -d /sweep/status long.h5 | sed -n "s/.*(0): *\\(.*\\)/\\1/p" | tr -d " ")
+  statuses=$(statuses long.h5)
   echo "/sweep/status $statuses"
   case ",$statuses," in *,2,*) ;; *) echo "FAIL no point marked interrupted"; failed=1 ;; esac
   case ",$statuses," in *,3,*) ;; *) echo "FAIL no point marked not run"; failed=1 ;; esac
   ls long.h5.*.tmp > /dev/null 2>&1 && { echo "FAIL a temporary file is left"; failed=1; }
+  [ -d long.h5.partial ] || { echo "FAIL the points done are not kept for a rerun (long.h5.partial)"; failed=1; }
   ;;
 *)
   echo "unknown mode $mode"; exit 2 ;;

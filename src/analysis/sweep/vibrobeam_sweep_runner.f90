@@ -11,18 +11,21 @@
 !! its statistics are those of a single run with the same scene and window
 !! (`run_statistics`). Without keep_runs nothing is written: the recorder only decides
 !! impacts and episodes and feeds the statistics. With keep_runs the point's full result
-!! is written by `run_dynamics` (the same loop as a single run).
+!! is written by `run_dynamics` (the same loop as a single run) into the sweep's partial
+!! directory (`kept_point_file`), published with the sweep file at the end.
 !!
-!! A point that fails (contact solver, non-finite state, a start its scene refuses) is
-!! marked failed with the reason; the next point of its task starts from the last point
-!! that succeeded (the scene's initial state if none did). After SIGINT/SIGTERM the point
-!! in progress stops (status 'interrupted', its statistics so far) and the points not
-!! started are 'not run'.
+!! Each point's result goes to a `point_sink` as soon as the point ends (the sweep's
+!! journal), so nothing accumulates here. A point that fails (contact solver, non-finite
+!! state, a start its scene refuses) is marked failed with the reason; the next point of
+!! its task starts from the last point that succeeded (the scene's initial state if none
+!! did). After SIGINT/SIGTERM the point in progress stops (status 'interrupted', its
+!! statistics so far) and the points not started are not run. A point file that cannot be
+!! written is an I/O error: the task stops with stat /= 0 (the sweep fails, exit status 1).
 module vibrobeam_sweep_runner
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper
+   use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper, release_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_recorder, only: dynamics_recorder
    use vibrobeam_dynamics, only: run_dynamics
@@ -35,7 +38,7 @@ module vibrobeam_sweep_runner
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, point_scene, point_windows, max_settle_windows
    implicit none
    private
-   public :: point_result, start_state, run_task, point_file_name
+   public :: point_result, start_state, task_start, point_sink, run_task, point_file_name, kept_point_file
    public :: status_ok, status_failed, status_interrupted, status_not_run, status_names
 
    integer, parameter :: status_ok = 0, status_failed = 1, status_interrupted = 2, status_not_run = 3
@@ -61,7 +64,52 @@ module vibrobeam_sweep_runner
       type(statistics_result) :: statistics
    end type point_result
 
+   !> Where a task starts: its first point to run (the points before it are done), the
+   !! last point before it that succeeded (0: none) and that point's final state.
+   type :: task_start
+      integer :: first_to_run = 0
+      integer :: last_good_point = 0
+      type(start_state) :: state
+   end type task_start
+
+   !> What takes each point's result as it ends (the sweep's journal). `take` may be
+   !! called from several threads; `halted` is true once the sweep must stop (an I/O
+   !! error in another task).
+   type, abstract :: point_sink
+   contains
+      procedure(take_point), deferred :: take
+      procedure(sink_halted), deferred :: halted
+   end type point_sink
+
+   abstract interface
+      !> Point k of task `task` ended with `result`; `final` its final state (when it
+      !! succeeded); `point_file`: its keep_runs file was written.
+      subroutine take_point(self, k, task, result, final, point_file, stat, errmsg)
+         import :: point_sink, point_result, start_state
+         class(point_sink), intent(inout) :: self
+         integer, intent(in) :: k, task
+         type(point_result), intent(in) :: result
+         type(start_state), intent(in) :: final
+         logical, intent(in) :: point_file
+         integer, intent(out) :: stat
+         character(len=*), intent(out) :: errmsg
+      end subroutine take_point
+      logical function sink_halted(self)
+         import :: point_sink
+         class(point_sink), intent(in) :: self
+      end function sink_halted
+   end interface
+
 contains
+
+   !> '0001', '0042', '100000': a point's index with at least 4 digits.
+   pure function point_digits(k) result(digits)
+      integer, intent(in) :: k
+      character(len=:), allocatable :: digits
+      character(len=16) :: buffer
+      write (buffer, '(i4.4)') k
+      digits = trim(adjustl(buffer))
+   end function point_digits
 
    !> The result file of point k with keep_runs: '<stem>_point<k>.h5' beside the sweep
    !! file '<stem>.h5', k with at least 4 digits.
@@ -69,44 +117,65 @@ contains
       character(len=*), intent(in) :: sweep_file
       integer, intent(in) :: k
       character(len=:), allocatable :: name
-      character(len=16) :: digits
       integer :: n
       n = len_trim(sweep_file)
       if (n > 3) then
          if (sweep_file(n - 2:n) == '.h5') n = n - 3
       end if
-      write (digits, '(i4.4)') k
-      name = sweep_file(1:n)//'_point'//trim(adjustl(digits))//'.h5'
+      name = sweep_file(1:n)//'_point'//point_digits(k)//'.h5'
    end function point_file_name
 
-   !> Run the points of task `task` in order into results(:) (indexed like `points`).
-   !! `base` is the start state of &initial from_file (given = .false. without one).
-   subroutine run_task(scene, settings, points, task, base, results)
+   !> Where the keep_runs file of point k is written until the sweep is published:
+   !! 'point<k>.h5' in the sweep's partial directory `directory`.
+   pure function kept_point_file(directory, k) result(name)
+      character(len=*), intent(in) :: directory
+      integer, intent(in) :: k
+      character(len=:), allocatable :: name
+      name = directory//'/point'//point_digits(k)//'.h5'
+   end function kept_point_file
+
+   !> Run the points first .. last of task `task` (points(first:last), in order) from
+   !! `start` and hand each result to `sink`. `base` is the start state of &initial
+   !! from_file (given = .false. without one); `directory` the partial directory, where
+   !! keep_runs files go. stat /= 0: an I/O error (a point file or the sink), the task
+   !! stopped.
+   subroutine run_task(scene, settings, points, task, first, last, base, start, directory, sink, stat, errmsg)
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
       type(sweep_point), intent(in) :: points(:)
-      integer, intent(in) :: task
+      integer, intent(in) :: task, first, last
       type(start_state), intent(in) :: base
-      type(point_result), intent(inout) :: results(:)
+      type(task_start), intent(in) :: start
+      character(len=*), intent(in) :: directory
+      class(point_sink), intent(inout) :: sink
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
       type(start_state) :: last_good, final
       integer :: k, last_good_point
-      last_good_point = 0
-      do k = 1, size(points)
-         if (points(k)%task /= task) cycle
-         if (interrupt_requested()) then
-            results(k)%status = status_not_run
-            results(k)%message = 'not run: the sweep was interrupted'
-            cycle
-         end if
-         if (points(k)%start_point == 0 .or. last_good_point == 0) then
-            call run_point(scene, settings, k, points(k), base, 0, results(k), final)
-         else
-            call run_point(scene, settings, k, points(k), last_good, last_good_point, results(k), final)
-         end if
-         if (results(k)%status == status_ok) then
-            call move_state(final, last_good)
-            last_good_point = k
-         end if
+      logical :: written
+      stat = 0
+      errmsg = ''
+      if (start%first_to_run < first .or. start%first_to_run > last) return
+      last_good_point = start%last_good_point
+      if (last_good_point > 0) last_good = start%state
+      do k = start%first_to_run, last
+         if (interrupt_requested() .or. sink%halted()) exit
+         one_point: block
+            type(point_result) :: result   ! a new one for each point
+            if (points(k)%start_point == 0 .or. last_good_point == 0) then
+               call run_point(scene, settings, k, points(k), base, 0, directory, result, final, written, stat, errmsg)
+            else
+               call run_point(scene, settings, k, points(k), last_good, last_good_point, directory, result, final, &
+                              written, stat, errmsg)
+            end if
+            if (stat /= 0) return
+            call sink%take(k, task, result, final, written, stat, errmsg)
+            if (stat /= 0) return
+            if (result%status == status_ok) then
+               call move_state(final, last_good)
+               last_good_point = k
+            end if
+         end block one_point
       end do
    end subroutine run_task
 
@@ -121,21 +190,31 @@ contains
       if (allocated(from%u_previous)) call move_alloc(from%u_previous, to%u_previous)
    end subroutine move_state
 
-   !> One point (module documentation): its result, and its final state in `final`.
-   subroutine run_point(scene, settings, k, point, start, start_point, result, final)
+   !> One point (module documentation): its result, and its final state in `final`;
+   !! `written`: its keep_runs file is in `directory`. io_stat /= 0 (with io_message): the
+   !! point file could not be written.
+   subroutine run_point(scene, settings, k, point, start, start_point, directory, result, final, written, io_stat, &
+                        io_message)
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
       integer, intent(in) :: k, start_point
       type(sweep_point), intent(in) :: point
       type(start_state), intent(in) :: start
+      character(len=*), intent(in) :: directory
       type(point_result), intent(inout) :: result
       type(start_state), intent(out) :: final
+      logical, intent(out) :: written
+      integer, intent(out) :: io_stat
+      character(len=*), intent(out) :: io_message
       type(scene_type) :: local
       type(prepared_scene) :: prepared
       character(len=:), allocatable :: warnings
       character(len=512) :: errmsg
       integer(int64) :: clock_start, clock_end, rate, transient
       integer :: stat, windows
+      written = .false.
+      io_stat = 0
+      io_message = ''
       call system_clock(clock_start, rate)
       local = point_scene(scene, settings, point)
       local%output%progress = .false.
@@ -245,10 +324,14 @@ contains
          class(time_stepper), allocatable :: stepper
          type(dynamics_recorder) :: recorder
          call start_without_file(stepper, recorder, transient + result%measure_steps)
-         if (result%status /= status_ok) return
+         if (result%status /= status_ok) then
+            call release_stepper(stepper)
+            return
+         end if
          call step_to(stepper, recorder, transient + result%measure_steps)
          result%statistics = recorder%window_statistics(stepper)
          call keep_final(stepper)
+         call release_stepper(stepper)
       end subroutine run_without_file
 
       !> steady_tolerance > 0: after the transient, windows of measure_steps until the RMS
@@ -260,7 +343,10 @@ contains
          type(dynamics_recorder) :: recorder
          type(statistics_result) :: previous, current
          call start_without_file(stepper, recorder, result%settle_steps + max_settle_windows*result%measure_steps)
-         if (result%status /= status_ok) return
+         if (result%status /= status_ok) then
+            call release_stepper(stepper)
+            return
+         end if
          result%settled = 0
          do windows = 1, max_settle_windows
             transient = result%settle_steps + (windows - 1)*result%measure_steps
@@ -280,22 +366,28 @@ contains
          result%settle_steps = transient
          result%statistics = current
          if (result%status == status_ok .and. .not. settings%keep_runs) call keep_final(stepper)
+         call release_stepper(stepper)
       end subroutine measure_until_steady
 
-      !> keep_runs: the point's full result through `run_dynamics`, named point_file_name.
+      !> keep_runs: the point's full result through `run_dynamics`, into `kept_point_file`.
       subroutine run_with_file()
          type(run_outcome) :: outcome
          type(state_record) :: record
-         local%output%file = point_file_name(scene%output%file, k)
+         local%output%file = kept_point_file(directory, k)
          local%output%text = .false.
          local%output%measure_from = transient*local%time%dt
          local%time%t_end = (transient + result%measure_steps)*local%time%dt
          call run_dynamics(local, prepared, outcome, stat, errmsg, quiet=.true., statistics=result%statistics, &
                            final_state=record)
          if (stat /= 0) then
-            call failed('writing '''//trim(local%output%file)//''': '//trim(errmsg))
+            ! an I/O error, not a property of the point: the sweep stops (exit status 1)
+            io_stat = 1
+            io_message = '&sweep keep_runs: the result of point '//integer_text(k)//' ('''// &
+                         point_file_name(scene%output%file, k)//''') cannot be written: '//trim(errmsg)
+            result%status = status_not_run
             return
          end if
+         written = .true.
          select case (outcome%status)
          case ('failed')
             call failed('numerical failure at '//trim(outcome%failure))

@@ -1,13 +1,14 @@
-!> Where the tasks of a sweep run and how their results reach the process that writes the
-!! sweep file (docs/sweeps.md, "Parallel runs"). This is the build without MPI: one
-!! process (rank 0 of 1) runs every task. With -DVIBROBEAM_MPI=ON the same module comes
-!! from src/analysis/sweep/vibrobeam_sweep_transport_mpi.F90, which spreads the tasks over the ranks of
-!! `mpirun` and gathers the results on rank 0.
+!> Where the tasks of a sweep run and what the processes running them agree on (docs/sweeps.md,
+!! "Parallel runs"). This is the build without MPI: one process (rank 0 of 1) runs every
+!! task. With -DVIBROBEAM_MPI=ON the same module comes from
+!! src/analysis/sweep/vibrobeam_sweep_transport_mpi.F90, which spreads the tasks over the
+!! ranks of `mpirun`. The results themselves travel through the sweep's journals
+!! (`vibrobeam_sweep_journal`), not through the transport.
 module vibrobeam_sweep_transport
-   use vibrobeam_sweep_runner, only: point_result
    implicit none
    private
-   public :: transport_start, transport_stop, transport_rank, transport_ranks, gather_results, owns_task
+   public :: transport_start, transport_stop, transport_rank, transport_ranks, owns_task
+   public :: transport_barrier, transport_max, share_failure
 
 contains
 
@@ -37,15 +38,22 @@ contains
       owns_task = mod(task - 1, ranks) == rank
    end function owns_task
 
-   !> Make every rank's `results` those of rank 0's view: the entries of the points whose
-   !! task another rank ran are sent to rank 0 (nothing to do with one process).
-   subroutine gather_results(task_of, results, stat, errmsg)
-      integer, intent(in) :: task_of(:)
-      type(point_result), intent(inout) :: results(:)
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      stat = 0
-      errmsg = ''
-      if (.false.) print *, size(task_of), size(results)
-   end subroutine gather_results
+   !> Wait until every rank is here (nothing to wait for with one process).
+   subroutine transport_barrier()
+   end subroutine transport_barrier
+
+   !> The largest `value` over the ranks (every rank gets it).
+   integer function transport_max(value)
+      integer, intent(in) :: value
+      transport_max = value
+   end function transport_max
+
+   !> Every rank gets the stat /= 0 and errmsg of the lowest rank that has one (stat = 0
+   !! everywhere when none has).
+   subroutine share_failure(stat, errmsg)
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      ! one process: its own failure is the only one
+      if (stat /= 0) errmsg = trim(errmsg)
+   end subroutine share_failure
 end module vibrobeam_sweep_transport

@@ -51,7 +51,7 @@ module vibrobeam_hdf5
       h5fcreate_f, h5fclose_f, h5fflush_f, H5F_ACC_TRUNC_F, H5F_SCOPE_GLOBAL_F, &
       H5F_CLOSE_STRONG_F, H5F_LIBVER_LATEST_F, &
       h5pcreate_f, h5pset_fclose_degree_f, h5pset_create_inter_group_f, h5pset_libver_bounds_f, &
-      h5pset_cache_f, size_t, &
+      h5pset_cache_f, h5pset_sieve_buf_size_f, size_t, &
       H5P_FILE_ACCESS_F, H5P_LINK_CREATE_F, &
       h5gcreate_f, h5gclose_f, h5oopen_f, h5oclose_f, &
       h5screate_f, h5screate_simple_f, H5S_SCALAR_F, &
@@ -120,12 +120,16 @@ contains
 
    !> Start a new result file: initialise HDF5 (once), create the parent directories of
    !! `final_name` and create a fresh temporary file beside it (module documentation).
-   !! `final_name` itself is not touched until `commit`.
-   subroutine writer_create(self, final_name, stat, errmsg)
+   !! `final_name` itself is not touched until `commit`. With `unbuffered`, HDF5 keeps no
+   !! sieve buffer: a write of raw data into a contiguous dataset reaches the file (the
+   !! operating system) when the call returns, in the order of the calls (a sweep's
+   !! journal marks a point done only after its data, `vibrobeam_sweep_journal`).
+   subroutine writer_create(self, final_name, stat, errmsg, unbuffered)
       class(h5_writer), intent(inout) :: self      !! writer, not currently open
       character(len=*), intent(in) :: final_name   !! name of the complete file
       integer, intent(out) :: stat                 !! 0 on success
       character(len=*), intent(out) :: errmsg      !! reason of the failure, blank on success
+      logical, intent(in), optional :: unbuffered  !! no sieve buffer (default: HDF5's 64 KiB)
       integer(hid_t) :: file_access_list
       integer :: hdferr
       character(len=buffer_length) :: fs_message
@@ -164,6 +168,9 @@ contains
       ! failed write (full disk) must fail the call that makes it. (In SWMR mode HDF5
       ! 1.10 takes the file's setting, not a dataset access list's.)
       if (hdferr >= 0) call h5pset_cache_f(file_access_list, 0, 0_size_t, 0_size_t, 1.0, hdferr)
+      if (hdferr >= 0 .and. present(unbuffered)) then
+         if (unbuffered) call h5pset_sieve_buf_size_f(file_access_list, 0_size_t, hdferr)
+      end if
       if (hdferr >= 0) then
          call h5fcreate_f(self%temporary_name, H5F_ACC_TRUNC_F, self%file_id, hdferr, &
             access_prp=file_access_list)

@@ -18,7 +18,7 @@ module vibrobeam_hdf5_base
    use vibrobeam_filesystem, only: file_exists
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5close_f, h5eset_auto_f, h5kind_to_type, &
       H5_REAL_KIND, H5_INTEGER_KIND, h5fopen_f, h5fclose_f, H5F_ACC_RDONLY_F, &
-      h5pclose_f, h5lexists_f, h5screate_f, h5sclose_f, H5S_SCALAR_F, &
+      h5pclose_f, h5lexists_f, h5dclose_f, h5screate_f, h5sclose_f, H5S_SCALAR_F, &
       h5acreate_f, h5aclose_f, h5awrite_f, h5aexists_f, h5adelete_f, h5aopen_f, &
       h5tcopy_f, h5tclose_f, h5tset_size_f, h5tset_strpad_f, H5T_FORTRAN_S1, &
       H5T_STR_NULLPAD_F, H5T_STR_NULLTERM_F
@@ -29,7 +29,7 @@ module vibrobeam_hdf5_base
    public :: attribute_outcome, put_scalar_attribute, &
       put_string_attribute, rewrite_attribute
    public :: open_file_for_reading
-   public :: close_dataspace, close_datatype, close_property_list
+   public :: close_dataspace, close_datatype, close_property_list, close_dataset
 
    !> Marks an HDF5 identifier that is not open.
    integer(hid_t), parameter :: no_id = -1
@@ -413,6 +413,14 @@ contains
       if (space_id /= no_id) call h5sclose_f(space_id, hdferr)
       space_id = no_id
    end subroutine close_dataspace
+
+   !> Close a dataset identifier if it is open.
+   subroutine close_dataset(dataset)
+      integer(hid_t), intent(inout) :: dataset
+      integer :: hdferr
+      if (dataset /= no_id) call h5dclose_f(dataset, hdferr)
+      dataset = no_id
+   end subroutine close_dataset
 
    !> Close a datatype identifier if it is open.
    subroutine close_datatype(type_id)

@@ -13,18 +13,19 @@
 !! enters SWMR mode (`h5_writer%start_swmr`).
 module vibrobeam_hdf5_series
    use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_text, only: integer_text
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_hdf5_base, only: no_id, fail, describe, link_exists, put_string_attribute, &
-      close_dataspace, close_property_list, h5_reason
+      close_dataspace, close_property_list, close_dataset, h5_reason
    use hdf5, only: hid_t, hsize_t, size_t, h5kind_to_type, H5_REAL_KIND, H5_INTEGER_KIND, &
       h5pcreate_f, h5pset_chunk_f, h5pset_alloc_time_f, h5pset_chunk_cache_f, H5P_DATASET_CREATE_F, &
       H5P_DATASET_ACCESS_F, H5D_ALLOC_TIME_EARLY_F, &
       H5S_UNLIMITED_F, &
       h5screate_simple_f, h5sselect_hyperslab_f, H5S_SELECT_SET_F, &
-      h5dcreate_f, h5dclose_f, h5dwrite_f, h5dget_space_f, h5dset_extent_f
+      h5dcreate_f, h5dwrite_f, h5dget_space_f, h5dset_extent_f
    implicit none
    private
-   public :: h5_series, h5_array, series_buffer_rows
+   public :: h5_series, h5_array, h5_table, series_buffer_rows
 
    !> Largest buffer (and chunk) of a series in bytes: 1 MiB, HDF5's default chunk cache.
    integer, parameter :: buffer_bytes = 2**20
@@ -63,6 +64,21 @@ module vibrobeam_hdf5_series
       procedure :: write_int64s => array_write_int64s
       procedure :: close => array_close
    end type h5_array
+
+   !> A fixed-size dataset of rows written in blocks (module documentation).
+   type :: h5_table
+      private
+      integer(hid_t) :: dataset = no_id
+      integer :: columns = 1
+      integer(int64) :: rows = 0
+      logical :: integers = .false.
+      logical :: vector = .false.
+      character(len=:), allocatable :: path, file
+   contains
+      procedure :: create => table_create
+      procedure :: write_rows => table_write_rows
+      procedure :: close => table_close
+   end type h5_table
 
 contains
 
@@ -242,9 +258,7 @@ contains
    !> Close the dataset (buffered rows not written are lost: `write` first).
    subroutine series_close(self)
       class(h5_series), intent(inout) :: self
-      integer :: hdferr
-      if (self%dataset /= no_id) call h5dclose_f(self%dataset, hdferr)
-      self%dataset = no_id
+      call close_dataset(self%dataset)
    end subroutine series_close
 
    !> Create the 1-d dataset `path` of `length` values (reals, or 64-bit integers).
@@ -256,31 +270,13 @@ contains
       logical, intent(in) :: integers
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer(hid_t) :: space_id, properties
-      character(len=:), allocatable :: reason
-      integer :: hdferr
-      stat = 0
-      errmsg = ''
       self%length = length
       self%integers = integers
       self%path = trim(path)
       self%file = writer%temporary_file()
-      space_id = no_id
-      properties = no_id
       ! storage allocated now: writing it later (in SWMR mode) changes no metadata
-      call h5screate_simple_f(1, [int(length, hsize_t)], space_id, hdferr)
-      if (hdferr >= 0) call h5pcreate_f(H5P_DATASET_CREATE_F, properties, hdferr)
-      if (hdferr >= 0) call h5pset_alloc_time_f(properties, H5D_ALLOC_TIME_EARLY_F, hdferr)
-      if (hdferr >= 0) call h5dcreate_f(writer%id(), trim(path), value_type(integers), space_id, &
-                                        self%dataset, hdferr, properties, writer%link_properties())
-      reason = ''
-      if (hdferr < 0) reason = h5_reason()
-      call close_dataspace(space_id)
-      call close_property_list(properties)
-      if (hdferr < 0) then
-         self%dataset = no_id
-         call fail(stat, errmsg, 'cannot create dataset ' // describe(path, self%file), reason)
-      end if
+      call create_fixed(writer, self%path, [int(length, hsize_t)], value_type(integers), .true., self%dataset, &
+                        stat, errmsg)
    end subroutine array_create
 
    !> Write all values of a real array dataset.
@@ -326,16 +322,162 @@ contains
    !> Close the dataset.
    subroutine array_close(self)
       class(h5_array), intent(inout) :: self
-      integer :: hdferr
-      if (self%dataset /= no_id) call h5dclose_f(self%dataset, hdferr)
-      self%dataset = no_id
+      call close_dataset(self%dataset)
    end subroutine array_close
 
-   !> HDF5 type of the stored values.
-   function value_type(integers) result(type_id)
+   !> Create the dataset `path` of `rows` rows of `columns` values (module documentation),
+   !! with the string attribute 'unit' when `unit` is given.
+   subroutine table_create(self, writer, path, columns, rows, stat, errmsg, unit, integers, vector, early)
+      class(h5_table), intent(inout) :: self
+      type(h5_writer), intent(in) :: writer
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: columns
+      integer(int64), intent(in) :: rows
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=*), intent(in), optional :: unit
+      logical, intent(in), optional :: integers   !! default integers (default: doubles)
+      logical, intent(in), optional :: vector     !! a 1-d dataset (one column; default: 2-d)
+      logical, intent(in), optional :: early      !! storage allocated now (default: at the first write)
+      integer(hsize_t) :: dims(2)
+      character(len=:), allocatable :: failed_step
+      integer :: rank
+      logical :: early_storage
+      stat = 0
+      errmsg = ''
+      self%columns = columns
+      self%rows = rows
+      self%integers = .false.
+      if (present(integers)) self%integers = integers
+      self%vector = .false.
+      if (present(vector)) self%vector = vector .and. columns == 1
+      self%path = trim(path)
+      self%file = writer%temporary_file()
+      if (link_exists(writer%id(), path)) then
+         call fail(stat, errmsg, 'cannot create dataset '//describe(path, self%file)//': the path already exists')
+         return
+      end if
+      rank = merge(1, 2, self%vector)
+      dims = [int(columns, hsize_t), int(rows, hsize_t)]
+      if (self%vector) dims(1) = int(rows, hsize_t)
+      early_storage = .false.
+      if (present(early)) early_storage = early
+      call create_fixed(writer, self%path, dims(1:rank), value_type(self%integers, whole=.true.), early_storage, &
+                        self%dataset, stat, errmsg)
+      if (stat /= 0) return
+      if (present(unit)) then
+         call put_string_attribute(self%dataset, 'unit', unit, failed_step)
+         if (len(failed_step) > 0) call fail(stat, errmsg, 'cannot write attribute ''unit'' of '// &
+                                             describe(path, self%file)//' ('//failed_step//')')
+      end if
+   end subroutine table_create
+
+   !> Write rows first_row .. first_row + size(values, 2) - 1 (1-based) from
+   !! values(columns, rows); an integer table stores nint(values).
+   subroutine table_write_rows(self, first_row, values, stat, errmsg)
+      class(h5_table), intent(inout) :: self
+      integer(int64), intent(in) :: first_row
+      real(dp), intent(in) :: values(:, :)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(hid_t) :: file_space, memory_space
+      integer(hsize_t) :: offset(2), count(2)
+      real(dp), allocatable :: reals(:, :)
+      integer, allocatable :: whole(:, :)
+      character(len=:), allocatable :: reason
+      integer :: hdferr, rank
+      stat = 0
+      errmsg = ''
+      if (size(values, 2) == 0) return
+      if (self%dataset == no_id .or. size(values, 1) /= self%columns .or. first_row < 1 .or. &
+          first_row - 1 + size(values, 2) > self%rows) then
+         call fail(stat, errmsg, 'cannot write rows '//integer_text(int(first_row))//' and following of '// &
+                   describe(self%path, self%file)//': not open, or outside its '//integer_text(int(self%rows))// &
+                   ' rows of '//integer_text(self%columns)//' values')
+         return
+      end if
+      if (self%vector) then
+         rank = 1
+         offset(1) = int(first_row - 1, hsize_t)
+         count(1) = int(size(values, 2), hsize_t)
+      else
+         rank = 2
+         offset = [0_hsize_t, int(first_row - 1, hsize_t)]
+         count = int([size(values, 1), size(values, 2)], hsize_t)
+      end if
+      file_space = no_id
+      memory_space = no_id
+      call h5dget_space_f(self%dataset, file_space, hdferr)
+      if (hdferr >= 0) call h5sselect_hyperslab_f(file_space, H5S_SELECT_SET_F, offset(1:rank), count(1:rank), hdferr)
+      if (hdferr >= 0) call h5screate_simple_f(rank, count(1:rank), memory_space, hdferr)
+      if (hdferr >= 0) then
+         ! contiguous copies: h5dwrite_f takes an explicit-shape buffer
+         if (self%integers) then
+            allocate (whole, source=nint(values))
+            call h5dwrite_f(self%dataset, value_type(.true., whole=.true.), whole, count(1:rank), hdferr, &
+                            mem_space_id=memory_space, file_space_id=file_space)
+         else
+            allocate (reals, source=values)
+            call h5dwrite_f(self%dataset, value_type(.false.), reals, count(1:rank), hdferr, &
+                            mem_space_id=memory_space, file_space_id=file_space)
+         end if
+      end if
+      reason = ''
+      if (hdferr < 0) reason = h5_reason()
+      call close_dataspace(memory_space)
+      call close_dataspace(file_space)
+      if (hdferr < 0) call fail(stat, errmsg, 'cannot write '//describe(self%path, self%file), reason)
+   end subroutine table_write_rows
+
+   !> Close the dataset.
+   subroutine table_close(self)
+      class(h5_table), intent(inout) :: self
+      call close_dataset(self%dataset)
+   end subroutine table_close
+
+   !> Create the dataset `path` of the writer's file with dimensions `dims` (Fortran order)
+   !! and type `type_id`, its storage allocated now with `early`; `dataset` is open after.
+   subroutine create_fixed(writer, path, dims, type_id, early, dataset, stat, errmsg)
+      type(h5_writer), intent(in) :: writer
+      character(len=*), intent(in) :: path
+      integer(hsize_t), intent(in) :: dims(:)
+      integer(hid_t), intent(in) :: type_id
+      logical, intent(in) :: early
+      integer(hid_t), intent(out) :: dataset
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(hid_t) :: space_id, properties
+      character(len=:), allocatable :: reason
+      integer :: hdferr
+      stat = 0
+      errmsg = ''
+      space_id = no_id
+      properties = no_id
+      call h5screate_simple_f(size(dims), dims, space_id, hdferr)
+      if (hdferr >= 0) call h5pcreate_f(H5P_DATASET_CREATE_F, properties, hdferr)
+      if (hdferr >= 0 .and. early) call h5pset_alloc_time_f(properties, H5D_ALLOC_TIME_EARLY_F, hdferr)
+      if (hdferr >= 0) call h5dcreate_f(writer%id(), trim(path), type_id, space_id, dataset, hdferr, properties, &
+                                        writer%link_properties())
+      reason = ''
+      if (hdferr < 0) reason = h5_reason()
+      call close_dataspace(space_id)
+      call close_property_list(properties)
+      if (hdferr < 0) then
+         dataset = no_id
+         call fail(stat, errmsg, 'cannot create dataset '//describe(path, writer%temporary_file()), reason)
+      end if
+   end subroutine create_fixed
+
+   !> HDF5 type of the stored values: doubles, or integers (64-bit; of the default kind
+   !! with `whole`, a table's).
+   function value_type(integers, whole) result(type_id)
       logical, intent(in) :: integers
+      logical, intent(in), optional :: whole
       integer(hid_t) :: type_id
-      if (integers) then
+      integer :: default_integer
+      if (integers .and. present(whole)) then
+         type_id = h5kind_to_type(kind(default_integer), H5_INTEGER_KIND)
+      else if (integers) then
          type_id = h5kind_to_type(int64, H5_INTEGER_KIND)
       else
          type_id = h5kind_to_type(dp, H5_REAL_KIND)
