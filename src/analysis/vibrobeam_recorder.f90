@@ -380,28 +380,29 @@ contains
       errmsg = ''
       associate (now => self%touched)
       now = .false.
-      do k = 1, stepper%active_count
-         c = stepper%active(k)
+      do k = 1, stepper%report%active_count
+         c = stepper%report%active(k)
          self%events%impact(k) = .false.
-         if (abs(stepper%impulse(k)) <= 0) cycle
+         if (abs(stepper%report%impulse(k)) <= 0) cycle
          now(c) = .true.
-         if (.not. self%in_contact(c) .and. stepper%approaching(k)) then
+         if (.not. self%in_contact(c) .and. stepper%report%approaching(k)) then
             self%events%impact(k) = .true.
             self%impacts = self%impacts + 1
-            if (self%write_rows) call append_impact([stepper%impulse_time, stepper%contacts%x(c), stepper%impulse(k), &
-                                                     stepper%velocity_before(k), stepper%velocity_after(k)])
+            if (self%write_rows) call append_impact([stepper%report%impulse_time, stepper%contacts%x(c), &
+               stepper%report%impulse(k), &
+                                                     stepper%report%velocity_before(k), stepper%report%velocity_after(k)])
             if (stat /= 0) return
          end if
-         if (c == self%tip_contact) self%tip_impulse = self%tip_impulse + stepper%impulse(k)
+         if (c == self%tip_contact) self%tip_impulse = self%tip_impulse + stepper%report%impulse(k)
       end do
       ! the next step's impact test sees the rigid impulses only
       self%in_contact = now
       if (self%compliant) then
-         ! stepper%contact_force holds the true force at every contact point after every
+         ! stepper%report%contact_force holds the true force at every contact point after every
          ! step; the run statistics take their force statistics from it (observe_step).
          ! a compliant point is in contact while its stops push (docs/output.md)
-         where (abs(stepper%contact_force) > 0) now = .true.
-         self%peak_force = max(self%peak_force, abs(stepper%contact_force))
+         where (abs(stepper%report%contact_force) > 0) now = .true.
+         self%peak_force = max(self%peak_force, abs(stepper%report%contact_force))
       end if
       where (now) self%contact_time = self%contact_time + stepper%dt
       end associate
@@ -410,11 +411,11 @@ contains
          self%max_penetration = depth
          self%max_penetration_time = stepper%t
       end if
-      self%iterations_total = self%iterations_total + stepper%iterations
-      self%iterations_max = max(self%iterations_max, stepper%iterations)
-      self%linear_solves_total = self%linear_solves_total + stepper%linear_solves
-      self%linear_solves_max = max(self%linear_solves_max, stepper%linear_solves)
-      if (stepper%used_fallback) self%fallback_steps = self%fallback_steps + 1
+      self%iterations_total = self%iterations_total + stepper%report%iterations
+      self%iterations_max = max(self%iterations_max, stepper%report%iterations)
+      self%linear_solves_total = self%linear_solves_total + stepper%report%linear_solves
+      self%linear_solves_max = max(self%linear_solves_max, stepper%report%linear_solves)
+      if (stepper%report%used_fallback) self%fallback_steps = self%fallback_steps + 1
       call self%episodes%observe_step(stepper, self%events, stat, errmsg)
       if (stat /= 0 .or. .not. self%statistics%active) return
       ! what the episodes decided, and the observed values, for the statistics
@@ -480,19 +481,19 @@ contains
       row(h_kinetic) = stepper%kinetic_energy()
       row(h_elastic) = stepper%elastic_energy()
       row(h_total) = row(h_kinetic) + row(h_elastic)
-      row(h_work) = stepper%work
-      row(h_impacts) = stepper%dissipated_impacts
-      row(h_damping) = stepper%dissipated_damping
-      row(h_numerical) = stepper%dissipated_numerical
+      row(h_work) = stepper%energy%work
+      row(h_impacts) = stepper%energy%dissipated_impacts
+      row(h_damping) = stepper%energy%dissipated_damping
+      row(h_numerical) = stepper%energy%dissipated_numerical
       row(h_dissipated) = row(h_impacts) + row(h_damping) + row(h_numerical)
       if (self%compliant) then
          ! the stops' stored energy is part of the total, their damping a dissipation
          potential = stepper%contact_potential()
          row(h_total) = row(h_total) + potential
-         row(h_dissipated) = row(h_dissipated) + stepper%dissipated_contact_damping
+         row(h_dissipated) = row(h_dissipated) + stepper%energy%dissipated_contact_damping
          call self%contact_potential%append([potential], stat, errmsg)
-         if (stat == 0) call self%contact_damping%append([stepper%dissipated_contact_damping], stat, errmsg)
-         if (stat == 0) call self%contact_force%append(stepper%contact_force, stat, errmsg)
+         if (stat == 0) call self%contact_damping%append([stepper%energy%dissipated_contact_damping], stat, errmsg)
+         if (stat == 0) call self%contact_force%append(stepper%report%contact_force, stat, errmsg)
          if (stat /= 0) return
       end if
       row(h_balance) = row(h_total) - row(h_work) + row(h_dissipated)

@@ -104,10 +104,10 @@ contains
          if (self%contacts%springs%count > 0) then
             call self%compliant_projection(z_free, z, stat, errmsg)
          else
-            call self%projector%project_admissible(z_free, z, self%multiplier, self%iterations, stat, errmsg)
-            self%linear_solves = self%projector%linear_solves
+            call self%projector%project_admissible(z_free, z, self%multiplier, self%report%iterations, stat, errmsg)
+            self%report%linear_solves = self%projector%linear_solves
          end if
-         self%used_fallback = self%projector%used_fallback
+         self%report%used_fallback = self%projector%used_fallback
          if (stat /= 0) return
          u_new = (1 + e)*z - e*u_old
          if (.not. ieee_is_finite(sum(u_new))) then
@@ -116,9 +116,9 @@ contains
             return
          end if
          stride = u_new - u_old   ! U^{n+1} - U^{n-1}
-         if (self%loads%present) self%work = self%work + 0.5_dp*dot_product(force, stride)
-         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) self%dissipated_damping = &
-            self%dissipated_damping + 0.5_dp*dot_product(stride, self%damping_times(stride))/(2*dt)
+         if (self%loads%present) self%energy%work = self%energy%work + 0.5_dp*dot_product(force, stride)
+         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) self%energy%dissipated_damping = &
+            self%energy%dissipated_damping + 0.5_dp*dot_product(stride, self%damping_times(stride))/(2*dt)
          ! contact record: reaction r = (1 + e) P_z/dt^2 (W (U^{n+1} - U_free) = dt^2 H^T r)
          m = 0
          do c = 1, self%contacts%count
@@ -127,18 +127,19 @@ contains
             reaction = (1 + e)*self%multiplier(c)/dt**2
             before = (contact_value(self%contacts, c, u) - contact_value(self%contacts, c, u_old))/dt
             after = (contact_value(self%contacts, c, u_new) - contact_value(self%contacts, c, u))/dt
-            self%active(m) = c
-            self%impulse(m) = reaction*dt
-            self%velocity_before(m) = before
-            self%velocity_after(m) = after
-            self%approaching(m) = sign(1.0_dp, reaction)*before <= 0
-            self%dissipated_impacts = self%dissipated_impacts - 0.5_dp*reaction*contact_value(self%contacts, c, stride)
+            self%report%active(m) = c
+            self%report%impulse(m) = reaction*dt
+            self%report%velocity_before(m) = before
+            self%report%velocity_after(m) = after
+            self%report%approaching(m) = sign(1.0_dp, reaction)*before <= 0
+            self%energy%dissipated_impacts = self%energy%dissipated_impacts &
+               - 0.5_dp*reaction*contact_value(self%contacts, c, stride)
          end do
-         self%active_count = m
+         self%report%active_count = m
          self%u_previous = u
          self%u = u_new
          self%v = (self%u - self%u_previous)/dt
-         self%impulse_time = self%t   ! the scheme is centred at t_n, where r^n acts
+         self%report%impulse_time = self%t   ! the scheme is centred at t_n, where r^n acts
          self%steps = self%steps + 1
          self%t = self%steps*dt
       end associate
@@ -168,8 +169,8 @@ contains
          call c%solve(springs, self%contacts, self%iteration_matrix, self%projector, z_free, q, p0, 0.5_dp*(1 + e), &
                       self%dt**2/(1 + e), 0.5_dp, self%dt, rigid_admissible, no_points, no_values, no_values, z, &
                       self%multiplier, stat, errmsg)
-         self%iterations = c%iterations
-         self%linear_solves = c%linear_solves
+         self%report%iterations = c%iterations
+         self%report%linear_solves = c%linear_solves
          if (stat /= 0) then
             stat = 3
             return
@@ -178,9 +179,9 @@ contains
          if (stat /= 0) return
          ! energy: the beam's half-step energy loses sum f dpbar; Phi(pbar) stores it
          call self%compliant_energy(p0, c%p1)
-         self%contact_force = 0
+         self%report%contact_force = 0
          do j = 1, springs%count
-            self%contact_force(springs%point(j)) = self%contact_force(springs%point(j)) + springs%sign(j)* &
+            self%report%contact_force(springs%point(j)) = self%report%contact_force(springs%point(j)) + springs%sign(j)* &
                end_force(springs%stiffness(j), springs%exponent(j), springs%damping(j), self%dt, p0(j), c%p1(j))
          end do
       end associate

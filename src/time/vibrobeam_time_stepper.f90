@@ -16,12 +16,46 @@ module vibrobeam_time_stepper
    use vibrobeam_contact_set, only: contact_value
    implicit none
    private
-   public :: time_stepper, save_stepper_state, restore_stepper_state, unresolved_fraction
+   public :: time_stepper, step_report, energy_ledger, save_stepper_state, restore_stepper_state, unresolved_fraction
 
    !> The largest share of the energy scale the compliant stops' unresolved work may reach
    !! before the run stops as a numerical failure (docs/theory.md section 8, "Accuracy"):
    !! sqrt(eps), the energy to half its digits.
    real(dp), parameter :: unresolved_fraction = sqrt(epsilon(1.0_dp))
+
+   !> What the last step did, as the recorder and the observers read it (each scheme says
+   !! when its impulses act and what its velocities before and after are).
+   type :: step_report
+      integer :: active_count = 0
+      integer, allocatable :: active(:)            !! contact points with a constraint (first active_count)
+      real(dp), allocatable :: impulse(:)          !! impulse of each (N s), positive upwards
+      real(dp), allocatable :: velocity_before(:), velocity_after(:)   !! of each point (m/s)
+      logical, allocatable :: approaching(:)       !! the point moved toward its obstacle
+      integer :: iterations = 0                    !! contact solver iterations of the last step
+      integer :: linear_solves = 0                 !! linear solves the contact solver made in the last step
+      logical :: used_fallback = .false.           !! the contact solver needed its fall-back in the last step
+      real(dp) :: impulse_time = 0                 !! when the last step's impulses act (s)
+      !> force of the compliant stops on each contact point at t (N, positive upwards;
+      !! 0 at rigid-only points)
+      real(dp), allocatable :: contact_force(:)
+   end type step_report
+
+   !> The running sums of the energy balance since t = 0 (each scheme says how it defines
+   !! them; docs/theory.md §6 and §8).
+   type :: energy_ledger
+      real(dp) :: work = 0                   !! work of the loads (J)
+      real(dp) :: dissipated_impacts = 0     !! energy taken by impacts (J)
+      real(dp) :: dissipated_damping = 0     !! energy taken by Rayleigh damping (J)
+      real(dp) :: dissipated_numerical = 0   !! energy taken by the theta-method itself (J): velocity scheme,
+                                             !! 0 for theta = 1/2; 0 for the position scheme
+      ! compliant stops (docs/theory.md section 8); unused when contacts%springs%count = 0
+      real(dp) :: dissipated_contact_damping = 0   !! energy taken by the stops' damping (J)
+      !> sum over the steps of |sum_j (f_j - f_j^law)(p_j^{n+1} - p_j^n)|: the work of the
+      !! force residual Newton's method left (J; part of dissipated_numerical, signed there)
+      real(dp) :: unresolved_work = 0
+      !> the energy scale max(|E|, |W|, |D|) at the last comparison with unresolved_work (J)
+      real(dp) :: energy_scale = 0
+   end type energy_ledger
 
    type, abstract :: time_stepper
       real(dp) :: dt = 0, theta = 0.5_dp, restitution = 1
@@ -36,34 +70,10 @@ module vibrobeam_time_stepper
       real(dp), allocatable :: v(:)               !! velocity unknowns (m/s), see each scheme
       real(dp) :: t = 0                            !! time of u (s)
       integer(int64) :: steps = 0                  !! steps taken since t = 0 (t = steps dt)
-      ! what the last step did
-      integer :: active_count = 0
-      integer, allocatable :: active(:)            !! contact points with a constraint (first active_count)
-      real(dp), allocatable :: impulse(:)          !! impulse of each (N s), positive upwards
-      real(dp), allocatable :: velocity_before(:), velocity_after(:)   !! of each point (m/s)
-      logical, allocatable :: approaching(:)       !! the point moved toward its obstacle
-      integer :: iterations = 0                    !! contact solver iterations of the last step
-      integer :: linear_solves = 0                 !! linear solves the contact solver made in the last step
-      logical :: used_fallback = .false.           !! the contact solver needed its fall-back in the last step
-      real(dp) :: impulse_time = 0                 !! when the last step's impulses act (s)
-      ! running sums since t = 0 (each scheme says how it defines them)
-      real(dp) :: work = 0                   !! work of the loads (J)
-      real(dp) :: dissipated_impacts = 0     !! energy taken by impacts (J)
-      real(dp) :: dissipated_damping = 0     !! energy taken by Rayleigh damping (J)
-      real(dp) :: dissipated_numerical = 0   !! energy taken by the theta-method itself (J): velocity scheme,
-                                             !! 0 for theta = 1/2; 0 for the position scheme
-      ! compliant stops (docs/theory.md section 8); unused when contacts%springs%count = 0
-      real(dp) :: dissipated_contact_damping = 0   !! energy taken by the stops' damping (J)
-      !> sum over the steps of |sum_j (f_j - f_j^law)(p_j^{n+1} - p_j^n)|: the work of the
-      !! force residual Newton's method left (J; part of dissipated_numerical, signed there)
-      real(dp) :: unresolved_work = 0
-      !> the energy scale max(|E|, |W|, |D|) at the last comparison with unresolved_work (J)
-      real(dp) :: energy_scale = 0
+      type(step_report) :: report                  !! what the last step did
+      type(energy_ledger) :: energy                !! running sums since t = 0
       integer :: compliant_rule = rule_gradient    !! how a step takes the stop force (vibrobeam_compliant_law)
       type(compliant_solver) :: compliant          !! the step's Newton solve with springs
-      !> force of the compliant stops on each contact point at t (N, positive upwards;
-      !! 0 at rigid-only points)
-      real(dp), allocatable :: contact_force(:)
    contains
       procedure(step_interface), deferred :: step
       procedure :: kinetic_energy
@@ -144,8 +154,8 @@ contains
       class(time_stepper), intent(inout) :: self
       real(dp), intent(in) :: p0(:), p1(:)
       associate (springs => self%contacts%springs, c => self%compliant)
-         self%dissipated_contact_damping = self%dissipated_contact_damping + sum((c%law_force - c%elastic)*(p1 - p0))
-         self%dissipated_numerical = self%dissipated_numerical + sum(c%elastic*(p1 - p0)) - &
+         self%energy%dissipated_contact_damping = self%energy%dissipated_contact_damping + sum((c%law_force - c%elastic)*(p1 - p0))
+         self%energy%dissipated_numerical = self%energy%dissipated_numerical + sum(c%elastic*(p1 - p0)) - &
             sum(stop_potential(springs%stiffness, springs%exponent, p1) - &
                 stop_potential(springs%stiffness, springs%exponent, p0)) + sum((c%force - c%law_force)*(p1 - p0))
       end associate
@@ -168,16 +178,16 @@ contains
       character(len=24) :: text(3)
       stat = 0
       errmsg = ''
-      total = self%unresolved_work + abs(sum((self%compliant%force - self%compliant%law_force)*(p1 - p0)))
-      if (total > unresolved_fraction*self%energy_scale) then
-         dissipated = self%dissipated_impacts + self%dissipated_damping + self%dissipated_numerical + &
-                      self%dissipated_contact_damping
-         self%energy_scale = max(self%energy_scale, abs(self%kinetic_energy() + self%elastic_energy() + &
-                                 self%contact_potential()), abs(self%work), abs(dissipated))
-         if (total > unresolved_fraction*self%energy_scale) then
+      total = self%energy%unresolved_work + abs(sum((self%compliant%force - self%compliant%law_force)*(p1 - p0)))
+      if (total > unresolved_fraction*self%energy%energy_scale) then
+         dissipated = self%energy%dissipated_impacts + self%energy%dissipated_damping + self%energy%dissipated_numerical + &
+                      self%energy%dissipated_contact_damping
+         self%energy%energy_scale = max(self%energy%energy_scale, abs(self%kinetic_energy() + self%elastic_energy() + &
+                                 self%contact_potential()), abs(self%energy%work), abs(dissipated))
+         if (total > unresolved_fraction*self%energy%energy_scale) then
             stat = stat_residual_check_failed
             write (text(1), '(es10.3)') total
-            write (text(2), '(es10.3)') total/max(self%energy_scale, tiny(1.0_dp))
+            write (text(2), '(es10.3)') total/max(self%energy%energy_scale, tiny(1.0_dp))
             write (text(3), '(es10.3)') unresolved_fraction
             errmsg = 'the compliant stops are not resolved: the force residual of their Newton solves has done '// &
                      trim(adjustl(text(1)))//' J of work, '//trim(adjustl(text(2)))//' of the energy scale (at most '// &
@@ -186,7 +196,7 @@ contains
             return
          end if
       end if
-      self%unresolved_work = total
+      self%energy%unresolved_work = total
    end subroutine check_compliant_work
 
    !> What both schemes set up the same way: the data of the run, the iteration matrix
@@ -217,10 +227,10 @@ contains
       self%t = 0
       self%steps = 0
       n = contacts%count
-      allocate (self%active(n), self%impulse(n), self%velocity_before(n), self%velocity_after(n), &
-                self%approaching(n), self%contact_force(n))
-      self%contact_force = 0
-      self%active_count = 0
+      allocate (self%report%active(n), self%report%impulse(n), self%report%velocity_before(n), self%report%velocity_after(n), &
+                self%report%approaching(n), self%report%contact_force(n))
+      self%report%contact_force = 0
+      self%report%active_count = 0
       self%iteration_matrix = band_combination(mass_coefficient, model%mass, stiffness_coefficient, model%stiffness)
       call band_factor(self%iteration_matrix, self%iteration_factor, stat, errmsg)
       if (stat /= 0) return
@@ -239,12 +249,13 @@ contains
       call record%put_int64('stepper.steps', self%steps)
       call record%put_reals('stepper.u', self%u)
       call record%put_reals('stepper.v', self%v)
-      call record%put_reals('stepper.energy_sums', [self%work, self%dissipated_impacts, self%dissipated_damping, &
-                                                    self%dissipated_numerical])
+      call record%put_reals('stepper.energy_sums', [self%energy%work, self%energy%dissipated_impacts, &
+         self%energy%dissipated_damping, &
+                                                    self%energy%dissipated_numerical])
       if (self%contacts%springs%count > 0) then
-         call record%put_reals('stepper.contact_damping', [self%dissipated_contact_damping])
-         call record%put_reals('stepper.contact_force', self%contact_force)
-         call record%put_reals('stepper.compliant_accuracy', [self%unresolved_work, self%energy_scale])
+         call record%put_reals('stepper.contact_damping', [self%energy%dissipated_contact_damping])
+         call record%put_reals('stepper.contact_force', self%report%contact_force)
+         call record%put_reals('stepper.compliant_accuracy', [self%energy%unresolved_work, self%energy%energy_scale])
       end if
    end subroutine save_stepper_state
 
@@ -261,22 +272,22 @@ contains
       if (stat == 0) call record%get_reals('stepper.energy_sums', sums, stat, errmsg)
       if (stat == 0 .and. self%contacts%springs%count > 0) then
          call record%get_reals('stepper.contact_damping', sums(1:1), stat, errmsg)
-         if (stat == 0) self%dissipated_contact_damping = sums(1)
-         if (stat == 0) call record%get_reals('stepper.contact_force', self%contact_force, stat, errmsg)
+         if (stat == 0) self%energy%dissipated_contact_damping = sums(1)
+         if (stat == 0) call record%get_reals('stepper.contact_force', self%report%contact_force, stat, errmsg)
          if (stat == 0) call record%get_reals('stepper.energy_sums', sums, stat, errmsg)
       end if
       ! checkpoints written before issue 23 do not hold it: the sum starts again at 0
       if (stat == 0 .and. self%contacts%springs%count > 0 .and. record%find('stepper.compliant_accuracy') > 0) then
          call record%get_reals('stepper.compliant_accuracy', sums(1:2), stat, errmsg)
-         if (stat == 0) self%unresolved_work = sums(1)
-         if (stat == 0) self%energy_scale = sums(2)
+         if (stat == 0) self%energy%unresolved_work = sums(1)
+         if (stat == 0) self%energy%energy_scale = sums(2)
          if (stat == 0) call record%get_reals('stepper.energy_sums', sums, stat, errmsg)
       end if
       if (stat /= 0) return
-      self%work = sums(1)
-      self%dissipated_impacts = sums(2)
-      self%dissipated_damping = sums(3)
-      self%dissipated_numerical = sums(4)
+      self%energy%work = sums(1)
+      self%energy%dissipated_impacts = sums(2)
+      self%energy%dissipated_damping = sums(3)
+      self%energy%dissipated_numerical = sums(4)
       self%t = self%steps*self%dt
    end subroutine restore_stepper_state
 

@@ -146,13 +146,13 @@ contains
             else
                cycle
             end if
-            self%active(m) = c
-            self%velocity_before(m) = contact_value(self%contacts, c, self%v)
-            self%approaching(m) = signs(m)*self%velocity_before(m) <= 0
-            e_c = merge(self%restitution, self%separating_restitution, self%approaching(m))
-            offsets(m) = -e_c*self%velocity_before(m)
+            self%report%active(m) = c
+            self%report%velocity_before(m) = contact_value(self%contacts, c, self%v)
+            self%report%approaching(m) = signs(m)*self%report%velocity_before(m) <= 0
+            e_c = merge(self%restitution, self%separating_restitution, self%report%approaching(m))
+            offsets(m) = -e_c*self%report%velocity_before(m)
          end do
-         self%active_count = m
+         self%report%active_count = m
       end associate
       ! 3. projection (with no active point it is the identity: V^{n+1} = V_free), with the
       ! compliant stops' forces when the scene has any
@@ -161,17 +161,17 @@ contains
          if (stat /= 0) return
          call complete(self%v_new)
       else if (m > 0) then
-         call self%projector%project(self%v_free, self%active(1:m), self%signs(1:m), self%offsets(1:m), self%v_new, &
-                                     self%impulse(1:m), self%iterations, stat, errmsg)
-         self%linear_solves = self%projector%linear_solves
-         self%used_fallback = self%projector%used_fallback
+         call self%projector%project(self%v_free, self%report%active(1:m), self%signs(1:m), self%offsets(1:m), self%v_new, &
+                                     self%report%impulse(1:m), self%report%iterations, stat, errmsg)
+         self%report%linear_solves = self%projector%linear_solves
+         self%report%used_fallback = self%projector%used_fallback
          if (stat /= 0) return
          call complete(self%v_new)
       else
          call self%projector%record_free()
-         self%iterations = 0
-         self%linear_solves = 0
-         self%used_fallback = .false.
+         self%report%iterations = 0
+         self%report%linear_solves = 0
+         self%report%used_fallback = .false.
          call complete(self%v_free)
       end if
       if (.not. finite) then
@@ -188,7 +188,7 @@ contains
       if (self%loads%present) call swap(self%force, self%force_new)
       self%steps = self%steps + 1
       self%t = self%steps*self%dt
-      self%impulse_time = self%t   ! the impulse acts over [t_n, t_{n+1}]; recorded at its end
+      self%report%impulse_time = self%t   ! the impulse acts over [t_n, t_{n+1}]; recorded at its end
 
    contains
 
@@ -222,26 +222,27 @@ contains
             ! theta > 1/2). The springs' impulses dt s_j f_j H_j^T do the work
             ! dt s_j f_j H_j V^{n+theta} = -f_j dp_j whole, booked by `compliant_energy`: they
             ! have no part in the theta-term (theory §8, "Energy").
-            if (self%loads%present) self%work = self%work + work
+            if (self%loads%present) self%energy%work = self%energy%work + work
             impulse_power = 0
             do k = 1, m
-               self%velocity_after(k) = contact_value(self%contacts, self%active(k), v_next)
-               self%dissipated_impacts = self%dissipated_impacts - 0.5_dp*self%impulse(k)* &
-                                         (self%velocity_after(k) + self%velocity_before(k))
-               impulse_power = impulse_power + self%impulse(k)*(self%velocity_after(k) - self%velocity_before(k))
+               self%report%velocity_after(k) = contact_value(self%contacts, self%report%active(k), v_next)
+               self%energy%dissipated_impacts = self%energy%dissipated_impacts - 0.5_dp*self%report%impulse(k)* &
+                                         (self%report%velocity_after(k) + self%report%velocity_before(k))
+               impulse_power = impulse_power + self%report%impulse(k)*(self%report%velocity_after(k) &
+                  - self%report%velocity_before(k))
             end do
             if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) then
                rhs = theta*v_next + (1 - theta)*v
                call self%damping_into(rhs, self%damping_vector, work_vector)
-               self%dissipated_damping = self%dissipated_damping + dt*dot_product(rhs, self%damping_vector)
+               self%energy%dissipated_damping = self%energy%dissipated_damping + dt*dot_product(rhs, self%damping_vector)
             end if
             if (abs(theta - 0.5_dp) > 0) then
                rhs = v_next - v
                call band_matvec(self%mass, rhs, work_vector)
-               self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)*dot_product(rhs, work_vector)
+               self%energy%dissipated_numerical = self%energy%dissipated_numerical + (theta - 0.5_dp)*dot_product(rhs, work_vector)
                rhs = u_new - u
                call band_matvec(self%stiffness, rhs, work_vector)
-               self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)* &
+               self%energy%dissipated_numerical = self%energy%dissipated_numerical + (theta - 0.5_dp)* &
                                            (dot_product(rhs, work_vector) - impulse_power)
             end if
             if (self%contacts%springs%count > 0) &
@@ -268,20 +269,20 @@ contains
          p0 = self%spring_penetrations(self%u)
          q = self%spring_penetrations(self%u + dt*(1 - theta)*self%v)
          call self%compliant%solve(springs, self%contacts, self%iteration_matrix, self%projector, v_free, q, p0, &
-                                   theta*dt, dt, theta, dt, rigid_active, self%active(1:m), signs, offsets, v_new, &
-                                   self%impulse(1:m), stat, errmsg)
-         self%iterations = self%compliant%iterations
-         self%linear_solves = self%compliant%linear_solves
-         self%used_fallback = self%projector%used_fallback
+                                   theta*dt, dt, theta, dt, rigid_active, self%report%active(1:m), signs, offsets, v_new, &
+                                   self%report%impulse(1:m), stat, errmsg)
+         self%report%iterations = self%compliant%iterations
+         self%report%linear_solves = self%compliant%linear_solves
+         self%report%used_fallback = self%projector%used_fallback
          if (stat /= 0) then
             stat = 3
             return
          end if
          call self%check_compliant_work(p0, self%compliant%p1, stat, errmsg)
          if (stat /= 0) return
-         self%contact_force = 0
+         self%report%contact_force = 0
          do j = 1, springs%count
-            self%contact_force(springs%point(j)) = self%contact_force(springs%point(j)) + springs%sign(j)* &
+            self%report%contact_force(springs%point(j)) = self%report%contact_force(springs%point(j)) + springs%sign(j)* &
                end_force(springs%stiffness(j), springs%exponent(j), springs%damping(j), dt, p0(j), self%compliant%p1(j))
          end do
       end associate

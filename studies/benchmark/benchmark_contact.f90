@@ -154,14 +154,14 @@ contains
             exit
          end if
          record%steps_done = n
-         m = stepper%active_count
-         if (count(abs(stepper%impulse(1:m)) > 0) > 0) record%impulse_steps = record%impulse_steps + 1
-         record%largest_solves = max(record%largest_solves, stepper%linear_solves)
-         record%total_solves = record%total_solves + stepper%linear_solves
-         record%largest_iterations = max(record%largest_iterations, stepper%iterations)
+         m = stepper%report%active_count
+         if (count(abs(stepper%report%impulse(1:m)) > 0) > 0) record%impulse_steps = record%impulse_steps + 1
+         record%largest_solves = max(record%largest_solves, stepper%report%linear_solves)
+         record%total_solves = record%total_solves + stepper%report%linear_solves
+         record%largest_iterations = max(record%largest_iterations, stepper%report%iterations)
          if (stepper%projector%interior_iterations > 0) record%interior_steps = record%interior_steps + 1
          record%largest_interior = max(record%largest_interior, stepper%projector%interior_iterations)
-         if (stepper%used_fallback) record%fallbacks = record%fallbacks + 1
+         if (stepper%report%used_fallback) record%fallbacks = record%fallbacks + 1
          if (measure) then
             f_bar = 0.5_dp*(f_old + stepper%loads%at(stepper%t))
             allocate (work(size(u_old)))
@@ -179,10 +179,10 @@ contains
             v_f = v_old + v_f
             hp = 0*v_f
             do k = 1, m
-               c = stepper%active(k)
+               c = stepper%report%active(k)
                do a = 1, 4
                   if (stepper%contacts%dofs(a, c) /= 0) hp(stepper%contacts%dofs(a, c)) = &
-                     hp(stepper%contacts%dofs(a, c)) + stepper%contacts%weights(a, c)*stepper%impulse(k)
+                     hp(stepper%contacts%dofs(a, c)) + stepper%contacts%weights(a, c)*stepper%report%impulse(k)
                end do
             end do
             call band_matvec(stepper%iteration_matrix, stepper%v - v_f, work)

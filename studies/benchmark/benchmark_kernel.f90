@@ -149,7 +149,7 @@ contains
          case (workload_step)
             call case%stepper%step(stat, errmsg)
             if (stat /= 0) call fail('step', stat, errmsg)
-            if (case%stepper%active_count /= 0) call fail('free flight', 1, 'a contact point became active')
+            if (case%stepper%report%active_count /= 0) call fail('free flight', 1, 'a contact point became active')
          case (workload_dpbtrs)
             case%y = case%x
             call dpbtrs('L', n, 3, 1, case%lapack_factor, 4, case%y, n, info)

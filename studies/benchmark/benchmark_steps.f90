@@ -354,10 +354,10 @@ contains
          do i = 1, count
             call stepper%step(stat, errmsg)
             if (stat /= 0) call fail('stepper%step', stat, errmsg)
-            tally%active_min = min(tally%active_min, stepper%active_count)
-            tally%active_max = max(tally%active_max, stepper%active_count)
-            tally%iterations = tally%iterations + stepper%iterations
-            tally%active = tally%active + stepper%active_count
+            tally%active_min = min(tally%active_min, stepper%report%active_count)
+            tally%active_max = max(tally%active_max, stepper%report%active_count)
+            tally%iterations = tally%iterations + stepper%report%iterations
+            tally%active = tally%active + stepper%report%active_count
          end do
          tally%steps = tally%steps + count
       case (workload_baseline)

@@ -493,19 +493,19 @@ contains
          ! impact bookkeeping as the recorder does it (docs/method.md, "Impacts")
          now = .false.
          impulse = .false.
-         do k = 1, stepper%active_count
-            if (abs(stepper%impulse(k)) <= 0) cycle
-            c = stepper%active(k)
+         do k = 1, stepper%report%active_count
+            if (abs(stepper%report%impulse(k)) <= 0) cycle
+            c = stepper%report%active(k)
             now(c) = .true.
             impulse = .true.
-            if (.not. in_contact(c) .and. stepper%approaching(k)) output%impacts = output%impacts + 1
+            if (.not. in_contact(c) .and. stepper%report%approaching(k)) output%impacts = output%impacts + 1
          end do
          in_contact = now
          if (impulse) then
             output%impulse_steps = output%impulse_steps + 1
-            if (stepper%impulse_time - last_impulse > bounce_gap) output%bounces = output%bounces + 1
-            if (stepper%impulse_time - last_impulse > episode_gap) output%episodes = output%episodes + 1
-            last_impulse = stepper%impulse_time
+            if (stepper%report%impulse_time - last_impulse > bounce_gap) output%bounces = output%bounces + 1
+            if (stepper%report%impulse_time - last_impulse > episode_gap) output%episodes = output%episodes + 1
+            last_impulse = stepper%report%impulse_time
          end if
       end do
       call cpu_time(cpu_end)

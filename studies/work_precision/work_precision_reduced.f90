@@ -224,11 +224,11 @@ contains
                error stop 1
             end if
             now = .false.
-            do j = 1, stepper%active_count
-               c = stepper%active(j)
-               if (abs(stepper%impulse(j)) <= 0) cycle
+            do j = 1, stepper%report%active_count
+               c = stepper%report%active(j)
+               if (abs(stepper%report%impulse(j)) <= 0) cycle
                now(c) = .true.
-               if (.not. in_contact(c) .and. stepper%approaching(j)) then
+               if (.not. in_contact(c) .and. stepper%report%approaching(j)) then
                   if (s%first_impact < 0) s%first_impact = stepper%t
                   if (n > first) impacts = impacts + 1
                   if (n > first .and. stepper%t - last_impulse > gap) episodes = episodes + 1
@@ -236,7 +236,7 @@ contains
                last_impulse = stepper%t
             end do
             in_contact = now
-            if (n == first) lost_start = stepper%dissipated_impacts
+            if (n == first) lost_start = stepper%energy%dissipated_impacts
             if (n > first) then
                tip = dot_product(tip_row, stepper%u)
                sum_square = sum_square + tip**2
@@ -251,7 +251,7 @@ contains
             s%rms_tip = sqrt(sum_square/max(samples, 1))
             s%impact_rate = impacts/((steps - first)*scene%time%dt)
             s%episode_rate = episodes/((steps - first)*scene%time%dt)
-            s%energy_lost = stepper%dissipated_impacts - lost_start
+            s%energy_lost = stepper%energy%dissipated_impacts - lost_start
          end if
       end do
       s%cpu_per_step = times(1) + times(2) + times(3) - maxval(times(1:3)) - minval(times(1:3))

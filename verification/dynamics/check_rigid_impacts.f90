@@ -72,19 +72,19 @@ program check_rigid_impacts
    count = 0
    behind_spring = 0
    do n = 1, steps
-      pushing = abs(s%contact_force) > 0   ! the springs' force at t_n, before the step
+      pushing = abs(s%report%contact_force) > 0   ! the springs' force at t_n, before the step
       call s%step(stat, errmsg)
       if (stat /= 0) error stop 'check_rigid_impacts: a step failed'
       touched = .false.
-      do k = 1, s%active_count
-         if (abs(s%impulse(k)) <= 0) cycle
-         c = s%active(k)
+      do k = 1, s%report%active_count
+         if (abs(s%report%impulse(k)) <= 0) cycle
+         c = s%report%active(k)
          touched(c) = .true.
-         side = nint(sign(1.0_dp, s%impulse(k)))   ! +1: pushed up by the obstacle below
-         if (previous(c) .or. side*s%velocity_before(k) > 0) cycle
+         side = nint(sign(1.0_dp, s%report%impulse(k)))   ! +1: pushed up by the obstacle below
+         if (previous(c) .or. side*s%report%velocity_before(k) > 0) cycle
          count = count + 1
-         times = [times, s%impulse_time]
-         impulses = [impulses, s%impulse(k)]
+         times = [times, s%report%impulse_time]
+         impulses = [impulses, s%report%impulse(k)]
          obstacle = rigid_obstacle(s%contacts%x(c), side)
          if (obstacle == 0) error stop 'check_rigid_impacts: a rigid impulse without a rigid obstacle'
          per_obstacle(obstacle) = per_obstacle(obstacle) + 1

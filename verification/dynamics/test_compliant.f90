@@ -183,7 +183,7 @@ contains
          squares = 0
          rigid_hit = .false.
          potential_bound = gamma_n(4)*s%contact_potential()
-         ends_bound = gamma_n(8)*(s%contact_potential() + abs(s%dissipated_contact_damping))
+         ends_bound = gamma_n(8)*(s%contact_potential() + abs(s%energy%dissipated_contact_damping))
          do n = 1, steps
             u0 = s%u
             v0 = s%v
@@ -192,7 +192,7 @@ contains
             call s%step(stat, errmsg)
             if (stat /= 0) error stop 'step failed'
             call ledger%after_step(s)
-            if (s%active_count > 0) rigid_hit = rigid_hit .or. any(abs(s%impulse(1:s%active_count)) > 0)
+            if (s%report%active_count > 0) rigid_hit = rigid_hit .or. any(abs(s%report%impulse(1:s%report%active_count)) > 0)
             p1 = s%spring_penetrations(s%u)
             seen = seen .or. p1 > 0
             spring_step = spring_step_bound(s, u0, v0, p0, p1)
@@ -209,11 +209,11 @@ contains
             balance = full_balance(s)
             balance_drift = max(balance_drift, abs(balance - b0))
             balance_ratio = max(balance_ratio, abs(balance - b0)/(bound + ends_bound + &
-                                gamma_n(8)*(s%contact_potential() + abs(s%dissipated_contact_damping))))
+                                gamma_n(8)*(s%contact_potential() + abs(s%energy%dissipated_contact_damping))))
          end do
          engaged = all(seen)
-         numerical = s%dissipated_numerical
-         damped = s%dissipated_contact_damping > 0
+         numerical = s%energy%dissipated_numerical
+         damped = s%energy%dissipated_contact_damping > 0
       end associate
    end subroutine run
 
@@ -249,7 +249,7 @@ contains
                + gamma_n(springs%count + 3)*(abs(c%force(j)) + 2*abs(c%elastic(j)))*abs(p1(j) - p0(j))
             call add_abs_row(s%contacts, hrow, springs%point(j), s%dt*abs(c%force(j)))
          end do
-         bound = bound + unit_roundoff*abs(s%dissipated_contact_damping)
+         bound = bound + unit_roundoff*abs(s%energy%dissipated_contact_damping)
          if (any(abs(c%force) > 0)) then
             bound = bound + gamma_n(3*kd + 4)*dot_product(abs(v_theta), &
                abs_factor_times(c%jacobian_factor, abs(s%v - v_free))) &
@@ -295,7 +295,7 @@ contains
    !! contact damping).
    real(dp) function full_balance(s)
       class(time_stepper), intent(in) :: s
-      full_balance = stepper_balance(s) + s%contact_potential() + s%dissipated_contact_damping
+      full_balance = stepper_balance(s) + s%contact_potential() + s%energy%dissipated_contact_damping
    end function full_balance
 
    subroutine add_abs_row(contacts, y, c, w)

@@ -63,10 +63,10 @@ contains
       do n = 1, nint(scene%time%t_end/scene%time%dt)
          call stepper%step(stat, errmsg)
          if (stat /= 0) error stop 'step failed'
-         if (t_impact < 0 .and. stepper%active_count > 0) then
-            if (abs(stepper%impulse(1)) > 0) then
-               t_impact = stepper%impulse_time
-               v_impact = abs(stepper%velocity_before(1))
+         if (t_impact < 0 .and. stepper%report%active_count > 0) then
+            if (abs(stepper%report%impulse(1)) > 0) then
+               t_impact = stepper%report%impulse_time
+               v_impact = abs(stepper%report%velocity_before(1))
             end if
          end if
          depth(k) = max(depth(k), prepared%contacts%lower(1) - contact_value(prepared%contacts, 1, stepper%u))

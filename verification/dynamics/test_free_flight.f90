@@ -72,7 +72,7 @@ contains
       do n = 1, nint(scene%time%t_end/scene%time%dt)
          call stepper%step(stat, errmsg)
          if (stat /= 0) error stop 'step failed'
-         if (stepper%active_count > 0) error stop 'an obstacle was touched in free flight'
+         if (stepper%report%active_count > 0) error stop 'an obstacle was touched in free flight'
       end do
       u = stepper%u
    end function run

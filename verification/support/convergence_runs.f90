@@ -110,11 +110,11 @@ contains
          call stepper%step(status, message)
          if (status /= 0) call fail('dt = '//sci(dt)//' s, N = '//integer_text(elements)//': '//trim(message))
          call record_state(run, n, stepper, point_dofs, point_weights, tip_dofs, tip_weights)
-         if (any(abs(stepper%impulse(1:stepper%active_count)) > 0)) run%impulse_steps = run%impulse_steps + 1
-         do k = 1, stepper%active_count
-            if (.not. abs(stepper%impulse(k)) > 0) cycle
-            c = stepper%active(k)
-            side = nint(sign(1.0_dp, stepper%impulse(k)))   ! s_c P_c >= 0: the sign of P is s_c
+         if (any(abs(stepper%report%impulse(1:stepper%report%active_count)) > 0)) run%impulse_steps = run%impulse_steps + 1
+         do k = 1, stepper%report%active_count
+            if (.not. abs(stepper%report%impulse(k)) > 0) cycle
+            c = stepper%report%active(k)
+            side = nint(sign(1.0_dp, stepper%report%impulse(k)))   ! s_c P_c >= 0: the sign of P is s_c
             if (side /= last_side(c) .or. stepper%t - last_impulse(c) > event_gap*(1 + 1e-9_dp)) then
                run%events = run%events + 1
                run%event_first = [run%event_first, stepper%t]

@@ -144,7 +144,7 @@ contains
          if (stat /= 0) error stop 'test_reduction: a step failed'
          difference = max(difference, maxval(abs(full_stepper%u - matmul(t, reduced_stepper%u))))
          largest = max(largest, maxval(abs(full_stepper%u)))
-         if (full_stepper%active_count > 0) impacts = impacts + 1
+         if (full_stepper%report%active_count > 0) impacts = impacts + 1
       end do
       bound = steps*(j + r)*u*(kappa_w + kappa_t*kappa_wr)
       write (output_unit, '(a,i0,a,es10.3,a,es10.3,a,es9.2,a,es9.2,a,es9.2)') 'all modes kept: ', impacts, &
