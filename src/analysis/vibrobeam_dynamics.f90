@@ -16,8 +16,9 @@ module vibrobeam_dynamics
    use vibrobeam_kinds, only: dp, int64, error_unit
    use vibrobeam_text, only: real_text
    use vibrobeam_scene, only: scene_type, step_count
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper, release_stepper
-   use vibrobeam_time_stepper, only: time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
+   use vibrobeam_stepper_factory, only: release_stepper
+   use vibrobeam_time_stepper, only: time_stepper, dynamic_state
    use vibrobeam_recorder, only: dynamics_recorder
    use vibrobeam_result_files, only: result_files, run_summary, run_outcome
    use vibrobeam_checkpoint, only: checkpoint_slots
@@ -46,13 +47,13 @@ contains
    !! section `vibrobeam_hdf5`.
    subroutine run_dynamics(scene, prepared, outcome, stat, errmsg, quiet, statistics, final_state)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(in) :: prepared
+      type(run_problem), intent(in) :: prepared
       type(run_outcome), intent(out) :: outcome
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       logical, intent(in), optional :: quiet
       type(statistics_result), intent(out), optional :: statistics
-      type(state_record), intent(out), optional :: final_state
+      type(dynamic_state), intent(out), optional :: final_state
       class(time_stepper), allocatable :: stepper
       type(dynamics_recorder) :: recorder
       type(result_files) :: files
@@ -77,14 +78,10 @@ contains
           max(1e-9_dp*scene%time%dt, 4*epsilon(1.0_dp)*scene%time%t_end)) &
          write (error_unit, '(a)') 'vibrobeam: warning: t_end is not a whole number of steps; the run ends at '// &
          real_text(last*scene%time%dt)//' s'
-      call start_time_stepper(scene, prepared, stepper, stat, errmsg)
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
       if (stat /= 0) return
       summary%start_step = stepper%steps
-      if (prepared%reduced) then
-         call recorder%init(scene, stepper, prepared%model, stepper%v, last, reduction=prepared%reduction)
-      else
-         call recorder%init(scene, stepper, prepared%model, prepared%v0, last)
-      end if
+      call recorder%init(scene, stepper, prepared, last)
       if (prepared%resuming) then
          call recorder%restore_state(prepared%resume, stat, errmsg)
          if (stat /= 0) then
@@ -131,7 +128,7 @@ contains
          outcome%wall_seconds = meter%elapsed()
          call meter%end_line()
          if (present(statistics)) statistics = recorder%window_statistics(stepper)
-         if (present(final_state)) final_state = record
+         if (present(final_state)) final_state = stepper%state()
          call release_stepper(stepper)   ! (a sweep's keep_runs runs this once per point)
          return
       end block run

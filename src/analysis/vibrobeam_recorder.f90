@@ -32,6 +32,7 @@ module vibrobeam_recorder
    use vibrobeam_reduction, only: reduced_basis
    use vibrobeam_contact_set, only: contact_value
    use vibrobeam_time_stepper, only: time_stepper
+   use vibrobeam_problem, only: run_problem
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_hdf5_series, only: h5_series, h5_array
    use vibrobeam_state_record, only: state_record
@@ -140,22 +141,21 @@ contains
    !! scene: a contact point that starts on its obstacle (within the activation tolerance
    !! 1e-12 L) without moving into it is in persistent contact from t = 0, so its first
    !! impulse is not an impact.
-   !! With `reduction` the stepper runs a reduced model (its u, v are q, dq/dt, and its
-   !! contact rows act on q): tip and observation points are read through rows of T
+   !! When the problem is reduced the stepper runs a reduced model (its u, v are q, dq/dt,
+   !! and its contact rows act on q): tip and observation points are read through rows of T
    !! (r products per value) and U = T q is formed only for a field snapshot.
-   subroutine recorder_init(self, scene, stepper, model, v0, last_step, write_rows, reduction)
+   subroutine recorder_init(self, scene, stepper, problem, last_step, write_rows)
       class(dynamics_recorder), intent(inout) :: self
       type(scene_type), intent(in) :: scene
       class(time_stepper), intent(in) :: stepper
-      type(beam_model), intent(in) :: model
-      real(dp), intent(in) :: v0(:)   !! in the stepper's unknowns
+      type(run_problem), intent(in) :: problem       !! its model (the mesh), start and reduced basis
       integer(int64), intent(in) :: last_step
       logical, intent(in), optional :: write_rows   !! default .true.; .false.: no result file
       real(dp) :: value, speed, tolerance, gap, omega, phase
       integer :: c, p, contacts
       character(len=:), allocatable :: forcing
-      type(reduced_basis), intent(in), optional :: reduction
       contacts = stepper%contacts%count
+      associate (model => problem%model)
       if (present(write_rows)) self%write_rows = write_rows
       self%every = scene%output%every
       self%field_every = scene%output%every
@@ -172,7 +172,7 @@ contains
       do c = 1, contacts
          if (stepper%contacts%node(c) == model%elements) self%tip_contact = c
          value = contact_value(stepper%contacts, c, stepper%u)
-         speed = contact_value(stepper%contacts, c, v0)
+         speed = contact_value(stepper%contacts, c, problem%start%v)
          if ((value <= stepper%contacts%lower(c) + tolerance .and. speed >= 0) .or. &
              (value >= stepper%contacts%upper(c) - tolerance .and. speed <= 0)) self%in_contact(c) = .true.
       end do
@@ -200,13 +200,14 @@ contains
       call self%statistics%init(window_first_step(scene%output%measure_from, scene%time%dt), last_step, scene%time%dt, &
                                 1 + size(self%point_x), stepper%contacts%lower_obstacle, &
                                 stepper%contacts%upper_obstacle, size(scene%obstacles), omega, phase)
-      if (present(reduction)) then
-         self%reduction = reduction
-         allocate (self%observed_rows(reduction%boundary + reduction%modes, size(self%observed_dofs, 2)))
+      if (problem%reduced) then
+         self%reduction = problem%reduction
+         allocate (self%observed_rows(problem%reduction%boundary + problem%reduction%modes, size(self%observed_dofs, 2)))
          do p = 1, size(self%observed_dofs, 2)
             self%observed_rows(:, p) = reduced_row(self%observed_dofs(:, p), self%observed_weights(:, p))
          end do
       end if
+      end associate
    contains
       !> The row sum_a weights(a) T(dofs(a), :) of a value of U.
       function reduced_row(dofs, weights) result(row)

@@ -6,22 +6,52 @@ module vibrobeam_time_stepper
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_status, only: stat_residual_check_failed
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_matvec, band_combination, band_factor
-   use vibrobeam_model, only: beam_model
    use vibrobeam_contact_set, only: contact_set
-   use vibrobeam_contact_projector, only: contact_projector
+   use vibrobeam_contact_projector, only: contact_projector, contact_method_code
+   use vibrobeam_contact_options, only: contact_options
    use vibrobeam_loads, only: load_set
+   use vibrobeam_discrete_system, only: discrete_system
    use vibrobeam_state_record, only: state_record
    use vibrobeam_compliant_law, only: stop_potential, rule_gradient
    use vibrobeam_compliant_solver, only: compliant_solver
    use vibrobeam_contact_set, only: contact_value
    implicit none
    private
-   public :: time_stepper, step_report, energy_ledger, save_stepper_state, restore_stepper_state, unresolved_fraction
+   public :: time_stepper, stepper_settings, dynamic_state, step_report, energy_ledger
+   public :: save_stepper_state, restore_stepper_state, unresolved_fraction, checkpoint_state
 
    !> The largest share of the energy scale the compliant stops' unresolved work may reach
    !! before the run stops as a numerical failure (docs/theory.md section 8, "Accuracy"):
    !! sqrt(eps), the energy to half its digits.
    real(dp), parameter :: unresolved_fraction = sqrt(epsilon(1.0_dp))
+
+   !> How a run is stepped: the scheme and its parameters, Newton's law at the rigid stops,
+   !! the Rayleigh damping, the compliant stops' rule and the contact solver's options. One
+   !! object handed to `init` (`vibrobeam_problem` makes it from the scene).
+   type :: stepper_settings
+      character(len=16) :: scheme = 'velocity'       !! a name of `scheme_names` (vibrobeam_stepper_factory)
+      real(dp) :: dt = 1e-4_dp                       !! time step (s)
+      real(dp) :: theta = 0.5_dp                     !! theta of the theta-method
+      real(dp) :: gamma = 0.5_dp                     !! activation at U + gamma dt V (velocity scheme)
+      real(dp) :: restitution = 1                    !! Newton's restitution coefficient e
+      !> restitution of an active point already moving away from its obstacle (velocity
+      !! scheme): 1, or e for the plain law of theory §3
+      real(dp) :: separating_restitution = 1
+      real(dp) :: rayleigh_mass = 0                  !! a in C = a M + b K (1/s)
+      real(dp) :: rayleigh_stiffness = 0             !! b in C = a M + b K (s)
+      integer :: compliant_rule = rule_gradient      !! how a step takes a compliant stop's force
+      type(contact_options) :: contact               !! the contact projection's regime, method, iterations
+   end type stepper_settings
+
+   !> The state one run hands to the next (a sweep's continuation) or starts from: the step
+   !! number, U and V, and what the scheme needs beyond them (`extra`, the position scheme's
+   !! U^{n-1}), opaque to everyone but the scheme. A start without `extra` lets the scheme
+   !! make its own from U and V.
+   type :: dynamic_state
+      integer(int64) :: step = 0                     !! t = step dt
+      real(dp), allocatable :: u(:), v(:)            !! displacement (m) and velocity (m/s) unknowns
+      real(dp), allocatable :: extra(:)              !! the scheme's own
+   end type dynamic_state
 
    !> What the last step did, as the recorder and the observers read it (each scheme says
    !! when its impulses act and what its velocities before and after are).
@@ -75,7 +105,9 @@ module vibrobeam_time_stepper
       integer :: compliant_rule = rule_gradient    !! how a step takes the stop force (vibrobeam_compliant_law)
       type(compliant_solver) :: compliant          !! the step's Newton solve with springs
    contains
+      procedure(init_interface), deferred :: init
       procedure(step_interface), deferred :: step
+      procedure :: state => stepper_state
       procedure :: kinetic_energy
       procedure :: elastic_energy
       procedure :: contact_potential
@@ -90,6 +122,18 @@ module vibrobeam_time_stepper
    end type time_stepper
 
    abstract interface
+      !> Set up for a run of `system` with `settings` from `start` (its U and V; its `extra`
+      !! when it continues a run of the same scheme), at step 0.
+      subroutine init_interface(self, system, settings, start, stat, errmsg)
+         import :: time_stepper, discrete_system, stepper_settings, dynamic_state
+         class(time_stepper), intent(inout) :: self
+         type(discrete_system), intent(in) :: system
+         type(stepper_settings), intent(in) :: settings
+         type(dynamic_state), intent(in) :: start
+         integer, intent(out) :: stat
+         character(len=*), intent(out) :: errmsg
+      end subroutine init_interface
+
       !> Advance one step. stat: stat_ok; a contact solver failure; stat_not_finite.
       subroutine step_interface(self, stat, errmsg)
          import :: time_stepper
@@ -199,45 +243,73 @@ contains
       self%energy%unresolved_work = total
    end subroutine check_compliant_work
 
-   !> What both schemes set up the same way: the data of the run, the iteration matrix
-   !! W = mass_coefficient M + stiffness_coefficient K (each scheme gives its own
-   !! coefficients) with its Cholesky factor, the contact projection in the metric of W,
-   !! room for one record per contact point, and t = 0.
-   subroutine set_up_system(self, model, contacts, loads, dt, theta, restitution, rayleigh_mass, &
-                            rayleigh_stiffness, mass_coefficient, stiffness_coefficient, contact_regime, stat, errmsg)
+   !> What both schemes set up the same way: the data of the run, the settings, the
+   !! iteration matrix W = mass_coefficient M + stiffness_coefficient K (each scheme gives
+   !! its own coefficients) with its Cholesky factor, the contact projection in the metric of
+   !! W with its options, room for one record per contact point, and t = 0.
+   subroutine set_up_system(self, system, settings, mass_coefficient, stiffness_coefficient, stat, errmsg)
       class(time_stepper), intent(inout) :: self
-      type(beam_model), intent(in) :: model
-      type(contact_set), intent(in) :: contacts
-      type(load_set), intent(in) :: loads
-      real(dp), intent(in) :: dt, theta, restitution, rayleigh_mass, rayleigh_stiffness
+      type(discrete_system), intent(in) :: system
+      type(stepper_settings), intent(in) :: settings
       real(dp), intent(in) :: mass_coefficient, stiffness_coefficient
-      character(len=*), intent(in) :: contact_regime   !! 'auto' | 'delassus' | 'band'
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: n
-      self%dt = dt
-      self%theta = theta
-      self%restitution = restitution
-      self%rayleigh_mass = rayleigh_mass
-      self%rayleigh_stiffness = rayleigh_stiffness
-      self%mass = model%mass
-      self%stiffness = model%stiffness
-      self%contacts = contacts
-      self%loads = loads
+      self%dt = settings%dt
+      self%theta = settings%theta
+      self%restitution = settings%restitution
+      self%rayleigh_mass = settings%rayleigh_mass
+      self%rayleigh_stiffness = settings%rayleigh_stiffness
+      self%compliant_rule = settings%compliant_rule
+      self%mass = system%model%mass
+      self%stiffness = system%model%stiffness
+      self%contacts = system%contacts
+      self%loads = system%loads
       self%t = 0
       self%steps = 0
-      n = contacts%count
-      allocate (self%report%active(n), self%report%impulse(n), self%report%velocity_before(n), self%report%velocity_after(n), &
-                self%report%approaching(n), self%report%contact_force(n))
+      n = system%contacts%count
+      allocate (self%report%active(n), self%report%impulse(n), self%report%velocity_before(n), &
+                self%report%velocity_after(n), self%report%approaching(n), self%report%contact_force(n))
       self%report%contact_force = 0
       self%report%active_count = 0
-      self%iteration_matrix = band_combination(mass_coefficient, model%mass, stiffness_coefficient, model%stiffness)
+      self%iteration_matrix = band_combination(mass_coefficient, system%model%mass, stiffness_coefficient, &
+                                               system%model%stiffness)
       call band_factor(self%iteration_matrix, self%iteration_factor, stat, errmsg)
       if (stat /= 0) return
-      call self%projector%setup(self%iteration_matrix, self%iteration_factor, contacts, contact_regime)
-      if (contacts%springs%count > 0) call self%compliant%setup(contacts%springs, self%compliant_rule, contact_regime, &
-                                                                'newton')
+      associate (contact => settings%contact)
+         call self%projector%setup(self%iteration_matrix, self%iteration_factor, system%contacts, contact%contact_solver)
+         if (system%contacts%springs%count > 0) &
+            call self%compliant%setup(system%contacts%springs, self%compliant_rule, contact%contact_solver, 'newton')
+         self%projector%max_iterations = contact%contact_max_iterations
+         self%projector%method = contact_method_code(trim(contact%contact_method))
+         self%compliant%method = trim(contact%contact_method)
+      end associate
    end subroutine set_up_system
+
+   !> The state a run hands on: step, U, V (a scheme with more state extends this).
+   function stepper_state(self) result(state)
+      class(time_stepper), intent(in) :: self
+      type(dynamic_state) :: state
+      state%step = self%steps
+      state%u = self%u
+      state%v = self%v
+   end function stepper_state
+
+   !> The state that a checkpoint `record` holds (what `save_stepper_state` put there:
+   !! step, U and V of `unknowns` values each). A scheme with more state adds its `extra`
+   !! (`vibrobeam_stepper_factory`'s `state_from_record`). stat /= 0 when an item is
+   !! missing or of another size.
+   subroutine checkpoint_state(record, unknowns, state, stat, errmsg)
+      type(state_record), intent(in) :: record
+      integer, intent(in) :: unknowns
+      type(dynamic_state), intent(out) :: state
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      allocate (state%u(unknowns), state%v(unknowns))
+      call record%get_int64('stepper.steps', state%step, stat, errmsg)
+      if (stat == 0) call record%get_reals('stepper.u', state%u, stat, errmsg)
+      if (stat == 0) call record%get_reals('stepper.v', state%v, stat, errmsg)
+   end subroutine checkpoint_state
 
    !> Put everything a continued run needs to go on bitwise into `record` (docs/output.md,
    !! "Checkpoint and restart"): the step number, U and V, and the running energy sums.

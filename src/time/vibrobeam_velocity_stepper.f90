@@ -26,10 +26,11 @@ module vibrobeam_velocity_stepper
    use vibrobeam_kinds, only: dp
    use vibrobeam_status, only: stat_not_finite
    use vibrobeam_band, only: band_matvec, band_residual_solve
-   use vibrobeam_model, only: beam_model
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
-   use vibrobeam_time_stepper, only: time_stepper, save_stepper_state, restore_stepper_state
+   use vibrobeam_time_stepper, only: time_stepper, stepper_settings, dynamic_state, save_stepper_state, &
+      restore_stepper_state
+   use vibrobeam_discrete_system, only: discrete_system
    use vibrobeam_state_record, only: state_record
    use vibrobeam_compliant_law, only: end_force, stop_potential
    use vibrobeam_compliant_solver, only: rigid_active
@@ -62,32 +63,32 @@ module vibrobeam_velocity_stepper
 
 contains
 
-   !> Set up for a run: build and factor W, prepare the contact projection.
-   subroutine init(self, model, contacts, loads, dt, theta, gamma, restitution, rayleigh_mass, &
-                   rayleigh_stiffness, contact_regime, u0, v0, stat, errmsg)
+   !> Set up for a run: build and factor W, prepare the contact projection; U = start%u,
+   !! V = start%v (the scheme needs nothing beyond them).
+   subroutine init(self, system, settings, start, stat, errmsg)
       class(velocity_stepper), intent(inout) :: self
-      type(beam_model), intent(in) :: model
-      type(contact_set), intent(in) :: contacts
-      type(load_set), intent(in) :: loads
-      real(dp), intent(in) :: dt, theta, gamma, restitution, rayleigh_mass, rayleigh_stiffness
-      character(len=*), intent(in) :: contact_regime   !! 'auto' | 'delassus' | 'band'
-      real(dp), intent(in) :: u0(:), v0(:)
+      type(discrete_system), intent(in) :: system
+      type(stepper_settings), intent(in) :: settings
+      type(dynamic_state), intent(in) :: start
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      ! W = (1 + theta dt a) M + (theta^2 dt^2 + theta dt b) K
-      call self%set_up_system(model, contacts, loads, dt, theta, restitution, rayleigh_mass, rayleigh_stiffness, &
-                              1 + theta*dt*rayleigh_mass, theta**2*dt**2 + theta*dt*rayleigh_stiffness, &
-                              contact_regime, stat, errmsg)
+      integer :: n
+      associate (dt => settings%dt, theta => settings%theta)
+         ! W = (1 + theta dt a) M + (theta^2 dt^2 + theta dt b) K
+         call self%set_up_system(system, settings, 1 + theta*dt*settings%rayleigh_mass, &
+                                 theta**2*dt**2 + theta*dt*settings%rayleigh_stiffness, stat, errmsg)
+      end associate
       if (stat /= 0) return
-      self%gamma = gamma
-      self%activation_tolerance = 1e-12_dp*model%length
-      self%u = u0
-      self%v = v0
-      self%force = loads%at(0.0_dp)
-      allocate (self%rhs(size(u0)), self%work_vector(size(u0)), self%damping_vector(size(u0)), &
-                self%v_free(size(u0)), self%v_new(size(u0)), self%u_new(size(u0)), self%force_new(size(u0)), &
-                self%force_theta(size(u0)), source=0.0_dp)
-      allocate (self%signs(contacts%count), self%offsets(contacts%count))
+      self%gamma = settings%gamma
+      self%separating_restitution = settings%separating_restitution
+      self%activation_tolerance = 1e-12_dp*system%model%length
+      self%u = start%u
+      self%v = start%v
+      self%force = system%loads%at(0.0_dp)
+      n = size(start%u)
+      allocate (self%rhs(n), self%work_vector(n), self%damping_vector(n), self%v_free(n), self%v_new(n), &
+                self%u_new(n), self%force_new(n), self%force_theta(n), source=0.0_dp)
+      allocate (self%signs(system%contacts%count), self%offsets(system%contacts%count))
    end subroutine init
 
    !> The base type's restore, then F(t_n) from the loads (which a continued run may change).

@@ -40,7 +40,7 @@ program work_precision_reduced
    use vibrobeam_kinds, only: dp, output_unit, error_unit
    use vibrobeam_scene, only: scene_type
    use vibrobeam_test_support, only: read_test_scene, prepare_test_scene
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_model, only: node_row
    use vibrobeam_recorder, only: default_episode_gap
@@ -163,7 +163,7 @@ contains
       integer, intent(in) :: modes
       type(statistics) :: s
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       class(time_stepper), allocatable :: stepper
       real(dp), allocatable :: tip_row(:)
       logical, allocatable :: in_contact(:), now(:)
@@ -199,7 +199,7 @@ contains
       do repetition = 0, 3
          if (allocated(stepper)) deallocate (stepper)
          call cpu_time(start)
-         call start_time_stepper(scene, prepared, stepper, stat, errmsg)
+         call new_stepper(scene, prepared, stepper, stat, errmsg)
          call cpu_time(finish)
          if (repetition == 0) s%setup_seconds = s%setup_seconds + finish - start
          if (stat /= 0) then

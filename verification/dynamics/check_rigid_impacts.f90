@@ -24,7 +24,7 @@
 program check_rigid_impacts
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_contact_set, only: contact_value
    use vibrobeam_hdf5_reader, only: read_real_1d, read_attr_int
@@ -36,7 +36,7 @@ program check_rigid_impacts
    character(len=512) :: errmsg
    character(len=80) :: label
    type(scene_type) :: scene
-   type(prepared_scene) :: prepared
+   type(run_problem) :: prepared
    class(time_stepper), allocatable :: s
    logical, allocatable :: previous(:), touched(:), pushing(:)
    real(dp), allocatable :: times(:), impulses(:), file_times(:), file_impulses(:), rates(:)
@@ -48,7 +48,7 @@ program check_rigid_impacts
    call get_command_argument(2, input)
    scene = read_test_scene(trim(input))
    call prepare_test_scene(scene, prepared)
-   call start_time_stepper(scene, prepared, s, stat, errmsg)
+   call new_stepper(scene, prepared, s, stat, errmsg)
    if (stat /= 0) error stop 'check_rigid_impacts: cannot start the stepper'
    if (scene%output%measure_from > 0) error stop 'check_rigid_impacts: the statistics window must be the whole run'
    steps = nint(scene%time%t_end/scene%time%dt)

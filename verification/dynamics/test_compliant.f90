@@ -45,7 +45,7 @@
 program test_compliant
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_static, only: solve_static, static_report
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_contact_set, only: contact_set
@@ -75,7 +75,7 @@ contains
 
    subroutine static_checks()
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       real(dp), parameter :: stiffnesses(9) = [1e2_dp, 1e3_dp, 1e4_dp, 1e5_dp, 1e6_dp, 1e7_dp, 1e8_dp, 1e9_dp, 1e10_dp]
       integer, parameter :: meshes(4) = [1, 2, 4, 8]
       real(dp), allocatable :: u(:), reaction(:)
@@ -128,7 +128,7 @@ contains
 
    subroutine energy_checks()
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       real(dp) :: drift(2), bound(2), ratio(2), balance_drift, balance_ratio, numerical
       logical :: engaged(2), rigid_hit(2), damped
       integer :: r
@@ -157,7 +157,7 @@ contains
    subroutine run(scene, prepared, drift, bound, ratio, engaged, rigid_hit, balance_drift, balance_ratio, &
                   numerical, damped)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(in) :: prepared
+      type(run_problem), intent(in) :: prepared
       real(dp), intent(out) :: drift, bound, ratio, balance_drift, balance_ratio, numerical
       logical, intent(out) :: engaged, rigid_hit, damped
       class(time_stepper), allocatable :: s
@@ -167,7 +167,7 @@ contains
       logical, allocatable :: seen(:)
       integer :: n, steps, stat
       character(len=256) :: errmsg
-      call start_time_stepper(scene, prepared, s, stat, errmsg)
+      call new_stepper(scene, prepared, s, stat, errmsg)
       if (stat /= 0) error stop 'cannot start the stepper'
       steps = nint(scene%time%t_end/scene%time%dt)
       associate (springs => s%contacts%springs)
@@ -262,7 +262,7 @@ contains
    !> theta = 1 and 0.75, both rules: the balance stays constant to its bound at every step.
    subroutine balance_checks()
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       real(dp), parameter :: thetas(2) = [1.0_dp, 0.75_dp]
       character(len=8), parameter :: rules(2) = [character(len=8) :: 'gradient', 'mean']
       real(dp) :: drift, ratio, numerical, energy_drift, energy_ratio, bound

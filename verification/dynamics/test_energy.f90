@@ -40,7 +40,7 @@
 program test_energy
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_contact_set, only: contact_value, no_bound
    use vibrobeam_roundoff_bounds, only: energy_ledger, stepper_balance
@@ -70,7 +70,7 @@ program test_energy
 
    type(test_counter) :: t
    type(scene_type) :: scene
-   type(prepared_scene) :: prepared
+   type(run_problem) :: prepared
    type(run_record) :: r, plain
    character(len=512) :: path, mode, argument
    real(dp) :: previous
@@ -200,7 +200,7 @@ contains
       character(len=512) :: errmsg
       with_bounds = .true.
       if (present(bounds)) with_bounds = bounds
-      call start_time_stepper(scene, prepared, stepper, stat, errmsg)
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
       call ledger%start(stepper)
       e0 = stepper%kinetic_energy() + stepper%elastic_energy()
       e_old = e0

@@ -17,7 +17,7 @@
 program test_position_records
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_band, only: band_matvec
    use vibrobeam_contact_set, only: contact_value
@@ -26,7 +26,7 @@ program test_position_records
    implicit none
    type(test_counter) :: t
    type(scene_type) :: scene
-   type(prepared_scene) :: prepared
+   type(run_problem) :: prepared
    class(time_stepper), allocatable :: stepper
    type(energy_ledger) :: ledger
    character(len=512) :: path, errmsg
@@ -38,7 +38,7 @@ program test_position_records
    scene = read_test_scene(trim(path))
    scene%time%scheme = 'position'
    call prepare_test_scene(scene, prepared)
-   call start_time_stepper(scene, prepared, stepper, stat, errmsg)
+   call new_stepper(scene, prepared, stepper, stat, errmsg)
    call ledger%start(stepper)
    worst_impulse = 0
    worst_work = 0

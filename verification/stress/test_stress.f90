@@ -43,7 +43,7 @@
 program test_stress
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_velocity_stepper, only: velocity_stepper
    use vibrobeam_band, only: symmetric_band, band_matvec, band_solve
@@ -108,7 +108,7 @@ contains
 
    subroutine dynamic_checks(scene)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       class(time_stepper), allocatable :: stepper
       real(dp), allocatable :: u_old(:), v_old(:), f_old(:), f_new(:), f_bar(:), dv(:), du(:), v_bar(:), u_bar(:), &
                                rho(:), scale(:), work(:), v_f(:), hp(:), k_u(:), b(:)
@@ -121,7 +121,7 @@ contains
       character(len=512) :: errmsg
       character(len=200) :: detail
       call prepare_test_scene(scene, prepared)
-      call start_time_stepper(scene, prepared, stepper, stat, errmsg)
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
       if (stat /= 0) error stop 'start_time_stepper failed'
       if (scene%time%scheme /= 'velocity' .or. abs(scene%time%theta - 0.5_dp) > 0 .or. scene%beam%rayleigh_mass > 0 .or. &
           scene%beam%rayleigh_stiffness > 0) error stop 'test_stress: velocity scheme, theta = 1/2, no damping only'
@@ -254,7 +254,7 @@ contains
       type(scene_type), intent(in) :: scene_in
       integer, intent(in) :: reference_elements, check_elements
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       real(dp), allocatable :: u(:), r(:), u_ref(:), r_ref(:), f(:), residual(:)
       real(dp) :: tol, kappa, scale, value, force_scale
       integer :: stat, iterations, m, c, pass

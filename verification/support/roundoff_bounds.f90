@@ -40,7 +40,7 @@ module vibrobeam_roundoff_bounds
    use vibrobeam_velocity_stepper, only: velocity_stepper
    use vibrobeam_position_stepper, only: position_stepper
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_test_support, only: read_test_scene, prepare_test_scene, abs_factor_times
    implicit none
    private
@@ -228,7 +228,7 @@ contains
    !! repeated here step by step (the same computation, so the same states).
    subroutine balance_bounds(scene, prepared, steps, bounds, stat, errmsg)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(in) :: prepared
+      type(run_problem), intent(in) :: prepared
       integer, intent(in) :: steps
       real(dp), intent(out) :: bounds(0:steps)
       integer, intent(out) :: stat
@@ -237,7 +237,7 @@ contains
       type(energy_ledger) :: ledger
       real(dp) :: impacts_total
       integer :: n
-      call start_time_stepper(scene, prepared, stepper, stat, errmsg)
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
       if (stat /= 0) return
       call ledger%start(stepper)
       bounds(0) = 0
@@ -260,7 +260,7 @@ contains
       real(dp), intent(in) :: time(:)
       real(dp) :: bound(size(time))
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       real(dp), allocatable :: bounds(:)
       integer :: steps, j, stat
       character(len=512) :: errmsg
