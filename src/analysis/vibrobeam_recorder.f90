@@ -116,6 +116,7 @@ module vibrobeam_recorder
       procedure :: field_due
       procedure :: sample
       procedure :: sample_field
+      procedure :: record_step
       procedure :: write_buffers
       procedure :: rows
       procedure :: finish
@@ -221,6 +222,28 @@ contains
          end do
       end function reduced_row
    end subroutine recorder_init
+
+   !> The recorder's work after step n: impacts, episodes, statistics (`after_step`) and,
+   !! when it writes a result file, the samples due; the HDF5 part in the critical
+   !! section `vibrobeam_hdf5` (HDF5 is not thread-safe: a sweep's keep_runs points write
+   !! from several threads), the rest outside it.
+   subroutine record_step(self, stepper, model, step, stat, errmsg)
+      class(dynamics_recorder), intent(inout) :: self
+      class(time_stepper), intent(in) :: stepper
+      type(beam_model), intent(in) :: model
+      integer(int64), intent(in) :: step
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      if (.not. self%write_rows) then
+         call self%after_step(stepper, stat, errmsg)
+         return
+      end if
+      !$omp critical (vibrobeam_hdf5)
+      call self%after_step(stepper, stat, errmsg)
+      if (stat == 0 .and. self%output_due(step)) call self%sample(stepper, stat, errmsg)
+      if (stat == 0 .and. self%field_due(step)) call self%sample_field(stepper, model, stat, errmsg)
+      !$omp end critical (vibrobeam_hdf5)
+   end subroutine record_step
 
    !> u and v at the tip and at the observation points into events%observed (the same
    !! combinations of unknowns as /tip and /points).

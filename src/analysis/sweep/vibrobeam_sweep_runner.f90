@@ -36,6 +36,7 @@ module vibrobeam_sweep_runner
    use vibrobeam_statistics, only: statistics_result
    use vibrobeam_statistics_layout, only: group_points, group_beam
    use vibrobeam_signals, only: interrupt_requested
+   use vibrobeam_run_loop, only: advance
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, point_scene, point_windows, max_settle_windows
    implicit none
    private
@@ -263,34 +264,27 @@ contains
          if (allocated(start%extra)) prepared%start%extra = start%extra
       end subroutine take_start
 
-      !> The statistics of the window from `first` over `measure_steps` steps, stepping
-      !! `stepper` (already at `first` or before it) without writing anything.
+      !> Step `stepper` (already at `first` or before it) to `last` without writing
+      !! anything (the one run loop, `advance`); a failure or an interruption marks the
+      !! point.
       subroutine step_to(stepper, recorder, last)
          class(time_stepper), intent(inout) :: stepper
          type(dynamics_recorder), intent(inout) :: recorder
          integer(int64), intent(in) :: last
-         integer(int64) :: n
-         character(len=512) :: step_message
-         integer :: step_stat
-         do n = stepper%steps + 1, last
-            call stepper%step(step_stat, step_message)
-            if (step_stat /= 0) then
-               write (errmsg, '(a,i0,a,es14.7,a)') 'numerical failure at step ', n, ' (t = ', n*local%time%dt, ' s): '// &
-                  trim(step_message)
-               call failed(errmsg)
-               return
-            end if
-            call recorder%after_step(stepper, stat, errmsg)
-            if (stat /= 0) then
-               call failed(errmsg)
-               return
-            end if
-            if (interrupt_requested()) then
-               result%status = status_interrupted
-               result%message = 'interrupted at t = '//real_text(n*local%time%dt)//' s'
-               return
-            end if
-         end do
+         character(len=16) :: status
+         character(len=512) :: failure
+         call advance(stepper, recorder, prepared%model, last, status, failure, stat, errmsg)
+         if (stat /= 0) then
+            call failed(errmsg)
+            return
+         end if
+         select case (status)
+         case ('failed')
+            call failed('numerical failure at '//trim(failure))
+         case ('interrupted')
+            result%status = status_interrupted
+            result%message = 'interrupted at t = '//real_text(stepper%steps*local%time%dt)//' s'
+         end select
       end subroutine step_to
 
       !> A stepper at the point's start and a recorder that writes nothing, for at most
