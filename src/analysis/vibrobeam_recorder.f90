@@ -442,11 +442,7 @@ contains
       if (stepper%report%used_fallback) self%fallback_steps = self%fallback_steps + 1
       call self%episodes%observe_step(stepper, self%events, stat, errmsg)
       if (stat /= 0 .or. .not. self%statistics%active) return
-      ! what the episodes decided, and the observed values, for the statistics
-      self%events%closed_count = self%episodes%closed_count
-      self%events%closed_point = self%episodes%closed_point
-      self%events%closed_impulse = self%episodes%closed_impulse
-      self%events%opened = self%episodes%opened
+      ! the observed values, for the statistics
       call self%observe(stepper)
       call self%statistics%observe_step(stepper, self%events, stat, errmsg)
       if (stat /= 0) then
