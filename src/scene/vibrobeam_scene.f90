@@ -20,6 +20,7 @@
 !! 1e110 and the smallest of rho S h^3 above 1e-70 (verification/unit/test_input_limits.f90
 !! evaluates them at the corners).
 module vibrobeam_scene
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_namelist_schema, only: namelist_variable
@@ -273,7 +274,7 @@ contains
       subroutine fail(message)
          character(len=*), intent(in) :: message
          if (stat /= 0) return   ! keep the first violation
-         stat = 1
+         stat = stat_failure
          errmsg = message
       end subroutine fail
 

@@ -22,6 +22,7 @@
 !! statistics so far) and the points not started are not run. A point file that cannot be
 !! written is an I/O error: the task stops with stat /= 0 (the sweep fails, exit status 1).
 module vibrobeam_sweep_runner
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
@@ -366,7 +367,7 @@ contains
                            final_state=last_state)
          if (stat /= 0) then
             ! an I/O error, not a property of the point: the sweep stops (exit status 1)
-            io_stat = 1
+            io_stat = stat_failure
             io_message = '&sweep keep_runs: the result of point '//integer_text(k)//' ('''// &
                          point_file_name(scene%output%file, k)//''') cannot be written: '//trim(errmsg)
             result%status = status_not_run
