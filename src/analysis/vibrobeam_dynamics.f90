@@ -14,6 +14,7 @@
 !! result is published with /run status = 'interrupted'.
 module vibrobeam_dynamics
    use vibrobeam_kinds, only: dp, int64, error_unit
+   use vibrobeam_status, only: outcome_interrupted
    use vibrobeam_text, only: real_text
    use vibrobeam_scene, only: scene_type, step_count
    use vibrobeam_problem, only: run_problem, new_stepper
@@ -232,7 +233,7 @@ contains
          call self%files%set_flushed(stepper%steps, recorder%rows(), stat, errmsg)
       end if
       if (stat == 0) call self%files%set_run(self%summary, stat, errmsg)
-      if (stat == 0) call self%files%publish(self%meter, outcome%status /= 'interrupted', outcome%text_skipped, stat, &
+      if (stat == 0) call self%files%publish(self%meter, outcome%status /= outcome_interrupted, outcome%text_skipped, stat, &
                                              errmsg)
       !$omp end critical (vibrobeam_hdf5)
    end subroutine finish_stream

@@ -7,6 +7,7 @@
 !! writes checkpoints and reports progress).
 module vibrobeam_run_loop
    use vibrobeam_kinds, only: int64
+   use vibrobeam_status, only: outcome_ok, outcome_failed, outcome_interrupted
    use vibrobeam_model, only: beam_model
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_recorder, only: dynamics_recorder
@@ -47,7 +48,7 @@ contains
       type(dynamics_recorder), intent(inout) :: recorder
       type(beam_model), intent(in) :: model
       integer(int64), intent(in) :: last
-      character(len=*), intent(out) :: status
+      integer, intent(out) :: status
       character(len=*), intent(out) :: failure
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
@@ -55,21 +56,21 @@ contains
       integer(int64) :: n
       integer :: step_stat
       character(len=512) :: step_message
-      status = 'ok'
+      status = outcome_ok
       failure = ''
       stat = 0
       errmsg = ''
       do n = stepper%steps + 1, last
          call stepper%step(step_stat, step_message)
          if (step_stat /= 0) then
-            status = 'failed'
+            status = outcome_failed
             write (failure, '(a,i0,a,es14.7,a)') 'step ', n, ' (t = ', n*stepper%dt, ' s): '//trim(step_message)
             return
          end if
          call recorder%record_step(stepper, model, n, stat, errmsg)
          if (stat /= 0) return
          if (interrupt_requested()) then
-            status = 'interrupted'
+            status = outcome_interrupted
             return
          end if
          if (present(hooks)) then

@@ -15,6 +15,7 @@
 module vibrobeam_sweep
    !$ use omp_lib, only: omp_get_max_threads
    use vibrobeam_kinds, only: dp, error_unit
+   use vibrobeam_status, only: outcome_ok, outcome_interrupted, outcome_name, stat_failure, stat_invalid_input
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
    use vibrobeam_problem, only: run_problem, build_problem
@@ -39,7 +40,7 @@ module vibrobeam_sweep
 
    !> What a sweep reports back to the program.
    type :: sweep_outcome
-      character(len=16) :: status = 'ok'       !! 'ok' | 'interrupted' (/run status)
+      integer :: status = outcome_ok           !! outcome_ok | outcome_interrupted (/run status)
       integer :: points = 0, failed = 0, interrupted = 0, not_run = 0
       integer :: resumed = 0                   !! points a partial directory held as done at the start
       logical :: text_skipped = .false.
@@ -175,7 +176,7 @@ contains
          call partial%close()
          errmsg = trim(errmsg)//'; the points done are kept in '''//partial%directory//''': run the same input '// &
                   'again to go on from them'
-         stat = 1
+         stat = stat_failure
          return
       end if
       interrupted = transport_max(merge(1, 0, interrupt_requested())) > 0
@@ -183,7 +184,7 @@ contains
       call transport_barrier()   ! every journal is closed
       if (rank == 0) call publish()
       call share_failure(stat, errmsg)
-      if (transport_max(merge(1, 0, outcome%status == 'interrupted')) > 0) outcome%status = 'interrupted'
+      if (transport_max(merge(1, 0, outcome%status == outcome_interrupted)) > 0) outcome%status = outcome_interrupted
       outcome%failed = transport_max(counts%failed)
       outcome%interrupted = transport_max(counts%interrupted)
       outcome%not_run = transport_max(counts%not_run)
@@ -247,12 +248,12 @@ contains
          if (stat == 0) call partial%index(n, owner, flag, stat, errmsg)
          if (stat /= 0) then
             call partial%close()
-            stat = 1
+            stat = stat_failure
             return
          end if
          complete = all(flag == done_ok .or. flag == done_failed)
          ! a signal after the last point: the sweep is complete (the program still exits 4)
-         if (interrupted .and. .not. complete) outcome%status = 'interrupted'
+         if (interrupted .and. .not. complete) outcome%status = outcome_interrupted
          call write_sweep_file(scene, first%model, settings, points, partial, owner, layout, &
                                [first_scene%beam%length, first_scene%output%points], first%contacts%x, &
                                first%contacts%lower_obstacle, first%contacts%upper_obstacle, outcome%status, &
@@ -287,7 +288,7 @@ contains
 
    !> The first point's scene prepared (its model and contact points are the sweep file's)
    !! and the start state of &initial from_file: U, V (and U^{n-1}) of its checkpoint, at
-   !! t = 0, checked against that scene. stat = 2 (invalid input) when the first point
+   !! t = 0, checked against that scene. stat = stat_invalid_input when the first point
    !! cannot be prepared or the file cannot be continued; its own numerical failures are
    !! the point's (it is marked failed when it runs).
    subroutine sweep_start_state(scene, settings, first_scene, first, base, stat, errmsg)
@@ -309,7 +310,7 @@ contains
          ! the points' own failures are reported per point; this one's contact points are needed
          if (.not. allocated(first%contacts%x)) then
             errmsg = '&sweep point 1: '//trim(errmsg)
-            stat = 2
+            stat = stat_invalid_input
             return
          end if
          stat = 0
@@ -321,14 +322,14 @@ contains
       if (stat == 0) call read_checkpoint(file, record, time, stat, errmsg)
       if (stat /= 0) then
          if (index(errmsg, '&initial from_file') == 0) errmsg = '&initial from_file = '''//file//''': '//trim(errmsg)
-         stat = 2
+         stat = stat_invalid_input
          return
       end if
       ! the scheme is the file's (check_compatible): its state, at t = 0
       call state_from_record(first_scene%time%scheme, record, first%model%unknowns, base, stat, errmsg)
       if (stat /= 0) then
          errmsg = '&initial from_file = '''//file//''': '//trim(errmsg)
-         stat = 2
+         stat = stat_invalid_input
          if (allocated(base%u)) deallocate (base%u)
          return
       end if
@@ -345,7 +346,7 @@ contains
    end function first_point
 
    !> What a run of this sweep would find in its partial directory (`vibrobeam --check`):
-   !! a sentence saying so ('' when there is none), the points it holds as done. stat = 2
+   !! a sentence saying so ('' when there is none), the points it holds as done. stat = stat_invalid_input
    !! when it holds a sweep of another input (the run refuses it).
    subroutine inspect_partial(scene, settings, done, text, stat, errmsg)
       type(scene_type), intent(in) :: scene
@@ -371,7 +372,7 @@ contains
       call partial%index(n, owner, flag, stat, errmsg)
       call partial%close()
       if (stat /= 0) then
-         stat = 1
+         stat = stat_failure
          return
       end if
       done = count(flag == done_ok .or. flag == done_failed)

@@ -16,6 +16,7 @@
 !! the sweep's settings with the bit patterns of its values, and the bits of that start
 !! state.
 module vibrobeam_sweep_partial
+   use vibrobeam_status, only: stat_failure, stat_invalid_input
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: integer_text
    use vibrobeam_version, only: version_string
@@ -84,8 +85,8 @@ contains
    end function partial_point_file
 
    !> Create (when missing), lock and read the partial directory of the sweep file `file`
-   !! for a run: stat = 1 when another process holds it (a sweep running into `file`) or
-   !! it cannot be made, stat = 2 when it holds a journal of another input (not
+   !! for a run: stat = stat_failure when another process holds it (a sweep running into `file`) or
+   !! it cannot be made, stat = stat_invalid_input when it holds a journal of another input (not
    !! `fingerprint`). Temporary files of point files in progress are removed, and so are
    !! journals that cannot be read (a run killed while creating it: no point in them).
    subroutine partial_open(self, file, fingerprint, stat, errmsg)
@@ -101,7 +102,7 @@ contains
       if (stat == 0) call self%lock%try_acquire(self%directory//'/lock', busy, stat, errmsg)
       if (stat /= 0) return
       if (busy) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'another vibrobeam process is running a sweep into '''//trim(file)//''' (it holds '''// &
                   self%directory//'/lock''): wait for it to end, or give &output file another name'
          return
@@ -111,7 +112,7 @@ contains
 
    !> Read the partial directory of `file` without changing anything (`vibrobeam --check`):
    !! `existed` false when there is none; `busy` when a running sweep holds it (its journals
-   !! are then not read: they are that sweep's); stat = 2 when it holds a journal of
+   !! are then not read: they are that sweep's); stat = stat_invalid_input when it holds a journal of
    !! another input. With `locked_here` the lock is held by this sweep (rank 0 of an MPI
    !! run): the journals are read without looking at it.
    subroutine partial_inspect(self, file, fingerprint, stat, errmsg, locked_here)
@@ -195,7 +196,7 @@ contains
             end if
             if (their /= fingerprint) then
                call found%reader%close()
-               stat = 2
+               stat = stat_invalid_input
                errmsg = '&output file: '''//self%directory//''' holds a partial sweep of another input (a '// &
                         'journal of fingerprint '//their//', this input''s is '//fingerprint//'): rerun that '// &
                         'input to finish it, or remove the directory to start this sweep'

@@ -22,7 +22,7 @@
 !! statistics so far) and the points not started are not run. A point file that cannot be
 !! written is an I/O error: the task stops with stat /= 0 (the sweep fails, exit status 1).
 module vibrobeam_sweep_runner
-   use vibrobeam_status, only: stat_failure
+   use vibrobeam_status, only: stat_failure, outcome_ok, outcome_failed, outcome_interrupted, outcome_not_run
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
@@ -44,7 +44,9 @@ module vibrobeam_sweep_runner
    public :: point_result, task_start, point_sink, run_task, point_file_name, kept_point_file
    public :: status_ok, status_failed, status_interrupted, status_not_run, status_names
 
-   integer, parameter :: status_ok = 0, status_failed = 1, status_interrupted = 2, status_not_run = 3
+   ! a point's status: the run outcome of core/vibrobeam_status (the numbers in /sweep/status)
+   integer, parameter :: status_ok = outcome_ok, status_failed = outcome_failed, &
+                         status_interrupted = outcome_interrupted, status_not_run = outcome_not_run
    character(len=*), parameter :: status_names = '0 ok, 1 failed, 2 interrupted, 3 not run'
 
 
@@ -272,7 +274,7 @@ contains
          class(time_stepper), intent(inout) :: stepper
          type(dynamics_recorder), intent(inout) :: recorder
          integer(int64), intent(in) :: last
-         character(len=16) :: status
+         integer :: status
          character(len=512) :: failure
          call advance(stepper, recorder, prepared%model, last, status, failure, stat, errmsg)
          if (stat /= 0) then
@@ -280,9 +282,9 @@ contains
             return
          end if
          select case (status)
-         case ('failed')
+         case (outcome_failed)
             call failed('numerical failure at '//trim(failure))
-         case ('interrupted')
+         case (outcome_interrupted)
             result%status = status_interrupted
             result%message = 'interrupted at t = '//real_text(stepper%steps*local%time%dt)//' s'
          end select
@@ -375,9 +377,9 @@ contains
          end if
          written = .true.
          select case (outcome%status)
-         case ('failed')
+         case (outcome_failed)
             call failed('numerical failure at '//trim(outcome%failure))
-         case ('interrupted')
+         case (outcome_interrupted)
             result%status = status_interrupted
             result%message = 'interrupted'
          case default
