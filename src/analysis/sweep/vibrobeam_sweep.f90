@@ -347,7 +347,10 @@ contains
 
    !> What a run of this sweep would find in its partial directory (`vibrobeam --check`):
    !! a sentence saying so ('' when there is none), the points it holds as done. stat = 2
-   !! when it holds a sweep of another input (the run refuses it).
+   !! when it holds a sweep of another input (the run refuses it). When a sweep is running
+   !! into it, the points its journals hold as done are those that sweep has committed so
+   !! far (docs/sweeps.md, "Checking a sweep"); the sentence leaves the count out when
+   !! they cannot be read at that moment.
    subroutine inspect_partial(scene, settings, done, text, stat, errmsg)
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
@@ -366,19 +369,22 @@ contains
       call sweep_start_state(scene, settings, first_scene, first, base, stat, errmsg)
       if (stat /= 0) return
       call partial%inspect(trim(scene%file), sweep_fingerprint(scene, settings, base), stat, errmsg)
-      if (stat /= 0) return
+      if (stat /= 0 .and. .not. partial%busy) return
       if (.not. partial%existed) return
       n = size(settings%axis(1)%values)*max(1, size(settings%axis(2)%values))*merge(2, 1, settings%mode == 'up-down')
-      call partial%index(n, owner, flag, stat, errmsg)
+      if (stat == 0) call partial%index(n, owner, flag, stat, errmsg)
       call partial%close()
-      if (stat /= 0) then
+      if (stat == 0) done = count(flag == done_ok .or. flag == done_failed)
+      if (partial%busy) then
+         text = 'a sweep is running into '''//trim(scene%file)//''' now (it holds '''//partial%directory//'/lock'''
+         if (stat == 0) text = text//'; its journals hold '//integer_text(done)//' of '//integer_text(n)// &
+                               ' points of this sweep, done'
+         text = text//'): a run started now would stop at once with status 1'
+         stat = 0
+         errmsg = ''
+      else if (stat /= 0) then
          stat = 1
          return
-      end if
-      done = count(flag == done_ok .or. flag == done_failed)
-      if (partial%busy) then
-         text = 'a sweep is running into '''//trim(scene%file)//''' now (it holds '''//partial%directory// &
-                '/lock''): a run started now would stop at once with status 1'
       else
          text = 'resume: '''//partial%directory//''' holds '//integer_text(done)//' of '//integer_text(n)// &
                 ' points of this sweep, done; a run goes on from them ('//integer_text(n - done)//' points to run)'
