@@ -46,12 +46,14 @@ module vibrobeam_sweep
    end type sweep_outcome
 
    !> The journal as the runner's `point_sink`: points written one thread at a time
-   !! (HDF5 is not thread-safe), the progress reported.
+   !! (HDF5 is not thread-safe), the progress reported: the points of this process's
+   !! tasks done (`done`, those done before included) of `total`; under mpirun, rank 0
+   !! reports its own share of the `points` of the sweep.
    type, extends(point_sink) :: journal_sink
       type(sweep_journal) :: journal
       type(progress_meter) :: meter
       logical :: failed = .false.
-      integer :: done = 0, total = 0, rank = 0
+      integer :: done = 0, total = 0, rank = 0, ranks = 1, points = 0
    contains
       procedure :: take => sink_take
       procedure :: halted => sink_halted
@@ -134,8 +136,14 @@ contains
          call partial%close()
          return
       end if
-      sink%total = n
-      sink%done = outcome%resumed
+      sink%ranks = ranks
+      sink%points = n
+      do task = 1, tasks
+         if (.not. owns_task(task, rank, ranks)) cycle
+         sink%total = sink%total + first_of(task + 1) - first_of(task)
+         sink%done = sink%done + count(flag(first_of(task):first_of(task + 1) - 1) == done_ok .or. &
+                                       flag(first_of(task):first_of(task + 1) - 1) == done_failed)
+      end do
       !$omp parallel do schedule(dynamic, 1) default(shared) private(task, task_stat, task_message)
       do task = 1, tasks
          if (.not. owns_task(task, rank, ranks) .or. sink%failed) cycle
@@ -401,14 +409,19 @@ contains
       logical, intent(in) :: point_file
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      character(len=:), allocatable :: share
       stat = 0
       errmsg = ''
       !$omp critical (vibrobeam_hdf5)
       call self%journal%write_point(k, task, result, final, point_file, stat, errmsg)
       self%done = self%done + 1
-      if (self%meter%due()) call self%meter%report('sweep: '//integer_text(self%done)//' of '// &
-                                                   integer_text(self%total)//' points ('//integer_text(self%rank)// &
-                                                   '), wall '//real_text(nint(self%meter%elapsed()*10)/10.0_dp)//' s')
+      if (self%meter%due()) then
+         share = ''
+         if (self%ranks > 1) share = ' on rank '//integer_text(self%rank)//' ('//integer_text(self%points)//' on '// &
+                                     integer_text(self%ranks)//' ranks)'
+         call self%meter%report('sweep: '//integer_text(self%done)//' of '//integer_text(self%total)//' points'// &
+                                share//', wall '//real_text(nint(self%meter%elapsed()*10)/10.0_dp)//' s')
+      end if
       !$omp end critical (vibrobeam_hdf5)
    end subroutine sink_take
 
