@@ -107,7 +107,18 @@ interrupt)
     "\&sweep parameter = 'load.point_frequency', from = 150, to = 250, count = 6, settle = 20, measure = 20 /"
   "$vibrobeam" long.nml > long.out 2> long.err &
   pid=$!
-  sleep 1
+  # SIGINT once points are running, whatever the machine's speed or load: the journal is
+  # made after the signal handlers are installed and just before the points start; once
+  # the process has used 0.5 s of CPU time more, its first points (40 s of simulated time,
+  # 2e6 steps each) are running and far from their end
+  cpu() { awk '{print $14 + $15}' /proc/$pid/stat 2> /dev/null || echo 0; }
+  ticks=$(getconf CLK_TCK)
+  deadline=$((SECONDS + 120))
+  until ls long.h5.partial/journal.h5.*.tmp > /dev/null 2>&1 || [ $SECONDS -ge $deadline ]; do sleep 0.05; done
+  start=$(cpu)
+  until [ "$(cpu)" -ge $((start + ticks / 2)) ] || ! kill -0 $pid 2> /dev/null || [ $SECONDS -ge $deadline ]; do
+    sleep 0.05
+  done
   kill -INT $pid
   wait $pid
   status=$?
