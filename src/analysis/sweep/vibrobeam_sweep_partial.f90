@@ -58,6 +58,7 @@ module vibrobeam_sweep_partial
       procedure :: read_message => partial_read_message
       procedure :: read_poincare => partial_read_poincare
       procedure :: read_state => partial_read_state
+      procedure :: journal_label => partial_journal_label
       procedure :: reload => partial_reload
       procedure :: close => partial_close
       procedure :: remove => partial_remove
@@ -335,6 +336,16 @@ contains
          return
       end do
    end subroutine partial_read_state
+
+   !> Journal j for messages: its name in the directory and its generation
+   !! ('journal.h5.1234-0a1b2c3d.tmp' (generation 2)).
+   function partial_journal_label(self, j) result(label)
+      class(sweep_partial), intent(in) :: self
+      integer, intent(in) :: j
+      character(len=:), allocatable :: label
+      label = ''''//self%journals(j)%name(len(self%directory) + 2:)//''' (generation '// &
+              integer_text(self%journals(j)%generation)//')'
+   end function partial_journal_label
 
    !> Read the journals again (those written since `open` included), keeping the lock.
    subroutine partial_reload(self, fingerprint, stat, errmsg)
