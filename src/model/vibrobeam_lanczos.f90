@@ -122,43 +122,52 @@ contains
       ido = 0
       ! 0: ARPACK's default, machine precision on each Ritz value (dsaupd writes it back)
       tolerance = 0
-      do
-         call dsaupd(ido, 'G', n, 'LM', count, tolerance, resid, ncv, lanczos_vectors, n, iparam, ipntr, &
-                     workd, workl, size(workl), info)
-         ! the operand starts at workd(ipntr(1)), the result goes to workd(ipntr(2)), and
-         ! in mode 3 M times the operand is at workd(ipntr(3)) when ido = 1
-         select case (ido)
-         case (-1)   ! y = K^-1 M x (the start: M x not yet known)
-            call band_matvec(model%mass, workd(ipntr(1):ipntr(1) + n - 1), workd(ipntr(2):ipntr(2) + n - 1))
-            call flexibility%solve(workd(ipntr(2):ipntr(2) + n - 1))
-            if (present(constraint_modes)) call hold(workd(ipntr(2):ipntr(2) + n - 1))
-         case (1)    ! y = K^-1 M x, with M x given
-            workd(ipntr(2):ipntr(2) + n - 1) = workd(ipntr(3):ipntr(3) + n - 1)
-            call flexibility%solve(workd(ipntr(2):ipntr(2) + n - 1))
-            if (present(constraint_modes)) call hold(workd(ipntr(2):ipntr(2) + n - 1))
-         case (2)    ! y = M x
-            call band_matvec(model%mass, workd(ipntr(1):ipntr(1) + n - 1), workd(ipntr(2):ipntr(2) + n - 1))
-         case (99)
-            exit
-         case default
-            stat = stat_failure
-            write (errmsg, '(a,i0)') 'Lanczos: ARPACK dsaupd made an unexpected request, ido = ', ido
-            return
-         end select
-      end do
-      if (info /= 0 .or. iparam(5) < count) then
-         stat = stat_failure
-         errmsg = 'Lanczos: '//arpack_message('dsaupd', info, iparam(5), count, ncv)
-         return
-      end if
-      call dseupd(.true., 'A', select, eigenvalues, vectors, n, 0.0_dp, 'G', n, 'LM', count, tolerance, resid, &
-                  ncv, lanczos_vectors, n, iparam, ipntr, workd, workl, size(workl), info)
-      if (info /= 0) then
-         stat = stat_failure
-         errmsg = 'Lanczos: '//arpack_message('dseupd', info, iparam(5), count, ncv)
-      end if
+      ! ARPACK keeps the state of an iteration in SAVEd variables: one iteration at a time
+      ! in the process (a sweep's points prepare their reduced models on several threads)
+      !$omp critical (vibrobeam_arpack)
+      call iterate()
+      !$omp end critical (vibrobeam_arpack)
 
    contains
+
+      !> dsaupd's reverse-communication loop, then dseupd for the eigenpairs.
+      subroutine iterate()
+         do
+            call dsaupd(ido, 'G', n, 'LM', count, tolerance, resid, ncv, lanczos_vectors, n, iparam, ipntr, &
+                        workd, workl, size(workl), info)
+            ! the operand starts at workd(ipntr(1)), the result goes to workd(ipntr(2)), and
+            ! in mode 3 M times the operand is at workd(ipntr(3)) when ido = 1
+            select case (ido)
+            case (-1)   ! y = K^-1 M x (the start: M x not yet known)
+               call band_matvec(model%mass, workd(ipntr(1):ipntr(1) + n - 1), workd(ipntr(2):ipntr(2) + n - 1))
+               call flexibility%solve(workd(ipntr(2):ipntr(2) + n - 1))
+               if (present(constraint_modes)) call hold(workd(ipntr(2):ipntr(2) + n - 1))
+            case (1)    ! y = K^-1 M x, with M x given
+               workd(ipntr(2):ipntr(2) + n - 1) = workd(ipntr(3):ipntr(3) + n - 1)
+               call flexibility%solve(workd(ipntr(2):ipntr(2) + n - 1))
+               if (present(constraint_modes)) call hold(workd(ipntr(2):ipntr(2) + n - 1))
+            case (2)    ! y = M x
+               call band_matvec(model%mass, workd(ipntr(1):ipntr(1) + n - 1), workd(ipntr(2):ipntr(2) + n - 1))
+            case (99)
+               exit
+            case default
+               stat = stat_failure
+               write (errmsg, '(a,i0)') 'Lanczos: ARPACK dsaupd made an unexpected request, ido = ', ido
+               return
+            end select
+         end do
+         if (info /= 0 .or. iparam(5) < count) then
+            stat = stat_failure
+            errmsg = 'Lanczos: '//arpack_message('dsaupd', info, iparam(5), count, ncv)
+            return
+         end if
+         call dseupd(.true., 'A', select, eigenvalues, vectors, n, 0.0_dp, 'G', n, 'LM', count, tolerance, resid, &
+                     ncv, lanczos_vectors, n, iparam, ipntr, workd, workl, size(workl), info)
+         if (info /= 0) then
+            stat = stat_failure
+            errmsg = 'Lanczos: '//arpack_message('dseupd', info, iparam(5), count, ncv)
+         end if
+      end subroutine iterate
 
       !> y := y - Psi (H y): the static response with the held displacements put back to 0.
       subroutine hold(y)

@@ -34,7 +34,7 @@ module vibrobeam_sweep_file
    use vibrobeam_statistics_layout, only: statistics_layout, group_beam, group_energy
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, task_count
    use vibrobeam_sweep_runner, only: status_ok, status_failed, status_interrupted, status_not_run, status_names, &
-      point_file_name, kept_point_file
+      point_file_name, kept_point_file, point_digits
    use vibrobeam_sweep_journal, only: record_length, record_head, r_status, r_settled, r_start_point, &
       r_settle_steps, r_measure_steps, r_dt, r_wall, r_batches, r_block_steps, r_bin_width, r_poincare_total, &
       r_kept, r_poincare_first, r_message_length, r_point_file
@@ -60,6 +60,7 @@ module vibrobeam_sweep_file
       character(len=:), allocatable :: file, directory
       logical, allocatable :: has_file(:)   !! (points) the point's file is in the set
       logical :: keep = .false.             !! the partial directory stays: link, do not move
+      integer :: missing = 0                !! a point of the set whose file is not there (`prepare`)
    contains
       procedure :: prepare => point_files_prepare
       procedure :: commit => point_files_commit
@@ -140,10 +141,32 @@ contains
          set%keep = keep_partial
          call files%publish(meter, status /= outcome_interrupted, text_skipped, stat, errmsg, also=set)
          if (stat == 0) return
+         if (set%missing > 0) call say_why_in_set(set%missing)
       end block write_all
       call files%discard()
       if (stat == 0) stat = 1
    contains
+      !> Point k's file is missing: add what put it in the set, its journal's record.
+      subroutine say_why_in_set(k)
+         integer, intent(in) :: k
+         real(dp) :: row(record_length(layout%size), 1)
+         character(len=16) :: outcome
+         character(len=256) :: message
+         integer :: read_stat
+         call partial%read_records(owner(k), k, row, read_stat, message)
+         if (read_stat /= 0) return
+         select case (nint(row(r_status, 1)))
+         case (status_ok)
+            outcome = 'ok'
+         case (status_failed)
+            outcome = 'failed'
+         case default
+            outcome = 'interrupted'
+         end select
+         errmsg = trim(errmsg)//'; the journal '//partial%journal_label(owner(k))//' holds point '// &
+                  integer_text(k)//' ('//trim(outcome)//') with its file written'
+      end subroutine say_why_in_set
+
       !> Every per-point dataset, empty (written a block of points at a time).
       subroutine create_tables()
          integer(int64) :: rows
@@ -389,8 +412,9 @@ contains
             errmsg = 'cannot publish '''//point_file_name(self%file, k)//''': it is a directory'
          else if (.not. file_exists(kept_point_file(self%directory, k))) then
             stat = 1
+            self%missing = k
             errmsg = 'cannot publish the result of point '//integer_text(k)//': '''// &
-                     kept_point_file(self%directory, k)//''' is missing'
+                     kept_point_file(self%directory, k)//''' is missing ('//partial_contents(self, k)//')'
          else if (self%keep) then
             call remove_file(linked_name(self%file, k), ignored, message)
             call link_file(kept_point_file(self%directory, k), linked_name(self%file, k), stat, errmsg)
@@ -404,6 +428,53 @@ contains
          end if
       end do
    end subroutine point_files_prepare
+
+   !> What the partial directory holds of the set when the file of point k is missing, for
+   !! the message: 'the directory holds 4 of the 5 point files of the set (missing: 5), no
+   !! temporary file of point 5' (or the temporary files of point k there: never renamed).
+   function partial_contents(self, k) result(text)
+      class(point_files), intent(in) :: self
+      integer, intent(in) :: k
+      character(len=:), allocatable :: text, name, base, temporaries, absent
+      type(directory_listing) :: listing
+      logical, allocatable :: found(:)
+      character(len=256) :: message
+      integer :: j, stat, shown
+      allocate (found(size(self%has_file)), source=.false.)
+      base = kept_point_file(self%directory, k)
+      base = base(len(self%directory) + 2:)   ! 'point0005.h5'
+      temporaries = ''
+      call listing%open(self%directory, stat, message)
+      if (stat /= 0) then
+         text = trim(message)
+         return
+      end if
+      do while (listing%next(name))
+         j = point_index(name, 'point')
+         if (j >= 1 .and. j <= size(found)) then
+            found(j) = .true.
+         else if (index(name, base//'.') == 1 .and. index(name, temporary_suffix, back=.true.) == &
+                  len(name) - len(temporary_suffix) + 1) then
+            temporaries = temporaries//merge(', ', '  ', len(temporaries) > 0)//''''//name//''''
+         end if
+      end do
+      call listing%close()
+      absent = ''
+      shown = 0
+      do j = 1, size(found)
+         if (.not. self%has_file(j) .or. found(j)) cycle
+         shown = shown + 1
+         if (shown <= 8) absent = absent//merge(', ', '  ', shown > 1)//integer_text(j)
+      end do
+      if (shown > 8) absent = absent//', ...'
+      text = 'the directory holds '//integer_text(count(found .and. self%has_file))//' of the '// &
+             integer_text(count(self%has_file))//' point files of the set (missing: '//absent(3:)//'), '
+      if (len(temporaries) == 0) then
+         text = text//'no temporary file of point '//integer_text(k)
+      else
+         text = text//'temporary files of point '//integer_text(k)//': '//temporaries(3:)
+      end if
+   end function partial_contents
 
    !> The second name point k's file gets beside its final one when the partial directory
    !! stays ('<point file>.<pid>-set.tmp').
@@ -457,8 +528,9 @@ contains
       call listing%close()
    end subroutine point_files_commit
 
-   !> k when `name` is the point file name of point k ('<prefix><k with at least 4
-   !! digits>.h5', exactly as `point_file_name` writes it), else 0.
+   !> k when `name` is the name of point k's file, `prefix` followed by k's digits as
+   !! `point_digits` writes them and '.h5' ('s_point0012.h5' with the prefix 's_point' of
+   !! `point_file_name`, 'point0012.h5' with the prefix 'point' of `kept_point_file`), else 0.
    function point_index(name, prefix) result(k)
       character(len=*), intent(in) :: name, prefix
       integer :: k, digits, ios
@@ -472,6 +544,6 @@ contains
          k = 0
          return
       end if
-      if (name /= point_file_name(prefix(1:len(prefix) - 6)//'.h5', k)) k = 0
+      if (name /= prefix//point_digits(k)//'.h5') k = 0
    end function point_index
 end module vibrobeam_sweep_file

@@ -50,14 +50,16 @@ contains
    ! =================================================================================
    ! h5_reader
 
-   !> Open `filename` for reading.
-   subroutine reader_open(self, filename, stat, errmsg)
+   !> Open `filename` for reading; with `live`, a file whose writer may be running
+   !! (`open_file_for_reading`).
+   subroutine reader_open(self, filename, stat, errmsg, live)
       class(h5_reader), intent(inout) :: self
       character(len=*), intent(in) :: filename
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      logical, intent(in), optional :: live
       call self%close()
-      call open_file_for_reading(filename, self%file_id, stat, errmsg)
+      call open_file_for_reading(filename, self%file_id, stat, errmsg, live)
       self%name = trim(filename)
    end subroutine reader_open
 
