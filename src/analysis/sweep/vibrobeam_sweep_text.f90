@@ -2,10 +2,12 @@
 !! per point, a blank line between the lines of a map, and STEM_poincare.dat, one row per
 !! kept Poincare sample. Each column is read from its dataset of the sweep file (a table
 !! of sources, `table_column`), a block of `sweep_block` points (samples) at a time, so
-!! memory does not grow with the sweep.
+!! memory does not grow with the sweep. After the two header lines of every text file,
+!! one line per column names it, '# 13: impact_rate (1/s)', its unit the dataset's, so a
+!! reader or a plot script finds a column by its name.
 module vibrobeam_sweep_text
    use vibrobeam_kinds, only: dp, int64
-   use vibrobeam_text, only: real_text
+   use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_text_derivation, only: derivation, text_sink
    implicit none
    private
@@ -14,11 +16,15 @@ module vibrobeam_sweep_text
    !> Points (samples) read at a time.
    integer, parameter :: sweep_block = 4096
 
-   !> Where a column of a text file comes from: value `which` of each row of the dataset
-   !! `path`, of `width` values a row (1 for a 1-d dataset); no path: zeros.
+   !> A column of a text file: its name, and where it comes from: value `which` of each
+   !! row of the dataset `path`, of `width` values a row (1 for a 1-d dataset); no path or
+   !! `which` = 0: zeros. `note`: what its header line adds after the unit (the name of a
+   !! swept input).
    type :: table_column
+      character(len=40) :: name = ''
       character(len=64) :: path = ''
       integer :: width = 1, which = 1
+      character(len=64) :: note = ''
    end type table_column
 
    !> The pairs of statistics (value, standard error) of the beam and the energy, in
@@ -44,7 +50,8 @@ contains
       integer(int64) :: points, samples
       real(dp) :: loaded_x
       integer :: loaded, observation, peaks
-      character(len=:), allocatable :: first_label, second_label
+      character(len=:), allocatable :: first_label, second_label, first_name, second_name
+      type(table_column), allocatable :: columns(:)
       logical :: second_axis
       call run%rows_of('/sweep/parameter', points, stat, errmsg)
       second_axis = run%file%exists('/sweep/parameter2')
@@ -58,17 +65,22 @@ contains
       if (stat /= 0) return
       loaded_x = 0
       if (loaded > 0) loaded_x = contact_x(loaded)
-      call axis_label(run, '/sweep/parameter', first_label, stat, errmsg)
+      call axis_label(run, '/sweep/parameter', first_name, first_label, stat, errmsg)
+      second_name = 'none'
       second_label = 'none'
-      if (stat == 0 .and. second_axis) call axis_label(run, '/sweep/parameter2', second_label, stat, errmsg)
+      if (stat == 0 .and. second_axis) call axis_label(run, '/sweep/parameter2', second_name, second_label, stat, errmsg)
       if (stat /= 0) return
-      call point_file(run, int(points), point_columns(second_axis, observation, peaks, size(contact_x), loaded), &
-                      first_label, second_label, loaded_x, stat, errmsg)
+      columns = point_columns(second_axis, observation, peaks, size(contact_x), loaded)
+      columns(4)%note = first_name
+      columns(5)%note = second_name
+      call point_file(run, int(points), columns, first_label, second_label, loaded_x, stat, errmsg)
       if (stat /= 0) return
       call run%rows_of('/sweep/poincare/time', samples, stat, errmsg)
       if (stat /= 0) return
-      call poincare_file(run, int(samples), poincare_columns(second_axis, observation), first_label, second_label, &
-                         stat, errmsg)
+      columns = poincare_columns(second_axis, observation)
+      columns(1)%note = first_name
+      columns(2)%note = second_name
+      call poincare_file(run, int(samples), columns, first_label, second_label, stat, errmsg)
    end subroutine sweep_files
 
    !> The contact point whose force_peak summed over the `points` (in their order) is
@@ -105,53 +117,62 @@ contains
       end do
    end subroutine most_loaded
 
-   !> The sources of the columns of STEM_sweep.dat (docs/output.md): `observation` values
-   !! a row in the points' statistics (the tip first), `peaks` dominant frequencies, the
-   !! force statistics of contact point `loaded` of `contacts` (0: none, zeros).
+   !> The columns of STEM_sweep.dat (docs/output.md): `observation` values a row in the
+   !! points' statistics (the tip first: 'tip_' names), `peaks` dominant frequencies (the
+   !! first: 'peak_frequency_1'), the force statistics of contact point `loaded` of
+   !! `contacts` ('stop_' names; 0: none, zeros).
    pure function point_columns(second_axis, observation, peaks, contacts, loaded) result(columns)
       logical, intent(in) :: second_axis
       integer, intent(in) :: observation, peaks, contacts, loaded
       type(table_column) :: columns(12 + 2*size(pairs) + 1 + 2*size(force_names))
+      character(len=:), allocatable :: statistic
       integer :: j
-      columns(1) = table_column('')   ! the point's number
-      columns(2) = table_column('/sweep/line')
-      columns(3) = table_column('/sweep/direction')
-      columns(4) = table_column('/sweep/parameter')
-      if (second_axis) columns(5) = table_column('/sweep/parameter2')
-      columns(6) = table_column('/sweep/status')
-      columns(7) = table_column('/sweep/settled')
-      columns(8) = table_column('/sweep/transient')
+      columns(1) = table_column('point', '')   ! the point's number
+      columns(2) = table_column('line', '/sweep/line')
+      columns(3) = table_column('direction', '/sweep/direction')
+      columns(4) = table_column('parameter', '/sweep/parameter')
+      columns(5) = table_column('parameter2', '')
+      if (second_axis) columns(5)%path = '/sweep/parameter2'
+      columns(6) = table_column('status', '/sweep/status')
+      columns(7) = table_column('settled', '/sweep/settled')
+      columns(8) = table_column('transient', '/sweep/transient')
       ! the tip is the first observation point of each row
-      columns(9) = table_column('/sweep/statistics/points/displacement_rms', observation, 1)
-      columns(10) = table_column('/sweep/statistics/points/displacement_rms_error', observation, 1)
-      columns(11) = table_column('/sweep/statistics/points/displacement_max', observation, 1)
-      columns(12) = table_column('/sweep/statistics/points/displacement_max_error', observation, 1)
+      columns(9) = table_column('tip_displacement_rms', '/sweep/statistics/points/displacement_rms', observation, 1)
+      columns(10) = table_column('tip_displacement_rms_error', '/sweep/statistics/points/displacement_rms_error', &
+                                 observation, 1)
+      columns(11) = table_column('tip_displacement_max', '/sweep/statistics/points/displacement_max', observation, 1)
+      columns(12) = table_column('tip_displacement_max_error', '/sweep/statistics/points/displacement_max_error', &
+                                 observation, 1)
       do j = 1, size(pairs)
-         columns(11 + 2*j) = table_column('/sweep/statistics/'//trim(pairs(j)))
-         columns(12 + 2*j) = table_column('/sweep/statistics/'//trim(pairs(j))//'_error')
+         statistic = trim(pairs(j)(index(pairs(j), '/') + 1:))
+         columns(11 + 2*j) = table_column(statistic, '/sweep/statistics/'//trim(pairs(j)))
+         columns(12 + 2*j) = table_column(statistic//'_error', '/sweep/statistics/'//trim(pairs(j))//'_error')
       end do
-      columns(13 + 2*size(pairs)) = table_column('/sweep/statistics/spectrum/peak_frequency', peaks, 1)
-      if (loaded == 0) return
+      columns(13 + 2*size(pairs)) = table_column('peak_frequency_1', '/sweep/statistics/spectrum/peak_frequency', &
+                                                 peaks, 1)
       do j = 1, size(force_names)
-         columns(12 + 2*size(pairs) + 2*j) = table_column('/sweep/statistics/contacts/'//trim(force_names(j)), &
+         columns(12 + 2*size(pairs) + 2*j) = table_column('stop_'//trim(force_names(j)), &
+                                                          '/sweep/statistics/contacts/'//trim(force_names(j)), &
                                                           contacts, loaded)
-         columns(13 + 2*size(pairs) + 2*j) = table_column('/sweep/statistics/contacts/'//trim(force_names(j))// &
+         columns(13 + 2*size(pairs) + 2*j) = table_column('stop_'//trim(force_names(j))//'_error', &
+                                                          '/sweep/statistics/contacts/'//trim(force_names(j))// &
                                                           '_error', contacts, loaded)
       end do
    end function point_columns
 
-   !> The sources of the columns of STEM_poincare.dat (the tip first of `observation`).
+   !> The columns of STEM_poincare.dat (the tip first of `observation`).
    pure function poincare_columns(second_axis, observation) result(columns)
       logical, intent(in) :: second_axis
       integer, intent(in) :: observation
       type(table_column) :: columns(7)
-      columns(1) = table_column('/sweep/poincare/parameter')
-      if (second_axis) columns(2) = table_column('/sweep/poincare/parameter2')
-      columns(3) = table_column('/sweep/poincare/direction')
-      columns(4) = table_column('/sweep/poincare/point')
-      columns(5) = table_column('/sweep/poincare/time')
-      columns(6) = table_column('/sweep/poincare/displacement', observation, 1)
-      columns(7) = table_column('/sweep/poincare/velocity', observation, 1)
+      columns(1) = table_column('parameter', '/sweep/poincare/parameter')
+      columns(2) = table_column('parameter2', '')
+      if (second_axis) columns(2)%path = '/sweep/poincare/parameter2'
+      columns(3) = table_column('direction', '/sweep/poincare/direction')
+      columns(4) = table_column('point', '/sweep/poincare/point')
+      columns(5) = table_column('time', '/sweep/poincare/time')
+      columns(6) = table_column('tip_displacement', '/sweep/poincare/displacement', observation, 1)
+      columns(7) = table_column('tip_velocity', '/sweep/poincare/velocity', observation, 1)
    end function poincare_columns
 
    !> STEM_sweep.dat: one row per point, a blank line where the line changes.
@@ -179,6 +200,11 @@ contains
                          '  RMS in contact (N)  contact fraction (1)  mean episode duration (s)  longest episode (s)', &
                          stat, errmsg)
       if (stat /= 0) return
+      call column_lines(run, sink, columns, stat, errmsg)
+      if (stat /= 0) then
+         call run%close_sink(sink, stat, errmsg)
+         return
+      end if
       previous_line = 0
       blocks: do first = 1, points, sweep_block
          count = min(sweep_block, points - first + 1)
@@ -210,6 +236,11 @@ contains
                          '  direction  point  time in the point''s run (s)  '// &
                          'tip displacement (m)  tip velocity (m/s), at phase 0 of the forcing', stat, errmsg)
       if (stat /= 0) return
+      call column_lines(run, sink, columns, stat, errmsg)
+      if (stat /= 0) then
+         call run%close_sink(sink, stat, errmsg)
+         return
+      end if
       blocks: do first = 1, samples, sweep_block
          count = min(sweep_block, samples - first + 1)
          call read_table(run, columns, first, count, table, stat, errmsg)
@@ -237,7 +268,7 @@ contains
       errmsg = ''
       allocate (table(size(columns), count), source=0.0_dp)
       do j = 1, size(columns)
-         if (len_trim(columns(j)%path) == 0) cycle
+         if (len_trim(columns(j)%path) == 0 .or. columns(j)%which == 0) cycle
          allocate (rows(columns(j)%width, count))
          call block_rows(run, trim(columns(j)%path), first, rows, stat, errmsg)
          if (stat /= 0) return
@@ -259,14 +290,43 @@ contains
       call run%file%read_rows(path, int(first, int64), rows, stat, errmsg)
    end subroutine block_rows
 
-   !> 'load.base_frequency (rad/s)': the name and unit attributes of an axis.
-   subroutine axis_label(run, path, label, stat, errmsg)
+   !> One header line per column: '# 13: impact_rate (1/s)', the unit that of its dataset
+   !! ('1' when it has none, or the column no dataset), then the column's note if any.
+   subroutine column_lines(run, sink, columns, stat, errmsg)
       type(derivation), intent(inout) :: run
-      character(len=*), intent(in) :: path
-      character(len=:), allocatable, intent(out) :: label
+      type(text_sink), intent(inout) :: sink
+      type(table_column), intent(in) :: columns(:)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      character(len=:), allocatable :: name, unit
+      character(len=:), allocatable :: unit, line
+      integer :: j
+      stat = 0
+      errmsg = ''
+      do j = 1, size(columns)
+         unit = ''
+         if (len_trim(columns(j)%path) > 0) then
+            if (run%file%has_attr(trim(columns(j)%path), 'unit')) &
+               call run%file%attr_string(trim(columns(j)%path), 'unit', unit, stat, errmsg)
+            if (stat /= 0) return
+         end if
+         if (len(unit) == 0) unit = '1'
+         line = '# '//integer_text(j)//': '//trim(columns(j)%name)//' ('//unit//')'
+         if (len_trim(columns(j)%note) > 0) line = line//' '//trim(columns(j)%note)
+         call sink%put_line(line, stat, errmsg)
+         if (stat /= 0) return
+      end do
+   end subroutine column_lines
+
+   !> The name attribute of an axis, and its label 'load.base_frequency (rad/s)' (with
+   !! the unit attribute).
+   subroutine axis_label(run, path, name, label, stat, errmsg)
+      type(derivation), intent(inout) :: run
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable, intent(out) :: name, label
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=:), allocatable :: unit
+      name = ''
       label = ''
       call run%file%attr_string(path, 'name', name, stat, errmsg)
       if (stat == 0) call run%file%attr_string(path, 'unit', unit, stat, errmsg)
