@@ -52,6 +52,8 @@ contains
       if (stat /= 0) return
       call sweepable_variable(axis, label, element_given, variable, stat, errmsg)
       if (stat /= 0) return
+      call used_by_scene(axis, label, scene, stat, errmsg)
+      if (stat /= 0) return
       call real_input(scene, axis%group, axis%name, axis%index, value, found)
       if (.not. found) then
          stat = 1
@@ -162,6 +164,24 @@ contains
       stat = 0
       errmsg = ''
    end subroutine sweepable_variable
+
+   !> stat = 1 when the scene's rules replace the value the sweep would set, so that every
+   !! point would run the same scene: k2 of a beam given by E, rho, S and I (k2 is then
+   !! EI/(rho S); docs/input.md, "&beam").
+   subroutine used_by_scene(axis, label, scene, stat, errmsg)
+      type(sweep_axis), intent(in) :: axis
+      character(len=*), intent(in) :: label
+      type(scene_type), intent(in) :: scene
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      stat = 0
+      errmsg = ''
+      if (axis%group == 'beam' .and. axis%name == 'k2' .and. scene%beam%physical()) then
+         stat = 1
+         errmsg = label//' would change nothing: youngs_modulus, density, area and inertia are given, so '// &
+                  'k2 = EI/(rho S); sweep one of them, or give the beam by k2 alone'
+      end if
+   end subroutine used_by_scene
 
    !> axis%values: the values given, or the range from .. to of count values (linear or
    !! log spacing; the ends exact). `suffix`: '' or '2' (the names of axis 2's variables).
