@@ -4,7 +4,7 @@
 module vibrobeam_modal_analysis
    use vibrobeam_status, only: stat_ok
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene
+   use vibrobeam_problem, only: run_problem
    use vibrobeam_modes, only: compute_modes
    use vibrobeam_result_files, only: result_files, run_summary, run_outcome
    use vibrobeam_progress, only: progress_meter
@@ -21,7 +21,7 @@ contains
    !! an interruption is reported in `outcome%status` ('interrupted').
    subroutine run_modal(scene, prepared, outcome, stat, errmsg)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(in) :: prepared
+      type(run_problem), intent(in) :: prepared
       type(run_outcome), intent(out) :: outcome
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg

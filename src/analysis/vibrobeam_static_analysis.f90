@@ -8,7 +8,7 @@ module vibrobeam_static_analysis
    use vibrobeam_kinds, only: dp
    use vibrobeam_status, only: stat_ok, message_length
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene
+   use vibrobeam_problem, only: run_problem
    use vibrobeam_model, only: nodal_displacement
    use vibrobeam_static, only: solve_static, static_report
    use vibrobeam_result_files, only: result_files, run_summary, run_outcome
@@ -26,7 +26,7 @@ contains
    !! `outcome%failure`, its last iterate published.
    subroutine run_equilibrium(scene, prepared, outcome, stat, errmsg)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(in) :: prepared
+      type(run_problem), intent(in) :: prepared
       type(run_outcome), intent(out) :: outcome
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg

@@ -16,7 +16,7 @@ program vibrobeam_main
    use vibrobeam_check_report, only: check_report, make_check_report, check_report_text, scene_warnings
    use vibrobeam_modal_analysis, only: run_modal
    use vibrobeam_static_analysis, only: run_equilibrium
-   use vibrobeam_setup, only: prepared_scene, prepare_scene
+   use vibrobeam_problem, only: run_problem, build_problem
    use vibrobeam_dynamics, only: run_dynamics
    use vibrobeam_result_files, only: run_outcome, publish_files
    use vibrobeam_text_output, only: derived_file, derive_text_files
@@ -31,7 +31,7 @@ program vibrobeam_main
    implicit none
 
    type(scene_type) :: scene
-   type(prepared_scene) :: prepared
+   type(run_problem) :: prepared
    type(sweep_settings) :: sweep
    character(len=message_length) :: errmsg
    character(len=:), allocatable :: input_file, warnings, blas_warning, resume
@@ -60,7 +60,7 @@ program vibrobeam_main
    if (sweep%present) then
       ! a sweep prepares each point itself; here the first one, for its warnings
       associate (points => sweep_points(sweep))
-         call prepare_scene(point_scene(scene, sweep, points(1)), prepared, warnings, stat, errmsg)
+         call build_problem(point_scene(scene, sweep, points(1)), prepared, warnings, stat, errmsg)
       end associate
       if (stat /= 0 .and. stat /= stat_numerical_failure) call fail(exit_invalid_input, '&sweep point 1: '//errmsg)
       ! the files it writes, its start state, its partial directory, its size (rank 0 looks:
@@ -72,7 +72,7 @@ program vibrobeam_main
       call share_failure(stat, errmsg)
       if (stat /= 0) call fail(exit_invalid_input, errmsg)
    else
-      call prepare_scene(scene, prepared, warnings, stat, errmsg)
+      call build_problem(scene, prepared, warnings, stat, errmsg)
       if (stat == stat_numerical_failure) call fail(exit_numerical_failure, errmsg)
       if (stat /= 0) call fail(exit_invalid_input, errmsg)
    end if

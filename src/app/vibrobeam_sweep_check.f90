@@ -19,7 +19,8 @@ module vibrobeam_sweep_check
    use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type, forcing_of
-   use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper, release_stepper
+   use vibrobeam_problem, only: run_problem, build_problem, new_stepper
+   use vibrobeam_stepper_factory, only: release_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_filesystem, only: file_exists
    use vibrobeam_namelist_tokens, only: abbreviated
@@ -408,7 +409,7 @@ contains
       type(sweep_point), intent(in) :: point
       real(dp) :: seconds
       type(scene_type) :: local
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       class(time_stepper), allocatable :: stepper
       character(len=:), allocatable :: warnings
       character(len=256) :: errmsg
@@ -417,8 +418,8 @@ contains
       seconds = 0
       local = point_scene(scene, settings, point)
       warnings = ''
-      call prepare_scene(local, prepared, warnings, stat, errmsg)
-      if (stat == 0) call start_time_stepper(local, prepared, stepper, stat, errmsg)
+      call build_problem(local, prepared, warnings, stat, errmsg)
+      if (stat == 0) call new_stepper(local, prepared, stepper, stat, errmsg)
       if (stat /= 0) return
       do n = 1, warm_up_steps
          call stepper%step(stat, errmsg)

@@ -17,7 +17,7 @@ module vibrobeam_sweep
    use vibrobeam_kinds, only: dp, error_unit
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, prepare_scene
+   use vibrobeam_problem, only: run_problem, build_problem
    use vibrobeam_checkpoint, only: read_checkpoint
    use vibrobeam_restart_check, only: check_compatible
    use vibrobeam_state_record, only: state_record
@@ -25,7 +25,9 @@ module vibrobeam_sweep
    use vibrobeam_progress, only: progress_meter
    use vibrobeam_signals, only: interrupt_requested
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, sweep_points, point_scene, task_count
-   use vibrobeam_sweep_runner, only: point_result, start_state, task_start, point_sink, run_task
+   use vibrobeam_sweep_runner, only: point_result, task_start, point_sink, run_task
+   use vibrobeam_time_stepper, only: dynamic_state
+   use vibrobeam_stepper_factory, only: state_from_record
    use vibrobeam_sweep_journal, only: sweep_journal, done_ok, done_failed
    use vibrobeam_sweep_partial, only: sweep_partial, sweep_fingerprint
    use vibrobeam_sweep_file, only: write_sweep_file, sweep_counts
@@ -79,8 +81,8 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(sweep_point), allocatable :: points(:)
-      type(start_state) :: base
-      type(prepared_scene) :: first
+      type(dynamic_state) :: base
+      type(run_problem) :: first
       type(statistics_layout) :: layout
       type(scene_type) :: first_scene
       type(sweep_partial) :: partial
@@ -214,7 +216,7 @@ contains
             if (flag(k) /= done_ok) cycle
             call partial%read_state(owner(k), task, k, first%model%unknowns, start%state, stat, errmsg)
             if (stat /= 0) return
-            if (start%state%given) then
+            if (allocated(start%state%u)) then
                q = k
                exit
             end if
@@ -292,8 +294,8 @@ contains
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
       type(scene_type), intent(out) :: first_scene
-      type(prepared_scene), intent(out) :: first
-      type(start_state), intent(out) :: base
+      type(run_problem), intent(out) :: first
+      type(dynamic_state), intent(out) :: base
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(state_record) :: record
@@ -302,7 +304,7 @@ contains
       logical :: same_bounds
       first_scene = point_scene(scene, settings, first_point(settings))
       warnings = ''
-      call prepare_scene(first_scene, first, warnings, stat, errmsg)
+      call build_problem(first_scene, first, warnings, stat, errmsg)
       if (stat /= 0) then
          ! the points' own failures are reported per point; this one's contact points are needed
          if (.not. allocated(first%contacts%x)) then
@@ -322,19 +324,15 @@ contains
          stat = 2
          return
       end if
-      allocate (base%u(first%model%unknowns), base%v(first%model%unknowns))
-      call record%get_reals('stepper.u', base%u, stat, errmsg)
-      if (stat == 0) call record%get_reals('stepper.v', base%v, stat, errmsg)
-      if (stat == 0 .and. record%find('stepper.u_previous') > 0) then
-         allocate (base%u_previous(first%model%unknowns))
-         call record%get_reals('stepper.u_previous', base%u_previous, stat, errmsg)
-      end if
+      ! the scheme is the file's (check_compatible): its state, at t = 0
+      call state_from_record(first_scene%time%scheme, record, first%model%unknowns, base, stat, errmsg)
       if (stat /= 0) then
          errmsg = '&initial from_file = '''//file//''': '//trim(errmsg)
          stat = 2
+         if (allocated(base%u)) deallocate (base%u)
          return
       end if
-      base%given = .true.
+      base%step = 0
    end subroutine sweep_start_state
 
    !> The first point of the sweep (its scene is the sweep file's model).
@@ -357,8 +355,8 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(scene_type) :: first_scene
-      type(prepared_scene) :: first
-      type(start_state) :: base
+      type(run_problem) :: first
+      type(dynamic_state) :: base
       type(sweep_partial) :: partial
       integer, allocatable :: owner(:), flag(:)
       integer :: n
@@ -392,7 +390,7 @@ contains
       class(journal_sink), intent(inout) :: self
       integer, intent(in) :: k, task
       type(point_result), intent(in) :: result
-      type(start_state), intent(in) :: final
+      type(dynamic_state), intent(in) :: final
       logical, intent(in) :: point_file
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg

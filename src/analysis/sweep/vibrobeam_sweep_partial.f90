@@ -25,7 +25,8 @@ module vibrobeam_sweep_partial
    use vibrobeam_directory_entries, only: directory_listing, touch_file, remove_directory
    use vibrobeam_hdf5_reader, only: h5_reader
    use vibrobeam_sweep_settings, only: sweep_settings
-   use vibrobeam_sweep_runner, only: start_state
+   use vibrobeam_sweep_runner, only: 
+   use vibrobeam_time_stepper, only: dynamic_state
    use vibrobeam_sweep_journal, only: done_none, done_ok, done_failed, message_words
    implicit none
    private
@@ -296,12 +297,12 @@ contains
       call self%journals(j)%reader%read_rows('/journal/poincare', first_row + 1, rows, stat, errmsg)
    end subroutine partial_read_poincare
 
-   !> The state of point k of task `task` from journal j; state%given false when neither
+   !> The state of point k of task `task` from journal j; state%u not allocated when neither
    !! slot of the task holds it there.
    subroutine partial_read_state(self, j, task, k, unknowns, state, stat, errmsg)
       class(sweep_partial), intent(inout) :: self
       integer, intent(in) :: j, task, k, unknowns
-      type(start_state), intent(out) :: state
+      type(dynamic_state), intent(out) :: state
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp) :: slot(2 + 3*unknowns, 1)
@@ -315,8 +316,7 @@ contains
          if (nint(slot(1, 1)) /= k) cycle
          state%u = slot(3:2 + unknowns, 1)
          state%v = slot(3 + unknowns:2 + 2*unknowns, 1)
-         if (nint(slot(2, 1)) == 1) state%u_previous = slot(3 + 2*unknowns:, 1)
-         state%given = .true.
+         if (nint(slot(2, 1)) == 1) state%extra = slot(3 + 2*unknowns:, 1)
          return
       end do
    end subroutine partial_read_state
@@ -371,7 +371,7 @@ contains
    function sweep_fingerprint(scene, settings, base) result(text)
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
-      type(start_state), intent(in) :: base
+      type(dynamic_state), intent(in) :: base
       character(len=16) :: text
       character(len=*), parameter :: ignored(6) = [character(len=24) :: 'output.file', 'output.text', &
          'output.progress', 'time.t_end', 'output.measure_from', 'initial.from_file']
@@ -403,11 +403,11 @@ contains
          call add(' parameter='//trim(settings%axis(a)%parameter))
          if (allocated(settings%axis(a)%values)) call add_reals(settings%axis(a)%values)
       end do
-      if (base%given) then
+      if (allocated(base%u)) then
          call add(' start')
          call add_reals(base%u)
          call add_reals(base%v)
-         if (allocated(base%u_previous)) call add_reals(base%u_previous)
+         if (allocated(base%extra)) call add_reals(base%extra)
       end if
       write (text, '(z8.8,z8.8)') first, second
    contains
