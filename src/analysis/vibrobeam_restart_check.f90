@@ -6,6 +6,7 @@
 !! obstacle levels, a stop's damping and outputs may change. Reading the checkpoint itself
 !! is `vibrobeam_checkpoint`'s.
 module vibrobeam_restart_check
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: integer_text, real_text
    use vibrobeam_scene, only: scene_type, scene_entry, scene_entries
@@ -223,7 +224,7 @@ contains
       character(len=*), intent(in) :: prefix, name, in_file, in_scene, why
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      stat = 1
+      stat = stat_failure
       errmsg = prefix//name//' is '//in_file//' in the file and '//in_scene//' in this scene'//why
    end subroutine mismatch
 end module vibrobeam_restart_check

@@ -29,11 +29,12 @@
 !! stops changing to its own round-off, |p_j(y) - p_j^k| <= tol (|q_j| + m |H_j| |y|) for
 !! every j (the size of the terms p_j is computed from: a spring engaged by 1e-16 m beside
 !! one 2 mm away is judged on its own scale). At most `max_newton` iterations; otherwise
-!! stat = 1 (the run stops with exit 3). The force the accepted step applied (`force`) and
+!! stat = stat_no_convergence (the run stops with exit 3). The force the accepted step applied (`force`) and
 !! the rule's force at the accepted penetrations (`law_force`) differ by the remaining
 !! residual: the steppers book its work and stop a run in which it is not negligible
 !! (docs/theory.md section 8, "Accuracy").
 module vibrobeam_compliant_solver
+   use vibrobeam_status, only: stat_linear_solver_failure, stat_no_convergence
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_factor, band_solve, band_matvec, band_add
    use vibrobeam_contact_set, only: contact_set, contact_value
@@ -162,7 +163,7 @@ contains
          end if
          now = next
       end do
-      stat = 1
+      stat = stat_no_convergence
       write (errmsg, '(a,i0,a,es10.3,a)') 'the compliant stops did not converge in ', max_newton, &
          ' Newton iterations (force residual ', residual, ' N); reduce dt, or the stiffness of a stop '// &
          'whose contact time scale (vibrobeam --check) is far below dt'
@@ -192,7 +193,7 @@ contains
       end do
       call band_factor(self%jacobian, self%jacobian_factor, stat, errmsg)
       if (stat /= 0) then
-         stat = 2
+         stat = stat_linear_solver_failure
          return
       end if
       call band_matvec(a, x_free - x, rhs)

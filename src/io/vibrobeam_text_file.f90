@@ -9,6 +9,7 @@
 !! message naming the file and the C library's reason) and never stops.
 module vibrobeam_text_file
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_ptr, c_null_ptr, c_size_t, c_double, c_associated
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_filesystem, only: make_parent_directories, remove_file, unique_temporary_name, c_string, &
       error_text
    implicit none
@@ -83,7 +84,7 @@ contains
       if (stat /= 0) return
       file%handle = c_text_open(c_string(temporary), error_number)
       if (.not. c_associated(file%handle)) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot create ''' // temporary // ''': ' // error_text(error_number)
       end if
    end subroutine open_text_for_atomic_write
@@ -99,7 +100,7 @@ contains
       errmsg = ''
       error_number = c_text_write(file%handle, line // new_line('a'), int(len(line) + 1, c_size_t))
       if (error_number /= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot write ''' // trim(temporary) // ''': ' // error_text(error_number)
       end if
    end subroutine write_text_line
@@ -120,7 +121,7 @@ contains
       error_number = c_text_write_row(file%handle, values, int(size(values), c_int), int(width, c_int), &
                                       int(digits, c_int), int(integers, c_int))
       if (error_number /= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot write ''' // trim(temporary) // ''': ' // error_text(error_number)
       end if
    end subroutine write_text_row
@@ -138,7 +139,7 @@ contains
       error_number = c_text_close(file%handle)
       file%handle = c_null_ptr
       if (error_number /= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot write ''' // trim(temporary) // ''': ' // error_text(error_number)
       end if
    end subroutine finish_text_file

@@ -21,6 +21,7 @@
 !!   and side act in parallel, each from its own level, and a rigid bound on the same node
 !!   and side acts beside them (whichever is reached first holds).
 module vibrobeam_obstacles
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, keyword_length
    use vibrobeam_model, only: beam_model, node_row
@@ -224,7 +225,7 @@ contains
       if (nodes%lower(0) > 0 .or. nodes%upper(0) < 0) then
          write (errmsg, '(a,i0,a)') '&obstacles: obstacle ', max(nodes%lower_source(0), nodes%upper_source(0)), &
             ' cuts the clamped end x = 0, where u = 0 always; move x_from away from 0 or its level past 0'
-         stat = 1
+         stat = stat_failure
          return
       end if
       do i = 1, model%elements
@@ -233,7 +234,7 @@ contains
                nodes%lower_source(i), ' (level ', nodes%lower(i), ' m) is not under the ''above'' obstacle ', &
                nodes%upper_source(i), ' (level ', nodes%upper(i), ' m) at x = ', model%x(i + 1), &
                ' m; a below level must be smaller than an above level'
-            stat = 1
+            stat = stat_failure
             return
          end if
       end do

@@ -21,6 +21,7 @@
 !! function behind the `errno` macro on Linux); `mode_t` is taken to be a C `int`-sized
 !! unsigned integer, as on Linux.
 module vibrobeam_filesystem
+   use vibrobeam_status, only: stat_failure
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_long, c_int64_t, c_null_char, c_ptr, &
       c_size_t, c_associated, c_f_pointer
    implicit none
@@ -184,7 +185,7 @@ contains
          ! Already there (or made concurrently): fine if it is a directory. Appending '/'
          ! makes access() fail with ENOTDIR when the prefix is a regular file.
          if (c_access(c_string(path(1:slash)), f_ok) == 0) cycle
-         stat = 1
+         stat = stat_failure
          if (c_access(c_string(path(1:slash - 1)), f_ok) == 0) then
             errmsg = 'cannot create directory ''' // path(1:slash - 1) // ''' for ''' // &
                path(1:last) // ''': it exists and is not a directory'
@@ -209,7 +210,7 @@ contains
       errmsg = ''
       if (c_rename(c_string(from), c_string(to)) /= 0) then
          error_number = c_errno()
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot rename ''' // trim(from) // ''' to ''' // trim(to) // ''': ' // &
             c_error_message(error_number)
       end if
@@ -227,7 +228,7 @@ contains
       if (c_unlink(c_string(path)) /= 0) then
          error_number = c_errno()
          if (error_number == enoent) return
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot remove ''' // trim(path) // ''': ' // c_error_message(error_number)
       end if
    end subroutine remove_file
@@ -310,7 +311,7 @@ contains
       errmsg = ''
       error_number = c_fsync_path(c_string(path))
       if (error_number /= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot sync ''' // trim(path) // ''' to disk: ' // error_text(error_number)
       end if
    end subroutine sync_file
@@ -336,7 +337,7 @@ contains
       errmsg = ''
       error_number = c_lock(c_string(directory), self%descriptor)
       if (error_number /= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot lock directory ''' // trim(directory) // ''': ' // error_text(error_number)
       end if
    end subroutine lock_acquire
@@ -355,7 +356,7 @@ contains
       error_number = c_try_lock(c_string(path), self%descriptor)
       busy = error_number == -1
       if (error_number /= 0 .and. .not. busy) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot lock ''' // trim(path) // ''': ' // error_text(error_number)
       end if
    end subroutine lock_try_acquire

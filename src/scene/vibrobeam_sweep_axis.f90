@@ -5,6 +5,7 @@
 !! each inside the variable's hard range.
 module vibrobeam_sweep_axis
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type, scene_variables, parameter_length, keyword_length
@@ -56,7 +57,7 @@ contains
       if (stat /= 0) return
       call real_input(scene, axis%group, axis%name, axis%index, value, found)
       if (.not. found) then
-         stat = 1
+         stat = stat_failure
          if (axis%group == 'obstacles') then
             errmsg = label//': element '//integer_text(axis%index)//' is outside [1, '// &
                      integer_text(size(scene%obstacles))//'], the obstacles of &obstacles count'
@@ -81,7 +82,7 @@ contains
       character(len=*), intent(out) :: errmsg
       character(len=:), allocatable :: text
       integer :: open, close, dot, ios
-      stat = 1
+      stat = stat_failure
       element_given = .false.
       text = lowercase(trim(axis%parameter))
       if (len(text) == 0) then
@@ -130,7 +131,7 @@ contains
       character(len=*), intent(out) :: errmsg
       type(namelist_variable), allocatable :: table(:)
       integer :: row, k
-      stat = 1
+      stat = stat_failure
       allocate (table, source=scene_variables())
       row = 0
       do k = 1, size(table)
@@ -177,7 +178,7 @@ contains
       stat = 0
       errmsg = ''
       if (axis%group == 'beam' .and. axis%name == 'k2' .and. scene%beam%physical()) then
-         stat = 1
+         stat = stat_failure
          errmsg = label//' would change nothing: youngs_modulus, density, area and inertia are given, so '// &
                   'k2 = EI/(rho S); sweep one of them, or give the beam by k2 alone'
       end if
@@ -191,7 +192,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: k
-      stat = 1
+      stat = stat_failure
       if (allocated(axis%given_values) .and. axis%range_given) then
          errmsg = '&sweep values'//suffix//' and from'//suffix//'/to'//suffix//' are both given: give the values or a range'
          return
@@ -248,7 +249,7 @@ contains
          value = axis%values(k)
          if (.not. ieee_is_finite(value) .or. value < variable%lowest .or. value > variable%highest .or. &
              (abs(value) > 0 .and. abs(value) < variable%smallest_nonzero)) then
-            stat = 1
+            stat = stat_failure
             errmsg = label//': value '//integer_text(k)//' = '//real_text(value)//' is outside '// &
                      range_text(variable)//', the range of &'//trim(axis%group)//' '//trim(axis%name)
             return

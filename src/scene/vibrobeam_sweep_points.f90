@@ -17,6 +17,7 @@
 !! scene is the base scene with the parameters set, t_end = (settle + measure) steps,
 !! measure_from = settle steps.
 module vibrobeam_sweep_points
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_text, only: real_text
    use vibrobeam_sorting, only: sorted
@@ -224,7 +225,7 @@ contains
       period = 0
       if (omega > 0) period = 2*pi/omega
       if ((settings%settle_periods > 0 .or. settings%measure_periods > 0) .and. omega <= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = '&sweep settle_periods/measure_periods need a harmonic load (a non-zero amplitude and '// &
                   'frequency): this point has none; give the windows in seconds (settle, measure)'
          return
@@ -234,7 +235,7 @@ contains
       measure = settings%measure
       if (settings%measure_periods > 0) measure = settings%measure_periods*period
       if (settle/scene%time%dt > 1e15_dp .or. measure/scene%time%dt > 1e15_dp) then
-         stat = 1
+         stat = stat_failure
          errmsg = '&sweep: a window of '//real_text(max(settle, measure))//' s makes more than 1e15 steps of dt = '// &
                   real_text(scene%time%dt)//' s'
          return
@@ -242,7 +243,7 @@ contains
       settle_steps = nint(settle/scene%time%dt, int64)
       measure_steps = nint(measure/scene%time%dt, int64)
       if (measure_steps < 1) then
-         stat = 1
+         stat = stat_failure
          errmsg = '&sweep: the measurement window of '//real_text(measure)//' s is shorter than a time step (dt = '// &
                   real_text(scene%time%dt)//' s)'
       end if

@@ -5,6 +5,7 @@
 !! order and each point's scene and windows are `vibrobeam_sweep_points`'; the settings
 !! and points are taken from here by the modules that run a sweep.
 module vibrobeam_sweep_settings
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type, scene_variables, validate_scene
@@ -36,7 +37,7 @@ contains
       stat = 0
       errmsg = ''
       if (scene%analysis%kind /= 'dynamics') then
-         stat = 1
+         stat = stat_failure
          errmsg = '&sweep needs &analysis kind = ''dynamics'' (kind = '''//trim(scene%analysis%kind)//''')'
          return
       end if
@@ -61,7 +62,7 @@ contains
       allocate (table, source=scene_variables())
       variable = table(variable_index(table, 'sweep', name))
       if (index('|'//trim(variable%choices)//'|', '|'//trim(value)//'|') > 0 .and. len_trim(value) > 0) return
-      stat = 1
+      stat = stat_failure
       errmsg = '&sweep '//name//' = '''//trim(value)//''' is not one of '//choices_text(variable)
    end subroutine check_keyword
 
@@ -77,7 +78,7 @@ contains
       if (stat /= 0) return
       if (len_trim(settings%axis(2)%parameter) == 0) then
          if (allocated(settings%axis(2)%given_values) .or. settings%axis(2)%range_given) then
-            stat = 1
+            stat = stat_failure
             errmsg = '&sweep values2/from2/to2 are given but parameter2 is not: name the second parameter'
             return
          end if
@@ -87,7 +88,7 @@ contains
       call resolve_axis(settings%axis(2), 2, scene, stat, errmsg)
       if (stat /= 0) return
       if (settings%axis(2)%parameter == settings%axis(1)%parameter) then
-         stat = 1
+         stat = stat_failure
          errmsg = '&sweep parameter2 = '''//trim(settings%axis(2)%parameter)//''' is parameter itself: '// &
                   'a map needs two different inputs'
       end if
@@ -101,7 +102,7 @@ contains
       type(scene_type), intent(in) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      stat = 1
+      stat = stat_failure
       if (settings%mode /= 'independent' .and. trim(settings%axis(1)%group)//'.'//trim(settings%axis(1)%name) == 'time.dt') then
          errmsg = '&sweep parameter = ''time.dt'' with mode = '''//trim(settings%mode)//''': a continuation '// &
                   'carries the state from one time step to another; use mode = ''independent'''
@@ -142,7 +143,7 @@ contains
       if (len_trim(settings%axis(2)%parameter) > 0) &
          counted = counted//' x '//integer_text(size(settings%axis(2)%values))//' values2'
       if (settings%mode == 'up-down') counted = counted//' x 2 branches'
-      stat = 1
+      stat = stat_failure
       errmsg = counted//' make '//real_text(real(total, dp))//' points; at most '//integer_text(max_sweep_points)
    end subroutine check_count
 
@@ -181,7 +182,7 @@ contains
             call build_contact_points(trial%obstacles, model, contacts, warnings, stat, errmsg)
          end if
          if (stat == 0 .and. contact_count >= 0 .and. contacts%count /= contact_count) then
-            stat = 1
+            stat = stat_failure
             errmsg = 'the point has '//integer_text(contacts%count)//' contact points and point 1 has '// &
                      integer_text(contact_count)//': a sweep keeps the same contact points (move obstacles '// &
                      'between nodes, not across them)'

@@ -5,6 +5,7 @@
 !! `point_file_name`), and the point files of an earlier sweep of the same name that the
 !! new set does not have are removed.
 module vibrobeam_sweep_point_files
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_text, only: integer_text
    use vibrobeam_result_files, only: publish_step
    use vibrobeam_filesystem, only: directory_of, rename_file, remove_file, file_exists, process_id, temporary_suffix
@@ -43,10 +44,10 @@ contains
       do k = 1, size(self%has_file)
          if (.not. self%has_file(k)) cycle
          if (file_exists(point_file_name(self%file, k)//'/')) then
-            stat = 1
+            stat = stat_failure
             errmsg = 'cannot publish '''//point_file_name(self%file, k)//''': it is a directory'
          else if (.not. file_exists(kept_point_file(self%directory, k))) then
-            stat = 1
+            stat = stat_failure
             self%missing = k
             errmsg = 'cannot publish the result of point '//integer_text(k)//': '''// &
                      kept_point_file(self%directory, k)//''' is missing ('//partial_contents(self, k)//')'

@@ -42,6 +42,7 @@
 !! text for a failed write: 'No space left on device'); nothing stops or prints.
 module vibrobeam_hdf5
    use, intrinsic :: iso_c_binding, only: c_int, c_int64_t
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_filesystem, only: make_parent_directories, rename_file, remove_file, &
       unique_temporary_name, sync_file, sync_directory_of
@@ -141,7 +142,7 @@ contains
       if (stat /= 0) return
       call make_parent_directories(final_name, stat, fs_message)
       if (stat /= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot create HDF5 file ''' // trim(final_name) // ''': ' // trim(fs_message)
          return
       end if

@@ -3,6 +3,7 @@
 !! current token, and what the tokens around it say; and the two forms of a message
 !! about the file ('line L: ...' for its structure, '... (line L)' for one variable).
 module vibrobeam_namelist_cursor
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_text, only: integer_text
    use vibrobeam_namelist_tokens, only: token, tokenize
    implicit none
@@ -101,7 +102,7 @@ contains
       character(len=*), intent(in) :: message
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      stat = 1
+      stat = stat_failure
       errmsg = 'line '//integer_text(line)//': '//message
    end subroutine fail_at
 
@@ -111,7 +112,7 @@ contains
       character(len=*), intent(in) :: message
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      stat = 1
+      stat = stat_failure
       errmsg = message//' (line '//integer_text(line)//')'
    end subroutine fail_variable
 end module vibrobeam_namelist_cursor

@@ -21,6 +21,7 @@
 !! comment may follow it on its line. Comments and quoted strings may hold UTF-8 text;
 !! everything else is printable ASCII, blanks, tabs and line ends (LF or CR LF).
 module vibrobeam_namelist_scan
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_text, only: integer_text
    use vibrobeam_namelist_tokens, only: abbreviated, lowercase, t_end, t_word, t_group, t_dollar, t_slash, &
       t_equals, t_open, t_comma, t_bad
@@ -58,7 +59,7 @@ contains
       character(len=256) :: iomsg
       integer :: unit, bytes
       logical :: exists, is_directory
-      stat = 1
+      stat = stat_failure
       inquire (file=filename, exist=exists, size=bytes)
       if (.not. exists) then
          errmsg = 'input file '''//abbreviated(filename, 200)//''' does not exist'
@@ -79,7 +80,7 @@ contains
       open (newunit=unit, file=filename, access='stream', form='unformatted', status='old', action='read', &
             iostat=stat, iomsg=iomsg)
       if (stat /= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot open input file '''//abbreviated(filename, 200)//''': '//trim(iomsg)
          return
       end if
@@ -87,7 +88,7 @@ contains
       if (bytes > 0) read (unit, iostat=stat, iomsg=iomsg) text
       close (unit)
       if (stat /= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot read input file '''//abbreviated(filename, 200)//''': '//trim(iomsg)
          return
       end if
