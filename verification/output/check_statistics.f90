@@ -4,8 +4,10 @@
 !! reports.   usage: check_statistics FILE.h5
 !!
 !! The scene has its contact points at the tip only (two stops there), so /tip/impulse
-!! (the impulse of each step, every = 1) gives the steps in contact and the contact
+!! (the impulse of each step, every = 1) gives the steps with an impulse and the contact
 !! force; which stop gives an impulse follows from its sign (upwards: the 'below' one).
+!! A step is in contact when it has an impulse or, with a compliant stop, a nonzero spring
+!! force after it (/contact/force, its sign telling the stop in the same way).
 !! With a compliant stop (/contact/force written, every = 1) the force statistics are
 !! recomputed from /contact/force at every step, and the compliant episodes (maximal runs
 !! of steps with nonzero force) from it too; the powers of the contact damping and of the
@@ -53,6 +55,7 @@ program check_statistics
    character(len=:), allocatable :: scheme
    ! impacts and episodes, and the target of the contact statistics being checked
    real(dp), allocatable :: impact_time(:), impact_impulse(:), episode_start(:), episode_impulse(:), step_impulse(:)
+   real(dp), allocatable :: tip_force(:)   ! the compliant stops' force at the tip after each step (0 without)
    integer(int64), allocatable :: impact_step(:), episode_step(:)
    real(dp) :: wanted   ! sign of the impulses of the target (0: any)
 
@@ -196,6 +199,7 @@ contains
    subroutine check_contacts()
       integer :: k
       step_impulse = tip_impulse(first + 2:last + 1)   ! the impulse of steps first+1 .. last
+      call tip_forces()
       call load('/impacts/time', impact_time)
       call load('/impacts/impulse', impact_impulse)
       call load('/episodes/start', episode_start)
@@ -251,7 +255,7 @@ contains
    subroutine statistics_over(from, to, values)
       integer(int64), intent(in) :: from, to
       real(dp), intent(out) :: values(7)
-      logical, allocatable :: in_episode(:), in_step(:)
+      logical, allocatable :: in_episode(:), in_step(:), in_contact(:)
       real(dp) :: steps, span
       integer :: n
       steps = real(to - from, dp)
@@ -265,12 +269,26 @@ contains
                                               sqrt(sum(chosen**2)/size(chosen))]
       end associate
       allocate (in_step(to - from))
+      allocate (in_contact(to - from))
       do n = int(from) + 1, int(to)
          in_step(n - from) = abs(tip_impulse(n + 1)) > 0 .and. matches(tip_impulse(n + 1))
+         ! in contact: an impulse, or the springs' force (of the wanted sign) after the step
+         in_contact(n - from) = in_step(n - from) .or. (abs(tip_force(n + 1)) > 0 .and. matches(tip_force(n + 1)))
       end do
-      values(6) = count(in_step)/steps
+      values(6) = count(in_contact)/steps
       values(7) = sum(abs(tip_impulse(from + 2:to + 1)), mask=in_step)/span
    end subroutine statistics_over
+
+   !> tip_force(n + 1): the compliant stops' force at the tip (contact point 1) after step n,
+   !! from /contact/force; zeros without compliant stops.
+   subroutine tip_forces()
+      real(dp), allocatable :: force(:, :)
+      allocate (tip_force(last + 1), source=0.0_dp)
+      if (.not. compliant()) return
+      call read_real_2d(trim(file), '/contact/force', force, stat, errmsg)
+      call t%check_true('read /contact/force', stat == 0 .and. size(force, 2) == last + 1, errmsg)
+      if (stat == 0 .and. size(force, 2) == last + 1) tip_force = force(1, :)
+   end subroutine tip_forces
 
    !> The impulses pushed by the target: positive ones by the stop below, negative by the
    !! one above, any for the tip and the beam.

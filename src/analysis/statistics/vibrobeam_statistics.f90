@@ -252,12 +252,7 @@ contains
             obstacle = obstacle_of(self, c, impulse)
             call contact_sum(c, s_force, abs(impulse))
             if (events%impact(k)) call contact_sum(c, s_impacts, 1.0_dp)
-            touched(c) = .true.
-            touched(beam) = .true.
-            if (obstacle > 0) touched(self%contacts + obstacle) = .true.
-         end do
-         do k = 1, size(touched)
-            if (touched(k)) call blocks%add(target_sum(self, k, s_contact_steps), 1.0_dp)
+            call touch(c, obstacle)
          end do
          do c = 1, self%contacts
             force = abs(stepper%contact_force(c))
@@ -266,6 +261,11 @@ contains
             call blocks%add(force_sum(self, c, f_force), force)
             call blocks%add(force_sum(self, c, f_force_square), force**2)
             call blocks%add(force_sum(self, c, f_steps), 1.0_dp)
+            ! in contact with a compliant stop too (contact_fraction counts every kind of stop)
+            call touch(c, obstacle_of(self, c, stepper%contact_force(c)))
+         end do
+         do k = 1, size(touched)
+            if (touched(k)) call blocks%add(target_sum(self, k, s_contact_steps), 1.0_dp)
          end do
       end associate
       call self%poincare%sample_step(stepper%steps, reshape(events%observed, [2*self%points]), self%poincare_found, &
@@ -294,6 +294,15 @@ contains
             end if
          end do
       end subroutine force_episodes
+
+      !> Contact point `point` is in contact in this step, pushed by obstacle `by` (0: none):
+      !! so are that obstacle and the beam.
+      subroutine touch(point, by)
+         integer, intent(in) :: point, by
+         touched(point) = .true.
+         touched(beam) = .true.
+         if (by > 0) touched(self%contacts + by) = .true.
+      end subroutine touch
 
       !> Add `value` to sum quantity `q` of contact point c, of its obstacle and of the beam.
       subroutine contact_sum(point, q, value)
