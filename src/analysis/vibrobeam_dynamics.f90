@@ -211,6 +211,7 @@ contains
             outcome%max_penetration = recorder%max_penetration
             outcome%compliant = recorder%compliant
             if (outcome%compliant) outcome%peak_force = maxval(recorder%peak_force)
+            outcome%contact_time = maxval([0.0_dp, recorder%contact_time])
             summary%status = outcome%status
             summary%steps = stepper%steps
             summary%wall_seconds = meter%elapsed()

@@ -100,6 +100,7 @@ module vibrobeam_result_files
       real(dp) :: max_penetration = 0
       logical :: compliant = .false.           !! the scene has compliant stops
       real(dp) :: peak_force = 0               !! their largest |force| over every step (N)
+      real(dp) :: contact_time = 0             !! longest time a contact point spent in contact (s, /contact/fraction)
       character(len=512) :: failure = ''
       character(len=64) :: run_id = ''         !! /run run_id of the published result
       real(dp), allocatable :: omega(:)        !! kind = 'modes': the natural frequencies written (rad/s)
