@@ -13,6 +13,8 @@ module vibrobeam_ignored_values
    use vibrobeam_scene, only: scene_type, scene_variables
    use vibrobeam_namelist_scanned, only: scanned_file
    use vibrobeam_namelist_schema, only: namelist_variable, variable_index
+   use vibrobeam_scene_values, only: real_input
+   use vibrobeam_frequency_twins, only: twin_name
    implicit none
    private
    public :: ignored_values
@@ -181,19 +183,26 @@ contains
          warnings = warnings//line//new_line('a')
       end subroutine add
 
-      !> The warning for the real group.name, when given: 'value unit is ignored: reason'.
+      !> The warning for the real group.name, when given: 'value unit is ignored: reason';
+      !! a frequency given in Hz, by its twin (`vibrobeam_frequency_twins`), the same.
       subroutine given_real(group, name, value, reason)
          character(len=*), intent(in) :: group, name, reason
          real(dp), intent(in) :: value
          type(namelist_variable), allocatable :: table(:)
          type(namelist_variable) :: variable
-         character(len=:), allocatable :: unit
-         if (.not. scanned%is_given(group, name)) return
+         character(len=:), allocatable :: unit, given
+         real(dp) :: shown
+         logical :: found
+         given = name
+         shown = value
+         if (scanned%is_given(group, twin_name(name))) given = twin_name(name)
+         if (given /= name) call real_input(scene, group, given, 1, shown, found)
+         if (.not. scanned%is_given(group, given)) return
          allocate (table, source=scene_variables())
-         variable = table(variable_index(table, group, name))
+         variable = table(variable_index(table, group, given))
          unit = trim(variable%unit)
          if (len(unit) > 0) unit = ' '//unit
-         call add('&'//group//' '//name//' = '//real_text(value)//unit//' is ignored: '//reason)
+         call add('&'//group//' '//given//' = '//real_text(shown)//unit//' is ignored: '//reason)
       end subroutine given_real
 
       logical function is_swept(name)
