@@ -12,7 +12,7 @@
 !!   at t = 0, every `field_every` steps and the last step;
 !! - `write_buffers` at every flush, `finish` at the end.
 !! Memory is bounded: rows wait in fixed-size buffers (`vibrobeam_hdf5_series`), the
-!! spectrum is a streaming Welch estimate (`vibrobeam_welch`), per-point state is one
+!! spectra are streaming Welch estimates (`vibrobeam_run_spectra`), per-point state is one
 !! value per contact or observation point.
 !!
 !! Everything a continued run needs to go on as if uninterrupted goes into a checkpoint
@@ -37,7 +37,7 @@ module vibrobeam_recorder
    use vibrobeam_state_record, only: state_record
    use vibrobeam_step_observer, only: step_events
    use vibrobeam_episodes, only: episode_tracker
-   use vibrobeam_welch, only: welch_estimator
+   use vibrobeam_run_spectra, only: run_spectra
    use vibrobeam_statistics, only: run_statistics, statistics_result, window_first_step
    use vibrobeam_statistics_output, only: statistics_datasets
    implicit none
@@ -93,14 +93,13 @@ module vibrobeam_recorder
       ! a reduced model (&mesh reduction): the stepper's unknowns are q, U = T q
       type(reduced_basis), allocatable :: reduction   !! T, for field snapshots
       real(dp), allocatable :: observed_rows(:, :)   !! (r, 1 + points) u_h at the tip and points = row . q
-      type(welch_estimator) :: spectrum
+      type(run_spectra) :: spectra                   !! /spectrum: the tip's and the observation points'
       type(episode_tracker) :: episodes
       type(run_statistics) :: statistics
       type(statistics_datasets) :: statistics_files
       type(step_events) :: events
       ! streamed datasets
       type(h5_series) :: histories(history_count), point_u, point_v, field_time, field, impact_columns(5)
-      type(h5_series) :: spectrum_frequency, spectrum_amplitude
       type(h5_array) :: fraction
       ! compliant stops (docs/output.md): created only when the scene has springs
       logical :: compliant = .false.
@@ -189,7 +188,7 @@ contains
       self%observed_dofs(:, 2:) = self%point_dofs
       self%observed_weights(:, 2:) = self%point_weights
       allocate (self%events%observed(1 + size(self%point_x), 2))
-      call self%spectrum%init(self%every*scene%time%dt, last_step/self%every + 1)
+      call self%spectra%init(self%every*scene%time%dt, last_step/self%every + 1, self%point_x)
       gap = scene%output%episode_gap
       if (is_unset(gap)) gap = default_episode_gap(model)
       call self%episodes%init(stepper%contacts%x, gap, self%write_rows)
@@ -327,13 +326,7 @@ contains
       if (stat == 0) call writer%attr_real('/contact', 'max_penetration', 0.0_dp, stat, errmsg)
       if (stat == 0) call writer%attr_real('/contact', 'max_penetration_time', 0.0_dp, stat, errmsg)
       if (stat == 0) call writer%attr_int64('/impacts', 'count', 0_int64, stat, errmsg)
-      if (stat == 0) call writer%attr_real('/spectrum', 'sampling_interval', self%spectrum%dt, stat, errmsg)
-      if (stat == 0) call writer%attr_real('/spectrum', 'bin_width', 0.0_dp, stat, errmsg)
-      if (stat == 0) call writer%attr_int64('/spectrum', 'segments', 0_int64, stat, errmsg)
-      if (stat == 0) call writer%attr_int64('/spectrum', 'samples', 0_int64, stat, errmsg)
-      if (stat == 0) call writer%attr_string('/spectrum', 'window', 'hann', stat, errmsg)
-      if (stat == 0) call self%spectrum_frequency%create(writer, '/spectrum/frequency', 1, 'Hz', stat, errmsg)
-      if (stat == 0) call self%spectrum_amplitude%create(writer, '/spectrum/tip_amplitude', 1, 'm', stat, errmsg)
+      if (stat == 0) call self%spectra%create(writer, stat, errmsg)
       if (stat == 0) call self%episodes%create_datasets(writer, stat, errmsg)
       if (stat == 0 .and. self%compliant) then
          call self%contact_potential%create(writer, '/energy/contact_potential', 1, 'J', stat, errmsg)
@@ -507,7 +500,8 @@ contains
          if (stat /= 0) return
       end if
       ! the spectrum takes the uniformly spaced rows only (not a last row off the grid)
-      if (mod(stepper%steps, self%every) == 0) call self%spectrum%add(row(h_tip_u), stat, errmsg)
+      if (mod(stepper%steps, self%every) == 0) call self%spectra%add(row(h_tip_u), self%events%observed(2:, 1), stat, &
+                                                                      errmsg)
       if (stat /= 0) return
       self%tip_impulse = 0
       self%last_output_step = stepper%steps
@@ -574,9 +568,6 @@ contains
       class(time_stepper), intent(in) :: stepper
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp), allocatable :: frequency(:), amplitude(:)
-      integer(int64) :: segments
-      real(dp) :: width
       integer :: k
       call self%statistics_files%finish(writer, self%window_statistics(stepper), stat, errmsg)
       if (stat == 0) call self%episodes%finish(writer, stat, errmsg)
@@ -589,23 +580,7 @@ contains
       if (stat == 0) call writer%rewrite_attr('/impacts', 'count', self%impacts, stat, errmsg)
       if (stat == 0 .and. self%compliant) call self%peak_force_array%write_reals(self%peak_force, stat, errmsg)
       if (stat /= 0) return
-      call self%spectrum%spectrum(frequency, amplitude, segments, width, stat, errmsg)
-      if (stat /= 0) then
-         errmsg = 'tip spectrum: '//trim(errmsg)
-         return
-      end if
-      call writer%rewrite_attr('/spectrum', 'bin_width', width, stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr('/spectrum', 'segments', segments, stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr('/spectrum', 'samples', self%spectrum%samples, stat, errmsg)
-      if (stat /= 0) return
-      ! the spectrum's datasets were created empty with the others (SWMR: no new objects)
-      do k = 1, size(frequency)
-         call self%spectrum_frequency%append(frequency(k:k), stat, errmsg)
-         if (stat == 0) call self%spectrum_amplitude%append(amplitude(k:k), stat, errmsg)
-         if (stat /= 0) return
-      end do
-      call self%spectrum_frequency%write(stat, errmsg)
-      if (stat == 0) call self%spectrum_amplitude%write(stat, errmsg)
+      call self%spectra%finish(writer, stat, errmsg)
       do k = 1, history_count
          call self%histories(k)%close()
       end do
@@ -623,8 +598,7 @@ contains
          call self%contact_force%close()
          call self%peak_force_array%close()
       end if
-      call self%spectrum_frequency%close()
-      call self%spectrum_amplitude%close()
+      call self%spectra%close()
    end subroutine finish
 
    !> Everything a continued run needs (module documentation).
@@ -637,7 +611,7 @@ contains
       call record%put_logicals('recorder.in_contact', self%in_contact)
       call record%put_reals('recorder.contact_time', self%contact_time)
       if (self%compliant) call record%put_reals('recorder.peak_force', self%peak_force)
-      call self%spectrum%save_state(record)
+      call self%spectra%save_state(record)
       call self%episodes%save_state(record)
       call self%statistics%save_state(record)
    end subroutine save_state
@@ -655,7 +629,7 @@ contains
       if (stat == 0) call record%get_logicals('recorder.in_contact', self%in_contact, stat, errmsg)
       if (stat == 0) call record%get_reals('recorder.contact_time', self%contact_time, stat, errmsg)
       if (stat == 0 .and. self%compliant) call record%get_reals('recorder.peak_force', self%peak_force, stat, errmsg)
-      if (stat == 0) call self%spectrum%restore_state(record, stat, errmsg)
+      if (stat == 0) call self%spectra%restore_state(record, stat, errmsg)
       if (stat == 0) call self%episodes%restore_state(record, stat, errmsg)
       if (stat == 0) call self%statistics%restore_state(record, stat, errmsg)
       if (stat /= 0) return

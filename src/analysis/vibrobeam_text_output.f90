@@ -356,11 +356,9 @@ contains
          end do
          call close_sink(sink)
          if (stat /= 0 .or. interrupted) return
-         call open_sink(sink, 'spectrum', 'frequency (Hz)  amplitude of the tip displacement (m): single-sided, '// &
-                        'mean removed, Hann window, Welch average over segments of 2^16 samples when longer')
-         call stream_rows(sink, [character(len=40) :: '/spectrum/frequency', '/spectrum/tip_amplitude'], [1, 1], &
-                          bins, 'wide')
-         call close_sink(sink)
+         call spectrum_file(bins)
+         if (stat /= 0 .or. interrupted) return
+         call poincare_file()
          if (stat /= 0 .or. interrupted) return
          call file%read_reals('/contact/x', x, stat, errmsg)
          if (stat == 0) call file%read_reals('/contact/lower', lower, stat, errmsg)
@@ -380,6 +378,55 @@ contains
          end do
          call close_sink(sink)
       end subroutine dynamics_files
+
+      !> STEM_spectrum.dat: frequency (Hz), the tip's amplitude, frequency (rad/s), and the
+      !! amplitude at each observation point (those a file of an earlier version lacks are
+      !! left out).
+      subroutine spectrum_file(bins)
+         integer(int64), intent(in) :: bins
+         type(text_sink) :: sink
+         character(len=40), allocatable :: paths(:)
+         integer, allocatable :: widths(:)
+         real(dp), allocatable :: x(:)
+         character(len=:), allocatable :: columns
+         paths = [character(len=40) :: '/spectrum/frequency', '/spectrum/tip_amplitude']
+         widths = [1, 1]
+         columns = 'frequency (Hz)  amplitude of the tip displacement (m)'
+         if (file%exists('/spectrum/frequency_rad_s')) then
+            paths = [character(len=40) :: paths, '/spectrum/frequency_rad_s']
+            widths = [widths, 1]
+            columns = columns//'  frequency (rad/s)'
+         end if
+         if (rows_of('/spectrum/point_amplitude') == bins .and. bins > 0) then
+            call file%read_reals('/points/x', x, stat, errmsg)
+            if (stat /= 0) return
+            paths = [character(len=40) :: paths, '/spectrum/point_amplitude']
+            widths = [widths, size(x)]
+            columns = columns//'  then the amplitude (m) at each observation point x = '//points_text(x)//' m'
+         end if
+         call open_sink(sink, 'spectrum', columns//': single-sided, mean removed, Hann window, Welch average over '// &
+                        'segments of 2^16 samples when longer')
+         call stream_rows(sink, paths, widths, bins, 'wide')
+         call close_sink(sink)
+      end subroutine spectrum_file
+
+      !> STEM_poincare.dat of a run with Poincare samples (docs/statistics.md): time, then u
+      !! at the tip and at each observation point, then v at each.
+      subroutine poincare_file()
+         type(text_sink) :: sink
+         real(dp), allocatable :: x(:)
+         integer(int64) :: samples
+         samples = rows_of('/statistics/poincare/time')
+         if (samples == 0 .or. stat /= 0) return
+         call file%read_reals('/statistics/points/x', x, stat, errmsg)
+         if (stat /= 0) return
+         call open_sink(sink, 'poincare', 't (s)  then u (m) at each observation point x = '//points_text(x)// &
+                        ' m (the tip first), then v (m/s) at each: the state at phase 0 of the forcing, once per '// &
+                        'period of the statistics window')
+         call stream_rows(sink, [character(len=40) :: '/statistics/poincare/time', '/statistics/poincare/displacement', &
+                                 '/statistics/poincare/velocity'], [1, size(x), size(x)], samples, 'wide')
+         call close_sink(sink)
+      end subroutine poincare_file
 
       !> A sweep file (docs/output.md, "Sweep file"): STEM_sweep.dat, one row per point,
       !! and STEM_poincare.dat, one row per kept Poincare sample; read a block of

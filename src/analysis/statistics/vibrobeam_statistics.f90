@@ -10,7 +10,7 @@
 !! Sub-windows for standard errors: `vibrobeam_batch_blocks`. Which statistics:
 !! `vibrobeam_statistics_layout`.
 module vibrobeam_statistics
-   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_state_record, only: state_record
    use vibrobeam_step_observer, only: step_observer, step_events
@@ -548,10 +548,11 @@ contains
       !! amplitudes of the bin and its two neighbours (none at the last bin).
       subroutine peaks(frequency, amplitude)
          real(dp), intent(in) :: frequency(:), amplitude(:)
-         integer :: j, i, f_at, a_at
+         integer :: j, i, f_at, a_at, w_at
          real(dp) :: left, middle, right, curvature, shift
          f_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_frequency'))%offset
          a_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_amplitude'))%offset
+         w_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_frequency_rad_s'))%offset
          associate (found => spectral_peaks(frequency, amplitude, peak_count, 0.0_dp))
          do j = 1, size(found)
             i = found(j)
@@ -567,6 +568,8 @@ contains
             outcome%values(f_at + j) = frequency(i) + shift*outcome%bin_width
             outcome%values(a_at + j) = middle - 0.25_dp*(left - right)*shift
          end do
+         ! the same peaks in rad/s
+         outcome%values(w_at + 1:w_at + size(found)) = 2*pi*outcome%values(f_at + 1:f_at + size(found))
          end associate
       end subroutine peaks
    end function result

@@ -21,7 +21,7 @@
 !! the windows as given, steady_tolerance, keep_runs, threads, ranks, messages (one line
 !! per point with a message).
 module vibrobeam_sweep_file
-   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_text, only: integer_text
    use vibrobeam_scene, only: scene_type
    use vibrobeam_model, only: beam_model
@@ -97,7 +97,7 @@ contains
       integer, parameter :: t_parameter = 1, t_parameter2 = 2, t_direction = 3, t_line = 4, t_task = 5, &
                             t_status = 6, t_start_point = 7, t_settled = 8, t_batches = 9, t_batch_steps = 10, &
                             t_poincare_samples = 11, t_transient = 12, t_window = 13, t_wall = 14, t_bin_width = 15, &
-                            tables = 15
+                            t_bin_width_rad_s = 16, tables = 16
       integer, allocatable :: kept(:)
       integer(int64), allocatable :: poincare_first(:)
       integer(int64) :: total
@@ -175,6 +175,7 @@ contains
          if (stat == 0) call files%h5%write_int_1d('/sweep/statistics/contacts/upper_obstacle', upper_obstacle, &
                                                    stat=stat, errmsg=errmsg)
          call real_table(t_bin_width, '/sweep/statistics/spectrum/bin_width', 'Hz')
+         call real_table(t_bin_width_rad_s, '/sweep/statistics/spectrum/bin_width_rad_s', 'rad/s')
          do e = 1, size(layout%entries)
             if (stat /= 0) return
             associate (entry => layout%entries(e))
@@ -247,6 +248,7 @@ contains
             call put(t_window, first, record(r_measure_steps, 1:count)*record(r_dt, 1:count))
             call put(t_wall, first, record(r_wall, 1:count))
             call put(t_bin_width, first, record(r_bin_width, 1:count))
+            call put(t_bin_width_rad_s, first, 2*pi*record(r_bin_width, 1:count))
             do e = 1, size(layout%entries)
                if (stat /= 0) return
                first_value = record_head + layout%entries(e)%offset + 1
