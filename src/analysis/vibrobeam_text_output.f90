@@ -389,8 +389,8 @@ contains
          integer, allocatable :: widths(:)
          real(dp), allocatable :: x(:)
          character(len=:), allocatable :: columns
-         paths = [character(len=40) :: '/spectrum/frequency', '/spectrum/tip_amplitude']
-         widths = [1, 1]
+         allocate (paths, source=[character(len=40) :: '/spectrum/frequency', '/spectrum/tip_amplitude'])
+         allocate (widths, source=[1, 1])
          columns = 'frequency (Hz)  amplitude of the tip displacement (m)'
          if (file%exists('/spectrum/frequency_rad_s')) then
             paths = [character(len=40) :: paths, '/spectrum/frequency_rad_s']

@@ -112,7 +112,7 @@ contains
       type(scene_entry), allocatable :: entries(:)
       integer :: j
       listed = -1
-      entries = scene_entries(scene)
+      allocate (entries, source=scene_entries(scene))
       do j = 1, size(entries)
          if (entries(j)%name == name) listed = entries(j)%real_value
       end do

@@ -182,7 +182,7 @@ contains
       k = record%find('spectrum.point_x')
       self%points_whole = k > 0
       if (.not. self%points_whole) return
-      saved_x = record%items(k)%reals
+      allocate (saved_x, source=record%items(k)%reals)
       self%points_whole = size(saved_x) == size(self%point_x)
       if (self%points_whole) self%points_whole = all(abs(saved_x - self%point_x) <= 0)
       if (.not. self%points_whole) return
