@@ -1,21 +1,37 @@
 # Response of a sweep against its parameter: RMS tip displacement, impact and episode
-# rates, impulse per episode, power dissipated; the up branch, the down branch and
-# independent points drawn apart, each value with its standard error (docs/statistics.md).
+# rates, impulse per episode, power dissipated, each value with its standard error
+# (docs/statistics.md). One parameter: the up branch, the down branch and independent
+# points drawn apart. Two parameters (a map): each line of the second parameter in its own
+# colour with its value in the key, the down branch of a line dashed.
 # usage: gnuplot -e "stem='results/tube_frequency_sweep'" scripts/plot_sweep_response.gp
+#        optional (scripts/plot_sweep.sh sets them from the sweep file): -e "xscale=173.4"
+#        divides the parameter axis (a normalised frequency), -e "xlabel='...'" and
+#        -e "ylabel2='...'" name the parameters; -e "text_terminal=1" draws as text into
+#        stem_response.txt (for the tests)
 # reads  stem_sweep.dat (docs/output.md, "Text files")
 # writes stem_response.png
 # needs: sweep
 if (!exists("stem")) stem = 'results/sweep'
+if (!exists("xscale")) xscale = 1
 file = stem.'_sweep.dat'
-set terminal pngcairo size 1200,850 noenhanced
-set output stem.'_response.png'
-# the parameter's name and unit, from the column header (line 2)
-label = system("sed -n '2s/.*parameter: \\([^ ]*\\) (\\([^)]*\\)).*/\\1 (\\2)/p' '".file."'")
+if (exists("text_terminal")) {
+   # as text, STEM_response.txt (the tests read the keys)
+   set terminal dumb size 200,80
+   set output stem.'_response.txt'
+} else {
+   set terminal pngcairo size 1200,850 noenhanced
+   set output stem.'_response.png'
+}
+# the parameter's name and unit, from the column header (line 2) unless given
+if (!exists("xlabel")) xlabel = system("sed -n '2s/.*parameter: \\([^ ]*\\) (\\([^)]*\\)).*/\\1 (\\2)/p' '".file."'")
+if (!exists("ylabel2")) ylabel2 = system("sed -n '2s/.*parameter2: \\([^ ]*\\) (\\([^)]*\\)).*/\\1 (\\2)/p' '".file."'")
 set multiplot layout 2,2 title 'Sweep: '.stem
 set grid
-set xlabel label
+set xlabel xlabel
 set key top left
-# columns: 3 direction, 4 parameter, 6 status; value, error pairs from 9 (docs/output.md)
+# columns: 2 line, 3 direction, 4 parameter, 5 parameter2, 6 status; value, error pairs
+# from 9 (docs/output.md)
+x = '(column(4)/xscale)'
 series(value, wanted) = (column(6) == 0 && column(3) == wanted) ? column(value) : NaN
 up = '#d62728'
 down = '#1f77b4'
@@ -28,23 +44,75 @@ n_alone = points('$3 == 0')
 t_up(s) = n_up > 0 ? s : ''
 t_down(s) = n_down > 0 ? s : ''
 t_alone(s) = n_alone > 0 ? s : ''
+# the lines of a map and the value of the second parameter on each
+lines = int(system("awk '!/^#/ && NF {if ($2 > n) n = $2} END {print n + 0}' '".file."'"))
+map = lines > 1 || strlen(ylabel2) > 0
+line_value(j) = real(system("awk '!/^#/ && NF && $2 == ".j." {print $5; exit}' '".file."'"))
+# a colour per line, from a palette that stays distinguishable (ColorBrewer Set1-like)
+line_colour(j) = word('#e41a1c #377eb8 #4daf4a #984ea3 #ff7f00 #a65628 #f781bf #999999 #17becf #bcbd22', \
+                      1 + (j - 1) % 10)
+on_line(value, j, wanted) = (column(6) == 0 && column(2) == j && column(3) == wanted) ? column(value) : NaN
+# the key names the second parameter: 'obstacles.level_from(1) = 5e-05 m' from its label
+name2 = strlen(ylabel2) > 0 ? ylabel2 : 'line'
+unit2 = (strstrt(name2, ' (') > 0) ? name2[strstrt(name2, ' (') + 2:strlen(name2) - 1] : ''
+name2 = (strstrt(name2, ' (') > 0) ? name2[1:strstrt(name2, ' (') - 1] : name2
+line_title(j, wanted) = (wanted >= 0 && points(sprintf('$2 == %d && $3 == %d', j, wanted)) > 0) ? \
+                        sprintf('%s = %g %s', name2, line_value(j), unit2) : \
+                        (wanted < 0 && j == 1 && n_down > 0 ? 'down branches (dashed)' : '')
+
+if (map) {
+   # one key, in the first panel: a colour per line of the map
+   set key top left font ',9' spacing 0.9 opaque box
+   set ylabel 'RMS tip displacement (mm)'
+   plot for [j = 1:lines] file using @x:(on_line(9, j, 1)*1e3):($10*1e3) with yerrorlines \
+           lc rgb line_colour(j) pt 7 title line_title(j, 1), \
+        for [j = 1:lines] '' using @x:(on_line(9, j, 0)*1e3):($10*1e3) with yerrorlines \
+           lc rgb line_colour(j) pt 9 title line_title(j, 0), \
+        for [j = 1:lines] '' using @x:(on_line(9, j, -1)*1e3):($10*1e3) with yerrorlines \
+           lc rgb line_colour(j) dt 2 pt 5 title line_title(j, -1)
+   unset key
+   set ylabel 'impacts per second (1/s)'
+   plot for [j = 1:lines] file using @x:(on_line(13, j, 1)):14 with yerrorlines lc rgb line_colour(j) pt 7 \
+           title line_title(j, 1), \
+        for [j = 1:lines] '' using @x:(on_line(13, j, 0)):14 with yerrorlines lc rgb line_colour(j) pt 9 \
+           title line_title(j, 0), \
+        for [j = 1:lines] '' using @x:(on_line(13, j, -1)):14 with yerrorlines lc rgb line_colour(j) dt 2 pt 5 \
+           title line_title(j, -1)
+   set ylabel 'mean impulse per contact episode (N s)'
+   plot for [j = 1:lines] file using @x:(on_line(17, j, 1)):18 with yerrorlines lc rgb line_colour(j) pt 7 \
+           title line_title(j, 1), \
+        for [j = 1:lines] '' using @x:(on_line(17, j, 0)):18 with yerrorlines lc rgb line_colour(j) pt 9 \
+           title line_title(j, 0), \
+        for [j = 1:lines] '' using @x:(on_line(17, j, -1)):18 with yerrorlines lc rgb line_colour(j) dt 2 pt 5 \
+           title line_title(j, -1)
+   set ylabel 'power dissipated, in all (W)'
+   plot for [j = 1:lines] file using @x:(on_line(29, j, 1)):30 with yerrorlines lc rgb line_colour(j) pt 7 \
+           title line_title(j, 1), \
+        for [j = 1:lines] '' using @x:(on_line(29, j, 0)):30 with yerrorlines lc rgb line_colour(j) pt 9 \
+           title line_title(j, 0), \
+        for [j = 1:lines] '' using @x:(on_line(29, j, -1)):30 with yerrorlines lc rgb line_colour(j) dt 2 pt 5 \
+           title line_title(j, -1)
+   unset multiplot
+   exit
+}
+
 set ylabel 'RMS tip displacement (mm)'
-plot file using 4:(series(9, 1)*1e3):($10*1e3) with yerrorlines lc rgb up pt 7 title t_up('up'), \
-     '' using 4:(series(9, -1)*1e3):($10*1e3) with yerrorlines lc rgb down pt 5 title t_down('down'), \
-     '' using 4:(series(9, 0)*1e3):($10*1e3) with yerrorlines lc rgb alone pt 9 title t_alone('independent')
+plot file using @x:(series(9, 1)*1e3):($10*1e3) with yerrorlines lc rgb up pt 7 title t_up('up'), \
+     '' using @x:(series(9, -1)*1e3):($10*1e3) with yerrorlines lc rgb down pt 5 title t_down('down'), \
+     '' using @x:(series(9, 0)*1e3):($10*1e3) with yerrorlines lc rgb alone pt 9 title t_alone('independent')
 set ylabel 'impacts and episodes per second (1/s)'
-plot file using 4:(series(13, 1)):14 with yerrorlines lc rgb up pt 7 title t_up('impacts, up'), \
-     '' using 4:(series(13, -1)):14 with yerrorlines lc rgb down pt 5 title t_down('impacts, down'), \
-     '' using 4:(series(13, 0)):14 with yerrorlines lc rgb alone pt 9 title t_alone('impacts, independent'), \
-     '' using 4:(series(15, 1)):16 with yerrorlines lc rgb up dt 2 pt 6 title t_up('episodes, up'), \
-     '' using 4:(series(15, -1)):16 with yerrorlines lc rgb down dt 2 pt 4 title t_down('episodes, down'), \
-     '' using 4:(series(15, 0)):16 with yerrorlines lc rgb alone dt 2 pt 8 title t_alone('episodes, independent')
+plot file using @x:(series(13, 1)):14 with yerrorlines lc rgb up pt 7 title t_up('impacts, up'), \
+     '' using @x:(series(13, -1)):14 with yerrorlines lc rgb down pt 5 title t_down('impacts, down'), \
+     '' using @x:(series(13, 0)):14 with yerrorlines lc rgb alone pt 9 title t_alone('impacts, independent'), \
+     '' using @x:(series(15, 1)):16 with yerrorlines lc rgb up dt 2 pt 6 title t_up('episodes, up'), \
+     '' using @x:(series(15, -1)):16 with yerrorlines lc rgb down dt 2 pt 4 title t_down('episodes, down'), \
+     '' using @x:(series(15, 0)):16 with yerrorlines lc rgb alone dt 2 pt 8 title t_alone('episodes, independent')
 set ylabel 'mean impulse per contact episode (N s)'
-plot file using 4:(series(17, 1)):18 with yerrorlines lc rgb up pt 7 title t_up('up'), \
-     '' using 4:(series(17, -1)):18 with yerrorlines lc rgb down pt 5 title t_down('down'), \
-     '' using 4:(series(17, 0)):18 with yerrorlines lc rgb alone pt 9 title t_alone('independent')
+plot file using @x:(series(17, 1)):18 with yerrorlines lc rgb up pt 7 title t_up('up'), \
+     '' using @x:(series(17, -1)):18 with yerrorlines lc rgb down pt 5 title t_down('down'), \
+     '' using @x:(series(17, 0)):18 with yerrorlines lc rgb alone pt 9 title t_alone('independent')
 set ylabel 'power dissipated, in all (W)'
-plot file using 4:(series(29, 1)):30 with yerrorlines lc rgb up pt 7 title t_up('up'), \
-     '' using 4:(series(29, -1)):30 with yerrorlines lc rgb down pt 5 title t_down('down'), \
-     '' using 4:(series(29, 0)):30 with yerrorlines lc rgb alone pt 9 title t_alone('independent')
+plot file using @x:(series(29, 1)):30 with yerrorlines lc rgb up pt 7 title t_up('up'), \
+     '' using @x:(series(29, -1)):30 with yerrorlines lc rgb down pt 5 title t_down('down'), \
+     '' using @x:(series(29, 0)):30 with yerrorlines lc rgb alone pt 9 title t_alone('independent')
 unset multiplot
