@@ -83,7 +83,8 @@ program vibrobeam_main
    if (check_only) then
       if (transport_rank() == 0) then
          call print_resolved_scene()
-         if (sweep%present) call write_sweep_check(output_unit, scene, sweep, sweep_threads(), transport_ranks(), resume)
+         if (sweep%present) call write_sweep_check(output_unit, scene, sweep, sweep_threads(), transport_ranks(), resume, &
+                                                 prepared%contacts%count)
       end if
       call finish(exit_ok)
    end if
@@ -240,9 +241,9 @@ contains
                is_unset(scene%mesh%reduction_frequency))
          end associate
       end if
-      call make_check_report(scene, model, report, stat, errmsg)
+      call make_check_report(scene, model, report, stat, errmsg, contacts%count)
       if (stat /= 0) call fail(exit_numerical_failure, errmsg)
-      write (output_unit, '(a)', advance='no') check_report_text(scene, report, advice=.not. sweep%present)
+      write (output_unit, '(a)', advance='no') check_report_text(scene, report, sweep=sweep%present)
       end associate
    end subroutine print_resolved_scene
 
