@@ -97,11 +97,11 @@ contains
       call t%check_close(name//' = 300 as set', value_of(scene, group, name), 300.0_dp, 0.0_dp)
    end subroutine check_setting
 
-   real(dp) function value_of(scene, group, name)
+   real(dp) function value_of(scene, group, name) result(value)
       type(scene_type), intent(in) :: scene
       character(len=*), intent(in) :: group, name
       logical :: found
-      call real_input(scene, group, name, 1, value_of, found)
+      call real_input(scene, group, name, 1, value, found)
       call t%check_true(group//'.'//name//' found', found)
    end function value_of
 
