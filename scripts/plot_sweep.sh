@@ -72,7 +72,8 @@ if [ "$normalise" = 1 ]; then
     scale=$(awk -v k2="$k2" -v L="$length" -v u="$unit" 'BEGIN { w = 1.8751040687119611664^2 * sqrt(k2) / L^2;
       if (u == "Hz") w = w / (2 * atan2(0, -1)); printf "%.17g", w }')
     what=$([ "$unit" = Hz ] && echo "f_1" || echo "omega_1")
-    label="$name / $what ($what = $(printf '%.6g' "$scale") $unit, first natural frequency of the beam)"
+    # short enough for the panels of the response plot (the first natural frequency of the beam)
+    label="$name / $what ($what = $(printf '%.6g' "$scale") $unit)"
     echo "plot_sweep: the parameter axis over $what = $scale $unit"
   else
     value=$(sed -n 's/^\([-+0-9.eE]*\).*/\1/p' <<< "$reference"); given=${reference#"$value"}

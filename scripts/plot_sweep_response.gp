@@ -61,8 +61,10 @@ line_title(j, wanted) = (wanted >= 0 && points(sprintf('$2 == %d && $3 == %d', j
                         (wanted < 0 && j == 1 && n_down > 0 ? 'down branches (dashed)' : '')
 
 if (map) {
-   # one key, in the first panel: a colour per line of the map
-   set key top left font ',9' spacing 0.9 opaque box
+   # one key, in the first panel: a colour per line of the map, in room left above the
+   # data (about 7 % of the panel per line of the key) so that it hides none of them
+   set key top left font ',9' spacing 0.9 box
+   set offsets 0, 0, graph (lines < 12 ? 0.07*lines + 0.05 : 0.9), 0
    set ylabel 'RMS tip displacement (mm)'
    plot for [j = 1:lines] file using @x:(on_line(9, j, 1)*1e3):($10*1e3) with yerrorlines \
            lc rgb line_colour(j) pt 7 title line_title(j, 1), \
@@ -71,6 +73,7 @@ if (map) {
         for [j = 1:lines] '' using @x:(on_line(9, j, -1)*1e3):($10*1e3) with yerrorlines \
            lc rgb line_colour(j) dt 2 pt 5 title line_title(j, -1)
    unset key
+   set offsets 0, 0, 0, 0
    set ylabel 'impacts per second (1/s)'
    plot for [j = 1:lines] file using @x:(on_line(13, j, 1)):14 with yerrorlines lc rgb line_colour(j) pt 7 \
            title line_title(j, 1), \
