@@ -120,7 +120,7 @@ contains
          text = text//new_line('a')
       end do
       text = text//'highest frequency of the discrete model ('//integer_text(report%unknowns)// &
-             ' unknowns): omega_max = '//g(report%omega_max)//' rad/s'
+             ' unknowns): omega_max = '//g(report%omega_max)//' rad/s, f_max = '//g(report%omega_max/(2*pi))//' Hz'
       if (report%stepped) text = text//', omega_max*dt = '//g(report%omega_max_dt)
       text = text//new_line('a')
       single_run = .true.

@@ -6,7 +6,7 @@
 !! (docs/output.md, "Exit status").
 program vibrobeam_main
    use, intrinsic :: iso_c_binding, only: c_int
-   use vibrobeam_kinds, only: dp, error_unit, output_unit
+   use vibrobeam_kinds, only: dp, pi, error_unit, output_unit
    use vibrobeam_status, only: exit_ok, exit_other_error, exit_invalid_input, exit_numerical_failure, &
                                exit_interrupted, message_length, stat_numerical_failure
    use vibrobeam_version, only: version_string
@@ -234,10 +234,10 @@ contains
                reduction%boundary + reduction%modes, ' unknowns (', reduction%boundary, &
                ' contact displacement'//plural(reduction%boundary)//', ', reduction%modes, &
                ' fixed-interface mode'//plural(reduction%modes)//')'
-            if (reduction%modes > 0) write (output_unit, '(a,es12.5,a)') '  highest fixed-interface mode kept: ', &
-               reduction%omega(reduction%modes), ' rad/s'
-            if (reduction%cutoff > 0) write (output_unit, '(a,es12.5,a)') '  cut-off: ', reduction%cutoff, &
-               ' rad/s'//merge(' (default)', '          ', &
+            if (reduction%modes > 0) write (output_unit, '(a,es12.5,a,es12.5,a)') '  highest fixed-interface mode kept: ', &
+               reduction%omega(reduction%modes), ' rad/s, ', reduction%omega(reduction%modes)/(2*pi), ' Hz'
+            if (reduction%cutoff > 0) write (output_unit, '(a,es12.5,a,es12.5,a)') '  cut-off: ', reduction%cutoff, &
+               ' rad/s, ', reduction%cutoff/(2*pi), ' Hz'//merge(' (default)', '          ', &
                is_unset(scene%mesh%reduction_frequency))
          end associate
       end if
