@@ -109,21 +109,21 @@ contains
    subroutine observe_step(self, stepper, events, stat, errmsg)
       class(episode_tracker), intent(inout) :: self
       class(time_stepper), intent(in) :: stepper
-      type(step_events), intent(in) :: events
+      type(step_events), intent(inout) :: events
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp) :: t
       integer :: k, c
       stat = 0
       errmsg = ''
-      t = stepper%impulse_time
+      t = stepper%report%impulse_time
       associate (touched => self%touched)
       touched = .false.
       self%closed_count = 0
       self%opened = .false.
-      do k = 1, stepper%active_count
-         c = stepper%active(k)
-         if (abs(stepper%impulse(k)) <= 0) cycle
+      do k = 1, stepper%report%active_count
+         c = stepper%report%active(k)
+         if (abs(stepper%report%impulse(k)) <= 0) cycle
          touched(c) = .true.
          if (events%impact(k)) then
             if (self%open(c) .and. t - self%last_impact(c) >= self%gap) then
@@ -140,10 +140,10 @@ contains
             end if
             self%impacts(c) = self%impacts(c) + 1
             self%last_impact(c) = t
-            self%approach(c) = max(self%approach(c), abs(stepper%velocity_before(k)))
+            self%approach(c) = max(self%approach(c), abs(stepper%report%velocity_before(k)))
          end if
          if (self%open(c)) then
-            self%impulse(c) = self%impulse(c) + stepper%impulse(k)
+            self%impulse(c) = self%impulse(c) + stepper%report%impulse(k)
             self%last_impulse(c) = t
          end if
       end do
@@ -151,7 +151,7 @@ contains
       do k = 1, stepper%contacts%springs%count
          c = stepper%contacts%springs%point(k)
          if (touched(c)) cycle   ! a rigid impulse this step, or a point seen already
-         if (abs(stepper%contact_force(c)) > 0) then
+         if (abs(stepper%report%contact_force(c)) > 0) then
             touched(c) = .true.
             if (.not. self%open(c)) then
                self%open(c) = .true.
@@ -162,7 +162,7 @@ contains
                self%approach(c) = abs(contact_value(stepper%contacts, c, stepper%v))
                self%impacts(c) = 1
             end if
-            self%impulse(c) = self%impulse(c) + stepper%dt*stepper%contact_force(c)
+            self%impulse(c) = self%impulse(c) + stepper%dt*stepper%report%contact_force(c)
             self%last_impulse(c) = t
             self%last_impact(c) = t
          else if (self%open(c)) then
@@ -178,6 +178,11 @@ contains
          end if
       end do
       end associate
+      ! what the episodes decided, for the observers after them (the statistics)
+      events%closed_count = self%closed_count
+      events%closed_point = self%closed_point
+      events%closed_impulse = self%closed_impulse
+      events%opened = self%opened
    contains
       subroutine close_episode(point, still_open)
          integer, intent(in) :: point

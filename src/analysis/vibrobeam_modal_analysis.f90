@@ -3,9 +3,9 @@
 !! result file and published (docs/output.md, "Natural modes"), and the frequencies as
 !! the run prints them (`frequencies_text`).
 module vibrobeam_modal_analysis
-   use vibrobeam_status, only: stat_ok
+   use vibrobeam_status, only: stat_ok, outcome_interrupted
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene
+   use vibrobeam_problem, only: run_problem
    use vibrobeam_modes, only: compute_modes
    use vibrobeam_result_files, only: result_files, run_summary, run_outcome
    use vibrobeam_progress, only: progress_meter
@@ -29,7 +29,7 @@ contains
    !! an interruption is reported in `outcome%status` ('interrupted').
    subroutine run_modal(scene, prepared, outcome, stat, errmsg)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(in) :: prepared
+      type(run_problem), intent(in) :: prepared
       type(run_outcome), intent(out) :: outcome
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
@@ -43,7 +43,7 @@ contains
       call files%open(scene, prepared%model, stat, errmsg)
       if (stat == stat_ok) call files%write_modes(omega, shapes, stat, errmsg)
       summary%wall_seconds = meter%elapsed()
-      if (interrupt_requested()) summary%status = 'interrupted'
+      if (interrupt_requested()) summary%status = outcome_interrupted
       call files%finish(summary, meter, outcome%text_skipped, stat, errmsg)
       if (stat /= stat_ok) return
       outcome%status = summary%status

@@ -32,8 +32,11 @@ module vibrobeam_recorder
    use vibrobeam_reduction, only: reduced_basis
    use vibrobeam_contact_set, only: contact_value
    use vibrobeam_time_stepper, only: time_stepper
+   use vibrobeam_problem, only: run_problem
    use vibrobeam_hdf5, only: h5_writer
-   use vibrobeam_hdf5_series, only: h5_series, h5_array
+   use vibrobeam_histories, only: run_histories, history_paths, history_count, h_time, h_tip_u, h_tip_v, &
+      h_tip_reaction, h_tip_impulse, h_kinetic, h_elastic, h_total, h_work, h_dissipated, h_impacts, h_damping, &
+      h_numerical, h_balance, h_penetration
    use vibrobeam_state_record, only: state_record
    use vibrobeam_step_observer, only: step_events
    use vibrobeam_episodes, only: episode_tracker
@@ -43,22 +46,6 @@ module vibrobeam_recorder
    implicit none
    private
    public :: dynamics_recorder, default_episode_gap, history_paths
-
-   !> The histories sampled at every output time, in the order of a sample row.
-   integer, parameter :: history_count = 15
-   integer, parameter :: h_time = 1, h_tip_u = 2, h_tip_v = 3, h_tip_reaction = 4, h_tip_impulse = 5, &
-                         h_kinetic = 6, h_elastic = 7, h_total = 8, h_work = 9, h_dissipated = 10, &
-                         h_impacts = 11, h_damping = 12, h_numerical = 13, h_balance = 14, h_penetration = 15
-   character(len=*), parameter :: history_paths(history_count) = [character(len=40) :: '/time', &
-      '/tip/displacement', '/tip/velocity', '/tip/reaction', '/tip/impulse', '/energy/kinetic', &
-      '/energy/elastic', '/energy/total', '/energy/work', '/energy/dissipated', '/energy/dissipated_impacts', &
-      '/energy/dissipated_damping', '/energy/dissipated_numerical', '/energy/balance', '/contact/penetration']
-   character(len=*), parameter :: history_units(history_count) = [character(len=8) :: 's', 'm', 'm/s', 'N', &
-      'N s', 'J', 'J', 'J', 'J', 'J', 'J', 'J', 'J', 'J', 'm']
-   !> Columns of /impacts.
-   character(len=*), parameter :: impact_paths(5) = [character(len=32) :: '/impacts/time', '/impacts/x', &
-      '/impacts/impulse', '/impacts/velocity_before', '/impacts/velocity_after']
-   character(len=*), parameter :: impact_units(5) = [character(len=8) :: 's', 'm', 'N s', 'm/s', 'm/s']
 
    type :: dynamics_recorder
       integer(int64) :: every = 1, field_every = 1   !! output intervals (steps)
@@ -98,13 +85,8 @@ module vibrobeam_recorder
       type(run_statistics) :: statistics
       type(statistics_datasets) :: statistics_files
       type(step_events) :: events
-      ! streamed datasets
-      type(h5_series) :: histories(history_count), point_u, point_v, field_time, field, impact_columns(5)
-      type(h5_array) :: fraction
-      ! compliant stops (docs/output.md): created only when the scene has springs
-      logical :: compliant = .false.
-      type(h5_series) :: contact_potential, contact_damping, contact_force
-      type(h5_array) :: peak_force_array
+      type(run_histories) :: files                   !! the datasets of the result file
+      logical :: compliant = .false.                 !! the scene has compliant stops (docs/output.md)
       real(dp), allocatable :: peak_force(:)         !! largest |force| per contact point over every step (N)
    contains
       procedure :: init => recorder_init
@@ -114,6 +96,7 @@ module vibrobeam_recorder
       procedure :: field_due
       procedure :: sample
       procedure :: sample_field
+      procedure :: record_step
       procedure :: write_buffers
       procedure :: rows
       procedure :: finish
@@ -139,22 +122,21 @@ contains
    !! scene: a contact point that starts on its obstacle (within the activation tolerance
    !! 1e-12 L) without moving into it is in persistent contact from t = 0, so its first
    !! impulse is not an impact.
-   !! With `reduction` the stepper runs a reduced model (its u, v are q, dq/dt, and its
-   !! contact rows act on q): tip and observation points are read through rows of T
+   !! When the problem is reduced the stepper runs a reduced model (its u, v are q, dq/dt,
+   !! and its contact rows act on q): tip and observation points are read through rows of T
    !! (r products per value) and U = T q is formed only for a field snapshot.
-   subroutine recorder_init(self, scene, stepper, model, v0, last_step, write_rows, reduction)
+   subroutine recorder_init(self, scene, stepper, problem, last_step, write_rows)
       class(dynamics_recorder), intent(inout) :: self
       type(scene_type), intent(in) :: scene
       class(time_stepper), intent(in) :: stepper
-      type(beam_model), intent(in) :: model
-      real(dp), intent(in) :: v0(:)   !! in the stepper's unknowns
+      type(run_problem), intent(in) :: problem       !! its model (the mesh), start and reduced basis
       integer(int64), intent(in) :: last_step
       logical, intent(in), optional :: write_rows   !! default .true.; .false.: no result file
       real(dp) :: value, speed, tolerance, gap, omega, phase
       integer :: c, p, contacts
       character(len=:), allocatable :: forcing
-      type(reduced_basis), intent(in), optional :: reduction
       contacts = stepper%contacts%count
+      associate (model => problem%model)
       if (present(write_rows)) self%write_rows = write_rows
       self%every = scene%output%every
       self%field_every = scene%output%every
@@ -171,7 +153,7 @@ contains
       do c = 1, contacts
          if (stepper%contacts%node(c) == model%elements) self%tip_contact = c
          value = contact_value(stepper%contacts, c, stepper%u)
-         speed = contact_value(stepper%contacts, c, v0)
+         speed = contact_value(stepper%contacts, c, problem%start%v)
          if ((value <= stepper%contacts%lower(c) + tolerance .and. speed >= 0) .or. &
              (value >= stepper%contacts%upper(c) - tolerance .and. speed <= 0)) self%in_contact(c) = .true.
       end do
@@ -199,13 +181,14 @@ contains
       call self%statistics%init(window_first_step(scene%output%measure_from, scene%time%dt), last_step, scene%time%dt, &
                                 1 + size(self%point_x), stepper%contacts%lower_obstacle, &
                                 stepper%contacts%upper_obstacle, size(scene%obstacles), omega, phase)
-      if (present(reduction)) then
-         self%reduction = reduction
-         allocate (self%observed_rows(reduction%boundary + reduction%modes, size(self%observed_dofs, 2)))
+      if (problem%reduced) then
+         self%reduction = problem%reduction
+         allocate (self%observed_rows(problem%reduction%boundary + problem%reduction%modes, size(self%observed_dofs, 2)))
          do p = 1, size(self%observed_dofs, 2)
             self%observed_rows(:, p) = reduced_row(self%observed_dofs(:, p), self%observed_weights(:, p))
          end do
       end if
+      end associate
    contains
       !> The row sum_a weights(a) T(dofs(a), :) of a value of U.
       function reduced_row(dofs, weights) result(row)
@@ -219,6 +202,28 @@ contains
          end do
       end function reduced_row
    end subroutine recorder_init
+
+   !> The recorder's work after step n: impacts, episodes, statistics (`after_step`) and,
+   !! when it writes a result file, the samples due; the HDF5 part in the critical
+   !! section `vibrobeam_hdf5` (HDF5 is not thread-safe: a sweep's keep_runs points write
+   !! from several threads), the rest outside it.
+   subroutine record_step(self, stepper, model, step, stat, errmsg)
+      class(dynamics_recorder), intent(inout) :: self
+      class(time_stepper), intent(in) :: stepper
+      type(beam_model), intent(in) :: model
+      integer(int64), intent(in) :: step
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      if (.not. self%write_rows) then
+         call self%after_step(stepper, stat, errmsg)
+         return
+      end if
+      !$omp critical (vibrobeam_hdf5)
+      call self%after_step(stepper, stat, errmsg)
+      if (stat == 0 .and. self%output_due(step)) call self%sample(stepper, stat, errmsg)
+      if (stat == 0 .and. self%field_due(step)) call self%sample_field(stepper, model, stat, errmsg)
+      !$omp end critical (vibrobeam_hdf5)
+   end subroutine record_step
 
    !> u and v at the tip and at the observation points into events%observed (the same
    !! combinations of unknowns as /tip and /points).
@@ -298,46 +303,10 @@ contains
       type(beam_model), intent(in) :: model
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer :: k
-      do k = 1, history_count
-         call self%histories(k)%create(writer, trim(history_paths(k)), 1, trim(history_units(k)), stat, errmsg)
-         if (stat /= 0) return
-      end do
-      do k = 1, 5
-         call self%impact_columns(k)%create(writer, trim(impact_paths(k)), 1, trim(impact_units(k)), stat, errmsg)
-         if (stat /= 0) return
-      end do
-      call self%field_time%create(writer, '/field/time', 1, 's', stat, errmsg)
-      if (stat == 0) call self%field%create(writer, '/field/displacement', model%elements + 1, 'm', stat, errmsg, &
-                                            matrix=.true.)
-      if (stat == 0 .and. size(self%point_x) > 0) then
-         call writer%write_real_1d('/points/x', self%point_x, 'm', stat, errmsg)
-         if (stat == 0) call self%point_u%create(writer, '/points/displacement', size(self%point_x), 'm', &
-                                                 stat, errmsg, matrix=.true.)
-         if (stat == 0) call self%point_v%create(writer, '/points/velocity', size(self%point_x), 'm/s', &
-                                                 stat, errmsg, matrix=.true.)
-      end if
-      if (stat == 0) call writer%write_real_1d('/contact/x', stepper%contacts%x, 'm', stat, errmsg)
-      if (stat == 0) call writer%write_real_1d('/contact/lower', stepper%contacts%lower, 'm', stat, errmsg)
-      if (stat == 0) call writer%write_real_1d('/contact/upper', stepper%contacts%upper, 'm', stat, errmsg)
-      if (stat == 0) call self%fraction%create(writer, '/contact/fraction', stepper%contacts%count, .false., &
-                                               stat, errmsg)
-      if (stat == 0) call writer%attr_string('/contact/fraction', 'unit', '1', stat, errmsg)
-      if (stat == 0) call writer%attr_real('/contact', 'max_penetration', 0.0_dp, stat, errmsg)
-      if (stat == 0) call writer%attr_real('/contact', 'max_penetration_time', 0.0_dp, stat, errmsg)
-      if (stat == 0) call writer%attr_int64('/impacts', 'count', 0_int64, stat, errmsg)
+      call self%files%create(writer, self%point_x, stepper%contacts, model%elements + 1, self%compliant, stat, errmsg)
       if (stat == 0) call self%spectra%create(writer, stat, errmsg)
       if (stat == 0) call self%episodes%create_datasets(writer, stat, errmsg)
-      if (stat == 0 .and. self%compliant) then
-         call self%contact_potential%create(writer, '/energy/contact_potential', 1, 'J', stat, errmsg)
-         if (stat == 0) call self%contact_damping%create(writer, '/energy/dissipated_contact_damping', 1, 'J', &
-                                                         stat, errmsg)
-         if (stat == 0) call self%contact_force%create(writer, '/contact/force', stepper%contacts%count, 'N', &
-                                                       stat, errmsg, matrix=.true.)
-         if (stat == 0) call self%peak_force_array%create(writer, '/contact/peak_force', stepper%contacts%count, &
-                                                          .false., stat, errmsg)
-         if (stat == 0) call writer%attr_string('/contact/peak_force', 'unit', 'N', stat, errmsg)
-      end if
+      if (stat == 0 .and. self%compliant) call self%files%create_compliant(writer, stepper%contacts, stat, errmsg)
       if (stat == 0 .and. self%statistics%active) &
          call self%statistics_files%create(writer, self%statistics%layout, [self%length, self%point_x], &
                                            stepper%contacts%x, stepper%contacts%lower_obstacle, &
@@ -373,28 +342,30 @@ contains
       errmsg = ''
       associate (now => self%touched)
       now = .false.
-      do k = 1, stepper%active_count
-         c = stepper%active(k)
+      do k = 1, stepper%report%active_count
+         c = stepper%report%active(k)
          self%events%impact(k) = .false.
-         if (abs(stepper%impulse(k)) <= 0) cycle
+         if (abs(stepper%report%impulse(k)) <= 0) cycle
          now(c) = .true.
-         if (.not. self%in_contact(c) .and. stepper%approaching(k)) then
+         if (.not. self%in_contact(c) .and. stepper%report%approaching(k)) then
             self%events%impact(k) = .true.
             self%impacts = self%impacts + 1
-            if (self%write_rows) call append_impact([stepper%impulse_time, stepper%contacts%x(c), stepper%impulse(k), &
-                                                     stepper%velocity_before(k), stepper%velocity_after(k)])
+            if (self%write_rows) call self%files%append_impact([stepper%report%impulse_time, stepper%contacts%x(c), &
+                                                                stepper%report%impulse(k), &
+                                                                stepper%report%velocity_before(k), &
+                                                                stepper%report%velocity_after(k)], stat, errmsg)
             if (stat /= 0) return
          end if
-         if (c == self%tip_contact) self%tip_impulse = self%tip_impulse + stepper%impulse(k)
+         if (c == self%tip_contact) self%tip_impulse = self%tip_impulse + stepper%report%impulse(k)
       end do
       ! the next step's impact test sees the rigid impulses only
       self%in_contact = now
       if (self%compliant) then
-         ! stepper%contact_force holds the true force at every contact point after every
+         ! stepper%report%contact_force holds the true force at every contact point after every
          ! step; the run statistics take their force statistics from it (observe_step).
          ! a compliant point is in contact while its stops push (docs/output.md)
-         where (abs(stepper%contact_force) > 0) now = .true.
-         self%peak_force = max(self%peak_force, abs(stepper%contact_force))
+         where (abs(stepper%report%contact_force) > 0) now = .true.
+         self%peak_force = max(self%peak_force, abs(stepper%report%contact_force))
       end if
       where (now) self%contact_time = self%contact_time + stepper%dt
       end associate
@@ -403,18 +374,14 @@ contains
          self%max_penetration = depth
          self%max_penetration_time = stepper%t
       end if
-      self%iterations_total = self%iterations_total + stepper%iterations
-      self%iterations_max = max(self%iterations_max, stepper%iterations)
-      self%linear_solves_total = self%linear_solves_total + stepper%linear_solves
-      self%linear_solves_max = max(self%linear_solves_max, stepper%linear_solves)
-      if (stepper%used_fallback) self%fallback_steps = self%fallback_steps + 1
+      self%iterations_total = self%iterations_total + stepper%report%iterations
+      self%iterations_max = max(self%iterations_max, stepper%report%iterations)
+      self%linear_solves_total = self%linear_solves_total + stepper%report%linear_solves
+      self%linear_solves_max = max(self%linear_solves_max, stepper%report%linear_solves)
+      if (stepper%report%used_fallback) self%fallback_steps = self%fallback_steps + 1
       call self%episodes%observe_step(stepper, self%events, stat, errmsg)
       if (stat /= 0 .or. .not. self%statistics%active) return
-      ! what the episodes decided, and the observed values, for the statistics
-      self%events%closed_count = self%episodes%closed_count
-      self%events%closed_point = self%episodes%closed_point
-      self%events%closed_impulse = self%episodes%closed_impulse
-      self%events%opened = self%episodes%opened
+      ! the observed values, for the statistics
       call self%observe(stepper)
       call self%statistics%observe_step(stepper, self%events, stat, errmsg)
       if (stat /= 0) then
@@ -425,15 +392,6 @@ contains
          call self%statistics_files%append_poincare(self%statistics%sample_times(1:self%statistics%poincare_found), &
                                                     self%statistics%sample_values(:, 1:self%statistics%poincare_found), &
                                                     stat, errmsg)
-   contains
-      subroutine append_impact(row)
-         real(dp), intent(in) :: row(5)
-         integer :: column
-         do column = 1, 5
-            call self%impact_columns(column)%append(row(column:column), stat, errmsg)
-            if (stat /= 0) return
-         end do
-      end subroutine append_impact
    end subroutine after_step
 
    !> True when step n is an output time of the histories.
@@ -458,7 +416,6 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp) :: row(history_count), interval, potential
-      integer :: k
       stat = 0
       errmsg = ''
       if (stepper%steps == self%last_output_step) return
@@ -473,32 +430,23 @@ contains
       row(h_kinetic) = stepper%kinetic_energy()
       row(h_elastic) = stepper%elastic_energy()
       row(h_total) = row(h_kinetic) + row(h_elastic)
-      row(h_work) = stepper%work
-      row(h_impacts) = stepper%dissipated_impacts
-      row(h_damping) = stepper%dissipated_damping
-      row(h_numerical) = stepper%dissipated_numerical
+      row(h_work) = stepper%energy%work
+      row(h_impacts) = stepper%energy%dissipated_impacts
+      row(h_damping) = stepper%energy%dissipated_damping
+      row(h_numerical) = stepper%energy%dissipated_numerical
       row(h_dissipated) = row(h_impacts) + row(h_damping) + row(h_numerical)
+      potential = 0
       if (self%compliant) then
          ! the stops' stored energy is part of the total, their damping a dissipation
          potential = stepper%contact_potential()
          row(h_total) = row(h_total) + potential
-         row(h_dissipated) = row(h_dissipated) + stepper%dissipated_contact_damping
-         call self%contact_potential%append([potential], stat, errmsg)
-         if (stat == 0) call self%contact_damping%append([stepper%dissipated_contact_damping], stat, errmsg)
-         if (stat == 0) call self%contact_force%append(stepper%contact_force, stat, errmsg)
-         if (stat /= 0) return
+         row(h_dissipated) = row(h_dissipated) + stepper%energy%dissipated_contact_damping
       end if
       row(h_balance) = row(h_total) - row(h_work) + row(h_dissipated)
       row(h_penetration) = penetration(stepper)
-      do k = 1, history_count
-         call self%histories(k)%append(row(k:k), stat, errmsg)
-         if (stat /= 0) return
-      end do
-      if (size(self%point_x) > 0) then
-         call self%point_u%append(self%events%observed(2:, 1), stat, errmsg)
-         if (stat == 0) call self%point_v%append(self%events%observed(2:, 2), stat, errmsg)
-         if (stat /= 0) return
-      end if
+      call self%files%append_sample(row, self%events%observed(2:, 1), self%events%observed(2:, 2), potential, &
+                                    stepper%energy%dissipated_contact_damping, stepper%report%contact_force, stat, errmsg)
+      if (stat /= 0) return
       ! the spectrum takes the uniformly spaced rows only (not a last row off the grid)
       if (mod(stepper%steps, self%every) == 0) call self%spectra%add(row(h_tip_u), self%events%observed(2:, 1), stat, &
                                                                       errmsg)
@@ -518,11 +466,11 @@ contains
       stat = 0
       errmsg = ''
       if (stepper%steps == self%last_field_step) return
-      call self%field_time%append([stepper%t], stat, errmsg)
       if (allocated(self%reduction)) then
-         if (stat == 0) call self%field%append(nodal_displacement(model, self%reduction%expand(stepper%u)), stat, errmsg)
+         call self%files%append_field(stepper%t, nodal_displacement(model, self%reduction%expand(stepper%u)), stat, &
+                                      errmsg)
       else
-         if (stat == 0) call self%field%append(nodal_displacement(model, stepper%u), stat, errmsg)
+         call self%files%append_field(stepper%t, nodal_displacement(model, stepper%u), stat, errmsg)
       end if
       self%last_field_step = stepper%steps
    end subroutine sample_field
@@ -532,23 +480,9 @@ contains
       class(dynamics_recorder), intent(inout) :: self
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer :: k
-      do k = 1, history_count
-         call self%histories(k)%write(stat, errmsg)
-         if (stat /= 0) return
-      end do
-      do k = 1, 5
-         call self%impact_columns(k)%write(stat, errmsg)
-         if (stat /= 0) return
-      end do
-      call self%field_time%write(stat, errmsg)
-      if (stat == 0) call self%field%write(stat, errmsg)
-      if (stat == 0 .and. size(self%point_x) > 0) call self%point_u%write(stat, errmsg)
-      if (stat == 0 .and. size(self%point_x) > 0) call self%point_v%write(stat, errmsg)
+      call self%files%write(stat, errmsg)
       if (stat == 0) call self%episodes%write_buffers(stat, errmsg)
-      if (stat == 0 .and. self%compliant) call self%contact_potential%write(stat, errmsg)
-      if (stat == 0 .and. self%compliant) call self%contact_damping%write(stat, errmsg)
-      if (stat == 0 .and. self%compliant) call self%contact_force%write(stat, errmsg)
+      if (stat == 0) call self%files%write_compliant(stat, errmsg)
       if (stat == 0) call self%statistics_files%write_buffers(stat, errmsg)
    end subroutine write_buffers
 
@@ -556,8 +490,7 @@ contains
    function rows(self) result(counts)
       class(dynamics_recorder), intent(in) :: self
       integer(int64) :: counts(4)
-      counts = [self%histories(1)%rows(), self%field_time%rows(), self%impact_columns(1)%rows(), &
-                self%episodes%rows()]
+      counts = [self%files%rows(), self%episodes%rows()]
    end function rows
 
    !> End of the run: the spectrum, the contact fractions and largest penetration, the
@@ -568,36 +501,13 @@ contains
       class(time_stepper), intent(in) :: stepper
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer :: k
       call self%statistics_files%finish(writer, self%window_statistics(stepper), stat, errmsg)
       if (stat == 0) call self%episodes%finish(writer, stat, errmsg)
       if (stat == 0) call self%write_buffers(stat, errmsg)
       if (stat /= 0) return
-      call self%fraction%write_reals(self%contact_time/max(stepper%t, tiny(1.0_dp)), stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr('/contact', 'max_penetration', self%max_penetration, stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr('/contact', 'max_penetration_time', self%max_penetration_time, &
-                                                   stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr('/impacts', 'count', self%impacts, stat, errmsg)
-      if (stat == 0 .and. self%compliant) call self%peak_force_array%write_reals(self%peak_force, stat, errmsg)
-      if (stat /= 0) return
-      call self%spectra%finish(writer, stat, errmsg)
-      do k = 1, history_count
-         call self%histories(k)%close()
-      end do
-      do k = 1, 5
-         call self%impact_columns(k)%close()
-      end do
-      call self%field_time%close()
-      call self%field%close()
-      call self%point_u%close()
-      call self%point_v%close()
-      call self%fraction%close()
-      if (self%compliant) then
-         call self%contact_potential%close()
-         call self%contact_damping%close()
-         call self%contact_force%close()
-         call self%peak_force_array%close()
-      end if
+      call self%files%finish(writer, self%contact_time/max(stepper%t, tiny(1.0_dp)), self%max_penetration, &
+                             self%max_penetration_time, self%impacts, self%peak_force, stat, errmsg)
+      if (stat == 0) call self%spectra%finish(writer, stat, errmsg)
       call self%spectra%close()
    end subroutine finish
 

@@ -8,7 +8,8 @@ program vibrobeam_main
    use, intrinsic :: iso_c_binding, only: c_int
    use vibrobeam_kinds, only: dp, pi, error_unit, output_unit
    use vibrobeam_status, only: exit_ok, exit_other_error, exit_invalid_input, exit_numerical_failure, &
-                               exit_interrupted, message_length, stat_numerical_failure
+                               exit_interrupted, message_length, stat_numerical_failure, outcome_failed, outcome_interrupted, &
+                               outcome_exit_status, stat_invalid_input
    use vibrobeam_version, only: version_string
    use vibrobeam_scene, only: scene_type, validate_scene, format_scene, is_unset
    use vibrobeam_scene_read, only: read_scene, namelist_groups_text
@@ -16,7 +17,7 @@ program vibrobeam_main
    use vibrobeam_check_report, only: check_report, make_check_report, check_report_text, scene_warnings
    use vibrobeam_modal_analysis, only: run_modal, frequencies_text
    use vibrobeam_static_analysis, only: run_equilibrium
-   use vibrobeam_setup, only: prepared_scene, prepare_scene
+   use vibrobeam_problem, only: run_problem, build_problem
    use vibrobeam_dynamics, only: run_dynamics
    use vibrobeam_result_files, only: run_outcome, publish_files
    use vibrobeam_text_output, only: derived_file, derive_text_files
@@ -31,7 +32,7 @@ program vibrobeam_main
    implicit none
 
    type(scene_type) :: scene
-   type(prepared_scene) :: prepared
+   type(run_problem) :: prepared
    type(sweep_settings) :: sweep
    character(len=message_length) :: errmsg
    character(len=:), allocatable :: input_file, warnings, blas_warning, resume
@@ -60,7 +61,7 @@ program vibrobeam_main
    if (sweep%present) then
       ! a sweep prepares each point itself; here the first one, for its warnings
       associate (points => sweep_points(sweep))
-         call prepare_scene(point_scene(scene, sweep, points(1)), prepared, warnings, stat, errmsg)
+         call build_problem(point_scene(scene, sweep, points(1)), prepared, warnings, stat, errmsg)
       end associate
       if (stat /= 0 .and. stat /= stat_numerical_failure) call fail(exit_invalid_input, '&sweep point 1: '//errmsg)
       ! the files it writes, its start state, its partial directory, its size (rank 0 looks:
@@ -72,7 +73,7 @@ program vibrobeam_main
       call share_failure(stat, errmsg)
       if (stat /= 0) call fail(exit_invalid_input, errmsg)
    else
-      call prepare_scene(scene, prepared, warnings, stat, errmsg)
+      call build_problem(scene, prepared, warnings, stat, errmsg)
       if (stat == stat_numerical_failure) call fail(exit_numerical_failure, errmsg)
       if (stat /= 0) call fail(exit_invalid_input, errmsg)
    end if
@@ -266,7 +267,7 @@ contains
       type(run_outcome) :: outcome
       call run_equilibrium(scene, prepared, outcome, stat, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
-      if (outcome%status == 'failed') then
+      if (outcome%status == outcome_failed) then
          write (error_unit, '(a)') 'vibrobeam: static equilibrium failed: '//trim(outcome%failure)
          write (error_unit, '(a)') 'vibrobeam: the last iterate, not an equilibrium, written to '// &
             trim(scene%output%file)//' (/run status = ''failed'', the reason in /static failure)'
@@ -285,16 +286,16 @@ contains
       call run_dynamics(scene, prepared, outcome, stat, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
       select case (outcome%status)
-      case ('failed')
+      case (outcome_failed)
          write (error_unit, '(a)') 'vibrobeam: numerical failure at '//trim(outcome%failure)
          write (error_unit, '(a)') 'vibrobeam: results up to the failure written to '//trim(scene%output%file)// &
             ' (/run status = ''failed'')'
-         call finish(exit_numerical_failure)
-      case ('interrupted')
+         call finish(outcome_exit_status(outcome%status))
+      case (outcome_interrupted)
          write (error_unit, '(a,i0,a)') 'vibrobeam: interrupted by '//interrupt_name()//' after step ', &
             outcome%steps, '; results up to it written to '//trim(scene%output%file)//' (/run status = ''interrupted'')'
          call stop_if_interrupted(outcome%text_skipped)
-         call finish(exit_interrupted)
+         call finish(outcome_exit_status(outcome%status))
       end select
       ! impacts and penetration are the rigid stops'; compliant stops show their peak force
       ! and how long they were in contact (docs/output.md, "What a run prints")
@@ -318,10 +319,10 @@ contains
    subroutine run_sweep_input()
       type(sweep_outcome) :: outcome
       call run_sweep(scene, sweep, outcome, stat, errmsg)
-      if (stat == 2) call fail(exit_invalid_input, errmsg)
+      if (stat == stat_invalid_input) call fail(exit_invalid_input, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
       if (transport_rank() /= 0) then
-         if (outcome%status == 'interrupted') call finish(exit_interrupted)
+         if (outcome%status == outcome_interrupted) call finish(exit_interrupted)
          if (outcome%failed > 0) call finish(exit_numerical_failure)
          if (interrupt_requested()) call finish(exit_interrupted)
          call finish(exit_ok)
@@ -332,7 +333,7 @@ contains
       write (output_unit, '(i0,a,i0,a,f0.2,a,i0,a,i0,a)') outcome%failed, ' failed, ', outcome%interrupted, &
          ' interrupted), ', outcome%wall_seconds, ' s on ', outcome%threads, ' threads x ', outcome%ranks, &
          ' processes; written to '//trim(scene%output%file)
-      if (outcome%status == 'interrupted') then
+      if (outcome%status == outcome_interrupted) then
          write (error_unit, '(a,i0,a)') 'vibrobeam: interrupted by '//signal_name()//'; the points done are in '// &
             trim(scene%output%file)//' (/run status = ''interrupted''), ', outcome%not_run + outcome%interrupted, &
             ' to run: run the same input again to go on (they are kept in '//trim(scene%output%file)//'.partial)'

@@ -34,7 +34,8 @@ module vibrobeam_result_estimate
    use vibrobeam_poincare, only: kept_samples
    use vibrobeam_sweep_journal, only: record_length, message_words
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, point_scene, point_windows, max_settle_windows
-   use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper, release_stepper
+   use vibrobeam_problem, only: run_problem, build_problem, new_stepper
+   use vibrobeam_stepper_factory, only: release_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_recorder, only: dynamics_recorder
    implicit none
@@ -240,7 +241,7 @@ contains
       integer, parameter :: warm_up = 1000, blocks = 5, most_block_steps = 1000000
       real(dp), parameter :: block_seconds = 0.02_dp
       type(scene_type) :: local
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       class(time_stepper), allocatable :: stepper
       type(dynamics_recorder) :: recorder
       character(len=:), allocatable :: warnings, ignored
@@ -252,17 +253,12 @@ contains
       local = scene
       local%output%measure_from = 0
       warnings = ''
-      call prepare_scene(local, prepared, warnings, stat, errmsg)
-      if (stat == 0) call start_time_stepper(local, prepared, stepper, stat, errmsg)
+      call build_problem(local, prepared, warnings, stat, errmsg)
+      if (stat == 0) call new_stepper(local, prepared, stepper, stat, errmsg)
       if (stat /= 0) return
       last = warm_up + int(blocks, int64)*most_block_steps
       local%time%t_end = last*local%time%dt
-      if (prepared%reduced) then
-         call recorder%init(local, stepper, prepared%model, stepper%v, last, write_rows=.false., &
-                            reduction=prepared%reduction)
-      else
-         call recorder%init(local, stepper, prepared%model, prepared%v0, last, write_rows=.false.)
-      end if
+      call recorder%init(local, stepper, prepared, last, write_rows=.false.)
       call recorder%start_statistics(stepper, ignored)
       call cpu_time(start)
       do n = 1, warm_up

@@ -3,7 +3,7 @@
 !! package that uses it and declaring its variables once in its `visit` routine
 !! (`vibrobeam_schema_visitor`): &beam and &mesh (`vibrobeam_beam_settings`), &obstacles
 !! (`vibrobeam_obstacles`), &initial (`vibrobeam_initial_state`), &load
-!! (`vibrobeam_loads`), &time and &impact (`vibrobeam_stepper_settings`), &solver
+!! (`vibrobeam_loads`), &time and &impact (`vibrobeam_time_settings`), &solver
 !! (`vibrobeam_contact_options`), &output (`vibrobeam_output_settings`), and &analysis here.
 !! This module walks them all (`visit_scene`): the table of every variable
 !! (`scene_variables`, which the file scanner checks a file against), the check of every
@@ -20,6 +20,7 @@
 !! 1e110 and the smallest of rho S h^3 above 1e-70 (verification/unit/test_input_limits.f90
 !! evaluates them at the corners).
 module vibrobeam_scene
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_namelist_schema, only: namelist_variable
@@ -31,7 +32,7 @@ module vibrobeam_scene
    use vibrobeam_obstacles, only: obstacle_type, max_obstacles, visit_obstacles
    use vibrobeam_initial_state, only: initial_settings, visit_initial
    use vibrobeam_loads, only: load_settings, visit_load
-   use vibrobeam_stepper_settings, only: time_settings, impact_settings, visit_time, visit_impact
+   use vibrobeam_time_settings, only: time_settings, impact_settings, visit_time, visit_impact
    use vibrobeam_contact_options, only: contact_options, visit_solver
    use vibrobeam_output_settings, only: output_settings, visit_output, max_points
    use vibrobeam_sweep_input, only: sweep_input, visit_sweep, max_sweep_values, parameter_length
@@ -286,7 +287,7 @@ contains
       subroutine fail(message)
          character(len=*), intent(in) :: message
          if (stat /= 0) return   ! keep the first violation
-         stat = 1
+         stat = stat_failure
          errmsg = message
       end subroutine fail
 

@@ -26,16 +26,17 @@ module vibrobeam_position_stepper
    use vibrobeam_kinds, only: dp
    use vibrobeam_status, only: stat_not_finite
    use vibrobeam_band, only: band_cholesky, band_factor, band_solve, band_matvec
-   use vibrobeam_model, only: beam_model
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
-   use vibrobeam_time_stepper, only: time_stepper, save_stepper_state, restore_stepper_state
+   use vibrobeam_time_stepper, only: time_stepper, stepper_settings, dynamic_state, save_stepper_state, &
+      restore_stepper_state, checkpoint_state
+   use vibrobeam_discrete_system, only: discrete_system
    use vibrobeam_state_record, only: state_record
    use vibrobeam_compliant_law, only: end_force, stop_potential
    use vibrobeam_compliant_solver, only: rigid_admissible
    implicit none
    private
-   public :: position_stepper
+   public :: position_stepper, position_state_of_record
 
    type, extends(time_stepper) :: position_stepper
       real(dp), allocatable :: u_previous(:)       !! U^n after a step (U^{-1} at the start)
@@ -49,38 +50,45 @@ module vibrobeam_position_stepper
       procedure, private :: compliant_projection
       procedure :: save_state
       procedure :: restore_state
+      procedure :: state => position_state
    end type position_stepper
 
 contains
 
-   subroutine init(self, model, contacts, loads, dt, theta, restitution, rayleigh_mass, rayleigh_stiffness, &
-                   contact_regime, u0, v0, stat, errmsg)
+   !> Set up for a run: build and factor W, prepare the contact projection; U^0 = start%u
+   !! and U^{-1} from start%extra when a run of this scheme hands it on (V = (U^0 - U^{-1})/dt),
+   !! otherwise the second-order start from start%u and start%v (module header).
+   subroutine init(self, system, settings, start, stat, errmsg)
       class(position_stepper), intent(inout) :: self
-      type(beam_model), intent(in) :: model
-      type(contact_set), intent(in) :: contacts
-      type(load_set), intent(in) :: loads
-      real(dp), intent(in) :: dt, theta, restitution, rayleigh_mass, rayleigh_stiffness
-      character(len=*), intent(in) :: contact_regime
-      real(dp), intent(in) :: u0(:), v0(:)
+      type(discrete_system), intent(in) :: system
+      type(stepper_settings), intent(in) :: settings
+      type(dynamic_state), intent(in) :: start
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(band_cholesky) :: mass_factor
-      real(dp) :: acceleration(size(u0)), ku(size(u0))
-      ! W = (1 + dt a/2) M + (theta dt^2 + dt b/2) K
-      call self%set_up_system(model, contacts, loads, dt, theta, restitution, rayleigh_mass, rayleigh_stiffness, &
-                              1 + 0.5_dp*dt*rayleigh_mass, theta*dt**2 + 0.5_dp*dt*rayleigh_stiffness, &
-                              contact_regime, stat, errmsg)
-      if (stat /= 0) return
-      call band_factor(model%mass, mass_factor, stat, errmsg)
-      if (stat /= 0) return
-      call band_matvec(model%stiffness, u0, ku)
-      acceleration = loads%at(0.0_dp) - ku
-      if (rayleigh_mass > 0 .or. rayleigh_stiffness > 0) acceleration = acceleration - self%damping_times(v0)
-      call band_solve(mass_factor, acceleration)
-      self%u = u0
-      self%u_previous = u0 - dt*v0 + 0.5_dp*dt**2*acceleration
-      self%v = (self%u - self%u_previous)/dt
-      allocate (self%multiplier(contacts%count), source=0.0_dp)
+      real(dp) :: acceleration(size(start%u)), ku(size(start%u))
+      associate (dt => settings%dt, u0 => start%u, v0 => start%v)
+         ! W = (1 + dt a/2) M + (theta dt^2 + dt b/2) K
+         call self%set_up_system(system, settings, 1 + 0.5_dp*dt*settings%rayleigh_mass, &
+                                 settings%theta*dt**2 + 0.5_dp*dt*settings%rayleigh_stiffness, stat, errmsg)
+         if (stat /= 0) return
+         call band_factor(system%model%mass, mass_factor, stat, errmsg)
+         if (stat /= 0) return
+         call band_matvec(system%model%stiffness, u0, ku)
+         acceleration = system%loads%at(0.0_dp) - ku
+         if (settings%rayleigh_mass > 0 .or. settings%rayleigh_stiffness > 0) &
+            acceleration = acceleration - self%damping_times(v0)
+         call band_solve(mass_factor, acceleration)
+         self%u = u0
+         self%u_previous = u0 - dt*v0 + 0.5_dp*dt**2*acceleration
+         self%v = (self%u - self%u_previous)/dt
+         allocate (self%multiplier(system%contacts%count), source=0.0_dp)
+         if (allocated(start%extra)) then
+            ! the state of an earlier run carried on (docs/sweeps.md, "Continuation")
+            self%u_previous = start%extra
+            self%v = (self%u - self%u_previous)/dt
+         end if
+      end associate
    end subroutine init
 
    subroutine step(self, stat, errmsg)
@@ -104,10 +112,10 @@ contains
          if (self%contacts%springs%count > 0) then
             call self%compliant_projection(z_free, z, stat, errmsg)
          else
-            call self%projector%project_admissible(z_free, z, self%multiplier, self%iterations, stat, errmsg)
-            self%linear_solves = self%projector%linear_solves
+            call self%projector%project_admissible(z_free, z, self%multiplier, self%report%iterations, stat, errmsg)
+            self%report%linear_solves = self%projector%linear_solves
          end if
-         self%used_fallback = self%projector%used_fallback
+         self%report%used_fallback = self%projector%used_fallback
          if (stat /= 0) return
          u_new = (1 + e)*z - e*u_old
          if (.not. ieee_is_finite(sum(u_new))) then
@@ -116,9 +124,9 @@ contains
             return
          end if
          stride = u_new - u_old   ! U^{n+1} - U^{n-1}
-         if (self%loads%present) self%work = self%work + 0.5_dp*dot_product(force, stride)
-         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) self%dissipated_damping = &
-            self%dissipated_damping + 0.5_dp*dot_product(stride, self%damping_times(stride))/(2*dt)
+         if (self%loads%present) self%energy%work = self%energy%work + 0.5_dp*dot_product(force, stride)
+         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) self%energy%dissipated_damping = &
+            self%energy%dissipated_damping + 0.5_dp*dot_product(stride, self%damping_times(stride))/(2*dt)
          ! contact record: reaction r = (1 + e) P_z/dt^2 (W (U^{n+1} - U_free) = dt^2 H^T r)
          m = 0
          do c = 1, self%contacts%count
@@ -127,18 +135,19 @@ contains
             reaction = (1 + e)*self%multiplier(c)/dt**2
             before = (contact_value(self%contacts, c, u) - contact_value(self%contacts, c, u_old))/dt
             after = (contact_value(self%contacts, c, u_new) - contact_value(self%contacts, c, u))/dt
-            self%active(m) = c
-            self%impulse(m) = reaction*dt
-            self%velocity_before(m) = before
-            self%velocity_after(m) = after
-            self%approaching(m) = sign(1.0_dp, reaction)*before <= 0
-            self%dissipated_impacts = self%dissipated_impacts - 0.5_dp*reaction*contact_value(self%contacts, c, stride)
+            self%report%active(m) = c
+            self%report%impulse(m) = reaction*dt
+            self%report%velocity_before(m) = before
+            self%report%velocity_after(m) = after
+            self%report%approaching(m) = sign(1.0_dp, reaction)*before <= 0
+            self%energy%dissipated_impacts = self%energy%dissipated_impacts &
+               - 0.5_dp*reaction*contact_value(self%contacts, c, stride)
          end do
-         self%active_count = m
+         self%report%active_count = m
          self%u_previous = u
          self%u = u_new
          self%v = (self%u - self%u_previous)/dt
-         self%impulse_time = self%t   ! the scheme is centred at t_n, where r^n acts
+         self%report%impulse_time = self%t   ! the scheme is centred at t_n, where r^n acts
          self%steps = self%steps + 1
          self%t = self%steps*dt
       end associate
@@ -168,19 +177,16 @@ contains
          call c%solve(springs, self%contacts, self%iteration_matrix, self%projector, z_free, q, p0, 0.5_dp*(1 + e), &
                       self%dt**2/(1 + e), 0.5_dp, self%dt, rigid_admissible, no_points, no_values, no_values, z, &
                       self%multiplier, stat, errmsg)
-         self%iterations = c%iterations
-         self%linear_solves = c%linear_solves
-         if (stat /= 0) then
-            stat = 3
-            return
-         end if
+         self%report%iterations = c%iterations
+         self%report%linear_solves = c%linear_solves
+         if (stat /= 0) return   ! (the compliant solver's own code: docs/output.md, "Status codes")
          call self%check_compliant_work(p0, c%p1, stat, errmsg)
          if (stat /= 0) return
          ! energy: the beam's half-step energy loses sum f dpbar; Phi(pbar) stores it
          call self%compliant_energy(p0, c%p1)
-         self%contact_force = 0
+         self%report%contact_force = 0
          do j = 1, springs%count
-            self%contact_force(springs%point(j)) = self%contact_force(springs%point(j)) + springs%sign(j)* &
+            self%report%contact_force(springs%point(j)) = self%report%contact_force(springs%point(j)) + springs%sign(j)* &
                end_force(springs%stiffness(j), springs%exponent(j), springs%damping(j), self%dt, p0(j), c%p1(j))
          end do
       end associate
@@ -203,6 +209,29 @@ contains
       call save_stepper_state(self, record)
       call record%put_reals('stepper.u_previous', self%u_previous)
    end subroutine save_state
+
+   !> The state a run hands on: step, U^n, V and U^{n-1} (extra).
+   function position_state(self) result(state)
+      class(position_stepper), intent(in) :: self
+      type(dynamic_state) :: state
+      state%step = self%steps
+      state%u = self%u
+      state%v = self%v
+      state%extra = self%u_previous
+   end function position_state
+
+   !> The state a checkpoint of this scheme holds: the base's, and U^{n-1} as extra.
+   subroutine position_state_of_record(record, unknowns, state, stat, errmsg)
+      type(state_record), intent(in) :: record
+      integer, intent(in) :: unknowns
+      type(dynamic_state), intent(out) :: state
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      call checkpoint_state(record, unknowns, state, stat, errmsg)
+      if (stat /= 0) return
+      allocate (state%extra(unknowns))
+      call record%get_reals('stepper.u_previous', state%extra, stat, errmsg)
+   end subroutine position_state_of_record
 
    !> Take back what `save_state` put into `record`.
    subroutine restore_state(self, record, stat, errmsg)

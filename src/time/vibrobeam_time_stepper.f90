@@ -6,22 +6,86 @@ module vibrobeam_time_stepper
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_status, only: stat_residual_check_failed
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_matvec, band_combination, band_factor
-   use vibrobeam_model, only: beam_model
    use vibrobeam_contact_set, only: contact_set
-   use vibrobeam_contact_projector, only: contact_projector
+   use vibrobeam_contact_projector, only: contact_projector, contact_method_code
+   use vibrobeam_contact_options, only: contact_options
    use vibrobeam_loads, only: load_set
+   use vibrobeam_discrete_system, only: discrete_system
    use vibrobeam_state_record, only: state_record
    use vibrobeam_compliant_law, only: stop_potential, rule_gradient
    use vibrobeam_compliant_solver, only: compliant_solver
    use vibrobeam_contact_set, only: contact_value
    implicit none
    private
-   public :: time_stepper, save_stepper_state, restore_stepper_state, unresolved_fraction
+   public :: time_stepper, stepper_settings, dynamic_state, step_report, energy_ledger
+   public :: save_stepper_state, restore_stepper_state, unresolved_fraction, checkpoint_state
 
    !> The largest share of the energy scale the compliant stops' unresolved work may reach
    !! before the run stops as a numerical failure (docs/theory.md section 8, "Accuracy"):
    !! sqrt(eps), the energy to half its digits.
    real(dp), parameter :: unresolved_fraction = sqrt(epsilon(1.0_dp))
+
+   !> How a run is stepped: the scheme and its parameters, Newton's law at the rigid stops,
+   !! the Rayleigh damping, the compliant stops' rule and the contact solver's options. One
+   !! object handed to `init` (`vibrobeam_problem` makes it from the scene).
+   type :: stepper_settings
+      character(len=16) :: scheme = 'velocity'       !! a name of `scheme_names` (vibrobeam_stepper_factory)
+      real(dp) :: dt = 1e-4_dp                       !! time step (s)
+      real(dp) :: theta = 0.5_dp                     !! theta of the theta-method
+      real(dp) :: gamma = 0.5_dp                     !! activation at U + gamma dt V (velocity scheme)
+      real(dp) :: restitution = 1                    !! Newton's restitution coefficient e
+      !> restitution of an active point already moving away from its obstacle (velocity
+      !! scheme): 1, or e for the plain law of theory §3
+      real(dp) :: separating_restitution = 1
+      real(dp) :: rayleigh_mass = 0                  !! a in C = a M + b K (1/s)
+      real(dp) :: rayleigh_stiffness = 0             !! b in C = a M + b K (s)
+      integer :: compliant_rule = rule_gradient      !! how a step takes a compliant stop's force
+      type(contact_options) :: contact               !! the contact projection's regime, method, iterations
+   end type stepper_settings
+
+   !> The state one run hands to the next (a sweep's continuation) or starts from: the step
+   !! number, U and V, and what the scheme needs beyond them (`extra`, the position scheme's
+   !! U^{n-1}), opaque to everyone but the scheme. A start without `extra` lets the scheme
+   !! make its own from U and V.
+   type :: dynamic_state
+      integer(int64) :: step = 0                     !! t = step dt
+      real(dp), allocatable :: u(:), v(:)            !! displacement (m) and velocity (m/s) unknowns
+      real(dp), allocatable :: extra(:)              !! the scheme's own
+   end type dynamic_state
+
+   !> What the last step did, as the recorder and the observers read it (each scheme says
+   !! when its impulses act and what its velocities before and after are).
+   type :: step_report
+      integer :: active_count = 0
+      integer, allocatable :: active(:)            !! contact points with a constraint (first active_count)
+      real(dp), allocatable :: impulse(:)          !! impulse of each (N s), positive upwards
+      real(dp), allocatable :: velocity_before(:), velocity_after(:)   !! of each point (m/s)
+      logical, allocatable :: approaching(:)       !! the point moved toward its obstacle
+      integer :: iterations = 0                    !! contact solver iterations of the last step
+      integer :: linear_solves = 0                 !! linear solves the contact solver made in the last step
+      logical :: used_fallback = .false.           !! the contact solver needed its fall-back in the last step
+      real(dp) :: impulse_time = 0                 !! when the last step's impulses act (s)
+      !> force of the compliant stops on each contact point at t (N, positive upwards;
+      !! 0 at rigid-only points)
+      real(dp), allocatable :: contact_force(:)
+   end type step_report
+
+   !> The running sums of the energy balance since t = 0 (each scheme says how it defines
+   !! them; docs/theory.md §6 and §8).
+   type :: energy_ledger
+      real(dp) :: work = 0                   !! work of the loads (J)
+      real(dp) :: dissipated_impacts = 0     !! energy taken by impacts (J)
+      real(dp) :: dissipated_damping = 0     !! energy taken by Rayleigh damping (J)
+      real(dp) :: dissipated_numerical = 0   !! energy taken by the theta-method itself (J): velocity scheme,
+                                             !! 0 for theta = 1/2; 0 for the position scheme
+      ! compliant stops (docs/theory.md section 8); unused when contacts%springs%count = 0
+      real(dp) :: dissipated_contact_damping = 0   !! energy taken by the stops' damping (J)
+      !> sum over the steps of |sum_j (f_j - f_j^law)(p_j^{n+1} - p_j^n)|: the work of the
+      !! force residual Newton's method left (J; part of dissipated_numerical, signed there)
+      real(dp) :: unresolved_work = 0
+      !> the energy scale max(|E|, |W|, |D|) at the last comparison with unresolved_work (J)
+      real(dp) :: energy_scale = 0
+   end type energy_ledger
 
    type, abstract :: time_stepper
       real(dp) :: dt = 0, theta = 0.5_dp, restitution = 1
@@ -36,36 +100,14 @@ module vibrobeam_time_stepper
       real(dp), allocatable :: v(:)               !! velocity unknowns (m/s), see each scheme
       real(dp) :: t = 0                            !! time of u (s)
       integer(int64) :: steps = 0                  !! steps taken since t = 0 (t = steps dt)
-      ! what the last step did
-      integer :: active_count = 0
-      integer, allocatable :: active(:)            !! contact points with a constraint (first active_count)
-      real(dp), allocatable :: impulse(:)          !! impulse of each (N s), positive upwards
-      real(dp), allocatable :: velocity_before(:), velocity_after(:)   !! of each point (m/s)
-      logical, allocatable :: approaching(:)       !! the point moved toward its obstacle
-      integer :: iterations = 0                    !! contact solver iterations of the last step
-      integer :: linear_solves = 0                 !! linear solves the contact solver made in the last step
-      logical :: used_fallback = .false.           !! the contact solver needed its fall-back in the last step
-      real(dp) :: impulse_time = 0                 !! when the last step's impulses act (s)
-      ! running sums since t = 0 (each scheme says how it defines them)
-      real(dp) :: work = 0                   !! work of the loads (J)
-      real(dp) :: dissipated_impacts = 0     !! energy taken by impacts (J)
-      real(dp) :: dissipated_damping = 0     !! energy taken by Rayleigh damping (J)
-      real(dp) :: dissipated_numerical = 0   !! energy taken by the theta-method itself (J): velocity scheme,
-                                             !! 0 for theta = 1/2; 0 for the position scheme
-      ! compliant stops (docs/theory.md section 8); unused when contacts%springs%count = 0
-      real(dp) :: dissipated_contact_damping = 0   !! energy taken by the stops' damping (J)
-      !> sum over the steps of |sum_j (f_j - f_j^law)(p_j^{n+1} - p_j^n)|: the work of the
-      !! force residual Newton's method left (J; part of dissipated_numerical, signed there)
-      real(dp) :: unresolved_work = 0
-      !> the energy scale max(|E|, |W|, |D|) at the last comparison with unresolved_work (J)
-      real(dp) :: energy_scale = 0
+      type(step_report) :: report                  !! what the last step did
+      type(energy_ledger) :: energy                !! running sums since t = 0
       integer :: compliant_rule = rule_gradient    !! how a step takes the stop force (vibrobeam_compliant_law)
       type(compliant_solver) :: compliant          !! the step's Newton solve with springs
-      !> force of the compliant stops on each contact point at t (N, positive upwards;
-      !! 0 at rigid-only points)
-      real(dp), allocatable :: contact_force(:)
    contains
+      procedure(init_interface), deferred :: init
       procedure(step_interface), deferred :: step
+      procedure :: state => stepper_state
       procedure :: kinetic_energy
       procedure :: elastic_energy
       procedure :: contact_potential
@@ -80,6 +122,18 @@ module vibrobeam_time_stepper
    end type time_stepper
 
    abstract interface
+      !> Set up for a run of `system` with `settings` from `start` (its U and V; its `extra`
+      !! when it continues a run of the same scheme), at step 0.
+      subroutine init_interface(self, system, settings, start, stat, errmsg)
+         import :: time_stepper, discrete_system, stepper_settings, dynamic_state
+         class(time_stepper), intent(inout) :: self
+         type(discrete_system), intent(in) :: system
+         type(stepper_settings), intent(in) :: settings
+         type(dynamic_state), intent(in) :: start
+         integer, intent(out) :: stat
+         character(len=*), intent(out) :: errmsg
+      end subroutine init_interface
+
       !> Advance one step. stat: stat_ok; a contact solver failure; stat_not_finite.
       subroutine step_interface(self, stat, errmsg)
          import :: time_stepper
@@ -144,8 +198,8 @@ contains
       class(time_stepper), intent(inout) :: self
       real(dp), intent(in) :: p0(:), p1(:)
       associate (springs => self%contacts%springs, c => self%compliant)
-         self%dissipated_contact_damping = self%dissipated_contact_damping + sum((c%law_force - c%elastic)*(p1 - p0))
-         self%dissipated_numerical = self%dissipated_numerical + sum(c%elastic*(p1 - p0)) - &
+         self%energy%dissipated_contact_damping = self%energy%dissipated_contact_damping + sum((c%law_force - c%elastic)*(p1 - p0))
+         self%energy%dissipated_numerical = self%energy%dissipated_numerical + sum(c%elastic*(p1 - p0)) - &
             sum(stop_potential(springs%stiffness, springs%exponent, p1) - &
                 stop_potential(springs%stiffness, springs%exponent, p0)) + sum((c%force - c%law_force)*(p1 - p0))
       end associate
@@ -168,16 +222,16 @@ contains
       character(len=24) :: text(3)
       stat = 0
       errmsg = ''
-      total = self%unresolved_work + abs(sum((self%compliant%force - self%compliant%law_force)*(p1 - p0)))
-      if (total > unresolved_fraction*self%energy_scale) then
-         dissipated = self%dissipated_impacts + self%dissipated_damping + self%dissipated_numerical + &
-                      self%dissipated_contact_damping
-         self%energy_scale = max(self%energy_scale, abs(self%kinetic_energy() + self%elastic_energy() + &
-                                 self%contact_potential()), abs(self%work), abs(dissipated))
-         if (total > unresolved_fraction*self%energy_scale) then
+      total = self%energy%unresolved_work + abs(sum((self%compliant%force - self%compliant%law_force)*(p1 - p0)))
+      if (total > unresolved_fraction*self%energy%energy_scale) then
+         dissipated = self%energy%dissipated_impacts + self%energy%dissipated_damping + self%energy%dissipated_numerical + &
+                      self%energy%dissipated_contact_damping
+         self%energy%energy_scale = max(self%energy%energy_scale, abs(self%kinetic_energy() + self%elastic_energy() + &
+                                 self%contact_potential()), abs(self%energy%work), abs(dissipated))
+         if (total > unresolved_fraction*self%energy%energy_scale) then
             stat = stat_residual_check_failed
             write (text(1), '(es10.3)') total
-            write (text(2), '(es10.3)') total/max(self%energy_scale, tiny(1.0_dp))
+            write (text(2), '(es10.3)') total/max(self%energy%energy_scale, tiny(1.0_dp))
             write (text(3), '(es10.3)') unresolved_fraction
             errmsg = 'the compliant stops are not resolved: the force residual of their Newton solves has done '// &
                      trim(adjustl(text(1)))//' J of work, '//trim(adjustl(text(2)))//' of the energy scale (at most '// &
@@ -186,48 +240,76 @@ contains
             return
          end if
       end if
-      self%unresolved_work = total
+      self%energy%unresolved_work = total
    end subroutine check_compliant_work
 
-   !> What both schemes set up the same way: the data of the run, the iteration matrix
-   !! W = mass_coefficient M + stiffness_coefficient K (each scheme gives its own
-   !! coefficients) with its Cholesky factor, the contact projection in the metric of W,
-   !! room for one record per contact point, and t = 0.
-   subroutine set_up_system(self, model, contacts, loads, dt, theta, restitution, rayleigh_mass, &
-                            rayleigh_stiffness, mass_coefficient, stiffness_coefficient, contact_regime, stat, errmsg)
+   !> What both schemes set up the same way: the data of the run, the settings, the
+   !! iteration matrix W = mass_coefficient M + stiffness_coefficient K (each scheme gives
+   !! its own coefficients) with its Cholesky factor, the contact projection in the metric of
+   !! W with its options, room for one record per contact point, and t = 0.
+   subroutine set_up_system(self, system, settings, mass_coefficient, stiffness_coefficient, stat, errmsg)
       class(time_stepper), intent(inout) :: self
-      type(beam_model), intent(in) :: model
-      type(contact_set), intent(in) :: contacts
-      type(load_set), intent(in) :: loads
-      real(dp), intent(in) :: dt, theta, restitution, rayleigh_mass, rayleigh_stiffness
+      type(discrete_system), intent(in) :: system
+      type(stepper_settings), intent(in) :: settings
       real(dp), intent(in) :: mass_coefficient, stiffness_coefficient
-      character(len=*), intent(in) :: contact_regime   !! 'auto' | 'delassus' | 'band'
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: n
-      self%dt = dt
-      self%theta = theta
-      self%restitution = restitution
-      self%rayleigh_mass = rayleigh_mass
-      self%rayleigh_stiffness = rayleigh_stiffness
-      self%mass = model%mass
-      self%stiffness = model%stiffness
-      self%contacts = contacts
-      self%loads = loads
+      self%dt = settings%dt
+      self%theta = settings%theta
+      self%restitution = settings%restitution
+      self%rayleigh_mass = settings%rayleigh_mass
+      self%rayleigh_stiffness = settings%rayleigh_stiffness
+      self%compliant_rule = settings%compliant_rule
+      self%mass = system%model%mass
+      self%stiffness = system%model%stiffness
+      self%contacts = system%contacts
+      self%loads = system%loads
       self%t = 0
       self%steps = 0
-      n = contacts%count
-      allocate (self%active(n), self%impulse(n), self%velocity_before(n), self%velocity_after(n), &
-                self%approaching(n), self%contact_force(n))
-      self%contact_force = 0
-      self%active_count = 0
-      self%iteration_matrix = band_combination(mass_coefficient, model%mass, stiffness_coefficient, model%stiffness)
+      n = system%contacts%count
+      allocate (self%report%active(n), self%report%impulse(n), self%report%velocity_before(n), &
+                self%report%velocity_after(n), self%report%approaching(n), self%report%contact_force(n))
+      self%report%contact_force = 0
+      self%report%active_count = 0
+      self%iteration_matrix = band_combination(mass_coefficient, system%model%mass, stiffness_coefficient, &
+                                               system%model%stiffness)
       call band_factor(self%iteration_matrix, self%iteration_factor, stat, errmsg)
       if (stat /= 0) return
-      call self%projector%setup(self%iteration_matrix, self%iteration_factor, contacts, contact_regime)
-      if (contacts%springs%count > 0) call self%compliant%setup(contacts%springs, self%compliant_rule, contact_regime, &
-                                                                'newton')
+      associate (contact => settings%contact)
+         call self%projector%setup(self%iteration_matrix, self%iteration_factor, system%contacts, contact%contact_solver)
+         if (system%contacts%springs%count > 0) &
+            call self%compliant%setup(system%contacts%springs, self%compliant_rule, contact%contact_solver, 'newton')
+         self%projector%max_iterations = contact%contact_max_iterations
+         self%projector%method = contact_method_code(trim(contact%contact_method))
+         self%compliant%method = trim(contact%contact_method)
+      end associate
    end subroutine set_up_system
+
+   !> The state a run hands on: step, U, V (a scheme with more state extends this).
+   function stepper_state(self) result(state)
+      class(time_stepper), intent(in) :: self
+      type(dynamic_state) :: state
+      state%step = self%steps
+      state%u = self%u
+      state%v = self%v
+   end function stepper_state
+
+   !> The state that a checkpoint `record` holds (what `save_stepper_state` put there:
+   !! step, U and V of `unknowns` values each). A scheme with more state adds its `extra`
+   !! (`vibrobeam_stepper_factory`'s `state_from_record`). stat /= 0 when an item is
+   !! missing or of another size.
+   subroutine checkpoint_state(record, unknowns, state, stat, errmsg)
+      type(state_record), intent(in) :: record
+      integer, intent(in) :: unknowns
+      type(dynamic_state), intent(out) :: state
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      allocate (state%u(unknowns), state%v(unknowns))
+      call record%get_int64('stepper.steps', state%step, stat, errmsg)
+      if (stat == 0) call record%get_reals('stepper.u', state%u, stat, errmsg)
+      if (stat == 0) call record%get_reals('stepper.v', state%v, stat, errmsg)
+   end subroutine checkpoint_state
 
    !> Put everything a continued run needs to go on bitwise into `record` (docs/output.md,
    !! "Checkpoint and restart"): the step number, U and V, and the running energy sums.
@@ -239,12 +321,13 @@ contains
       call record%put_int64('stepper.steps', self%steps)
       call record%put_reals('stepper.u', self%u)
       call record%put_reals('stepper.v', self%v)
-      call record%put_reals('stepper.energy_sums', [self%work, self%dissipated_impacts, self%dissipated_damping, &
-                                                    self%dissipated_numerical])
+      call record%put_reals('stepper.energy_sums', [self%energy%work, self%energy%dissipated_impacts, &
+         self%energy%dissipated_damping, &
+                                                    self%energy%dissipated_numerical])
       if (self%contacts%springs%count > 0) then
-         call record%put_reals('stepper.contact_damping', [self%dissipated_contact_damping])
-         call record%put_reals('stepper.contact_force', self%contact_force)
-         call record%put_reals('stepper.compliant_accuracy', [self%unresolved_work, self%energy_scale])
+         call record%put_reals('stepper.contact_damping', [self%energy%dissipated_contact_damping])
+         call record%put_reals('stepper.contact_force', self%report%contact_force)
+         call record%put_reals('stepper.compliant_accuracy', [self%energy%unresolved_work, self%energy%energy_scale])
       end if
    end subroutine save_stepper_state
 
@@ -261,22 +344,22 @@ contains
       if (stat == 0) call record%get_reals('stepper.energy_sums', sums, stat, errmsg)
       if (stat == 0 .and. self%contacts%springs%count > 0) then
          call record%get_reals('stepper.contact_damping', sums(1:1), stat, errmsg)
-         if (stat == 0) self%dissipated_contact_damping = sums(1)
-         if (stat == 0) call record%get_reals('stepper.contact_force', self%contact_force, stat, errmsg)
+         if (stat == 0) self%energy%dissipated_contact_damping = sums(1)
+         if (stat == 0) call record%get_reals('stepper.contact_force', self%report%contact_force, stat, errmsg)
          if (stat == 0) call record%get_reals('stepper.energy_sums', sums, stat, errmsg)
       end if
       ! checkpoints written before issue 23 do not hold it: the sum starts again at 0
       if (stat == 0 .and. self%contacts%springs%count > 0 .and. record%find('stepper.compliant_accuracy') > 0) then
          call record%get_reals('stepper.compliant_accuracy', sums(1:2), stat, errmsg)
-         if (stat == 0) self%unresolved_work = sums(1)
-         if (stat == 0) self%energy_scale = sums(2)
+         if (stat == 0) self%energy%unresolved_work = sums(1)
+         if (stat == 0) self%energy%energy_scale = sums(2)
          if (stat == 0) call record%get_reals('stepper.energy_sums', sums, stat, errmsg)
       end if
       if (stat /= 0) return
-      self%work = sums(1)
-      self%dissipated_impacts = sums(2)
-      self%dissipated_damping = sums(3)
-      self%dissipated_numerical = sums(4)
+      self%energy%work = sums(1)
+      self%energy%dissipated_impacts = sums(2)
+      self%energy%dissipated_damping = sums(3)
+      self%energy%dissipated_numerical = sums(4)
       self%t = self%steps*self%dt
    end subroutine restore_stepper_state
 

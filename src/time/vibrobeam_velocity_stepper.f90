@@ -26,10 +26,11 @@ module vibrobeam_velocity_stepper
    use vibrobeam_kinds, only: dp
    use vibrobeam_status, only: stat_not_finite
    use vibrobeam_band, only: band_matvec, band_residual_solve
-   use vibrobeam_model, only: beam_model
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
-   use vibrobeam_time_stepper, only: time_stepper, save_stepper_state, restore_stepper_state
+   use vibrobeam_time_stepper, only: time_stepper, stepper_settings, dynamic_state, save_stepper_state, &
+      restore_stepper_state
+   use vibrobeam_discrete_system, only: discrete_system
    use vibrobeam_state_record, only: state_record
    use vibrobeam_compliant_law, only: end_force, stop_potential
    use vibrobeam_compliant_solver, only: rigid_active
@@ -62,32 +63,32 @@ module vibrobeam_velocity_stepper
 
 contains
 
-   !> Set up for a run: build and factor W, prepare the contact projection.
-   subroutine init(self, model, contacts, loads, dt, theta, gamma, restitution, rayleigh_mass, &
-                   rayleigh_stiffness, contact_regime, u0, v0, stat, errmsg)
+   !> Set up for a run: build and factor W, prepare the contact projection; U = start%u,
+   !! V = start%v (the scheme needs nothing beyond them).
+   subroutine init(self, system, settings, start, stat, errmsg)
       class(velocity_stepper), intent(inout) :: self
-      type(beam_model), intent(in) :: model
-      type(contact_set), intent(in) :: contacts
-      type(load_set), intent(in) :: loads
-      real(dp), intent(in) :: dt, theta, gamma, restitution, rayleigh_mass, rayleigh_stiffness
-      character(len=*), intent(in) :: contact_regime   !! 'auto' | 'delassus' | 'band'
-      real(dp), intent(in) :: u0(:), v0(:)
+      type(discrete_system), intent(in) :: system
+      type(stepper_settings), intent(in) :: settings
+      type(dynamic_state), intent(in) :: start
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      ! W = (1 + theta dt a) M + (theta^2 dt^2 + theta dt b) K
-      call self%set_up_system(model, contacts, loads, dt, theta, restitution, rayleigh_mass, rayleigh_stiffness, &
-                              1 + theta*dt*rayleigh_mass, theta**2*dt**2 + theta*dt*rayleigh_stiffness, &
-                              contact_regime, stat, errmsg)
+      integer :: n
+      associate (dt => settings%dt, theta => settings%theta)
+         ! W = (1 + theta dt a) M + (theta^2 dt^2 + theta dt b) K
+         call self%set_up_system(system, settings, 1 + theta*dt*settings%rayleigh_mass, &
+                                 theta**2*dt**2 + theta*dt*settings%rayleigh_stiffness, stat, errmsg)
+      end associate
       if (stat /= 0) return
-      self%gamma = gamma
-      self%activation_tolerance = 1e-12_dp*model%length
-      self%u = u0
-      self%v = v0
-      self%force = loads%at(0.0_dp)
-      allocate (self%rhs(size(u0)), self%work_vector(size(u0)), self%damping_vector(size(u0)), &
-                self%v_free(size(u0)), self%v_new(size(u0)), self%u_new(size(u0)), self%force_new(size(u0)), &
-                self%force_theta(size(u0)), source=0.0_dp)
-      allocate (self%signs(contacts%count), self%offsets(contacts%count))
+      self%gamma = settings%gamma
+      self%separating_restitution = settings%separating_restitution
+      self%activation_tolerance = 1e-12_dp*system%model%length
+      self%u = start%u
+      self%v = start%v
+      self%force = system%loads%at(0.0_dp)
+      n = size(start%u)
+      allocate (self%rhs(n), self%work_vector(n), self%damping_vector(n), self%v_free(n), self%v_new(n), &
+                self%u_new(n), self%force_new(n), self%force_theta(n), source=0.0_dp)
+      allocate (self%signs(system%contacts%count), self%offsets(system%contacts%count))
    end subroutine init
 
    !> The base type's restore, then F(t_n) from the loads (which a continued run may change).
@@ -146,13 +147,13 @@ contains
             else
                cycle
             end if
-            self%active(m) = c
-            self%velocity_before(m) = contact_value(self%contacts, c, self%v)
-            self%approaching(m) = signs(m)*self%velocity_before(m) <= 0
-            e_c = merge(self%restitution, self%separating_restitution, self%approaching(m))
-            offsets(m) = -e_c*self%velocity_before(m)
+            self%report%active(m) = c
+            self%report%velocity_before(m) = contact_value(self%contacts, c, self%v)
+            self%report%approaching(m) = signs(m)*self%report%velocity_before(m) <= 0
+            e_c = merge(self%restitution, self%separating_restitution, self%report%approaching(m))
+            offsets(m) = -e_c*self%report%velocity_before(m)
          end do
-         self%active_count = m
+         self%report%active_count = m
       end associate
       ! 3. projection (with no active point it is the identity: V^{n+1} = V_free), with the
       ! compliant stops' forces when the scene has any
@@ -161,17 +162,17 @@ contains
          if (stat /= 0) return
          call complete(self%v_new)
       else if (m > 0) then
-         call self%projector%project(self%v_free, self%active(1:m), self%signs(1:m), self%offsets(1:m), self%v_new, &
-                                     self%impulse(1:m), self%iterations, stat, errmsg)
-         self%linear_solves = self%projector%linear_solves
-         self%used_fallback = self%projector%used_fallback
+         call self%projector%project(self%v_free, self%report%active(1:m), self%signs(1:m), self%offsets(1:m), self%v_new, &
+                                     self%report%impulse(1:m), self%report%iterations, stat, errmsg)
+         self%report%linear_solves = self%projector%linear_solves
+         self%report%used_fallback = self%projector%used_fallback
          if (stat /= 0) return
          call complete(self%v_new)
       else
          call self%projector%record_free()
-         self%iterations = 0
-         self%linear_solves = 0
-         self%used_fallback = .false.
+         self%report%iterations = 0
+         self%report%linear_solves = 0
+         self%report%used_fallback = .false.
          call complete(self%v_free)
       end if
       if (.not. finite) then
@@ -188,7 +189,7 @@ contains
       if (self%loads%present) call swap(self%force, self%force_new)
       self%steps = self%steps + 1
       self%t = self%steps*self%dt
-      self%impulse_time = self%t   ! the impulse acts over [t_n, t_{n+1}]; recorded at its end
+      self%report%impulse_time = self%t   ! the impulse acts over [t_n, t_{n+1}]; recorded at its end
 
    contains
 
@@ -222,26 +223,27 @@ contains
             ! theta > 1/2). The springs' impulses dt s_j f_j H_j^T do the work
             ! dt s_j f_j H_j V^{n+theta} = -f_j dp_j whole, booked by `compliant_energy`: they
             ! have no part in the theta-term (theory §8, "Energy").
-            if (self%loads%present) self%work = self%work + work
+            if (self%loads%present) self%energy%work = self%energy%work + work
             impulse_power = 0
             do k = 1, m
-               self%velocity_after(k) = contact_value(self%contacts, self%active(k), v_next)
-               self%dissipated_impacts = self%dissipated_impacts - 0.5_dp*self%impulse(k)* &
-                                         (self%velocity_after(k) + self%velocity_before(k))
-               impulse_power = impulse_power + self%impulse(k)*(self%velocity_after(k) - self%velocity_before(k))
+               self%report%velocity_after(k) = contact_value(self%contacts, self%report%active(k), v_next)
+               self%energy%dissipated_impacts = self%energy%dissipated_impacts - 0.5_dp*self%report%impulse(k)* &
+                                         (self%report%velocity_after(k) + self%report%velocity_before(k))
+               impulse_power = impulse_power + self%report%impulse(k)*(self%report%velocity_after(k) &
+                  - self%report%velocity_before(k))
             end do
             if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) then
                rhs = theta*v_next + (1 - theta)*v
                call self%damping_into(rhs, self%damping_vector, work_vector)
-               self%dissipated_damping = self%dissipated_damping + dt*dot_product(rhs, self%damping_vector)
+               self%energy%dissipated_damping = self%energy%dissipated_damping + dt*dot_product(rhs, self%damping_vector)
             end if
             if (abs(theta - 0.5_dp) > 0) then
                rhs = v_next - v
                call band_matvec(self%mass, rhs, work_vector)
-               self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)*dot_product(rhs, work_vector)
+               self%energy%dissipated_numerical = self%energy%dissipated_numerical + (theta - 0.5_dp)*dot_product(rhs, work_vector)
                rhs = u_new - u
                call band_matvec(self%stiffness, rhs, work_vector)
-               self%dissipated_numerical = self%dissipated_numerical + (theta - 0.5_dp)* &
+               self%energy%dissipated_numerical = self%energy%dissipated_numerical + (theta - 0.5_dp)* &
                                            (dot_product(rhs, work_vector) - impulse_power)
             end if
             if (self%contacts%springs%count > 0) &
@@ -268,20 +270,17 @@ contains
          p0 = self%spring_penetrations(self%u)
          q = self%spring_penetrations(self%u + dt*(1 - theta)*self%v)
          call self%compliant%solve(springs, self%contacts, self%iteration_matrix, self%projector, v_free, q, p0, &
-                                   theta*dt, dt, theta, dt, rigid_active, self%active(1:m), signs, offsets, v_new, &
-                                   self%impulse(1:m), stat, errmsg)
-         self%iterations = self%compliant%iterations
-         self%linear_solves = self%compliant%linear_solves
-         self%used_fallback = self%projector%used_fallback
-         if (stat /= 0) then
-            stat = 3
-            return
-         end if
+                                   theta*dt, dt, theta, dt, rigid_active, self%report%active(1:m), signs, offsets, v_new, &
+                                   self%report%impulse(1:m), stat, errmsg)
+         self%report%iterations = self%compliant%iterations
+         self%report%linear_solves = self%compliant%linear_solves
+         self%report%used_fallback = self%projector%used_fallback
+         if (stat /= 0) return   ! (the compliant solver's own code: docs/output.md, "Status codes")
          call self%check_compliant_work(p0, self%compliant%p1, stat, errmsg)
          if (stat /= 0) return
-         self%contact_force = 0
+         self%report%contact_force = 0
          do j = 1, springs%count
-            self%contact_force(springs%point(j)) = self%contact_force(springs%point(j)) + springs%sign(j)* &
+            self%report%contact_force(springs%point(j)) = self%report%contact_force(springs%point(j)) + springs%sign(j)* &
                end_force(springs%stiffness(j), springs%exponent(j), springs%damping(j), dt, p0(j), self%compliant%p1(j))
          end do
       end associate

@@ -34,7 +34,7 @@ program benchmark_contact
    use vibrobeam_kinds, only: dp, int64, output_unit, error_unit
    use vibrobeam_sorting, only: median
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_band, only: band_matvec, band_solve
    use vibrobeam_band_statics, only: band_static_solve
@@ -126,7 +126,7 @@ contains
       type(scene_type), intent(in) :: scene
       logical, intent(in) :: measure
       type(run_record), intent(out) :: record
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       class(time_stepper), allocatable :: stepper
       real(dp), allocatable :: u_old(:), v_old(:), f_old(:), f_bar(:), work(:), hp(:), v_f(:)
       real(dp) :: de, norm
@@ -134,7 +134,7 @@ contains
       integer :: n, stat, m, k, a, c
       character(len=512) :: errmsg
       call prepare_test_scene(scene, prepared)
-      call start_time_stepper(scene, prepared, stepper, stat, errmsg)
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
       if (stat /= 0) error stop 'start_time_stepper failed'
       record%steps = nint(scene%time%t_end/scene%time%dt)
       elapsed = 0
@@ -154,14 +154,14 @@ contains
             exit
          end if
          record%steps_done = n
-         m = stepper%active_count
-         if (count(abs(stepper%impulse(1:m)) > 0) > 0) record%impulse_steps = record%impulse_steps + 1
-         record%largest_solves = max(record%largest_solves, stepper%linear_solves)
-         record%total_solves = record%total_solves + stepper%linear_solves
-         record%largest_iterations = max(record%largest_iterations, stepper%iterations)
+         m = stepper%report%active_count
+         if (count(abs(stepper%report%impulse(1:m)) > 0) > 0) record%impulse_steps = record%impulse_steps + 1
+         record%largest_solves = max(record%largest_solves, stepper%report%linear_solves)
+         record%total_solves = record%total_solves + stepper%report%linear_solves
+         record%largest_iterations = max(record%largest_iterations, stepper%report%iterations)
          if (stepper%projector%interior_iterations > 0) record%interior_steps = record%interior_steps + 1
          record%largest_interior = max(record%largest_interior, stepper%projector%interior_iterations)
-         if (stepper%used_fallback) record%fallbacks = record%fallbacks + 1
+         if (stepper%report%used_fallback) record%fallbacks = record%fallbacks + 1
          if (measure) then
             f_bar = 0.5_dp*(f_old + stepper%loads%at(stepper%t))
             allocate (work(size(u_old)))
@@ -179,10 +179,10 @@ contains
             v_f = v_old + v_f
             hp = 0*v_f
             do k = 1, m
-               c = stepper%active(k)
+               c = stepper%report%active(k)
                do a = 1, 4
                   if (stepper%contacts%dofs(a, c) /= 0) hp(stepper%contacts%dofs(a, c)) = &
-                     hp(stepper%contacts%dofs(a, c)) + stepper%contacts%weights(a, c)*stepper%impulse(k)
+                     hp(stepper%contacts%dofs(a, c)) + stepper%contacts%weights(a, c)*stepper%report%impulse(k)
                end do
             end do
             call band_matvec(stepper%iteration_matrix, stepper%v - v_f, work)
@@ -210,7 +210,7 @@ contains
    !! product with K) for the scene's matrices, median of 5 batches of >= 0.05 s.
    real(dp) function baseline_seconds(scene)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       class(time_stepper), allocatable :: stepper
       real(dp), allocatable :: x(:), y(:)
       real(dp) :: batches(5)
@@ -218,7 +218,7 @@ contains
       integer :: stat, b
       character(len=512) :: errmsg
       call prepare_test_scene(scene, prepared)
-      call start_time_stepper(scene, prepared, stepper, stat, errmsg)
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
       x = stepper%v + 1
       allocate (y(size(x)))
       calls = 1
@@ -316,7 +316,7 @@ contains
    subroutine part_static(unit)
       integer, intent(in) :: unit
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       real(dp), allocatable :: u(:), reaction(:)
       integer(int64) :: start, finish, rate
       integer :: i, k, method, stat, iterations
@@ -363,7 +363,7 @@ contains
    !! node i) of the tip (`tip`) or mid-span lift-off.
    subroutine liftoff_measures(scene, prepared, u, reaction, tip, lifted, continuum, deflection_error, largest)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(in) :: prepared
+      type(run_problem), intent(in) :: prepared
       real(dp), intent(in) :: u(:), reaction(:)
       logical, intent(in) :: tip
       real(dp), intent(out) :: lifted, continuum, deflection_error, largest

@@ -31,7 +31,7 @@ program benchmark_kernel
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_modes, only: compute_modes
    use vibrobeam_scene, only: scene_type, obstacle_type, validate_scene
-   use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, build_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    implicit none
 
@@ -95,7 +95,7 @@ contains
       integer, intent(in) :: unknowns
       type(bench_case), intent(out) :: case
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       character(len=:), allocatable :: warnings
       character(len=512) :: errmsg
       integer :: stat, i
@@ -111,9 +111,9 @@ contains
       call validate_scene(scene, stat, errmsg)
       if (stat /= 0) call fail('validate_scene', stat, errmsg)
       warnings = ''
-      call prepare_scene(scene, prepared, warnings, stat, errmsg)
+      call build_problem(scene, prepared, warnings, stat, errmsg)
       if (stat /= 0) call fail('prepare_scene', stat, errmsg)
-      call start_time_stepper(scene, prepared, case%stepper, stat, errmsg)
+      call new_stepper(scene, prepared, case%stepper, stat, errmsg)
       if (stat /= 0) call fail('start_time_stepper', stat, errmsg)
       case%model = prepared%model
       case%iteration_matrix = band_combination(1.0_dp, case%model%mass, (theta*time_step)**2, case%model%stiffness)
@@ -149,7 +149,7 @@ contains
          case (workload_step)
             call case%stepper%step(stat, errmsg)
             if (stat /= 0) call fail('step', stat, errmsg)
-            if (case%stepper%active_count /= 0) call fail('free flight', 1, 'a contact point became active')
+            if (case%stepper%report%active_count /= 0) call fail('free flight', 1, 'a contact point became active')
          case (workload_dpbtrs)
             case%y = case%x
             call dpbtrs('L', n, 3, 1, case%lapack_factor, 4, case%y, n, info)

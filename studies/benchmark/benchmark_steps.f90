@@ -45,6 +45,9 @@ program benchmark_steps
    use vibrobeam_initial_state, only: mode_field
    use vibrobeam_static, only: solve_static
    use vibrobeam_velocity_stepper, only: velocity_stepper
+   use vibrobeam_time_stepper, only: stepper_settings, dynamic_state
+   use vibrobeam_discrete_system, only: discrete_system
+   use vibrobeam_problem, only: stepper_settings_of
    use vibrobeam_contact_projector, only: regime_band, delassus_limit
    use vibrobeam_band, only: band_solve, band_matvec
    implicit none
@@ -229,15 +232,18 @@ contains
       real(dp), allocatable :: zero(:)
       character(len=512) :: errmsg
       integer :: stat
+      type(stepper_settings) :: settings
+      type(dynamic_state) :: start
       scene = base_scene(elements)
       scene%obstacles = [obstacle_type(side='below', x_from=beam_length, x_to=beam_length, &
                                        level_from=-1.0_dp, level_to=-1.0_dp)]
       call discretize(scene, model, contacts, loads)
       if (contacts%count /= 1) call fail('case (a): expected one contact point', contacts%count, '')
       allocate (zero(model%unknowns), source=0.0_dp)
-      call stepper%init(model, contacts, loads, scene%time%dt, scene%time%theta, scene%time%gamma, scene%impact%restitution, &
-                        scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness, 'auto', zero, &
-                        mode_field(model, 1, tip_velocity), stat, errmsg)
+      settings = stepper_settings_of(scene)
+      settings%contact%contact_solver = 'auto'
+      start = dynamic_state(u=zero, v=mode_field(model, 1, tip_velocity))
+      call stepper%init(discrete_system(model, contacts, loads), settings, start, stat, errmsg)
       if (stat /= 0) call fail('case (a): stepper%init', stat, errmsg)
    end subroutine start_tip_case
 
@@ -254,6 +260,7 @@ contains
       real(dp), allocatable :: u0(:), v0(:), reaction(:)
       character(len=512) :: errmsg
       integer :: stat, iterations
+      type(stepper_settings) :: settings
       scene = base_scene(elements)
       scene%obstacles = [obstacle_type(side='below', x_from=0.0_dp, x_to=beam_length, &
                                        level_from=0.0_dp, level_to=0.0_dp)]
@@ -269,9 +276,9 @@ contains
       if (count(reaction > 0) /= contacts%count) &
          call fail('case (b): the static equilibrium does not touch the obstacle at every node', &
                    count(reaction > 0), '')
-      call stepper%init(model, contacts, loads, scene%time%dt, scene%time%theta, scene%time%gamma, scene%impact%restitution, &
-                        scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness, regime, u0, v0, &
-                        stat, errmsg)
+      settings = stepper_settings_of(scene)
+      settings%contact%contact_solver = regime
+      call stepper%init(discrete_system(model, contacts, loads), settings, dynamic_state(u=u0, v=v0), stat, errmsg)
       if (stat /= 0) call fail('case (b): stepper%init', stat, errmsg)
    end subroutine start_longitudinal_case
 
@@ -354,10 +361,10 @@ contains
          do i = 1, count
             call stepper%step(stat, errmsg)
             if (stat /= 0) call fail('stepper%step', stat, errmsg)
-            tally%active_min = min(tally%active_min, stepper%active_count)
-            tally%active_max = max(tally%active_max, stepper%active_count)
-            tally%iterations = tally%iterations + stepper%iterations
-            tally%active = tally%active + stepper%active_count
+            tally%active_min = min(tally%active_min, stepper%report%active_count)
+            tally%active_max = max(tally%active_max, stepper%report%active_count)
+            tally%iterations = tally%iterations + stepper%report%iterations
+            tally%active = tally%active + stepper%report%active_count
          end do
          tally%steps = tally%steps + count
       case (workload_baseline)

@@ -13,7 +13,7 @@
 program static_cost
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene
+   use vibrobeam_problem, only: run_problem
    use vibrobeam_model, only: nodal_displacement
    use vibrobeam_static, only: solve_static, static_report
    use vibrobeam_band_statics, only: band_static_solve
@@ -55,7 +55,7 @@ contains
       character(len=*), intent(in) :: name, basis, method
       integer, intent(in) :: elements
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       type(static_report) :: report
       real(dp), allocatable :: u(:), reaction(:), seconds(:)
       real(dp) :: p, g, length, ei, a, h, value, exact

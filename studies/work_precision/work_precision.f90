@@ -37,7 +37,7 @@ program work_precision
    use vibrobeam_kinds, only: dp, int64, output_unit, error_unit
    use vibrobeam_scene, only: scene_type, validate_scene, unset
    use vibrobeam_test_support, only: read_test_scene
-   use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, build_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_model, only: point_row
    use vibrobeam_cantilever_exact, only: cantilever_frequency, cantilever_mode_shape
@@ -403,7 +403,7 @@ contains
       real(dp), intent(in) :: sample_interval   !! s, a whole number of steps
       logical, intent(in), optional :: once
       type(scene_type) :: configured
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       type(run_output) :: again
       character(len=:), allocatable :: warnings
       character(len=512) :: errmsg
@@ -420,7 +420,7 @@ contains
       call validate_scene(configured, stat, errmsg)
       if (stat == 0) then
          warnings = ''
-         call prepare_scene(configured, prepared, warnings, stat, errmsg)
+         call build_problem(configured, prepared, warnings, stat, errmsg)
       end if
       if (stat /= 0) then
          write (error_unit, '(a)') 'work_precision: '//trim(errmsg)
@@ -452,7 +452,7 @@ contains
    !! and the time spent in the stepping loop.
    subroutine simulate(scene, prepared, sample_interval, output)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(in) :: prepared
+      type(run_problem), intent(in) :: prepared
       real(dp), intent(in) :: sample_interval
       type(run_output), intent(out) :: output
       class(time_stepper), allocatable :: stepper
@@ -462,7 +462,7 @@ contains
       integer(int64) :: wall_start, wall_end, rate
       logical, allocatable :: in_contact(:), now(:)
       logical :: impulse
-      call start_time_stepper(scene, prepared, stepper, stat, errmsg)
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
       if (stat /= 0) then
          write (error_unit, '(a)') 'work_precision: '//trim(errmsg)
          error stop 1
@@ -493,19 +493,19 @@ contains
          ! impact bookkeeping as the recorder does it (docs/method.md, "Impacts")
          now = .false.
          impulse = .false.
-         do k = 1, stepper%active_count
-            if (abs(stepper%impulse(k)) <= 0) cycle
-            c = stepper%active(k)
+         do k = 1, stepper%report%active_count
+            if (abs(stepper%report%impulse(k)) <= 0) cycle
+            c = stepper%report%active(k)
             now(c) = .true.
             impulse = .true.
-            if (.not. in_contact(c) .and. stepper%approaching(k)) output%impacts = output%impacts + 1
+            if (.not. in_contact(c) .and. stepper%report%approaching(k)) output%impacts = output%impacts + 1
          end do
          in_contact = now
          if (impulse) then
             output%impulse_steps = output%impulse_steps + 1
-            if (stepper%impulse_time - last_impulse > bounce_gap) output%bounces = output%bounces + 1
-            if (stepper%impulse_time - last_impulse > episode_gap) output%episodes = output%episodes + 1
-            last_impulse = stepper%impulse_time
+            if (stepper%report%impulse_time - last_impulse > bounce_gap) output%bounces = output%bounces + 1
+            if (stepper%report%impulse_time - last_impulse > episode_gap) output%episodes = output%episodes + 1
+            last_impulse = stepper%report%impulse_time
          end if
       end do
       call cpu_time(cpu_end)

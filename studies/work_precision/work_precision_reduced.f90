@@ -40,7 +40,7 @@ program work_precision_reduced
    use vibrobeam_kinds, only: dp, output_unit, error_unit
    use vibrobeam_scene, only: scene_type
    use vibrobeam_test_support, only: read_test_scene, prepare_test_scene
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_model, only: node_row
    use vibrobeam_recorder, only: default_episode_gap
@@ -163,7 +163,7 @@ contains
       integer, intent(in) :: modes
       type(statistics) :: s
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       class(time_stepper), allocatable :: stepper
       real(dp), allocatable :: tip_row(:)
       logical, allocatable :: in_contact(:), now(:)
@@ -199,7 +199,7 @@ contains
       do repetition = 0, 3
          if (allocated(stepper)) deallocate (stepper)
          call cpu_time(start)
-         call start_time_stepper(scene, prepared, stepper, stat, errmsg)
+         call new_stepper(scene, prepared, stepper, stat, errmsg)
          call cpu_time(finish)
          if (repetition == 0) s%setup_seconds = s%setup_seconds + finish - start
          if (stat /= 0) then
@@ -224,11 +224,11 @@ contains
                error stop 1
             end if
             now = .false.
-            do j = 1, stepper%active_count
-               c = stepper%active(j)
-               if (abs(stepper%impulse(j)) <= 0) cycle
+            do j = 1, stepper%report%active_count
+               c = stepper%report%active(j)
+               if (abs(stepper%report%impulse(j)) <= 0) cycle
                now(c) = .true.
-               if (.not. in_contact(c) .and. stepper%approaching(j)) then
+               if (.not. in_contact(c) .and. stepper%report%approaching(j)) then
                   if (s%first_impact < 0) s%first_impact = stepper%t
                   if (n > first) impacts = impacts + 1
                   if (n > first .and. stepper%t - last_impulse > gap) episodes = episodes + 1
@@ -236,7 +236,7 @@ contains
                last_impulse = stepper%t
             end do
             in_contact = now
-            if (n == first) lost_start = stepper%dissipated_impacts
+            if (n == first) lost_start = stepper%energy%dissipated_impacts
             if (n > first) then
                tip = dot_product(tip_row, stepper%u)
                sum_square = sum_square + tip**2
@@ -251,7 +251,7 @@ contains
             s%rms_tip = sqrt(sum_square/max(samples, 1))
             s%impact_rate = impacts/((steps - first)*scene%time%dt)
             s%episode_rate = episodes/((steps - first)*scene%time%dt)
-            s%energy_lost = stepper%dissipated_impacts - lost_start
+            s%energy_lost = stepper%energy%dissipated_impacts - lost_start
          end if
       end do
       s%cpu_per_step = times(1) + times(2) + times(3) - maxval(times(1:3)) - minval(times(1:3))

@@ -24,7 +24,7 @@
 program check_rigid_impacts
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_contact_set, only: contact_value
    use vibrobeam_hdf5_reader, only: read_real_1d, read_attr_int
@@ -36,7 +36,7 @@ program check_rigid_impacts
    character(len=512) :: errmsg
    character(len=80) :: label
    type(scene_type) :: scene
-   type(prepared_scene) :: prepared
+   type(run_problem) :: prepared
    class(time_stepper), allocatable :: s
    logical, allocatable :: previous(:), touched(:), pushing(:)
    real(dp), allocatable :: times(:), impulses(:), file_times(:), file_impulses(:), rates(:)
@@ -48,7 +48,7 @@ program check_rigid_impacts
    call get_command_argument(2, input)
    scene = read_test_scene(trim(input))
    call prepare_test_scene(scene, prepared)
-   call start_time_stepper(scene, prepared, s, stat, errmsg)
+   call new_stepper(scene, prepared, s, stat, errmsg)
    if (stat /= 0) error stop 'check_rigid_impacts: cannot start the stepper'
    if (scene%output%measure_from > 0) error stop 'check_rigid_impacts: the statistics window must be the whole run'
    steps = nint(scene%time%t_end/scene%time%dt)
@@ -72,19 +72,19 @@ program check_rigid_impacts
    count = 0
    behind_spring = 0
    do n = 1, steps
-      pushing = abs(s%contact_force) > 0   ! the springs' force at t_n, before the step
+      pushing = abs(s%report%contact_force) > 0   ! the springs' force at t_n, before the step
       call s%step(stat, errmsg)
       if (stat /= 0) error stop 'check_rigid_impacts: a step failed'
       touched = .false.
-      do k = 1, s%active_count
-         if (abs(s%impulse(k)) <= 0) cycle
-         c = s%active(k)
+      do k = 1, s%report%active_count
+         if (abs(s%report%impulse(k)) <= 0) cycle
+         c = s%report%active(k)
          touched(c) = .true.
-         side = nint(sign(1.0_dp, s%impulse(k)))   ! +1: pushed up by the obstacle below
-         if (previous(c) .or. side*s%velocity_before(k) > 0) cycle
+         side = nint(sign(1.0_dp, s%report%impulse(k)))   ! +1: pushed up by the obstacle below
+         if (previous(c) .or. side*s%report%velocity_before(k) > 0) cycle
          count = count + 1
-         times = [times, s%impulse_time]
-         impulses = [impulses, s%impulse(k)]
+         times = [times, s%report%impulse_time]
+         impulses = [impulses, s%report%impulse(k)]
          obstacle = rigid_obstacle(s%contacts%x(c), side)
          if (obstacle == 0) error stop 'check_rigid_impacts: a rigid impulse without a rigid obstacle'
          per_obstacle(obstacle) = per_obstacle(obstacle) + 1

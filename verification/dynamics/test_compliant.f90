@@ -45,7 +45,7 @@
 program test_compliant
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_static, only: solve_static, static_report
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_contact_set, only: contact_set
@@ -75,7 +75,7 @@ contains
 
    subroutine static_checks()
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       real(dp), parameter :: stiffnesses(9) = [1e2_dp, 1e3_dp, 1e4_dp, 1e5_dp, 1e6_dp, 1e7_dp, 1e8_dp, 1e9_dp, 1e10_dp]
       integer, parameter :: meshes(4) = [1, 2, 4, 8]
       real(dp), allocatable :: u(:), reaction(:)
@@ -128,7 +128,7 @@ contains
 
    subroutine energy_checks()
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       real(dp) :: drift(2), bound(2), ratio(2), balance_drift, balance_ratio, numerical
       logical :: engaged(2), rigid_hit(2), damped
       integer :: r
@@ -157,7 +157,7 @@ contains
    subroutine run(scene, prepared, drift, bound, ratio, engaged, rigid_hit, balance_drift, balance_ratio, &
                   numerical, damped)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(in) :: prepared
+      type(run_problem), intent(in) :: prepared
       real(dp), intent(out) :: drift, bound, ratio, balance_drift, balance_ratio, numerical
       logical, intent(out) :: engaged, rigid_hit, damped
       class(time_stepper), allocatable :: s
@@ -167,7 +167,7 @@ contains
       logical, allocatable :: seen(:)
       integer :: n, steps, stat
       character(len=256) :: errmsg
-      call start_time_stepper(scene, prepared, s, stat, errmsg)
+      call new_stepper(scene, prepared, s, stat, errmsg)
       if (stat /= 0) error stop 'cannot start the stepper'
       steps = nint(scene%time%t_end/scene%time%dt)
       associate (springs => s%contacts%springs)
@@ -183,7 +183,7 @@ contains
          squares = 0
          rigid_hit = .false.
          potential_bound = gamma_n(4)*s%contact_potential()
-         ends_bound = gamma_n(8)*(s%contact_potential() + abs(s%dissipated_contact_damping))
+         ends_bound = gamma_n(8)*(s%contact_potential() + abs(s%energy%dissipated_contact_damping))
          do n = 1, steps
             u0 = s%u
             v0 = s%v
@@ -192,7 +192,7 @@ contains
             call s%step(stat, errmsg)
             if (stat /= 0) error stop 'step failed'
             call ledger%after_step(s)
-            if (s%active_count > 0) rigid_hit = rigid_hit .or. any(abs(s%impulse(1:s%active_count)) > 0)
+            if (s%report%active_count > 0) rigid_hit = rigid_hit .or. any(abs(s%report%impulse(1:s%report%active_count)) > 0)
             p1 = s%spring_penetrations(s%u)
             seen = seen .or. p1 > 0
             spring_step = spring_step_bound(s, u0, v0, p0, p1)
@@ -209,11 +209,11 @@ contains
             balance = full_balance(s)
             balance_drift = max(balance_drift, abs(balance - b0))
             balance_ratio = max(balance_ratio, abs(balance - b0)/(bound + ends_bound + &
-                                gamma_n(8)*(s%contact_potential() + abs(s%dissipated_contact_damping))))
+                                gamma_n(8)*(s%contact_potential() + abs(s%energy%dissipated_contact_damping))))
          end do
          engaged = all(seen)
-         numerical = s%dissipated_numerical
-         damped = s%dissipated_contact_damping > 0
+         numerical = s%energy%dissipated_numerical
+         damped = s%energy%dissipated_contact_damping > 0
       end associate
    end subroutine run
 
@@ -249,7 +249,7 @@ contains
                + gamma_n(springs%count + 3)*(abs(c%force(j)) + 2*abs(c%elastic(j)))*abs(p1(j) - p0(j))
             call add_abs_row(s%contacts, hrow, springs%point(j), s%dt*abs(c%force(j)))
          end do
-         bound = bound + unit_roundoff*abs(s%dissipated_contact_damping)
+         bound = bound + unit_roundoff*abs(s%energy%dissipated_contact_damping)
          if (any(abs(c%force) > 0)) then
             bound = bound + gamma_n(3*kd + 4)*dot_product(abs(v_theta), &
                abs_factor_times(c%jacobian_factor, abs(s%v - v_free))) &
@@ -262,7 +262,7 @@ contains
    !> theta = 1 and 0.75, both rules: the balance stays constant to its bound at every step.
    subroutine balance_checks()
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       real(dp), parameter :: thetas(2) = [1.0_dp, 0.75_dp]
       character(len=8), parameter :: rules(2) = [character(len=8) :: 'gradient', 'mean']
       real(dp) :: drift, ratio, numerical, energy_drift, energy_ratio, bound
@@ -295,7 +295,7 @@ contains
    !! contact damping).
    real(dp) function full_balance(s)
       class(time_stepper), intent(in) :: s
-      full_balance = stepper_balance(s) + s%contact_potential() + s%dissipated_contact_damping
+      full_balance = stepper_balance(s) + s%contact_potential() + s%energy%dissipated_contact_damping
    end function full_balance
 
    subroutine add_abs_row(contacts, y, c, w)

@@ -41,7 +41,7 @@
 program test_energy
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_contact_set, only: contact_value, no_bound
    use vibrobeam_roundoff_bounds, only: energy_ledger, stepper_balance
@@ -71,7 +71,7 @@ program test_energy
 
    type(test_counter) :: t
    type(scene_type) :: scene
-   type(prepared_scene) :: prepared
+   type(run_problem) :: prepared
    type(run_record) :: r, plain
    character(len=512) :: path, mode, argument
    real(dp) :: previous
@@ -201,7 +201,7 @@ contains
       character(len=512) :: errmsg
       with_bounds = .true.
       if (present(bounds)) with_bounds = bounds
-      call start_time_stepper(scene, prepared, stepper, stat, errmsg)
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
       call ledger%start(stepper)
       e0 = stepper%kinetic_energy() + stepper%elastic_energy()
       e_old = e0
@@ -233,7 +233,7 @@ contains
          call ledger%after_step(stepper)
          e_new = stepper%kinetic_energy() + stepper%elastic_energy()
          b_new = stepper_balance(stepper)
-         scale = max(scale, abs(e_new), abs(stepper%work))
+         scale = max(scale, abs(e_new), abs(stepper%energy%work))
          if (e0 > 0) r%drift = max(r%drift, abs(e_new/e0 - 1))
          if (e0 > 0) r%rise = max(r%rise, (e_new - e_old)/e0)
          ! the energy may rise by the balance's round-off and by the impacts' (below 0)
@@ -243,19 +243,19 @@ contains
          r%conserve_ratio = max(r%conserve_ratio, abs(e_new - e0)/(ledger%drift() + impacts_total))
          r%step_ratio = max(r%step_ratio, abs(b_new - b_old)/ledger%one_step())
          r%drift_ratio = max(r%drift_ratio, abs(b_new - b0)/ledger%drift())
-         r%impacts_ratio = max(r%impacts_ratio, -(stepper%dissipated_impacts - ledger%impacts_before)/ &
+         r%impacts_ratio = max(r%impacts_ratio, -(stepper%energy%dissipated_impacts - ledger%impacts_before)/ &
                                max(ledger%impacts, tiny(1.0_dp)))
-         if (e_old > 0) r%gain = max(r%gain, -(stepper%dissipated_impacts - ledger%impacts_before)/e_old)
-         increment = stepper%dissipated_numerical - ledger%numerical_before
+         if (e_old > 0) r%gain = max(r%gain, -(stepper%energy%dissipated_impacts - ledger%impacts_before)/e_old)
+         increment = stepper%energy%dissipated_numerical - ledger%numerical_before
          r%numerical_lowest = min(r%numerical_lowest, increment)
-         r%numerical_running = min(r%numerical_running, stepper%dissipated_numerical)
-         if (all(abs(stepper%impulse(1:stepper%active_count)) <= 0)) &
+         r%numerical_running = min(r%numerical_running, stepper%energy%dissipated_numerical)
+         if (all(abs(stepper%report%impulse(1:stepper%report%active_count)) <= 0)) &
             r%numerical_ratio = max(r%numerical_ratio, -increment/max(ledger%numerical, tiny(1.0_dp)))
          e_old = e_new
          b_old = b_new
          now = .false.
-         do k = 1, stepper%active_count
-            if (abs(stepper%impulse(k)) > 0) now(stepper%active(k)) = .true.
+         do k = 1, stepper%report%active_count
+            if (abs(stepper%report%impulse(k)) > 0) now(stepper%report%active(k)) = .true.
          end do
          r%impacts = r%impacts + count(now .and. .not. touching)
          touching = now
@@ -273,10 +273,10 @@ contains
       if (e0 > 0) r%conserve_bound = (ledger%drift() + impacts_total)/e0
       r%drift_bound = ledger%drift()/scale
       ! energies of the 'theta' table relative to the largest energy of the run (E0 may be 0)
-      r%numerical_end = stepper%dissipated_numerical/scale
+      r%numerical_end = stepper%energy%dissipated_numerical/scale
       r%numerical_lowest = r%numerical_lowest/scale
       r%numerical_running = r%numerical_running/scale
       if ((mode == 'dissipate' .or. mode == 'measure') .and. e0 > 0) r%drift = 1 - e_new/e0
-      if (mode == 'theta') r%drift = stepper%dissipated_impacts/scale
+      if (mode == 'theta') r%drift = stepper%energy%dissipated_impacts/scale
    end function run
 end program test_energy

@@ -19,7 +19,7 @@
 program test_first_impact
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_contact_set, only: contact_value
    use vibrobeam_cantilever_exact, only: cantilever_frequency
@@ -28,7 +28,7 @@ program test_first_impact
    implicit none
    type(test_counter) :: t
    type(scene_type) :: scene
-   type(prepared_scene) :: prepared
+   type(run_problem) :: prepared
    character(len=512) :: path, errmsg
    real(dp), parameter :: plain_steps(4) = [1e-3_dp, 5e-4_dp, 2.5e-4_dp, 1.25e-4_dp]
    real(dp), parameter :: steps_per_t_star(4) = [50.25_dp, 100.25_dp, 200.25_dp, 400.25_dp]
@@ -56,17 +56,17 @@ contains
    write (output_unit, '(a)') '     dt       t_impact    (t_impact - t*)/dt   max penetration   bound'
    do k = 1, size(steps)
       scene%time%dt = steps(k)
-      call start_time_stepper(scene, prepared, stepper, stat, errmsg)
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
       t_impact = -1
       depth(k) = 0
       v_impact = 0
       do n = 1, nint(scene%time%t_end/scene%time%dt)
          call stepper%step(stat, errmsg)
          if (stat /= 0) error stop 'step failed'
-         if (t_impact < 0 .and. stepper%active_count > 0) then
-            if (abs(stepper%impulse(1)) > 0) then
-               t_impact = stepper%impulse_time
-               v_impact = abs(stepper%velocity_before(1))
+         if (t_impact < 0 .and. stepper%report%active_count > 0) then
+            if (abs(stepper%report%impulse(1)) > 0) then
+               t_impact = stepper%report%impulse_time
+               v_impact = abs(stepper%report%velocity_before(1))
             end if
          end if
          depth(k) = max(depth(k), prepared%contacts%lower(1) - contact_value(prepared%contacts, 1, stepper%u))

@@ -10,8 +10,8 @@
 program test_free_flight
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_stepper
-   use vibrobeam_velocity_stepper, only: velocity_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_modes, only: compute_modes
    use vibrobeam_band, only: band_matvec
    use vibrobeam_cantilever_exact, only: cantilever_frequency, cantilever_mode_shape
@@ -19,7 +19,7 @@ program test_free_flight
    implicit none
    type(test_counter) :: t
    type(scene_type) :: scene
-   type(prepared_scene) :: prepared
+   type(run_problem) :: prepared
    character(len=512) :: path
    real(dp), parameter :: steps_per_unit(4) = [400.0_dp, 800.0_dp, 1600.0_dp, 3200.0_dp]
    real(dp) :: error(size(steps_per_unit)), order, exact_tip, omega1, tip
@@ -63,16 +63,16 @@ contains
 
    function run(scene, prepared) result(u)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(in) :: prepared
+      type(run_problem), intent(in) :: prepared
       real(dp), allocatable :: u(:)
-      type(velocity_stepper) :: stepper
+      class(time_stepper), allocatable :: stepper
       integer :: n, stat
       character(len=512) :: errmsg
-      call start_stepper(scene, prepared, stepper, stat, errmsg)
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
       do n = 1, nint(scene%time%t_end/scene%time%dt)
          call stepper%step(stat, errmsg)
          if (stat /= 0) error stop 'step failed'
-         if (stepper%active_count > 0) error stop 'an obstacle was touched in free flight'
+         if (stepper%report%active_count > 0) error stop 'an obstacle was touched in free flight'
       end do
       u = stepper%u
    end function run
@@ -80,7 +80,7 @@ contains
    !> U(t) = sum_k phi_k (a_k cos(omega_k t) + b_k/omega_k sin(omega_k t)), with
    !! M-normalized eigenvectors phi_k, a = Phi^T M U0, b = Phi^T M V0.
    function modal_solution(prepared, time) result(u)
-      type(prepared_scene), intent(in) :: prepared
+      type(run_problem), intent(in) :: prepared
       real(dp), intent(in) :: time
       real(dp), allocatable :: u(:), omega(:), shapes(:,:), vectors(:,:)
       real(dp) :: m_phi(prepared%model%unknowns), norm

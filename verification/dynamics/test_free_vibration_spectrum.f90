@@ -19,8 +19,8 @@ program test_free_vibration_spectrum
    use vibrobeam_text, only: integer_text, real_text
    use vibrobeam_scene, only: scene_type
    use vibrobeam_model, only: nodal_displacement
-   use vibrobeam_setup, only: prepared_scene, start_stepper
-   use vibrobeam_velocity_stepper, only: velocity_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_modes, only: compute_modes
    use vibrobeam_initial_state, only: mode_field
    use vibrobeam_spectrum, only: amplitude_spectrum, spectral_peaks, bin_width
@@ -33,8 +33,8 @@ program test_free_vibration_spectrum
    real(dp), parameter :: amplitude_tolerance = 2e-2_dp
    type(test_counter) :: t
    type(scene_type) :: scene
-   type(prepared_scene) :: prepared
-   type(velocity_stepper) :: stepper
+   type(run_problem) :: prepared
+   class(time_stepper), allocatable :: stepper
    character(len=512) :: path, errmsg
    real(dp), allocatable :: omega(:), shapes(:,:), vectors(:,:), tip(:), frequency(:), amplitude(:)
    integer, allocatable :: peaks(:)
@@ -67,14 +67,15 @@ program test_free_vibration_spectrum
                      'bin width '//real_text(width)//' Hz, spacing '//real_text(minval(natural(2:) - natural(:modes - 1)))// &
                      ' Hz')
 
-   ! released from rest in modes 1..3 (continuum shapes interpolated, tip value a_k)
-   prepared%u0 = 0
+   ! released from rest in modes 1..3 (continuum shapes interpolated, tip value a_k): the
+   ! state the stepper starts from
+   prepared%start%u = 0
    do k = 1, modes
-      prepared%u0 = prepared%u0 + mode_field(prepared%model, k, tip_amplitudes(k))
+      prepared%start%u = prepared%start%u + mode_field(prepared%model, k, tip_amplitudes(k))
    end do
-   prepared%v0 = 0
+   prepared%start%v = 0
 
-   call start_stepper(scene, prepared, stepper, stat, errmsg)
+   call new_stepper(scene, prepared, stepper, stat, errmsg)
    if (stat /= 0) then
       write (error_unit, '(a)') 'FAIL start_stepper: '//trim(errmsg)
       error stop 1

@@ -17,7 +17,7 @@
 program test_position_records
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_band, only: band_matvec
    use vibrobeam_contact_set, only: contact_value
@@ -26,7 +26,7 @@ program test_position_records
    implicit none
    type(test_counter) :: t
    type(scene_type) :: scene
-   type(prepared_scene) :: prepared
+   type(run_problem) :: prepared
    class(time_stepper), allocatable :: stepper
    type(energy_ledger) :: ledger
    character(len=512) :: path, errmsg
@@ -38,7 +38,7 @@ program test_position_records
    scene = read_test_scene(trim(path))
    scene%time%scheme = 'position'
    call prepare_test_scene(scene, prepared)
-   call start_time_stepper(scene, prepared, stepper, stat, errmsg)
+   call new_stepper(scene, prepared, stepper, stat, errmsg)
    call ledger%start(stepper)
    worst_impulse = 0
    worst_work = 0
@@ -50,7 +50,7 @@ program test_position_records
          u_old = ledger%u_before
          u_older = ledger%u_before_previous
          t_before = stepper%t
-         work_before = stepper%work
+         work_before = stepper%energy%work
          force = prepared%loads%at(t_before)
          call stepper%step(stat, errmsg)
          if (stat /= 0) error stop 'step failed'
@@ -67,29 +67,29 @@ program test_position_records
                      + dt**2*(abs_band_times(stepper%stiffness, theta*abs(stepper%u) + abs(1 - 2*theta)*abs(u_old) + &
                                              theta*abs(u_older)) + abs(force))
          deallocate (mu, ku, cu)
-         do k = 1, stepper%active_count
-            c = stepper%active(k)
+         do k = 1, stepper%report%active_count
+            c = stepper%report%active(k)
             dof = prepared%contacts%dofs(1, c)   ! Hermite: H_c U = U(dof)
             reaction = equation(dof)/dt**2
             bound = (ledger%residual(dof) + gamma_n(2*stepper%stiffness%kd + 6)*magnitude(dof))/dt**2*dt
-            worst_impulse = max(worst_impulse, abs(stepper%impulse(k) - reaction*dt)/bound)
+            worst_impulse = max(worst_impulse, abs(stepper%report%impulse(k) - reaction*dt)/bound)
             impulses = impulses + 1
-            stamped_at_t_n = stamped_at_t_n .and. abs(stepper%impulse_time - t_before) <= 0
+            stamped_at_t_n = stamped_at_t_n .and. abs(stepper%report%impulse_time - t_before) <= 0
             velocity = (contact_value(prepared%contacts, c, u_old) - contact_value(prepared%contacts, c, u_older))/dt
-            call t%check_true('velocity before = H(U^n - U^{n-1})/dt', abs(stepper%velocity_before(k) - velocity) <= 0)
+            call t%check_true('velocity before = H(U^n - U^{n-1})/dt', abs(stepper%report%velocity_before(k) - velocity) <= 0)
             velocity = (contact_value(prepared%contacts, c, stepper%u) - contact_value(prepared%contacts, c, u_old))/dt
-            call t%check_true('velocity after = H(U^{n+1} - U^n)/dt', abs(stepper%velocity_after(k) - velocity) <= 0)
+            call t%check_true('velocity after = H(U^{n+1} - U^n)/dt', abs(stepper%report%velocity_after(k) - velocity) <= 0)
          end do
          ! no impulse where the equation needs none
-         if (stepper%active_count == 0) then
+         if (stepper%report%active_count == 0) then
             dof = prepared%contacts%dofs(1, 1)
             worst_impulse = max(worst_impulse, abs(equation(dof))/(ledger%residual(dof) + &
                                 gamma_n(2*stepper%stiffness%kd + 6)*magnitude(dof)))
          end if
          stride = stepper%u - u_older
-         worst_work = max(worst_work, abs(stepper%work - work_before - 0.5_dp*dot_product(force, stride))/ &
+         worst_work = max(worst_work, abs(stepper%energy%work - work_before - 0.5_dp*dot_product(force, stride))/ &
                           (gamma_n(size(stride) + 4)*0.5_dp*dot_product(abs(force), abs(stride)) + &
-                           gamma_n(2)*abs(stepper%work) + tiny(1.0_dp)))
+                           gamma_n(2)*abs(stepper%energy%work) + tiny(1.0_dp)))
          call t%check_true('the stepper reports v = (U^{n+1} - U^n)/dt', all(abs(stepper%v - (stepper%u - u_old)/dt) <= 0))
       end do
    end associate

@@ -19,7 +19,7 @@
 program test_static
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene
+   use vibrobeam_problem, only: run_problem
    use vibrobeam_static, only: solve_static, static_report
    use vibrobeam_contact_set, only: contact_value
    use vibrobeam_roundoff_bounds, only: gamma_n
@@ -27,7 +27,7 @@ program test_static
    implicit none
    type(test_counter) :: t
    type(scene_type) :: scene
-   type(prepared_scene) :: prepared
+   type(run_problem) :: prepared
    character(len=512) :: dir
    character(len=16) :: basis
    real(dp), allocatable :: u(:), r(:), du(:), dr(:), u_whole(:), r_whole(:), du_whole(:), dr_whole(:), gap(:)
@@ -110,7 +110,7 @@ contains
 
    !> solve_static, and the derived round-off bounds of its U and R (`static_report`).
    subroutine solve(prepared, u, reaction, u_error, reaction_error)
-      type(prepared_scene), intent(in) :: prepared
+      type(run_problem), intent(in) :: prepared
       real(dp), allocatable, intent(out) :: u(:), reaction(:), u_error(:), reaction_error(:)
       type(static_report) :: report
       integer :: iterations, stat

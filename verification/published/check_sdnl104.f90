@@ -17,7 +17,7 @@ program check_sdnl104
    use vibrobeam_hdf5_reader, only: read_real_1d
    use vibrobeam_cantilever_exact, only: cantilever_root
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene
+   use vibrobeam_problem, only: run_problem
    use vibrobeam_roundoff_bounds, only: balance_bounds_at, gamma_n
    use vibrobeam_static, only: solve_static, static_report
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
@@ -34,7 +34,7 @@ program check_sdnl104
    real(dp) :: area, inertia, rho_s, ei, omega(modes), low, high, middle, exact_reaction, drift, ratio
    integer :: stat, k, iteration
    type(scene_type) :: scene
-   type(prepared_scene) :: prepared
+   type(run_problem) :: prepared
    call get_command_argument(1, dynamics_file)
    call get_command_argument(2, static_file)
    call get_command_argument(3, dynamics_input)

@@ -52,7 +52,7 @@
 program test_static_closed_forms
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene
+   use vibrobeam_problem, only: run_problem
    use vibrobeam_model, only: nodal_displacement
    use vibrobeam_static, only: solve_static, static_report
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
@@ -85,7 +85,7 @@ contains
       character(len=*), intent(in) :: file, basis
       integer, intent(in) :: elements
       type(scene_type), intent(out) :: scene
-      type(prepared_scene), intent(out) :: prepared
+      type(run_problem), intent(out) :: prepared
       real(dp), intent(out) :: p, g, length, ei
       real(dp), allocatable, intent(out) :: w(:), w_bound(:), reaction(:)
       type(static_report), intent(out) :: report
@@ -133,7 +133,7 @@ contains
       character(len=*), intent(in) :: basis
       integer, intent(in) :: elements
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       type(static_report) :: report
       real(dp), allocatable :: w(:), w_bound(:), reaction(:)
       real(dp) :: p, g, length, ei, exact, a, h, total, tolerance

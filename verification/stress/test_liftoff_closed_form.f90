@@ -55,7 +55,7 @@
 program test_liftoff_closed_form
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene
+   use vibrobeam_problem, only: run_problem
    use vibrobeam_static, only: solve_static, static_report
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
    implicit none
@@ -175,7 +175,7 @@ contains
 
    subroutine check_scene(scene)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       real(dp), allocatable :: u(:), reaction(:), force(:), u_ref(:), r_ref(:), bound_u(:), bound_r(:), &
                                trial_u(:), trial_r(:)
       real(dp) :: h, q, f, ei, a, length, delta_w, theta_t, trial_theta, continuum, predicted, deflection, sum_bound

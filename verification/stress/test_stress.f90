@@ -43,7 +43,7 @@
 program test_stress
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_velocity_stepper, only: velocity_stepper
    use vibrobeam_band, only: symmetric_band, band_matvec, band_solve
@@ -108,7 +108,7 @@ contains
 
    subroutine dynamic_checks(scene)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       class(time_stepper), allocatable :: stepper
       real(dp), allocatable :: u_old(:), v_old(:), f_old(:), f_new(:), f_bar(:), dv(:), du(:), v_bar(:), u_bar(:), &
                                rho(:), scale(:), work(:), v_f(:), hp(:), k_u(:), b(:)
@@ -121,7 +121,7 @@ contains
       character(len=512) :: errmsg
       character(len=200) :: detail
       call prepare_test_scene(scene, prepared)
-      call start_time_stepper(scene, prepared, stepper, stat, errmsg)
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
       if (stat /= 0) error stop 'start_time_stepper failed'
       if (scene%time%scheme /= 'velocity' .or. abs(scene%time%theta - 0.5_dp) > 0 .or. scene%beam%rayleigh_mass > 0 .or. &
           scene%beam%rayleigh_stiffness > 0) error stop 'test_stress: velocity scheme, theta = 1/2, no damping only'
@@ -153,12 +153,12 @@ contains
                call t%check_true('step succeeds', .false., trim(errmsg))
                exit
             end if
-            if (stepper%used_fallback) call t%check_true('no fall-back', .false.)
-            largest_solves = max(largest_solves, stepper%linear_solves)
-            total_solves = total_solves + stepper%linear_solves
+            if (stepper%report%used_fallback) call t%check_true('no fall-back', .false.)
+            largest_solves = max(largest_solves, stepper%report%linear_solves)
+            total_solves = total_solves + stepper%report%linear_solves
             if (stepper%projector%interior_iterations > 0) interior_steps = interior_steps + 1
-            m = stepper%active_count
-            if (count(abs(stepper%impulse(1:m)) > 0) > 0) contact_steps = contact_steps + 1
+            m = stepper%report%active_count
+            if (count(abs(stepper%report%impulse(1:m)) > 0) > 0) contact_steps = contact_steps + 1
             f_new = stepper%loads%at(stepper%t)
             f_bar = 0.5_dp*(f_old + f_new)
             dv = stepper%v - v_old
@@ -169,14 +169,15 @@ contains
             allocate (rho(size(dv)), work(size(dv)), k_u(size(dv)))
             call band_matvec(stepper%mass, dv, rho)
             call band_matvec(stepper%stiffness, u_bar, k_u)
-            hp = rows_transpose(contacts, stepper%active(1:m), stepper%impulse(1:m), .false., size(dv))
+            hp = rows_transpose(contacts, stepper%report%active(1:m), stepper%report%impulse(1:m), .false., size(dv))
             rho = rho + dt*k_u - dt*f_bar - hp
             v_f = hp
             call band_solve(stepper%iteration_factor, v_f)
             v_f = stepper%v - v_f
             scale = abs_factor_times(stepper%iteration_factor, v_f - v_old) &
                     + band_abs_times(stepper%iteration_matrix, abs(v_f) + abs(stepper%v)) &
-                    + rows_transpose(contacts, stepper%active(1:m), stepper%impulse(1:m), .true., size(dv)) + dt*abs(f_bar) &
+                    + rows_transpose(contacts, stepper%report%active(1:m), stepper%report%impulse(1:m), .true., &
+                       size(dv)) + dt*abs(f_bar) &
                     + dt*band_abs_times(stepper%stiffness, abs(u_old) + 0.5_dp*dt*abs(v_old)) &
                     + band_abs_times(stepper%mass, dv) + dt*band_abs_times(stepper%stiffness, u_bar)
             worst_residual = max(worst_residual, maxval(abs(rho)/(2*rounding_gamma(12)*scale + tiny(1.0_dp))))
@@ -186,23 +187,23 @@ contains
             gap_scale = tiny(1.0_dp)
             comp = 0
             do k = 1, m
-               e_k = merge(scene%impact%restitution, separating, stepper%approaching(k))
-               b(k) = -e_k*stepper%velocity_before(k)
-               gap_scale = max(gap_scale, abs(stepper%velocity_after(k)), abs(b(k)), &
-                               abs(contact_value(contacts, stepper%active(k), v_f)))
+               e_k = merge(scene%impact%restitution, separating, stepper%report%approaching(k))
+               b(k) = -e_k*stepper%report%velocity_before(k)
+               gap_scale = max(gap_scale, abs(stepper%report%velocity_after(k)), abs(b(k)), &
+                               abs(contact_value(contacts, stepper%report%active(k), v_f)))
             end do
             do k = 1, m
-               g = stepper%velocity_after(k) - b(k)
-               comp = comp + abs(stepper%impulse(k))*abs(g)
+               g = stepper%report%velocity_after(k) - b(k)
+               comp = comp + abs(stepper%report%impulse(k))*abs(g)
                ! the side of the point: the bound nearer to it at t_n
-               c = stepper%active(k)
+               c = stepper%report%active(k)
                value = contact_value(contacts, c, u_old)
                side = merge(1, -1, abs(value - contacts%lower(c)) <= abs(contacts%upper(c) - value))
                worst_violation = max(worst_violation, -side*g/gap_scale)
                if (-side*g > (64 + 2*kappa)*epsilon(1.0_dp)*gap_scale) admissible = .false.
             end do
-            comp_bound = 80*epsilon(1.0_dp)*gap_scale*(sum(abs(stepper%impulse(1:m))) + &
-                                                        m*maxval([abs(stepper%impulse(1:m)), 0.0_dp]))
+            comp_bound = 80*epsilon(1.0_dp)*gap_scale*(sum(abs(stepper%report%impulse(1:m))) + &
+                                                        m*maxval([abs(stepper%report%impulse(1:m)), 0.0_dp]))
             if (comp > comp_bound) complementary = .false.
             worst_comp = max(worst_comp, comp/max(comp_bound, tiny(1.0_dp)))
             ! 5. energy
@@ -253,7 +254,7 @@ contains
       type(scene_type), intent(in) :: scene_in
       integer, intent(in) :: reference_elements, check_elements
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       real(dp), allocatable :: u(:), r(:), u_ref(:), r_ref(:), f(:), residual(:)
       real(dp) :: tol, kappa, scale, value, force_scale
       integer :: stat, iterations, m, c, pass

@@ -6,7 +6,7 @@ module vibrobeam_band_statics
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: band_cholesky, band_factor, band_solve
    use vibrobeam_contact_projector, only: contact_projector
-   use vibrobeam_setup, only: prepared_scene
+   use vibrobeam_problem, only: run_problem
    implicit none
    private
    public :: band_static_solve
@@ -16,7 +16,7 @@ contains
    !> The old static solve of a prepared scene with rigid obstacles: regime 'auto' |
    !! 'delassus' | 'band', method 'newton' | 'pivoting', at most `pivot_limit` pivots.
    subroutine band_static_solve(prepared, regime, method, pivot_limit, u, reaction, iterations, stat, errmsg)
-      type(prepared_scene), intent(in) :: prepared
+      type(run_problem), intent(in) :: prepared
       character(len=*), intent(in) :: regime, method
       integer, intent(in) :: pivot_limit
       real(dp), intent(out) :: u(:), reaction(:)

@@ -9,8 +9,8 @@ module vibrobeam_convergence_runs
    use vibrobeam_scene, only: scene_type, validate_scene
    use vibrobeam_model, only: point_row
    use vibrobeam_contact_set, only: contact_value
-   use vibrobeam_setup, only: prepared_scene, prepare_scene, start_stepper
-   use vibrobeam_velocity_stepper, only: velocity_stepper
+   use vibrobeam_problem, only: run_problem, build_problem, new_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    implicit none
    private
    public :: event_gap, sample_points, run_history, run_errors
@@ -69,8 +69,8 @@ contains
       real(dp), intent(in) :: t_end        !! end of the run (s), a whole number of steps
       type(run_history), intent(out) :: run
       type(scene_type) :: variant
-      type(prepared_scene) :: prepared
-      type(velocity_stepper) :: stepper
+      type(run_problem) :: prepared
+      class(time_stepper), allocatable :: stepper
       character(len=:), allocatable :: warnings
       character(len=message_length) :: message
       integer :: point_dofs(4, sample_points), tip_dofs(4), n, p, k, c, side, status
@@ -86,10 +86,10 @@ contains
       call validate_scene(variant, status, message)
       if (status /= 0) call fail(message)
       warnings = ''
-      call prepare_scene(variant, prepared, warnings, status, message)
+      call build_problem(variant, prepared, warnings, status, message)
       if (status /= 0) call fail(message)
       if (len(warnings) > 0) write (error_unit, '(a)', advance='no') warnings
-      call start_stepper(variant, prepared, stepper, status, message)
+      call new_stepper(variant, prepared, stepper, status, message)
       if (status /= 0) call fail(message)
       run%dt = dt
       run%elements = elements
@@ -110,11 +110,11 @@ contains
          call stepper%step(status, message)
          if (status /= 0) call fail('dt = '//sci(dt)//' s, N = '//integer_text(elements)//': '//trim(message))
          call record_state(run, n, stepper, point_dofs, point_weights, tip_dofs, tip_weights)
-         if (any(abs(stepper%impulse(1:stepper%active_count)) > 0)) run%impulse_steps = run%impulse_steps + 1
-         do k = 1, stepper%active_count
-            if (.not. abs(stepper%impulse(k)) > 0) cycle
-            c = stepper%active(k)
-            side = nint(sign(1.0_dp, stepper%impulse(k)))   ! s_c P_c >= 0: the sign of P is s_c
+         if (any(abs(stepper%report%impulse(1:stepper%report%active_count)) > 0)) run%impulse_steps = run%impulse_steps + 1
+         do k = 1, stepper%report%active_count
+            if (.not. abs(stepper%report%impulse(k)) > 0) cycle
+            c = stepper%report%active(k)
+            side = nint(sign(1.0_dp, stepper%report%impulse(k)))   ! s_c P_c >= 0: the sign of P is s_c
             if (side /= last_side(c) .or. stepper%t - last_impulse(c) > event_gap*(1 + 1e-9_dp)) then
                run%events = run%events + 1
                run%event_first = [run%event_first, stepper%t]
@@ -145,7 +145,7 @@ contains
    subroutine record_state(run, step, stepper, point_dofs, point_weights, tip_dofs, tip_weights)
       type(run_history), intent(inout) :: run
       integer, intent(in) :: step
-      type(velocity_stepper), intent(in) :: stepper
+      class(time_stepper), intent(in) :: stepper
       integer, intent(in) :: point_dofs(:,:), tip_dofs(:)          !! rows from `point_row`
       real(dp), intent(in) :: point_weights(:,:), tip_weights(:)
       integer :: p

@@ -40,7 +40,7 @@ module vibrobeam_roundoff_bounds
    use vibrobeam_velocity_stepper, only: velocity_stepper
    use vibrobeam_position_stepper, only: position_stepper
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, start_time_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_test_support, only: read_test_scene, prepare_test_scene, abs_factor_times
    implicit none
    private
@@ -154,10 +154,10 @@ contains
       type is (position_stepper)
          self%u_before_previous = stepper%u_previous
       end select
-      self%work_before = stepper%work
-      self%impacts_before = stepper%dissipated_impacts
-      self%damping_before = stepper%dissipated_damping
-      self%numerical_before = stepper%dissipated_numerical
+      self%work_before = stepper%energy%work
+      self%impacts_before = stepper%energy%dissipated_impacts
+      self%damping_before = stepper%energy%dissipated_damping
+      self%numerical_before = stepper%energy%dissipated_numerical
    end subroutine ledger_before_step
 
    !> Account for the step just taken: its bound b_k and the evaluation bound of the new E.
@@ -178,8 +178,8 @@ contains
          error stop 'energy_ledger: unknown scheme'
       end select
       ! rounding of the running sums (one addition each per step)
-      self%step = self%step + unit_roundoff*(abs(stepper%work) + abs(stepper%dissipated_impacts) + &
-                                             abs(stepper%dissipated_damping) + abs(stepper%dissipated_numerical))
+      self%step = self%step + unit_roundoff*(abs(stepper%energy%work) + abs(stepper%energy%dissipated_impacts) + &
+                                             abs(stepper%energy%dissipated_damping) + abs(stepper%energy%dissipated_numerical))
       self%sum_squares = self%sum_squares + self%step**2
       self%linear = self%linear + self%step
       energy = stepper%kinetic_energy() + stepper%elastic_energy()
@@ -192,8 +192,8 @@ contains
    !> The balance E - W + D_impacts + D_damping + D_numerical as the checks form it.
    real(dp) function stepper_balance(stepper)
       class(time_stepper), intent(in) :: stepper
-      stepper_balance = stepper%kinetic_energy() + stepper%elastic_energy() - stepper%work + &
-                       stepper%dissipated_impacts + stepper%dissipated_damping + stepper%dissipated_numerical
+      stepper_balance = stepper%kinetic_energy() + stepper%elastic_energy() - stepper%energy%work + &
+                       stepper%energy%dissipated_impacts + stepper%energy%dissipated_damping + stepper%energy%dissipated_numerical
    end function stepper_balance
 
    !> E + |W| + |D_impacts| + |D_damping| + |D_numerical|: forming the balance (5 terms)
@@ -201,8 +201,9 @@ contains
    real(dp) function magnitude_of(stepper, energy)
       class(time_stepper), intent(in) :: stepper
       real(dp), intent(in) :: energy   !! kinetic + elastic (both >= 0)
-      magnitude_of = abs(energy) + abs(stepper%work) + &
-                     abs(stepper%dissipated_impacts) + abs(stepper%dissipated_damping) + abs(stepper%dissipated_numerical)
+      magnitude_of = abs(energy) + abs(stepper%energy%work) + &
+                     abs(stepper%energy%dissipated_impacts) + abs(stepper%energy%dissipated_damping) &
+                        + abs(stepper%energy%dissipated_numerical)
    end function magnitude_of
 
    !> Bound of |balance^n - balance^0| (3.): the two evaluations (energies and the sum of
@@ -227,7 +228,7 @@ contains
    !! repeated here step by step (the same computation, so the same states).
    subroutine balance_bounds(scene, prepared, steps, bounds, stat, errmsg)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(in) :: prepared
+      type(run_problem), intent(in) :: prepared
       integer, intent(in) :: steps
       real(dp), intent(out) :: bounds(0:steps)
       integer, intent(out) :: stat
@@ -236,7 +237,7 @@ contains
       type(energy_ledger) :: ledger
       real(dp) :: impacts_total
       integer :: n
-      call start_time_stepper(scene, prepared, stepper, stat, errmsg)
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
       if (stat /= 0) return
       call ledger%start(stepper)
       bounds(0) = 0
@@ -259,7 +260,7 @@ contains
       real(dp), intent(in) :: time(:)
       real(dp) :: bound(size(time))
       type(scene_type) :: scene
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       real(dp), allocatable :: bounds(:)
       integer :: steps, j, stat
       character(len=512) :: errmsg
@@ -300,7 +301,7 @@ contains
       real(dp), dimension(size(u_old)) :: v_theta, a_theta, force, rhs, v_free, x, y, ku, cv, dv, du
       real(dp) :: slack, largest
       integer :: k, m, kd, n
-      m = s%active_count
+      m = s%report%active_count
       kd = s%stiffness%kd
       n = size(u_old)
       associate (theta => s%theta, dt => s%dt, h => s%contacts)
@@ -316,7 +317,7 @@ contains
          call band_solve(s%iteration_factor, rhs)
          x = rhs
          v_free = v_old + x
-         y = responses(s%iteration_factor, s%contacts, s%active(1:m), s%impulse(1:m))
+         y = responses(s%iteration_factor, s%contacts, s%report%active(1:m), s%report%impulse(1:m))
          if (s%rayleigh_mass > 0) cv = s%rayleigh_mass*abs_band_times(s%mass, abs(v_old))
          if (s%rayleigh_stiffness > 0) cv = cv + s%rayleigh_stiffness*abs_band_times(s%stiffness, abs(v_old))
          bound = gamma_n(2*kd + 5)*dt*dot_product(abs(v_theta), abs(force) + &
@@ -327,11 +328,12 @@ contains
          if (m > 0 .and. s%projector%regime == regime_band) then
             ! saddle-point LU, bandwidth <= 2 kd + 2, a growth of up to 8 allowed for
             bound = bound + 8*gamma_n(3*(2*kd + 2) + 1 + 2*kd + 1)*dot_product(abs(v_theta), &
-                       abs_band_times(s%iteration_matrix, abs(v_free) + abs(s%v)) + abs(rows_transpose(s, abs(s%impulse(1:m)))))
+                       abs_band_times(s%iteration_matrix, abs(v_free) + abs(s%v)) + abs(rows_transpose(s, &
+                          abs(s%report%impulse(1:m)))))
             slack = max(1e-12_dp, 16*m*epsilon(1.0_dp))
-            largest = maxval(abs(s%impulse(1:m)))
+            largest = maxval(abs(s%report%impulse(1:m)))
             do k = 1, m
-               bound = bound + slack*largest*abs(contact_value(s%contacts, s%active(k), v_theta))
+               bound = bound + slack*largest*abs(contact_value(s%contacts, s%report%active(k), v_theta))
             end do
          end if
          ! rounding of U^{n+1} = U^n + dt (theta V^{n+1} + (1 - theta) V^n): gamma_4 per entry
@@ -343,13 +345,15 @@ contains
          bound = bound + gamma_n(n + 2)*dot_product(abs(force), abs(du))
          impacts = 0
          do k = 1, m
-            impacts = impacts + gamma_n(5)*abs(s%impulse(k))*(abs_row(h, s%active(k), s%v) + abs_row(h, s%active(k), v_old)) &
-                      + gamma_n(3*kd + 4 + m)*abs(s%impulse(k))*(abs_row(h, s%active(k), v_free) + abs_row(h, s%active(k), y) &
-                                                               + abs_row(h, s%active(k), s%v))
+            impacts = impacts + gamma_n(5)*abs(s%report%impulse(k))*(abs_row(h, s%report%active(k), s%v) + abs_row(h, &
+               s%report%active(k), v_old)) &
+                      + gamma_n(3*kd + 4 + m)*abs(s%report%impulse(k))*(abs_row(h, s%report%active(k), &
+                         v_free) + abs_row(h, s%report%active(k), y) &
+                                                               + abs_row(h, s%report%active(k), s%v))
          end do
          if (m > 0 .and. s%projector%regime == regime_band) impacts = impacts + &
-            8*gamma_n(3*(2*kd + 2) + 1 + 2*kd + 1)*sum(abs(s%impulse(1:m))*[(abs_row(h, s%active(k), v_free) + &
-            abs_row(h, s%active(k), s%v), k=1, m)])
+            8*gamma_n(3*(2*kd + 2) + 1 + 2*kd + 1)*sum(abs(s%report%impulse(1:m))*[(abs_row(h, s%report%active(k), v_free) + &
+            abs_row(h, s%report%active(k), s%v), k=1, m)])
          bound = bound + impacts
          if (s%rayleigh_mass > 0 .or. s%rayleigh_stiffness > 0) then
             cv = 0
@@ -361,8 +365,8 @@ contains
          if (abs(theta - 0.5_dp) > 0) then
             numerical = (theta - 0.5_dp)*(gamma_n(2*kd + n + 3)*(dot_product(abs(dv), abs_band_times(s%mass, abs(dv))) &
                         + dot_product(abs(du), abs_band_times(s%stiffness, abs(du)))) &
-                        + gamma_n(5 + m)*sum(abs(s%impulse(1:m))*[(abs_row(h, s%active(k), s%v) + &
-                                                                 abs_row(h, s%active(k), v_old), k=1, m)]))
+                        + gamma_n(5 + m)*sum(abs(s%report%impulse(1:m))*[(abs_row(h, s%report%active(k), s%v) + &
+                                                                 abs_row(h, s%report%active(k), v_old), k=1, m)]))
          end if
          bound = bound + numerical
       end associate
@@ -517,7 +521,7 @@ contains
       integer :: a, k, c
       h = 0
       do k = 1, size(p)
-         c = s%active(k)
+         c = s%report%active(k)
          do a = 1, 4
             if (s%contacts%dofs(a, c) /= 0) h(s%contacts%dofs(a, c)) = h(s%contacts%dofs(a, c)) + &
                abs(s%contacts%weights(a, c))*p(k)

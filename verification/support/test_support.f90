@@ -7,7 +7,7 @@ module vibrobeam_test_support
    use vibrobeam_kinds, only: dp, error_unit, output_unit
    use vibrobeam_scene, only: scene_type, validate_scene
    use vibrobeam_scene_read, only: read_scene
-   use vibrobeam_setup, only: prepared_scene, prepare_scene
+   use vibrobeam_problem, only: run_problem, build_problem
    use vibrobeam_blas_threads, only: limit_blas_threads
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_entry, band_factor, band_solve
    use vibrobeam_lapack, only: dpbcon, dpbtrf, dpotrf, dpotrs
@@ -126,13 +126,13 @@ contains
    !! (`limit_blas_threads`) applies to every driver that steps a scene.
    subroutine prepare_test_scene(scene, prepared)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(out) :: prepared
+      type(run_problem), intent(out) :: prepared
       character(len=:), allocatable :: warnings
       integer :: stat
       character(len=512) :: errmsg
       call use_program_blas_threads()
       warnings = ''
-      call prepare_scene(scene, prepared, warnings, stat, errmsg)
+      call build_problem(scene, prepared, warnings, stat, errmsg)
       if (stat /= 0) then
          write (error_unit, '(a)') 'FAIL preparing the scene: '//trim(errmsg)
          error stop 1

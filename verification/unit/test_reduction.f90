@@ -24,8 +24,8 @@
 program test_reduction
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type, obstacle_type, validate_scene
-   use vibrobeam_setup, only: prepared_scene, start_stepper
-   use vibrobeam_velocity_stepper, only: velocity_stepper
+   use vibrobeam_problem, only: run_problem, new_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_band, only: band_cholesky, band_factor, band_solve, band_to_dense
    use vibrobeam_contact_set, only: contact_value
    use vibrobeam_lapack, only: dsygv, dpotrf, dpotrs
@@ -77,7 +77,7 @@ contains
    subroutine reduced_scene(scene, modes, prepared)
       type(scene_type), intent(in) :: scene
       integer, intent(in) :: modes
-      type(prepared_scene), intent(out) :: prepared
+      type(run_problem), intent(out) :: prepared
       type(scene_type) :: reduced
       reduced = scene
       reduced%mesh%reduction = 'craig-bampton'
@@ -115,8 +115,8 @@ contains
 
    subroutine all_modes_kept()
       type(scene_type) :: scene
-      type(prepared_scene) :: full, reduced
-      type(velocity_stepper) :: full_stepper, reduced_stepper
+      type(run_problem) :: full, reduced
+      class(time_stepper), allocatable :: full_stepper, reduced_stepper
       integer :: stat, n, steps, impacts, j, r
       character(len=256) :: errmsg
       real(dp) :: difference, largest, bound, kappa_w, kappa_wr, kappa_t
@@ -125,10 +125,10 @@ contains
       call prepare_test_scene(scene, full)
       j = full%model%unknowns
       call reduced_scene(scene, j - 1, reduced)
-      r = reduced%reduced_model%unknowns
+      r = reduced%system%model%unknowns
       call counter%check_true('all modes: r = J', r == j)
-      call start_stepper(scene, full, full_stepper, stat, errmsg)
-      if (stat == 0) call start_stepper(scene, reduced, reduced_stepper, stat, errmsg)
+      call new_stepper(scene, full, full_stepper, stat, errmsg)
+      if (stat == 0) call new_stepper(scene, reduced, reduced_stepper, stat, errmsg)
       if (stat /= 0) error stop 'test_reduction: stepper set-up failed'
       t = reduced%reduction%transform
       kappa_w = condition(band_to_dense(full_stepper%iteration_matrix))
@@ -144,7 +144,7 @@ contains
          if (stat /= 0) error stop 'test_reduction: a step failed'
          difference = max(difference, maxval(abs(full_stepper%u - matmul(t, reduced_stepper%u))))
          largest = max(largest, maxval(abs(full_stepper%u)))
-         if (full_stepper%active_count > 0) impacts = impacts + 1
+         if (full_stepper%report%active_count > 0) impacts = impacts + 1
       end do
       bound = steps*(j + r)*u*(kappa_w + kappa_t*kappa_wr)
       write (output_unit, '(a,i0,a,es10.3,a,es10.3,a,es9.2,a,es9.2,a,es9.2)') 'all modes kept: ', impacts, &
@@ -160,7 +160,7 @@ contains
    subroutine static_condensation(basis)
       character(len=*), intent(in) :: basis
       type(scene_type) :: scene
-      type(prepared_scene) :: full, reduced
+      type(run_problem) :: full, reduced
       type(band_cholesky) :: factor
       real(dp), allocatable :: force(:), exact(:), projected(:), stiffness_r(:,:), y(:,:), t(:,:)
       real(dp) :: s(2, 2)
@@ -172,7 +172,7 @@ contains
       call reduced_scene(scene, 0, reduced)
       m = reduced%reduction%boundary
       call counter%check_true(basis//' static: two boundary unknowns, no mode', m == 2 .and. &
-                              reduced%reduced_model%unknowns == 2)
+                              reduced%system%model%unknowns == 2)
       f = [1.0_dp, -0.5_dp]
       allocate (force(full%model%unknowns), source=0.0_dp)
       do c = 1, m
@@ -187,7 +187,7 @@ contains
       call band_solve(factor, exact)
       t = reduced%reduction%transform
       projected = matmul(force, t)
-      stiffness_r = band_to_dense(reduced%reduced_model%stiffness)
+      stiffness_r = band_to_dense(reduced%system%model%stiffness)
       s = stiffness_r
       call dpotrf('L', m, s, m, info)
       y = reshape(projected, [m, 1])
@@ -210,7 +210,7 @@ contains
    subroutine frequencies_from_above(basis)
       character(len=*), intent(in) :: basis
       type(scene_type) :: scene
-      type(prepared_scene) :: full, reduced
+      type(run_problem) :: full, reduced
       real(dp), allocatable :: lambda_full(:), lambda(:), previous(:)
       integer :: counts(6), k, i, j, m, r
       real(dp) :: tolerance
@@ -224,8 +224,8 @@ contains
       allocate (previous(j), source=huge(1.0_dp))
       do k = 1, size(counts)
          call reduced_scene(scene, counts(k), reduced)
-         r = reduced%reduced_model%unknowns
-         lambda = eigenvalues(band_to_dense(reduced%reduced_model%stiffness), band_to_dense(reduced%reduced_model%mass))
+         r = reduced%system%model%unknowns
+         lambda = eigenvalues(band_to_dense(reduced%system%model%stiffness), band_to_dense(reduced%system%model%mass))
          write (output_unit, '(a,i3,a,3es12.4)') basis//' modes kept', counts(k), &
             ': relative excess of omega_1..3 over the full model ', &
             (sqrt(lambda(i)/lambda_full(i)) - 1, i=1, min(3, r))

@@ -195,13 +195,14 @@ contains
       class(time_stepper), intent(in) :: stepper
       real(dp) :: levels(level_count), total, dissipated
       total = stepper%kinetic_energy() + stepper%elastic_energy()
-      dissipated = stepper%dissipated_impacts + stepper%dissipated_damping + stepper%dissipated_numerical
+      dissipated = stepper%energy%dissipated_impacts + stepper%energy%dissipated_damping + stepper%energy%dissipated_numerical
       if (stepper%contacts%springs%count > 0) then
          total = total + stepper%contact_potential()
-         dissipated = dissipated + stepper%dissipated_contact_damping
+         dissipated = dissipated + stepper%energy%dissipated_contact_damping
       end if
-      levels = [stepper%work, stepper%dissipated_impacts, stepper%dissipated_damping, stepper%dissipated_numerical, &
-                stepper%dissipated_contact_damping, total, total - stepper%work + dissipated]
+      levels = [stepper%energy%work, stepper%energy%dissipated_impacts, stepper%energy%dissipated_damping, &
+         stepper%energy%dissipated_numerical, &
+                stepper%energy%dissipated_contact_damping, total, total - stepper%energy%work + dissipated]
    end function levels_of
 
    !> After every step: the recorder's events carry the impacts, the episodes that opened
@@ -209,7 +210,7 @@ contains
    subroutine observe_step(self, stepper, events, stat, errmsg)
       class(run_statistics), intent(inout) :: self
       class(time_stepper), intent(in) :: stepper
-      type(step_events), intent(in) :: events
+      type(step_events), intent(inout) :: events
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       logical :: touched(targets(self))
@@ -245,24 +246,24 @@ contains
             call blocks%extreme(2*(p - 1) + 2, events%observed(p, 2))
          end do
          touched = .false.
-         do k = 1, stepper%active_count
-            impulse = stepper%impulse(k)
+         do k = 1, stepper%report%active_count
+            impulse = stepper%report%impulse(k)
             if (abs(impulse) <= 0) cycle
-            c = stepper%active(k)
+            c = stepper%report%active(k)
             obstacle = obstacle_of(self, c, impulse)
             call contact_sum(c, s_force, abs(impulse))
             if (events%impact(k)) call contact_sum(c, s_impacts, 1.0_dp)
             call touch(c, obstacle)
          end do
          do c = 1, self%contacts
-            force = abs(stepper%contact_force(c))
+            force = abs(stepper%report%contact_force(c))
             call blocks%extreme(force_extreme(self, c, x_force), force)
             if (force <= 0) cycle
             call blocks%add(force_sum(self, c, f_force), force)
             call blocks%add(force_sum(self, c, f_force_square), force**2)
             call blocks%add(force_sum(self, c, f_steps), 1.0_dp)
             ! in contact with a compliant stop too (contact_fraction counts every kind of stop)
-            call touch(c, obstacle_of(self, c, stepper%contact_force(c)))
+            call touch(c, obstacle_of(self, c, stepper%report%contact_force(c)))
          end do
          do k = 1, size(touched)
             if (touched(k)) call blocks%add(target_sum(self, k, s_contact_steps), 1.0_dp)
@@ -283,7 +284,7 @@ contains
       subroutine force_episodes()
          integer :: point
          do point = 1, self%contacts
-            if (abs(stepper%contact_force(point)) > 0) then
+            if (abs(stepper%report%contact_force(point)) > 0) then
                if (.not. self%force_touching(point)) self%force_offset(point) = offset
                self%force_touching(point) = .true.
             else

@@ -15,9 +15,10 @@
 module vibrobeam_sweep
    !$ use omp_lib, only: omp_get_max_threads
    use vibrobeam_kinds, only: dp, error_unit
+   use vibrobeam_status, only: outcome_ok, outcome_interrupted, outcome_name, stat_failure, stat_invalid_input
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, prepare_scene
+   use vibrobeam_problem, only: run_problem, build_problem
    use vibrobeam_checkpoint, only: read_checkpoint
    use vibrobeam_restart_check, only: check_compatible
    use vibrobeam_state_record, only: state_record
@@ -25,7 +26,9 @@ module vibrobeam_sweep
    use vibrobeam_progress, only: progress_meter
    use vibrobeam_signals, only: interrupt_requested
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, sweep_points, point_scene, task_count
-   use vibrobeam_sweep_runner, only: point_result, start_state, task_start, point_sink, run_task
+   use vibrobeam_sweep_runner, only: point_result, task_start, point_sink, run_task
+   use vibrobeam_time_stepper, only: dynamic_state
+   use vibrobeam_stepper_factory, only: state_from_record
    use vibrobeam_sweep_journal, only: sweep_journal, done_ok, done_failed
    use vibrobeam_sweep_partial, only: sweep_partial, sweep_fingerprint
    use vibrobeam_sweep_file, only: write_sweep_file, sweep_counts
@@ -37,7 +40,7 @@ module vibrobeam_sweep
 
    !> What a sweep reports back to the program.
    type :: sweep_outcome
-      character(len=16) :: status = 'ok'       !! 'ok' | 'interrupted' (/run status)
+      integer :: status = outcome_ok           !! outcome_ok | outcome_interrupted (/run status)
       integer :: points = 0, failed = 0, interrupted = 0, not_run = 0
       integer :: resumed = 0                   !! points a partial directory held as done at the start
       logical :: text_skipped = .false.
@@ -79,8 +82,8 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(sweep_point), allocatable :: points(:)
-      type(start_state) :: base
-      type(prepared_scene) :: first
+      type(dynamic_state) :: base
+      type(run_problem) :: first
       type(statistics_layout) :: layout
       type(scene_type) :: first_scene
       type(sweep_partial) :: partial
@@ -173,7 +176,7 @@ contains
          call partial%close()
          errmsg = trim(errmsg)//'; the points done are kept in '''//partial%directory//''': run the same input '// &
                   'again to go on from them'
-         stat = 1
+         stat = stat_failure
          return
       end if
       interrupted = transport_max(merge(1, 0, interrupt_requested())) > 0
@@ -181,7 +184,7 @@ contains
       call transport_barrier()   ! every journal is closed
       if (rank == 0) call publish()
       call share_failure(stat, errmsg)
-      if (transport_max(merge(1, 0, outcome%status == 'interrupted')) > 0) outcome%status = 'interrupted'
+      if (transport_max(merge(1, 0, outcome%status == outcome_interrupted)) > 0) outcome%status = outcome_interrupted
       outcome%failed = transport_max(counts%failed)
       outcome%interrupted = transport_max(counts%interrupted)
       outcome%not_run = transport_max(counts%not_run)
@@ -214,7 +217,7 @@ contains
             if (flag(k) /= done_ok) cycle
             call partial%read_state(owner(k), task, k, first%model%unknowns, start%state, stat, errmsg)
             if (stat /= 0) return
-            if (start%state%given) then
+            if (allocated(start%state%u)) then
                q = k
                exit
             end if
@@ -245,12 +248,12 @@ contains
          if (stat == 0) call partial%index(n, owner, flag, stat, errmsg)
          if (stat /= 0) then
             call partial%close()
-            stat = 1
+            stat = stat_failure
             return
          end if
          complete = all(flag == done_ok .or. flag == done_failed)
          ! a signal after the last point: the sweep is complete (the program still exits 4)
-         if (interrupted .and. .not. complete) outcome%status = 'interrupted'
+         if (interrupted .and. .not. complete) outcome%status = outcome_interrupted
          call write_sweep_file(scene, first%model, settings, points, partial, owner, layout, &
                                [first_scene%beam%length, first_scene%output%points], first%contacts%x, &
                                first%contacts%lower_obstacle, first%contacts%upper_obstacle, outcome%status, &
@@ -285,15 +288,15 @@ contains
 
    !> The first point's scene prepared (its model and contact points are the sweep file's)
    !! and the start state of &initial from_file: U, V (and U^{n-1}) of its checkpoint, at
-   !! t = 0, checked against that scene. stat = 2 (invalid input) when the first point
+   !! t = 0, checked against that scene. stat = stat_invalid_input when the first point
    !! cannot be prepared or the file cannot be continued; its own numerical failures are
    !! the point's (it is marked failed when it runs).
    subroutine sweep_start_state(scene, settings, first_scene, first, base, stat, errmsg)
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
       type(scene_type), intent(out) :: first_scene
-      type(prepared_scene), intent(out) :: first
-      type(start_state), intent(out) :: base
+      type(run_problem), intent(out) :: first
+      type(dynamic_state), intent(out) :: base
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(state_record) :: record
@@ -302,12 +305,12 @@ contains
       logical :: same_bounds
       first_scene = point_scene(scene, settings, first_point(settings))
       warnings = ''
-      call prepare_scene(first_scene, first, warnings, stat, errmsg)
+      call build_problem(first_scene, first, warnings, stat, errmsg)
       if (stat /= 0) then
          ! the points' own failures are reported per point; this one's contact points are needed
          if (.not. allocated(first%contacts%x)) then
             errmsg = '&sweep point 1: '//trim(errmsg)
-            stat = 2
+            stat = stat_invalid_input
             return
          end if
          stat = 0
@@ -319,22 +322,18 @@ contains
       if (stat == 0) call read_checkpoint(file, record, time, stat, errmsg)
       if (stat /= 0) then
          if (index(errmsg, '&initial from_file') == 0) errmsg = '&initial from_file = '''//file//''': '//trim(errmsg)
-         stat = 2
+         stat = stat_invalid_input
          return
       end if
-      allocate (base%u(first%model%unknowns), base%v(first%model%unknowns))
-      call record%get_reals('stepper.u', base%u, stat, errmsg)
-      if (stat == 0) call record%get_reals('stepper.v', base%v, stat, errmsg)
-      if (stat == 0 .and. record%find('stepper.u_previous') > 0) then
-         allocate (base%u_previous(first%model%unknowns))
-         call record%get_reals('stepper.u_previous', base%u_previous, stat, errmsg)
-      end if
+      ! the scheme is the file's (check_compatible): its state, at t = 0
+      call state_from_record(first_scene%time%scheme, record, first%model%unknowns, base, stat, errmsg)
       if (stat /= 0) then
          errmsg = '&initial from_file = '''//file//''': '//trim(errmsg)
-         stat = 2
+         stat = stat_invalid_input
+         if (allocated(base%u)) deallocate (base%u)
          return
       end if
-      base%given = .true.
+      base%step = 0
    end subroutine sweep_start_state
 
    !> The first point of the sweep (its scene is the sweep file's model).
@@ -347,7 +346,7 @@ contains
    end function first_point
 
    !> What a run of this sweep would find in its partial directory (`vibrobeam --check`):
-   !! a sentence saying so ('' when there is none), the points it holds as done. stat = 2
+   !! a sentence saying so ('' when there is none), the points it holds as done. stat = stat_invalid_input
    !! when it holds a sweep of another input (the run refuses it).
    subroutine inspect_partial(scene, settings, done, text, stat, errmsg)
       type(scene_type), intent(in) :: scene
@@ -357,8 +356,8 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(scene_type) :: first_scene
-      type(prepared_scene) :: first
-      type(start_state) :: base
+      type(run_problem) :: first
+      type(dynamic_state) :: base
       type(sweep_partial) :: partial
       integer, allocatable :: owner(:), flag(:)
       integer :: n
@@ -373,7 +372,7 @@ contains
       call partial%index(n, owner, flag, stat, errmsg)
       call partial%close()
       if (stat /= 0) then
-         stat = 1
+         stat = stat_failure
          return
       end if
       done = count(flag == done_ok .or. flag == done_failed)
@@ -392,7 +391,7 @@ contains
       class(journal_sink), intent(inout) :: self
       integer, intent(in) :: k, task
       type(point_result), intent(in) :: result
-      type(start_state), intent(in) :: final
+      type(dynamic_state), intent(in) :: final
       logical, intent(in) :: point_file
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg

@@ -22,6 +22,7 @@
 !! per point with a message).
 module vibrobeam_sweep_file
    use vibrobeam_kinds, only: dp, int64, pi
+   use vibrobeam_status, only: outcome_interrupted
    use vibrobeam_text, only: integer_text
    use vibrobeam_scene, only: scene_type
    use vibrobeam_model, only: beam_model
@@ -83,7 +84,7 @@ contains
       type(statistics_layout), intent(in) :: layout
       real(dp), intent(in) :: point_x(:), contact_x(:), wall_seconds
       integer, intent(in) :: lower_obstacle(:), upper_obstacle(:), threads, ranks
-      character(len=*), intent(in) :: status
+      integer, intent(in) :: status   !! the sweep's run outcome (core/vibrobeam_status)
       logical, intent(in) :: keep_partial
       type(progress_meter), intent(inout) :: meter
       type(sweep_counts), intent(out) :: counts
@@ -137,7 +138,7 @@ contains
          set%file = trim(scene%output%file)
          set%directory = partial%directory
          set%keep = keep_partial
-         call files%publish(meter, status /= 'interrupted', text_skipped, stat, errmsg, also=set)
+         call files%publish(meter, status /= outcome_interrupted, text_skipped, stat, errmsg, also=set)
          if (stat == 0) return
       end block write_all
       call files%discard()
@@ -267,7 +268,7 @@ contains
                message = ''
                if (owner(k) == 0) then
                   message = 'not run'
-                  if (status == 'interrupted') message = 'not run: the sweep was interrupted'
+                  if (status == outcome_interrupted) message = 'not run: the sweep was interrupted'
                else if (record(r_message_length, j) > 0) then
                   call partial%read_message(owner(k), k, message, stat, errmsg)
                   if (stat /= 0) return

@@ -31,7 +31,8 @@ module vibrobeam_sweep_journal
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_hdf5_series, only: h5_series, h5_table
-   use vibrobeam_sweep_runner, only: point_result, start_state, status_ok, status_failed
+   use vibrobeam_sweep_runner, only: point_result, status_ok, status_failed
+   use vibrobeam_time_stepper, only: dynamic_state
    implicit none
    private
    public :: sweep_journal, journal_name, pack_record, message_words, record_length
@@ -139,7 +140,7 @@ contains
       class(sweep_journal), intent(inout) :: self
       integer, intent(in) :: k, task
       type(point_result), intent(in) :: result
-      type(start_state), intent(in) :: final
+      type(dynamic_state), intent(in) :: final
       logical, intent(in) :: point_file
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
@@ -162,7 +163,7 @@ contains
          end do
          self%poincare_rows = self%poincare_rows + kept
       end if
-      if (stat == 0 .and. self%continuation .and. result%status == status_ok .and. final%given) then
+      if (stat == 0 .and. self%continuation .and. result%status == status_ok .and. allocated(final%u)) then
          slot = 1
          if (self%marked_slot(task) == 1) slot = 2
          call self%states%write_rows(2*int(task - 1, int64) + slot, reshape(state_values(k, final), &
@@ -282,10 +283,10 @@ contains
       end do
    end function message_values
 
-   !> A state slot: the point, 1 when U^{n-1} follows, U, V, U^{n-1} (zeros without it).
+   !> A state slot: the point, 1 when the scheme's extra (U^{n-1}) follows, U, V, extra (zeros without it).
    function state_values(k, state) result(values)
       integer, intent(in) :: k
-      type(start_state), intent(in) :: state
+      type(dynamic_state), intent(in) :: state
       real(dp), allocatable :: values(:)
       integer :: n
       n = size(state%u)
@@ -293,9 +294,9 @@ contains
       values(1) = k
       values(3:2 + n) = state%u
       values(3 + n:2 + 2*n) = state%v
-      if (allocated(state%u_previous)) then
+      if (allocated(state%extra)) then
          values(2) = 1
-         values(3 + 2*n:) = state%u_previous
+         values(3 + 2*n:) = state%extra
       end if
    end function state_values
 end module vibrobeam_sweep_journal

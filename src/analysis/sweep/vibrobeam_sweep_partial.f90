@@ -16,6 +16,7 @@
 !! the sweep's settings with the bit patterns of its values, and the bits of that start
 !! state.
 module vibrobeam_sweep_partial
+   use vibrobeam_status, only: stat_failure, stat_invalid_input
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: integer_text
    use vibrobeam_version, only: version_string
@@ -25,7 +26,8 @@ module vibrobeam_sweep_partial
    use vibrobeam_directory_entries, only: directory_listing, touch_file, remove_directory
    use vibrobeam_hdf5_reader, only: h5_reader
    use vibrobeam_sweep_settings, only: sweep_settings
-   use vibrobeam_sweep_runner, only: start_state
+   use vibrobeam_sweep_runner, only: 
+   use vibrobeam_time_stepper, only: dynamic_state
    use vibrobeam_sweep_journal, only: done_none, done_ok, done_failed, message_words
    implicit none
    private
@@ -83,8 +85,8 @@ contains
    end function partial_point_file
 
    !> Create (when missing), lock and read the partial directory of the sweep file `file`
-   !! for a run: stat = 1 when another process holds it (a sweep running into `file`) or
-   !! it cannot be made, stat = 2 when it holds a journal of another input (not
+   !! for a run: stat = stat_failure when another process holds it (a sweep running into `file`) or
+   !! it cannot be made, stat = stat_invalid_input when it holds a journal of another input (not
    !! `fingerprint`). Temporary files of point files in progress are removed, and so are
    !! journals that cannot be read (a run killed while creating it: no point in them).
    subroutine partial_open(self, file, fingerprint, stat, errmsg)
@@ -100,7 +102,7 @@ contains
       if (stat == 0) call self%lock%try_acquire(self%directory//'/lock', busy, stat, errmsg)
       if (stat /= 0) return
       if (busy) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'another vibrobeam process is running a sweep into '''//trim(file)//''' (it holds '''// &
                   self%directory//'/lock''): wait for it to end, or give &output file another name'
          return
@@ -110,7 +112,7 @@ contains
 
    !> Read the partial directory of `file` without changing anything (`vibrobeam --check`):
    !! `existed` false when there is none; `busy` when a running sweep holds it (its journals
-   !! are then not read: they are that sweep's); stat = 2 when it holds a journal of
+   !! are then not read: they are that sweep's); stat = stat_invalid_input when it holds a journal of
    !! another input. With `locked_here` the lock is held by this sweep (rank 0 of an MPI
    !! run): the journals are read without looking at it.
    subroutine partial_inspect(self, file, fingerprint, stat, errmsg, locked_here)
@@ -194,7 +196,7 @@ contains
             end if
             if (their /= fingerprint) then
                call found%reader%close()
-               stat = 2
+               stat = stat_invalid_input
                errmsg = '&output file: '''//self%directory//''' holds a partial sweep of another input (a '// &
                         'journal of fingerprint '//their//', this input''s is '//fingerprint//'): rerun that '// &
                         'input to finish it, or remove the directory to start this sweep'
@@ -296,12 +298,12 @@ contains
       call self%journals(j)%reader%read_rows('/journal/poincare', first_row + 1, rows, stat, errmsg)
    end subroutine partial_read_poincare
 
-   !> The state of point k of task `task` from journal j; state%given false when neither
+   !> The state of point k of task `task` from journal j; state%u not allocated when neither
    !! slot of the task holds it there.
    subroutine partial_read_state(self, j, task, k, unknowns, state, stat, errmsg)
       class(sweep_partial), intent(inout) :: self
       integer, intent(in) :: j, task, k, unknowns
-      type(start_state), intent(out) :: state
+      type(dynamic_state), intent(out) :: state
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp) :: slot(2 + 3*unknowns, 1)
@@ -315,8 +317,7 @@ contains
          if (nint(slot(1, 1)) /= k) cycle
          state%u = slot(3:2 + unknowns, 1)
          state%v = slot(3 + unknowns:2 + 2*unknowns, 1)
-         if (nint(slot(2, 1)) == 1) state%u_previous = slot(3 + 2*unknowns:, 1)
-         state%given = .true.
+         if (nint(slot(2, 1)) == 1) state%extra = slot(3 + 2*unknowns:, 1)
          return
       end do
    end subroutine partial_read_state
@@ -371,7 +372,7 @@ contains
    function sweep_fingerprint(scene, settings, base) result(text)
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
-      type(start_state), intent(in) :: base
+      type(dynamic_state), intent(in) :: base
       character(len=16) :: text
       character(len=*), parameter :: ignored(6) = [character(len=24) :: 'output.file', 'output.text', &
          'output.progress', 'time.t_end', 'output.measure_from', 'initial.from_file']
@@ -403,11 +404,11 @@ contains
          call add(' parameter='//trim(settings%axis(a)%parameter))
          if (allocated(settings%axis(a)%values)) call add_reals(settings%axis(a)%values)
       end do
-      if (base%given) then
+      if (allocated(base%u)) then
          call add(' start')
          call add_reals(base%u)
          call add_reals(base%v)
-         if (allocated(base%u_previous)) call add_reals(base%u_previous)
+         if (allocated(base%extra)) call add_reals(base%extra)
       end if
       write (text, '(z8.8,z8.8)') first, second
    contains

@@ -22,11 +22,13 @@
 !! statistics so far) and the points not started are not run. A point file that cannot be
 !! written is an I/O error: the task stops with stat /= 0 (the sweep fails, exit status 1).
 module vibrobeam_sweep_runner
+   use vibrobeam_status, only: stat_failure, outcome_ok, outcome_failed, outcome_interrupted, outcome_not_run
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_setup, only: prepared_scene, prepare_scene, start_time_stepper, release_stepper
-   use vibrobeam_time_stepper, only: time_stepper
+   use vibrobeam_problem, only: run_problem, build_problem, new_stepper
+   use vibrobeam_stepper_factory, only: release_stepper
+   use vibrobeam_time_stepper, only: time_stepper, dynamic_state
    use vibrobeam_recorder, only: dynamics_recorder
    use vibrobeam_dynamics, only: run_dynamics
    use vibrobeam_result_files, only: run_outcome
@@ -35,21 +37,18 @@ module vibrobeam_sweep_runner
    use vibrobeam_statistics, only: statistics_result
    use vibrobeam_statistics_layout, only: group_points, group_beam
    use vibrobeam_signals, only: interrupt_requested
+   use vibrobeam_run_loop, only: advance
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, point_scene, point_windows, max_settle_windows
    implicit none
    private
-   public :: point_result, start_state, task_start, point_sink, run_task, point_file_name, kept_point_file
+   public :: point_result, task_start, point_sink, run_task, point_file_name, kept_point_file
    public :: status_ok, status_failed, status_interrupted, status_not_run, status_names
 
-   integer, parameter :: status_ok = 0, status_failed = 1, status_interrupted = 2, status_not_run = 3
+   ! a point's status: the run outcome of core/vibrobeam_status (the numbers in /sweep/status)
+   integer, parameter :: status_ok = outcome_ok, status_failed = outcome_failed, &
+                         status_interrupted = outcome_interrupted, status_not_run = outcome_not_run
    character(len=*), parameter :: status_names = '0 ok, 1 failed, 2 interrupted, 3 not run'
 
-   !> A state to start a point from (time restarts at 0).
-   type :: start_state
-      logical :: given = .false.
-      real(dp), allocatable :: u(:), v(:)
-      real(dp), allocatable :: u_previous(:)     !! position scheme only
-   end type start_state
 
    !> What a point reached.
    type :: point_result
@@ -69,7 +68,7 @@ module vibrobeam_sweep_runner
    type :: task_start
       integer :: first_to_run = 0
       integer :: last_good_point = 0
-      type(start_state) :: state
+      type(dynamic_state) :: state
    end type task_start
 
    !> What takes each point's result as it ends (the sweep's journal). `take` may be
@@ -85,11 +84,11 @@ module vibrobeam_sweep_runner
       !> Point k of task `task` ended with `result`; `final` its final state (when it
       !! succeeded); `point_file`: its keep_runs file was written.
       subroutine take_point(self, k, task, result, final, point_file, stat, errmsg)
-         import :: point_sink, point_result, start_state
+         import :: point_sink, point_result, dynamic_state
          class(point_sink), intent(inout) :: self
          integer, intent(in) :: k, task
          type(point_result), intent(in) :: result
-         type(start_state), intent(in) :: final
+         type(dynamic_state), intent(in) :: final
          logical, intent(in) :: point_file
          integer, intent(out) :: stat
          character(len=*), intent(out) :: errmsg
@@ -144,13 +143,13 @@ contains
       type(sweep_settings), intent(in) :: settings
       type(sweep_point), intent(in) :: points(:)
       integer, intent(in) :: task, first, last
-      type(start_state), intent(in) :: base
+      type(dynamic_state), intent(in) :: base
       type(task_start), intent(in) :: start
       character(len=*), intent(in) :: directory
       class(point_sink), intent(inout) :: sink
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      type(start_state) :: last_good, final
+      type(dynamic_state) :: last_good, final
       integer :: k, last_good_point
       logical :: written
       stat = 0
@@ -180,14 +179,14 @@ contains
    end subroutine run_task
 
    subroutine move_state(from, to)
-      type(start_state), intent(inout) :: from, to
-      to%given = from%given
+      type(dynamic_state), intent(inout) :: from, to
+      to%step = from%step
       if (allocated(to%u)) deallocate (to%u)
       if (allocated(to%v)) deallocate (to%v)
-      if (allocated(to%u_previous)) deallocate (to%u_previous)
+      if (allocated(to%extra)) deallocate (to%extra)
       if (allocated(from%u)) call move_alloc(from%u, to%u)
       if (allocated(from%v)) call move_alloc(from%v, to%v)
-      if (allocated(from%u_previous)) call move_alloc(from%u_previous, to%u_previous)
+      if (allocated(from%extra)) call move_alloc(from%extra, to%extra)
    end subroutine move_state
 
    !> One point (module documentation): its result, and its final state in `final`;
@@ -199,15 +198,15 @@ contains
       type(sweep_settings), intent(in) :: settings
       integer, intent(in) :: k, start_point
       type(sweep_point), intent(in) :: point
-      type(start_state), intent(in) :: start
+      type(dynamic_state), intent(in) :: start
       character(len=*), intent(in) :: directory
       type(point_result), intent(inout) :: result
-      type(start_state), intent(out) :: final
+      type(dynamic_state), intent(out) :: final
       logical, intent(out) :: written
       integer, intent(out) :: io_stat
       character(len=*), intent(out) :: io_message
       type(scene_type) :: local
-      type(prepared_scene) :: prepared
+      type(run_problem) :: prepared
       character(len=:), allocatable :: warnings
       character(len=512) :: errmsg
       integer(int64) :: clock_start, clock_end, rate, transient
@@ -222,12 +221,12 @@ contains
       result%start_point = start_point
       call point_windows(settings, local, result%settle_steps, result%measure_steps, stat, errmsg)
       warnings = ''
-      if (stat == 0) call prepare_scene(local, prepared, warnings, stat, errmsg)
+      if (stat == 0) call build_problem(local, prepared, warnings, stat, errmsg)
       if (stat /= 0) then
          call failed('the point''s initial state: '//trim(errmsg))
          return
       end if
-      if (start%given) call take_start()
+      if (allocated(start%u)) call take_start()
       transient = result%settle_steps
       if (settings%steady_tolerance > 0) then
          call measure_until_steady()
@@ -262,39 +261,33 @@ contains
                return
             end if
          end do
-         prepared%u0 = start%u
-         prepared%v0 = start%v
-         if (allocated(start%u_previous) .and. local%time%scheme == 'position') prepared%u_previous0 = start%u_previous
+         ! the stepper starts there (the scheme's extra with it: the scheme is the sweep's)
+         prepared%start%u = start%u
+         prepared%start%v = start%v
+         if (allocated(start%extra)) prepared%start%extra = start%extra
       end subroutine take_start
 
-      !> The statistics of the window from `first` over `measure_steps` steps, stepping
-      !! `stepper` (already at `first` or before it) without writing anything.
+      !> Step `stepper` (already at `first` or before it) to `last` without writing
+      !! anything (the one run loop, `advance`); a failure or an interruption marks the
+      !! point.
       subroutine step_to(stepper, recorder, last)
          class(time_stepper), intent(inout) :: stepper
          type(dynamics_recorder), intent(inout) :: recorder
          integer(int64), intent(in) :: last
-         integer(int64) :: n
-         character(len=512) :: step_message
-         integer :: step_stat
-         do n = stepper%steps + 1, last
-            call stepper%step(step_stat, step_message)
-            if (step_stat /= 0) then
-               write (errmsg, '(a,i0,a,es14.7,a)') 'numerical failure at step ', n, ' (t = ', n*local%time%dt, ' s): '// &
-                  trim(step_message)
-               call failed(errmsg)
-               return
-            end if
-            call recorder%after_step(stepper, stat, errmsg)
-            if (stat /= 0) then
-               call failed(errmsg)
-               return
-            end if
-            if (interrupt_requested()) then
-               result%status = status_interrupted
-               result%message = 'interrupted at t = '//real_text(n*local%time%dt)//' s'
-               return
-            end if
-         end do
+         integer :: status
+         character(len=512) :: failure
+         call advance(stepper, recorder, prepared%model, last, status, failure, stat, errmsg)
+         if (stat /= 0) then
+            call failed(errmsg)
+            return
+         end if
+         select case (status)
+         case (outcome_failed)
+            call failed('numerical failure at '//trim(failure))
+         case (outcome_interrupted)
+            result%status = status_interrupted
+            result%message = 'interrupted at t = '//real_text(stepper%steps*local%time%dt)//' s'
+         end select
       end subroutine step_to
 
       !> A stepper at the point's start and a recorder that writes nothing, for at most
@@ -304,17 +297,12 @@ contains
          type(dynamics_recorder), intent(out) :: recorder
          integer(int64), intent(in) :: last
          character(len=:), allocatable :: ignored
-         call start_time_stepper(local, prepared, stepper, stat, errmsg)
+         call new_stepper(local, prepared, stepper, stat, errmsg)
          if (stat /= 0) then
             call failed(errmsg)
             return
          end if
-         if (prepared%reduced) then
-            call recorder%init(local, stepper, prepared%model, stepper%v, last, write_rows=.false., &
-                               reduction=prepared%reduction)
-         else
-            call recorder%init(local, stepper, prepared%model, prepared%v0, last, write_rows=.false.)
-         end if
+         call recorder%init(local, stepper, prepared, last, write_rows=.false.)
          call recorder%start_statistics(stepper, ignored)
          result%status = status_ok
       end subroutine start_without_file
@@ -372,16 +360,16 @@ contains
       !> keep_runs: the point's full result through `run_dynamics`, into `kept_point_file`.
       subroutine run_with_file()
          type(run_outcome) :: outcome
-         type(state_record) :: record
+         type(dynamic_state) :: last_state
          local%output%file = kept_point_file(directory, k)
          local%output%text = .false.
          local%output%measure_from = transient*local%time%dt
          local%time%t_end = (transient + result%measure_steps)*local%time%dt
          call run_dynamics(local, prepared, outcome, stat, errmsg, quiet=.true., statistics=result%statistics, &
-                           final_state=record)
+                           final_state=last_state)
          if (stat /= 0) then
             ! an I/O error, not a property of the point: the sweep stops (exit status 1)
-            io_stat = 1
+            io_stat = stat_failure
             io_message = '&sweep keep_runs: the result of point '//integer_text(k)//' ('''// &
                          point_file_name(scene%output%file, k)//''') cannot be written: '//trim(errmsg)
             result%status = status_not_run
@@ -389,37 +377,23 @@ contains
          end if
          written = .true.
          select case (outcome%status)
-         case ('failed')
+         case (outcome_failed)
             call failed('numerical failure at '//trim(outcome%failure))
-         case ('interrupted')
+         case (outcome_interrupted)
             result%status = status_interrupted
             result%message = 'interrupted'
          case default
             result%status = status_ok
          end select
          if (result%status /= status_ok) return
-         allocate (final%u(size(prepared%u0)), final%v(size(prepared%v0)))
-         call record%get_reals('stepper.u', final%u, stat, errmsg)
-         if (stat == 0) call record%get_reals('stepper.v', final%v, stat, errmsg)
-         if (stat == 0 .and. record%find('stepper.u_previous') > 0) then
-            allocate (final%u_previous(size(prepared%u0)))
-            call record%get_reals('stepper.u_previous', final%u_previous, stat, errmsg)
-         end if
-         final%given = stat == 0
+         call move_state(last_state, final)
       end subroutine run_with_file
 
+      !> The state the point ends in, which the next point of a continuation starts from.
       subroutine keep_final(stepper)
          class(time_stepper), intent(in) :: stepper
-         type(state_record) :: record
          if (result%status /= status_ok) return
-         call stepper%save_state(record)
-         final%u = stepper%u
-         final%v = stepper%v
-         if (record%find('stepper.u_previous') > 0) then
-            allocate (final%u_previous(size(stepper%u)))
-            call record%get_reals('stepper.u_previous', final%u_previous, stat, errmsg)
-         end if
-         final%given = .true.
+         final = stepper%state()
       end subroutine keep_final
    end subroutine run_point
 

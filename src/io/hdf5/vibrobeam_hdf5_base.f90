@@ -14,6 +14,7 @@
 !! once, by the program, before it exits.
 module vibrobeam_hdf5_base
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_int64_t, c_null_char
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_filesystem, only: file_exists
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5close_f, h5eset_auto_f, h5kind_to_type, &
@@ -121,7 +122,7 @@ contains
       character(len=*), intent(in) :: message
       character(len=*), intent(in), optional :: reason
       character(len=:), allocatable :: why
-      stat = 1
+      stat = stat_failure
       if (present(reason)) then
          why = reason
       else

@@ -13,6 +13,7 @@
 !! None knows a variable by name: adding a variable to a settings type's `visit` is all it
 !! takes for every one of them to handle it.
 module vibrobeam_schema_operations
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_namelist_tokens, only: lowercase
@@ -176,7 +177,7 @@ contains
             text_value = keyword_case(text)
          end if
          if (ios /= 0) then
-            self%stat = 1
+            self%stat = stat_failure
             self%errmsg = self%scanned%label(k)//': the Fortran run-time library cannot read this value ('// &
                           trim(iomsg)//'); write it as a plain number, quoted string or .true./.false.'
          end if
@@ -242,7 +243,7 @@ contains
       subroutine fail(message)
          character(len=*), intent(in) :: message
          if (self%stat /= 0) return
-         self%stat = 1
+         self%stat = stat_failure
          self%errmsg = message
       end subroutine fail
 

@@ -1,7 +1,11 @@
 !> From a validated scene to everything a run needs (scene -> discrete model in the data
-!! flow of CONTRIBUTING.md, "Architecture"): the beam model, its contact points, its loads and its initial state.
-!! Used by the program and by the verification drivers, so both run the same set-up.
-module vibrobeam_setup
+!! flow of CONTRIBUTING.md, "Architecture"): the beam model, its contact points and loads,
+!! the discrete system a stepper steps (the full model or its reduced one), the stepper's
+!! settings and the state the run starts from (the initial data, the checkpoint of
+!! &initial from_file, or a state a sweep hands on). Used by the program and by the
+!! verification drivers, so both run the same set-up; the stepper itself comes from the
+!! factory (`new_stepper`).
+module vibrobeam_problem
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_status, only: stat_failure, stat_numerical_failure
@@ -13,41 +17,41 @@ module vibrobeam_setup
    use vibrobeam_loads, only: load_set, build_loads
    use vibrobeam_initial_state, only: mode_field, initial_velocity
    use vibrobeam_static, only: solve_static
-   use vibrobeam_time_stepper, only: time_stepper
-   use vibrobeam_velocity_stepper, only: velocity_stepper
-   use vibrobeam_position_stepper, only: position_stepper
+   use vibrobeam_discrete_system, only: discrete_system
+   use vibrobeam_time_stepper, only: time_stepper, stepper_settings, dynamic_state
+   use vibrobeam_stepper_factory, only: new_time_stepper, state_from_record
    use vibrobeam_state_record, only: state_record
    use vibrobeam_checkpoint, only: read_checkpoint
    use vibrobeam_restart_check, only: check_compatible
-   use vibrobeam_contact_projector, only: contact_method_code
    use vibrobeam_compliant_law, only: rule_code
    use vibrobeam_reduction, only: reduced_basis, build_reduction, reduce_model, reduce_contacts, reduce_loads, &
                                   reduce_state, default_reduction_frequency
    implicit none
    private
-   public :: prepared_scene, prepare_scene, start_stepper, start_time_stepper, reduction_cutoff, release_stepper
+   public :: run_problem, build_problem, new_stepper, stepper_settings_of, reduction_cutoff
 
-   type :: prepared_scene
-      type(beam_model) :: model
-      type(contact_set) :: contacts
-      type(load_set) :: loads
-      real(dp), allocatable :: u0(:)   !! initial displacement unknowns (dynamics)
-      real(dp), allocatable :: v0(:)   !! initial velocity unknowns (dynamics)
-      !> U^{-1} of the position scheme when the start continues an earlier state (a sweep's
-      !! continuation); not allocated: the scheme's second-order start from u0, v0
-      real(dp), allocatable :: u_previous0(:)
+   !> A run's problem: what it is about (the model, contacts and loads of the mesh), what a
+   !! stepper steps (`system`, in the run's coordinates) and from where (`start`); how it
+   !! is stepped is the scene's (`stepper_settings_of`).
+   type :: run_problem
+      type(beam_model) :: model        !! the beam on its mesh
+      type(contact_set) :: contacts    !! the contact points on the mesh
+      type(load_set) :: loads          !! the loads on the mesh
+      real(dp), allocatable :: u0(:)   !! initial displacement unknowns of the mesh (dynamics)
+      real(dp), allocatable :: v0(:)   !! initial velocity unknowns of the mesh (dynamics)
+      !> what the stepper steps: model, contacts and loads of the mesh, or with &mesh
+      !! reduction = 'craig-bampton' (dynamics) those of the reduced model, whose
+      !! coordinates `reduction` maps back to the mesh (the recorder does)
+      type(discrete_system) :: system
+      logical :: reduced = .false.
+      type(reduced_basis) :: reduction
+      !> where the run starts, in the system's coordinates: the initial data, the
+      !! checkpoint's state, or the state a sweep's point before hands on (`extra` then too)
+      type(dynamic_state) :: start
       logical :: resuming = .false.    !! continues the checkpoint of &initial from_file
       type(state_record) :: resume     !! that checkpoint
       real(dp) :: resume_time = 0      !! its time (s)
-      !> &mesh reduction = 'craig-bampton' (dynamics): the steppers run on the reduced
-      !! model, contact points, loads and initial state below, the recorder maps back
-      logical :: reduced = .false.
-      type(reduced_basis) :: reduction
-      type(beam_model) :: reduced_model
-      type(contact_set) :: reduced_contacts
-      type(load_set) :: reduced_loads
-      real(dp), allocatable :: q0(:), qv0(:)   !! initial reduced coordinates and velocities
-   end type prepared_scene
+   end type run_problem
 
 contains
 
@@ -57,9 +61,9 @@ contains
    !! the obstacles, a checkpoint of &initial from_file that does not match);
    !! `stat_numerical_failure` when the static solve of `&initial displacement = 'static'`
    !! fails; `warnings` collects one line per warning.
-   subroutine prepare_scene(scene, prepared, warnings, stat, errmsg)
+   subroutine build_problem(scene, prepared, warnings, stat, errmsg)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(out) :: prepared
+      type(run_problem), intent(out) :: prepared
       character(len=:), allocatable, intent(inout) :: warnings
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
@@ -72,6 +76,7 @@ contains
       call build_loads(scene%load, prepared%model, scene%beam%rho_s(), prepared%loads)
       if (scene%analysis%kind == 'dynamics' .and. len_trim(scene%initial%from_file) > 0) then
          call resume_from_file(scene, prepared, warnings, stat, errmsg)
+         if (stat == 0) call full_system(prepared)
          return
       end if
       call initial_displacement(scene, prepared, stat, errmsg)
@@ -83,9 +88,54 @@ contains
          errmsg = '&initial: the initial displacement or velocity is not finite (interpolation on the mesh failed)'
          return
       end if
-      if (scene%analysis%kind == 'dynamics' .and. scene%mesh%reduction == 'craig-bampton') call reduce_scene(scene, &
-         prepared, stat, errmsg)
-   end subroutine prepare_scene
+      if (scene%analysis%kind == 'dynamics' .and. scene%mesh%reduction == 'craig-bampton') then
+         call reduce_scene(scene, prepared, stat, errmsg)
+      else
+         call full_system(prepared)
+      end if
+   end subroutine build_problem
+
+   !> The system of the mesh itself, starting from the initial fields.
+   subroutine full_system(prepared)
+      type(run_problem), intent(inout) :: prepared
+      prepared%system = discrete_system(prepared%model, prepared%contacts, prepared%loads)
+      prepared%start%u = prepared%u0
+      prepared%start%v = prepared%v0
+   end subroutine full_system
+
+   !> How the scene is stepped: &time, &impact, the Rayleigh damping of &beam, &solver.
+   pure function stepper_settings_of(scene) result(settings)
+      type(scene_type), intent(in) :: scene
+      type(stepper_settings) :: settings
+      settings%scheme = scene%time%scheme
+      settings%dt = scene%time%dt
+      settings%theta = scene%time%theta
+      settings%gamma = scene%time%gamma
+      settings%restitution = scene%impact%restitution
+      settings%separating_restitution = 1
+      if (scene%impact%separating_points == 'restitution') settings%separating_restitution = scene%impact%restitution
+      settings%rayleigh_mass = scene%beam%rayleigh_mass
+      settings%rayleigh_stiffness = scene%beam%rayleigh_stiffness
+      settings%compliant_rule = rule_code(trim(scene%time%compliant_rule))
+      settings%contact = scene%solver
+   end function stepper_settings_of
+
+   !> The stepper of the scene's scheme and settings (`stepper_settings_of`) for the
+   !! problem, at its start (at the checkpoint it continues, when it resumes one): the
+   !! factory's, `new_time_stepper`.
+   subroutine new_stepper(scene, prepared, stepper, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(run_problem), intent(in) :: prepared
+      class(time_stepper), allocatable, intent(out) :: stepper
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      if (prepared%resuming) then
+         call new_time_stepper(prepared%system, stepper_settings_of(scene), prepared%start, stepper, stat, errmsg, &
+                               prepared%resume)
+      else
+         call new_time_stepper(prepared%system, stepper_settings_of(scene), prepared%start, stepper, stat, errmsg)
+      end if
+   end subroutine new_stepper
 
    !> The cut-off of the fixed-interface modes (rad/s): &mesh reduction_frequency, or its
    !! default from the forcing frequencies and dt (`default_reduction_frequency`).
@@ -106,7 +156,7 @@ contains
    !> The Craig-Bampton reduced model of a prepared scene (`vibrobeam_reduction`).
    subroutine reduce_scene(scene, prepared, stat, errmsg)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(inout) :: prepared
+      type(run_problem), intent(inout) :: prepared
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       if (scene%mesh%reduction_modes > prepared%model%unknowns - prepared%contacts%count) then
@@ -130,11 +180,11 @@ contains
                   'reduction_frequency = '//real_text(reduction_cutoff(scene))//' rad/s; raise it or give reduction_modes'
          return
       end if
-      call reduce_model(prepared%model, prepared%reduction, prepared%reduced_model)
-      call reduce_contacts(prepared%contacts, prepared%reduced_contacts)
-      call reduce_loads(prepared%loads, prepared%reduction, prepared%reduced_loads)
-      prepared%q0 = reduce_state(prepared%model, prepared%contacts, prepared%reduction, prepared%u0)
-      prepared%qv0 = reduce_state(prepared%model, prepared%contacts, prepared%reduction, prepared%v0)
+      call reduce_model(prepared%model, prepared%reduction, prepared%system%model)
+      call reduce_contacts(prepared%contacts, prepared%system%contacts)
+      call reduce_loads(prepared%loads, prepared%reduction, prepared%system%loads)
+      prepared%start%u = reduce_state(prepared%model, prepared%contacts, prepared%reduction, prepared%u0)
+      prepared%start%v = reduce_state(prepared%model, prepared%contacts, prepared%reduction, prepared%v0)
       prepared%reduced = .true.
    end subroutine reduce_scene
 
@@ -146,11 +196,11 @@ contains
    !! satisfy the new ones.
    subroutine resume_from_file(scene, prepared, warnings, stat, errmsg)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(inout) :: prepared
+      type(run_problem), intent(inout) :: prepared
       character(len=:), allocatable, intent(inout) :: warnings
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer(int64) :: steps
+      type(dynamic_state) :: resumed
       logical :: same_bounds, verified
       real(dp) :: value
       character(len=:), allocatable :: file
@@ -168,20 +218,20 @@ contains
          if (.not. verified) warnings = warnings//'&initial from_file = '''//file//''': its checkpoint carries '// &
             'no checksum (written by vibrobeam 0.2.0): it is continued without a check that it is undamaged'// &
             new_line('a')
-         allocate (prepared%u0(prepared%model%unknowns), prepared%v0(prepared%model%unknowns))
-         call prepared%resume%get_reals('stepper.u', prepared%u0, stat, errmsg)
-         if (stat == 0) call prepared%resume%get_reals('stepper.v', prepared%v0, stat, errmsg)
-         if (stat == 0) call prepared%resume%get_int64('stepper.steps', steps, stat, errmsg)
+         call state_from_record(scene%time%scheme, prepared%resume, prepared%model%unknowns, resumed, stat, errmsg)
          if (stat /= 0) then
             errmsg = '&initial from_file = '''//file//''': '//trim(errmsg)
             return
          end if
-         if (step_count(scene) <= steps) then
+         if (step_count(scene) <= resumed%step) then
             stat = stat_failure
             errmsg = '&time t_end = '//real_text(scene%time%t_end)//' s is not after the checkpoint of '''//file// &
-                     ''' at t = '//real_text(steps*scene%time%dt)//' s (t_end is the end time of the continued run)'
+                     ''' at t = '//real_text(resumed%step*scene%time%dt)//' s (t_end is the end time of the continued run)'
             return
          end if
+         ! the stepper starts from U and V and takes the rest back from the checkpoint
+         prepared%u0 = resumed%u
+         prepared%v0 = resumed%v
          prepared%resuming = .true.
          do c = 1, contacts%count
             if (same_bounds) exit
@@ -202,7 +252,7 @@ contains
    !! under the loads at t = 0); it must satisfy every obstacle (theory §1: u0 in K).
    subroutine initial_displacement(scene, prepared, stat, errmsg)
       type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(inout) :: prepared
+      type(run_problem), intent(inout) :: prepared
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp), allocatable :: reaction(:)
@@ -243,82 +293,4 @@ contains
       end associate
    end subroutine initial_displacement
 
-   !> A velocity stepper at t = 0 for a prepared scene, with the scene's time settings.
-   subroutine start_stepper(scene, prepared, stepper, stat, errmsg)
-      type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(in) :: prepared
-      type(velocity_stepper), intent(out) :: stepper
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      stepper%compliant_rule = rule_code(trim(scene%time%compliant_rule))
-      if (prepared%reduced) then
-         call stepper%init(prepared%reduced_model, prepared%reduced_contacts, prepared%reduced_loads, scene%time%dt, &
-                           scene%time%theta, scene%time%gamma, scene%impact%restitution, scene%beam%rayleigh_mass, &
-                              scene%beam%rayleigh_stiffness, &
-                           scene%solver%contact_solver, prepared%q0, prepared%qv0, stat, errmsg)
-      else
-         call stepper%init(prepared%model, prepared%contacts, prepared%loads, scene%time%dt, scene%time%theta, scene%time%gamma, &
-                           scene%impact%restitution, scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness, &
-                              scene%solver%contact_solver, &
-                           prepared%u0, prepared%v0, stat, errmsg)
-      end if
-      stepper%projector%max_iterations = scene%solver%contact_max_iterations
-      stepper%projector%method = contact_method_code(trim(scene%solver%contact_method))
-      stepper%compliant%method = trim(scene%solver%contact_method)
-      if (scene%impact%separating_points == 'restitution') stepper%separating_restitution = scene%impact%restitution
-   end subroutine start_stepper
-
-   !> The stepper of the scene's scheme (&time scheme: 'velocity' or 'position') at t = 0,
-   !! or at the checkpoint that the prepared scene continues.
-   subroutine start_time_stepper(scene, prepared, stepper, stat, errmsg)
-      type(scene_type), intent(in) :: scene
-      type(prepared_scene), intent(in) :: prepared
-      class(time_stepper), allocatable, intent(out) :: stepper
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      type(velocity_stepper), allocatable :: velocity
-      type(position_stepper), allocatable :: position
-      if (scene%time%scheme == 'position') then
-         allocate (position)
-         position%compliant_rule = rule_code(trim(scene%time%compliant_rule))
-         if (prepared%reduced) then
-            call position%init(prepared%reduced_model, prepared%reduced_contacts, prepared%reduced_loads, scene%time%dt, &
-                               scene%time%theta, scene%impact%restitution, scene%beam%rayleigh_mass, &
-                                  scene%beam%rayleigh_stiffness, &
-                               scene%solver%contact_solver, prepared%q0, prepared%qv0, stat, errmsg)
-         else
-            call position%init(prepared%model, prepared%contacts, prepared%loads, scene%time%dt, scene%time%theta, &
-                               scene%impact%restitution, scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness, &
-                                  scene%solver%contact_solver, &
-                               prepared%u0, prepared%v0, stat, errmsg)
-         end if
-         position%projector%max_iterations = scene%solver%contact_max_iterations
-         position%projector%method = contact_method_code(trim(scene%solver%contact_method))
-         position%compliant%method = trim(scene%solver%contact_method)
-         if (stat == 0 .and. allocated(prepared%u_previous0)) then
-            ! the state of an earlier run carried on (docs/sweeps.md, "Continuation")
-            position%u_previous = prepared%u_previous0
-            position%v = (position%u - position%u_previous)/scene%time%dt
-         end if
-         call move_alloc(position, stepper)
-      else
-         allocate (velocity)
-         call start_stepper(scene, prepared, velocity, stat, errmsg)
-         call move_alloc(velocity, stepper)
-      end if
-      if (stat == 0 .and. prepared%resuming) call stepper%restore_state(prepared%resume, stat, errmsg)
-   end subroutine start_time_stepper
-
-   !> Deallocate a stepper of `start_time_stepper`. gfortran 12 frees only the first of
-   !! the symmetric_band components of time_stepper (mass) when a class(time_stepper) whose
-   !! dynamic type is a scheme's stepper is deallocated: stiffness and iteration_matrix,
-   !! (kd + 1) J doubles each, were lost once per stepper, so once per point of a sweep
-   !! (valgrind: 2 blocks "definitely lost" for each); they are freed here first.
-   subroutine release_stepper(stepper)
-      class(time_stepper), allocatable, intent(inout) :: stepper
-      if (.not. allocated(stepper)) return
-      if (allocated(stepper%stiffness%lower)) deallocate (stepper%stiffness%lower)
-      if (allocated(stepper%iteration_matrix%lower)) deallocate (stepper%iteration_matrix%lower)
-      deallocate (stepper)
-   end subroutine release_stepper
-end module vibrobeam_setup
+end module vibrobeam_problem

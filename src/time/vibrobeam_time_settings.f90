@@ -1,9 +1,11 @@
 !> How time is stepped, as the input gives it: &time (the scheme, its step and parameters)
 !! and &impact (Newton's law at the rigid stops), each variable declared once in
-!! `visit_time` and `visit_impact` (`vibrobeam_schema_visitor`; docs/input.md).
-module vibrobeam_stepper_settings
+!! `visit_time` and `visit_impact` (`vibrobeam_schema_visitor`; docs/input.md). The
+!! schemes allowed are the factory's (`scheme_names`).
+module vibrobeam_time_settings
    use vibrobeam_kinds, only: dp
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, keyword_row, keyword_length
+   use vibrobeam_stepper_factory, only: scheme_names
    implicit none
    private
    public :: time_settings, impact_settings, visit_time, visit_impact
@@ -44,7 +46,7 @@ contains
       class(schema_visitor), intent(inout) :: visitor
       call visitor%variable(real_row('time', 't_end', 's', 1e-15_dp, 1e12_dp, 'simulated time'), time%t_end)
       call visitor%variable(real_row('time', 'dt', 's', 1e-18_dp, 1e12_dp, 'time step'), time%dt)
-      call visitor%variable(keyword_row('time', 'scheme', 'velocity|position', keyword_length, &
+      call visitor%variable(keyword_row('time', 'scheme', scheme_names(), keyword_length, &
                                         'velocity-based scheme or the position-based Paoli-Schatzman scheme'), &
                             time%scheme)
       call visitor%variable(real_row('time', 'theta', '', 0.5_dp, 1.0_dp, 'theta of the theta-method'), time%theta)
@@ -54,4 +56,4 @@ contains
                                         'force of a compliant stop over a step: discrete gradient or theta-mean'), &
                             time%compliant_rule)
    end subroutine visit_time
-end module vibrobeam_stepper_settings
+end module vibrobeam_time_settings

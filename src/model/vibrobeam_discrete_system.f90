@@ -1,0 +1,20 @@
+!> What a time stepper steps: the mass and stiffness matrices, the contact rows and the
+!! loads, in the coordinates of the run (the nodal unknowns of the full model, or the
+!! coordinates of the reduced model of `&mesh reduction`, `vibrobeam_reduction`). The
+!! steppers see only this, so no stepper or run loop asks whether the model is reduced;
+!! what maps the coordinates back to the mesh (the reduced basis) stays with the run
+!! (`vibrobeam_problem`).
+module vibrobeam_discrete_system
+   use vibrobeam_model, only: beam_model
+   use vibrobeam_contact_set, only: contact_set
+   use vibrobeam_loads, only: load_set
+   implicit none
+   private
+   public :: discrete_system
+
+   type :: discrete_system
+      type(beam_model) :: model       !! M and K (and the mesh's length) in the run's coordinates
+      type(contact_set) :: contacts   !! the rows H_c and bounds of the contact points, springs included
+      type(load_set) :: loads         !! F(t) in the run's coordinates
+   end type discrete_system
+end module vibrobeam_discrete_system
