@@ -1,30 +1,44 @@
-# Amplitude spectrum of the tip displacement of a dynamics run (single-sided, mean removed,
-# Hann window, scaled so that a sine of amplitude A on a bin peaks at A; see
-# src/analysis/statistics/vibrobeam_spectrum.f90), on a logarithmic amplitude axis.
-# usage: gnuplot -e "stem='results/looseness_tip_stops'" scripts/plot_dynamics_spectrum.gp
-#        optional: -e "fmax=20" to fix the upper frequency (Hz); by default the axis ends a
-#        little beyond the last frequency whose amplitude exceeds 1e-4 of the largest one
-# reads  stem_spectrum.dat (frequency (Hz), amplitude (m); may hold only the header line)
+# Amplitude spectrum of the displacement at the tip or at an observation point of a
+# dynamics run (single-sided, mean removed, Hann window, scaled so that a sine of amplitude A
+# on a bin peaks at A; see src/analysis/statistics/vibrobeam_spectrum.f90), on logarithmic
+# axes, limited to the band that holds the response: from the first bin above 0 to a
+# little beyond the highest frequency whose amplitude reaches 1e-3 of the largest (above
+# it, the response is gone and only round-off and the scheme's highest modes remain).
+# usage: gnuplot -e "stem='results/forced_rattling'" scripts/plot_dynamics_spectrum.gp
+#        optional: -e "point=2" the spectrum at &output points(2) (0, the default: the tip),
+#        -e "where='x = 0.25 m'" its position for the title (scripts/plot_results.sh
+#        --point sets both), -e "fmax=20" the upper frequency (Hz)
+# reads  stem_spectrum.dat (frequency (Hz), tip amplitude (m), frequency (rad/s), then the
+#        amplitude at each observation point; may hold only the header lines)
 # writes stem_spectrum.png
 # needs: spectrum
 if (!exists("stem")) stem = 'results/vibrobeam'
+if (!exists("point")) point = 0
+if (!exists("where")) where = (point == 0) ? 'the tip' : sprintf('observation point %d', point)
 # 1 if file f exists and holds at least one data line (the '#' header does not count)
 has_data(f) = int(system("test -r '".f."' && awk '!/^#/ && NF {n = 1; exit} END {print n + 0}' '".f."' || echo 0"))
 spectrum_file = stem.'_spectrum.dat'
+# the amplitude's column: 2 at the tip, 3 + k at observation point k
+a = (point == 0) ? 2 : 3 + point
 set terminal pngcairo size 1000,600 noenhanced
 set output stem.'_spectrum.png'
 set xlabel 'frequency (Hz)'
-set ylabel 'tip displacement amplitude (m)'
-set grid xtics ytics mytics
+set ylabel 'displacement amplitude at '.where.' (m)'
+set grid xtics ytics
 
-# number of amplitudes > 0 in file f (a log axis cannot show zeros; stats fails on none)
-positive_count(f) = int(system("test -r '".f."' && awk '!/^#/ && NF && $2 > 0 {n++} END {print n + 0}' '".f."' || echo 0"))
-if (positive_count(spectrum_file) == 0) {
-   set title 'Tip displacement spectrum: '.stem
-   if (has_data(spectrum_file)) {
-      set label 1 'zero spectrum in '.spectrum_file at graph 0.5, 0.5 center front
+# number of amplitudes > 0 in column a past the zero frequency (a log axis cannot show zeros)
+columns = int(system("test -r '".spectrum_file."' && awk '!/^#/ && NF {print NF; exit}' '".spectrum_file."' || echo 0"))
+positive_count(f) = int(system("test -r '".f."' && awk '!/^#/ && NF && $1 > 0 && $".a." > 0 {n++} END {print n + 0}' '".f."' || echo 0"))
+if (columns < a || positive_count(spectrum_file) == 0) {
+   set title 'Displacement spectrum at '.where.': '.stem
+   if (columns > 0 && columns < a) {
+      set label 1 sprintf('no observation point %d in %s', point, spectrum_file) at graph 0.5, 0.5 center front
    } else {
-      set label 1 'no data in '.spectrum_file at graph 0.5, 0.5 center front
+      if (has_data(spectrum_file)) {
+         set label 1 'zero spectrum in '.spectrum_file at graph 0.5, 0.5 center front
+      } else {
+         set label 1 'no data in '.spectrum_file at graph 0.5, 0.5 center front
+      }
    }
    set xrange [0:1]
    set yrange [-1:1]
@@ -33,26 +47,29 @@ if (positive_count(spectrum_file) == 0) {
    exit
 }
 
-# Largest peak, for the title and the amplitude range (8 decades below it).
-stats spectrum_file using 2 nooutput
+# the largest peak (above 0 Hz), for the title and the amplitude range (5 decades below it)
+stats spectrum_file using ($1 > 0 ? column(a) : NaN) nooutput
 amplitude_max = STATS_max
-peak_index = STATS_index_max
-stats spectrum_file every ::peak_index::peak_index using 1 nooutput
-peak_frequency = STATS_max
-stats spectrum_file using 1 nooutput
+stats spectrum_file using ($1 > 0 && column(a) >= amplitude_max ? $1 : NaN) nooutput
+peak_frequency = STATS_min
+stats spectrum_file using ($1 > 0 ? $1 : NaN) nooutput
+f_low = STATS_min
 nyquist = STATS_max
-stats spectrum_file using ($2 > 1e-4*amplitude_max ? $1 : NaN) nooutput
-f_high = (STATS_records > 0 && STATS_max > 0) ? 1.2*STATS_max : nyquist
+# the band: up to 1.5 times the highest frequency whose amplitude reaches 1e-3 of the peak (60 dB)
+stats spectrum_file using ($1 > 0 && column(a) >= 1e-3*amplitude_max ? $1 : NaN) nooutput
+f_high = 1.5*STATS_max
 if (exists("fmax")) { f_high = fmax }
 if (f_high > nyquist) { f_high = nyquist }
-if (f_high <= 0) { f_high = (nyquist > 0) ? nyquist : 1 }
+if (f_high <= f_low) { f_high = (nyquist > f_low) ? nyquist : 10*f_low }
 
-set title sprintf('Tip displacement spectrum: %s   (largest peak %.4g m at %.5g Hz)', stem, amplitude_max, peak_frequency)
-set logscale y
+set title sprintf('Displacement spectrum at %s: %s   (largest peak %.4g m at %.5g Hz, %.5g rad/s)', \
+                  where, stem, amplitude_max, peak_frequency, 2*pi*peak_frequency)
+set logscale xy
 set format y '%.0e'
-set xrange [0:f_high]
-set yrange [amplitude_max*1e-8:amplitude_max*2]
+set xrange [f_low:f_high]
+set yrange [amplitude_max*1e-5:amplitude_max*2]
 set key top right
-plot spectrum_file using 1:($2 > 0 ? $2 : NaN) with lines lw 1.5 lc rgb '#1f77b4' title 'amplitude (Hann window)', \
+plot spectrum_file using ($1 > 0 ? $1 : NaN):(column(a) > 0 ? column(a) : NaN) with lines lw 1.5 \
+        lc rgb '#1f77b4' title 'amplitude (Hann window)', \
      '+' using (peak_frequency):(amplitude_max) every ::0::0 with points pt 7 ps 1.2 lc rgb '#d62728' \
         title sprintf('peak %.5g Hz', peak_frequency)

@@ -1,13 +1,28 @@
 #!/usr/bin/env bash
-# Draw every plot that a result allows, as PNG beside it.
-# usage: plot_results.sh RESULT.h5
+# Draw every plot that a result allows, as PNG beside it (docs/output.md, "Plots").
+# usage: plot_results.sh RESULT.h5 [--point K]
+#   --point K   the spectrum, the phase portrait and the Poincare section at &output
+#               points(K) instead of the tip (K = 0, the default)
 # The .dat files are derived from RESULT.h5: when one is missing or names another run
 # than RESULT.h5's /run run_id (an earlier run's, or none with &output text = .false.),
 # they are derived again with `vibrobeam --text RESULT.h5` (vibrobeam from $VIBROBEAM,
 # the PATH, the installation this script belongs to, or build/ of this repository).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-result=${1:?usage: plot_results.sh RESULT.h5}
+usage="usage: plot_results.sh RESULT.h5 [--point K]"
+result=${1:?$usage}
+shift
+point=0
+while [ $# -gt 0 ]; do
+  case $1 in
+    --point)
+      point=${2:-}
+      [[ "$point" =~ ^[0-9]+$ ]] || { echo "plot_results: --point takes a whole number, 0 for the tip; $usage" >&2; exit 1; }
+      shift ;;
+    *) echo "plot_results: unknown argument '$1'; $usage" >&2; exit 1 ;;
+  esac
+  shift
+done
 stem=${result%.h5}
 [ -f "$result" ] || { echo "plot_results: no result file $result" >&2; exit 1; }
 
@@ -37,10 +52,21 @@ if [ "$stale" = 2 ]; then
   "$vibrobeam" --text "$result"
 fi
 
+# the observation point of the spectrum, phase portrait and Poincare section, and the
+# start of the statistics window (from the result's attributes)
+attribute() { h5dump -m '%.17g' -a "$1" "$result" 2> /dev/null | sed -n 's/.*(0): *\(.*\)$/\1/p' | head -1; }
+where="the tip"
+if [ "$point" -gt 0 ]; then
+  x=$(h5dump -m '%.6g' -d /points/x -y -w 1 "$result" 2> /dev/null |
+      awk -v k="$point" '/^ *[-0-9.eE+]+,? *$/ {n++; gsub("[ ,]", ""); if (n == k) print}')
+  [ -n "$x" ] || { echo "plot_results: --point $point: $result has no &output points($point)" >&2; exit 1; }
+  where="x = $x m"
+fi
+measure_from=$(attribute /output.measure_from); measure_from=${measure_from:-0}
 drawn=0
 plot() {  # plot SCRIPT REQUIRED_DAT
   if [ -f "${stem}_$2.dat" ]; then
-    gnuplot -e "stem='${stem}'" "$here/$1"
+    gnuplot -e "stem='${stem}'; point=${point}; where='${where}'; measure_from=${measure_from}" "$here/$1"
     drawn=$((drawn + 1))
   fi
 }

@@ -3,16 +3,19 @@
 # parameter; up and down branches in two colours. One dot per period: a periodic response
 # of period 1 gives one dot per parameter value, period 2 two, chaos a smear.
 # usage: gnuplot -e "stem='results/rattling_bifurcation'" scripts/plot_sweep_bifurcation.gp
+#        optional (scripts/plot_sweep.sh sets them): -e "xscale=210" divides the parameter
+#        axis (a normalised frequency), -e "xlabel='...'" names it
 # reads  stem_poincare.dat (docs/output.md, "Text files")
 # writes stem_bifurcation.png
 # needs: poincare
 if (!exists("stem")) stem = 'results/sweep'
+if (!exists("xscale")) xscale = 1
 file = stem.'_poincare.dat'
 set terminal pngcairo size 1100,650 noenhanced
 set output stem.'_bifurcation.png'
-label = system("sed -n '2s/.*parameter: \\([^ ]*\\) (\\([^)]*\\)).*/\\1 (\\2)/p' '".file."'")
+if (!exists("xlabel")) xlabel = system("sed -n '2s/.*parameter: \\([^ ]*\\) (\\([^)]*\\)).*/\\1 (\\2)/p' '".file."'")
 set title 'Poincare samples of the tip displacement (phase 0 of the forcing): '.stem
-set xlabel label
+set xlabel xlabel
 set ylabel 'tip displacement at phase 0 (mm)'
 set grid
 set key top left
@@ -26,8 +29,8 @@ c_u = col('tip_displacement')
 t_up = points(sprintf('$%d > 0', direction)) > 0 ? 'up' : ''
 t_down = points(sprintf('$%d < 0', direction)) > 0 ? 'down' : ''
 t_alone = points(sprintf('$%d == 0', direction)) > 0 ? 'independent' : ''
-plot file using (column(c_x)):(column(direction) > 0 ? column(c_u)*1e3 : NaN) with points pt 7 ps 0.35 lc rgb '#d62728' title t_up, \
-     '' using (column(c_x)):(column(direction) < 0 ? column(c_u)*1e3 : NaN) with points pt 7 ps 0.35 lc rgb '#1f77b4' \
+plot file using (column(c_x)/xscale):(column(direction) > 0 ? column(c_u)*1e3 : NaN) with points pt 7 ps 0.35 lc rgb '#d62728' title t_up, \
+     '' using (column(c_x)/xscale):(column(direction) < 0 ? column(c_u)*1e3 : NaN) with points pt 7 ps 0.35 lc rgb '#1f77b4' \
         title t_down, \
-     '' using (column(c_x)):(column(direction) == 0 ? column(c_u)*1e3 : NaN) with points pt 7 ps 0.35 lc rgb '#2ca02c' \
+     '' using (column(c_x)/xscale):(column(direction) == 0 ? column(c_u)*1e3 : NaN) with points pt 7 ps 0.35 lc rgb '#2ca02c' \
         title t_alone

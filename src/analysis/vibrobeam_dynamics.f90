@@ -222,6 +222,7 @@ contains
          outcome%max_penetration = recorder%max_penetration
          outcome%compliant = recorder%compliant
          if (outcome%compliant) outcome%peak_force = maxval(recorder%peak_force)
+         outcome%contact_time = maxval([0.0_dp, recorder%contact_time])
          self%summary%status = outcome%status
          self%summary%steps = stepper%steps
          self%summary%wall_seconds = self%meter%elapsed()

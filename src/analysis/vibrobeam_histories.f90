@@ -2,9 +2,10 @@
 !! output time (time, tip, energies, penetration, observation points, compliant stops'
 !! energies and forces), the field snapshots and the impacts, streamed while the run goes
 !! on (`vibrobeam_hdf5_series`), and what is written at its end (contact fractions, largest
-!! penetration, impact count, the compliant stops' peak forces, the tip spectrum). The
-!! recorder (`vibrobeam_recorder`) decides what goes in; this module owns the layout:
-!! names, units, creation before the file enters SWMR mode, buffers and closing.
+!! penetration, impact count, the compliant stops' peak forces; the spectra are
+!! `vibrobeam_run_spectra`'s). The recorder (`vibrobeam_recorder`) decides what goes in;
+!! this module owns the layout: names, units, creation before the file enters SWMR mode,
+!! buffers and closing.
 module vibrobeam_histories
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_contact_set, only: contact_set
@@ -37,7 +38,6 @@ module vibrobeam_histories
       logical :: points = .false.                   !! the scene has observation points
       logical :: compliant = .false.                !! the scene has compliant stops
       type(h5_series) :: histories(history_count), point_u, point_v, field_time, field, impact_columns(5)
-      type(h5_series) :: spectrum_frequency, spectrum_amplitude
       type(h5_array) :: fraction
       ! compliant stops: created only when the scene has springs
       type(h5_series) :: contact_potential, contact_damping, contact_force
@@ -58,14 +58,13 @@ contains
 
    !> Create every dataset and attribute of the histories (before the file enters SWMR
    !! mode): `point_x` the observation points (m), `contacts` the contact points, `nodes`
-   !! the field's node count, `sampling_interval` the spectrum's (s).
-   subroutine create(self, writer, point_x, contacts, nodes, sampling_interval, compliant, stat, errmsg)
+   !! the field's node count.
+   subroutine create(self, writer, point_x, contacts, nodes, compliant, stat, errmsg)
       class(run_histories), intent(inout) :: self
       type(h5_writer), intent(inout) :: writer
       real(dp), intent(in) :: point_x(:)
       type(contact_set), intent(in) :: contacts
       integer, intent(in) :: nodes
-      real(dp), intent(in) :: sampling_interval
       logical, intent(in) :: compliant
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
@@ -97,13 +96,6 @@ contains
       if (stat == 0) call writer%attr_real('/contact', 'max_penetration', 0.0_dp, stat, errmsg)
       if (stat == 0) call writer%attr_real('/contact', 'max_penetration_time', 0.0_dp, stat, errmsg)
       if (stat == 0) call writer%attr_int64('/impacts', 'count', 0_int64, stat, errmsg)
-      if (stat == 0) call writer%attr_real('/spectrum', 'sampling_interval', sampling_interval, stat, errmsg)
-      if (stat == 0) call writer%attr_real('/spectrum', 'bin_width', 0.0_dp, stat, errmsg)
-      if (stat == 0) call writer%attr_int64('/spectrum', 'segments', 0_int64, stat, errmsg)
-      if (stat == 0) call writer%attr_int64('/spectrum', 'samples', 0_int64, stat, errmsg)
-      if (stat == 0) call writer%attr_string('/spectrum', 'window', 'hann', stat, errmsg)
-      if (stat == 0) call self%spectrum_frequency%create(writer, '/spectrum/frequency', 1, 'Hz', stat, errmsg)
-      if (stat == 0) call self%spectrum_amplitude%create(writer, '/spectrum/tip_amplitude', 1, 'm', stat, errmsg)
    end subroutine create
 
    !> The compliant stops' datasets, created after the episodes' (the order of the file).
@@ -214,15 +206,12 @@ contains
    end function rows
 
    !> End of the run: the contact fractions, largest penetration and impact count, the
-   !! compliant stops' peak forces, the spectrum (frequency (Hz), amplitude (m), bin width,
-   !! segments, samples); the datasets are closed.
-   subroutine finish(self, writer, fraction, max_penetration, max_penetration_time, impacts, peak_force, &
-                     frequency, amplitude, width, segments, samples, stat, errmsg)
+   !! compliant stops' peak forces; the datasets are closed.
+   subroutine finish(self, writer, fraction, max_penetration, max_penetration_time, impacts, peak_force, stat, errmsg)
       class(run_histories), intent(inout) :: self
       type(h5_writer), intent(inout) :: writer
       real(dp), intent(in) :: fraction(:), max_penetration, max_penetration_time, peak_force(:)
-      integer(int64), intent(in) :: impacts, segments, samples
-      real(dp), intent(in) :: frequency(:), amplitude(:), width
+      integer(int64), intent(in) :: impacts
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: k
@@ -232,18 +221,6 @@ contains
       if (stat == 0) call writer%rewrite_attr('/impacts', 'count', impacts, stat, errmsg)
       if (stat == 0 .and. self%compliant) call self%peak_force_array%write_reals(peak_force, stat, errmsg)
       if (stat /= 0) return
-      call writer%rewrite_attr('/spectrum', 'bin_width', width, stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr('/spectrum', 'segments', segments, stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr('/spectrum', 'samples', samples, stat, errmsg)
-      if (stat /= 0) return
-      ! the spectrum's datasets were created empty with the others (SWMR: no new objects)
-      do k = 1, size(frequency)
-         call self%spectrum_frequency%append(frequency(k:k), stat, errmsg)
-         if (stat == 0) call self%spectrum_amplitude%append(amplitude(k:k), stat, errmsg)
-         if (stat /= 0) return
-      end do
-      call self%spectrum_frequency%write(stat, errmsg)
-      if (stat == 0) call self%spectrum_amplitude%write(stat, errmsg)
       do k = 1, history_count
          call self%histories(k)%close()
       end do
@@ -261,7 +238,5 @@ contains
          call self%contact_force%close()
          call self%peak_force_array%close()
       end if
-      call self%spectrum_frequency%close()
-      call self%spectrum_amplitude%close()
    end subroutine finish
 end module vibrobeam_histories

@@ -12,7 +12,7 @@
 !!   at t = 0, every `field_every` steps and the last step;
 !! - `write_buffers` at every flush, `finish` at the end.
 !! Memory is bounded: rows wait in fixed-size buffers (`vibrobeam_hdf5_series`), the
-!! spectrum is a streaming Welch estimate (`vibrobeam_welch`), per-point state is one
+!! spectra are streaming Welch estimates (`vibrobeam_run_spectra`), per-point state is one
 !! value per contact or observation point.
 !!
 !! Everything a continued run needs to go on as if uninterrupted goes into a checkpoint
@@ -40,7 +40,7 @@ module vibrobeam_recorder
    use vibrobeam_state_record, only: state_record
    use vibrobeam_step_observer, only: step_events
    use vibrobeam_episodes, only: episode_tracker
-   use vibrobeam_welch, only: welch_estimator
+   use vibrobeam_run_spectra, only: run_spectra
    use vibrobeam_statistics, only: run_statistics, statistics_result, window_first_step
    use vibrobeam_statistics_output, only: statistics_datasets
    implicit none
@@ -80,7 +80,7 @@ module vibrobeam_recorder
       ! a reduced model (&mesh reduction): the stepper's unknowns are q, U = T q
       type(reduced_basis), allocatable :: reduction   !! T, for field snapshots
       real(dp), allocatable :: observed_rows(:, :)   !! (r, 1 + points) u_h at the tip and points = row . q
-      type(welch_estimator) :: spectrum
+      type(run_spectra) :: spectra                   !! /spectrum: the tip's and the observation points'
       type(episode_tracker) :: episodes
       type(run_statistics) :: statistics
       type(statistics_datasets) :: statistics_files
@@ -170,7 +170,7 @@ contains
       self%observed_dofs(:, 2:) = self%point_dofs
       self%observed_weights(:, 2:) = self%point_weights
       allocate (self%events%observed(1 + size(self%point_x), 2))
-      call self%spectrum%init(self%every*scene%time%dt, last_step/self%every + 1)
+      call self%spectra%init(self%every*scene%time%dt, last_step/self%every + 1, self%point_x)
       gap = scene%output%episode_gap
       if (is_unset(gap)) gap = default_episode_gap(model)
       call self%episodes%init(stepper%contacts%x, gap, self%write_rows)
@@ -303,8 +303,8 @@ contains
       type(beam_model), intent(in) :: model
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      call self%files%create(writer, self%point_x, stepper%contacts, model%elements + 1, self%spectrum%dt, &
-                             self%compliant, stat, errmsg)
+      call self%files%create(writer, self%point_x, stepper%contacts, model%elements + 1, self%compliant, stat, errmsg)
+      if (stat == 0) call self%spectra%create(writer, stat, errmsg)
       if (stat == 0) call self%episodes%create_datasets(writer, stat, errmsg)
       if (stat == 0 .and. self%compliant) call self%files%create_compliant(writer, stepper%contacts, stat, errmsg)
       if (stat == 0 .and. self%statistics%active) &
@@ -448,7 +448,8 @@ contains
                                     stepper%energy%dissipated_contact_damping, stepper%report%contact_force, stat, errmsg)
       if (stat /= 0) return
       ! the spectrum takes the uniformly spaced rows only (not a last row off the grid)
-      if (mod(stepper%steps, self%every) == 0) call self%spectrum%add(row(h_tip_u), stat, errmsg)
+      if (mod(stepper%steps, self%every) == 0) call self%spectra%add(row(h_tip_u), self%events%observed(2:, 1), stat, &
+                                                                      errmsg)
       if (stat /= 0) return
       self%tip_impulse = 0
       self%last_output_step = stepper%steps
@@ -500,21 +501,14 @@ contains
       class(time_stepper), intent(in) :: stepper
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp), allocatable :: frequency(:), amplitude(:)
-      integer(int64) :: segments
-      real(dp) :: width
       call self%statistics_files%finish(writer, self%window_statistics(stepper), stat, errmsg)
       if (stat == 0) call self%episodes%finish(writer, stat, errmsg)
       if (stat == 0) call self%write_buffers(stat, errmsg)
       if (stat /= 0) return
-      call self%spectrum%spectrum(frequency, amplitude, segments, width, stat, errmsg)
-      if (stat /= 0) then
-         errmsg = 'tip spectrum: '//trim(errmsg)
-         return
-      end if
       call self%files%finish(writer, self%contact_time/max(stepper%t, tiny(1.0_dp)), self%max_penetration, &
-                             self%max_penetration_time, self%impacts, self%peak_force, frequency, amplitude, width, &
-                             segments, self%spectrum%samples, stat, errmsg)
+                             self%max_penetration_time, self%impacts, self%peak_force, stat, errmsg)
+      if (stat == 0) call self%spectra%finish(writer, stat, errmsg)
+      call self%spectra%close()
    end subroutine finish
 
    !> Everything a continued run needs (module documentation).
@@ -527,7 +521,7 @@ contains
       call record%put_logicals('recorder.in_contact', self%in_contact)
       call record%put_reals('recorder.contact_time', self%contact_time)
       if (self%compliant) call record%put_reals('recorder.peak_force', self%peak_force)
-      call self%spectrum%save_state(record)
+      call self%spectra%save_state(record)
       call self%episodes%save_state(record)
       call self%statistics%save_state(record)
    end subroutine save_state
@@ -545,7 +539,7 @@ contains
       if (stat == 0) call record%get_logicals('recorder.in_contact', self%in_contact, stat, errmsg)
       if (stat == 0) call record%get_reals('recorder.contact_time', self%contact_time, stat, errmsg)
       if (stat == 0 .and. self%compliant) call record%get_reals('recorder.peak_force', self%peak_force, stat, errmsg)
-      if (stat == 0) call self%spectrum%restore_state(record, stat, errmsg)
+      if (stat == 0) call self%spectra%restore_state(record, stat, errmsg)
       if (stat == 0) call self%episodes%restore_state(record, stat, errmsg)
       if (stat == 0) call self%statistics%restore_state(record, stat, errmsg)
       if (stat /= 0) return

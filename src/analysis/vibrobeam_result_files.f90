@@ -18,7 +18,7 @@
 !! reader can tell a .dat file of another run.
 module vibrobeam_result_files
    use, intrinsic :: iso_c_binding, only: c_long
-   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_status, only: outcome_ok, outcome_interrupted, outcome_name
    use vibrobeam_version, only: version_string
    use vibrobeam_scene, only: scene_type, scene_entry, scene_entries, format_scene
@@ -101,6 +101,7 @@ module vibrobeam_result_files
       real(dp) :: max_penetration = 0
       logical :: compliant = .false.           !! the scene has compliant stops
       real(dp) :: peak_force = 0               !! their largest |force| over every step (N)
+      real(dp) :: contact_time = 0             !! longest time a contact point spent in contact (s, /contact/fraction)
       character(len=512) :: failure = ''
       character(len=64) :: run_id = ''         !! /run run_id of the published result
       real(dp), allocatable :: omega(:)        !! kind = 'modes': the natural frequencies written (rad/s)
@@ -313,7 +314,7 @@ contains
       call self%h5%discard()
    end subroutine discard_results
 
-   !> /modes/frequency and /modes/shape.
+   !> /modes/frequency (rad/s) and /modes/frequency_hz (Hz), /modes/shape.
    subroutine write_modes(self, omega, shapes, stat, errmsg)
       class(result_files), intent(inout) :: self
       real(dp), intent(in) :: omega(:)       !! angular frequencies (rad/s)
@@ -321,6 +322,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       call self%h5%write_real_1d('/modes/frequency', omega, 'rad/s', stat, errmsg)
+      if (stat == 0) call self%h5%write_real_1d('/modes/frequency_hz', omega/(2*pi), 'Hz', stat, errmsg)
       if (stat == 0) call self%h5%write_real_2d('/modes/shape', shapes, '1 (tip value 1)', stat, errmsg)
    end subroutine write_modes
 

@@ -143,8 +143,8 @@ contains
    end subroutine static_files
 
    !> The files of a dynamics run: the histories (tip, energy, impacts, episodes,
-   !! observation points, compliant stops' forces), the field, the spectrum and the
-   !! contact points (obstacles, contact fraction).
+   !! observation points, compliant stops' forces), the field, the spectra, the Poincare
+   !! samples and the contact points (obstacles, contact fraction).
    subroutine dynamics_files(run, stat, errmsg)
       type(derivation), intent(inout) :: run
       integer, intent(out) :: stat
@@ -154,6 +154,8 @@ contains
       call field_file(run, stat, errmsg)
       if (stat /= 0 .or. run%interrupted) return
       call spectrum_file(run, stat, errmsg)
+      if (stat /= 0 .or. run%interrupted) return
+      call poincare_file(run, stat, errmsg)
       if (stat /= 0 .or. run%interrupted) return
       call contact_point_files(run, stat, errmsg)
    end subroutine dynamics_files
@@ -269,22 +271,66 @@ contains
       call run%close_sink(sink, stat, errmsg)
    end subroutine field_file
 
-   !> STEM_spectrum.dat: the amplitude spectrum of the tip displacement.
+   !> STEM_spectrum.dat: frequency (Hz), the tip's amplitude, frequency (rad/s), and the
+   !! amplitude at each observation point (those a file of an earlier version lacks are
+   !! left out).
    subroutine spectrum_file(run, stat, errmsg)
       type(derivation), intent(inout) :: run
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(text_sink) :: sink
-      integer(int64) :: bins
+      integer(int64) :: bins, point_bins
+      character(len=40), allocatable :: paths(:)
+      integer, allocatable :: widths(:)
+      real(dp), allocatable :: x(:)
+      character(len=:), allocatable :: columns
       call run%rows_of('/spectrum/frequency', bins, stat, errmsg)
+      if (stat == 0) call run%rows_of('/spectrum/point_amplitude', point_bins, stat, errmsg)
       if (stat /= 0) return
-      call run%open_sink(sink, 'spectrum', 'frequency (Hz)  amplitude of the tip displacement (m): single-sided, '// &
-                         'mean removed, Hann window, Welch average over segments of 2^16 samples when longer', stat, errmsg)
+      allocate (paths, source=[character(len=40) :: '/spectrum/frequency', '/spectrum/tip_amplitude'])
+      allocate (widths, source=[1, 1])
+      columns = 'frequency (Hz)  amplitude of the tip displacement (m)'
+      if (run%file%exists('/spectrum/frequency_rad_s')) then
+         paths = [character(len=40) :: paths, '/spectrum/frequency_rad_s']
+         widths = [widths, 1]
+         columns = columns//'  frequency (rad/s)'
+      end if
+      if (point_bins == bins .and. bins > 0) then
+         call run%file%read_reals('/points/x', x, stat, errmsg)
+         if (stat /= 0) return
+         paths = [character(len=40) :: paths, '/spectrum/point_amplitude']
+         widths = [widths, size(x)]
+         columns = columns//'  then the amplitude (m) at each observation point x = '//points_text(x)//' m'
+      end if
+      call run%open_sink(sink, 'spectrum', columns//': single-sided, mean removed, Hann window, Welch average '// &
+                         'over segments of 2^16 samples when longer', stat, errmsg)
       if (stat /= 0) return
-      call run%stream_rows(sink, [character(len=40) :: '/spectrum/frequency', '/spectrum/tip_amplitude'], [1, 1], &
-                           bins, 'wide', stat, errmsg)
+      call run%stream_rows(sink, paths, widths, bins, 'wide', stat, errmsg)
       call run%close_sink(sink, stat, errmsg)
    end subroutine spectrum_file
+
+   !> STEM_poincare.dat of a run with Poincare samples (docs/statistics.md): time, then u
+   !! at the tip and at each observation point, then v at each.
+   subroutine poincare_file(run, stat, errmsg)
+      type(derivation), intent(inout) :: run
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(text_sink) :: sink
+      real(dp), allocatable :: x(:)
+      integer(int64) :: samples
+      call run%rows_of('/statistics/poincare/time', samples, stat, errmsg)
+      if (samples == 0 .or. stat /= 0) return
+      call run%file%read_reals('/statistics/points/x', x, stat, errmsg)
+      if (stat /= 0) return
+      call run%open_sink(sink, 'poincare', 't (s)  then u (m) at each observation point x = '//points_text(x)// &
+                         ' m (the tip first), then v (m/s) at each: the state at phase 0 of the forcing, once per '// &
+                         'period of the statistics window', stat, errmsg)
+      if (stat /= 0) return
+      call run%stream_rows(sink, [character(len=40) :: '/statistics/poincare/time', &
+                                  '/statistics/poincare/displacement', '/statistics/poincare/velocity'], &
+                           [1, size(x), size(x)], samples, 'wide', stat, errmsg)
+      call run%close_sink(sink, stat, errmsg)
+   end subroutine poincare_file
 
    !> STEM_obstacles.dat (the bounds at each contact point) and STEM_contact.dat (the
    !! fraction of the run each spent in contact).

@@ -9,7 +9,8 @@
 !! - the penetration scale dt |v| of the velocity-based scheme (theory §3: a contact point
 !!   is activated from its predicted position, so it may enter an obstacle by about one
 !!   step of its approach velocity), with the velocity scale used and where it comes from;
-!! - the estimated size of the results (`vibrobeam_output_target`);
+!! - the estimated size of the results (`vibrobeam_result_estimate`; a sweep prints its
+!!   own, `vibrobeam_sweep_check`);
 !! - for each compliant stop, its contact time scale T_c = pi sqrt(m_eff/(k + k_b)) against
 !!   dt (docs/theory.md section 8, "Resolution"): k_b = 3EI/x^3 is the beam's static
 !!   stiffness at the stop's position x (a clamped-free beam loaded at x), k the stop's
@@ -23,11 +24,11 @@
 !! cm^4 beside an area in m^2).
 module vibrobeam_check_report
    use vibrobeam_kinds, only: dp, pi
-   use vibrobeam_text, only: real_text, integer_text
+   use vibrobeam_text, only: real_text, integer_text, significant_text
    use vibrobeam_scene, only: scene_type, is_unset
    use vibrobeam_model, only: beam_model
    use vibrobeam_highest_frequency, only: highest_frequency
-   use vibrobeam_output_target, only: result_size, estimate_result_size
+   use vibrobeam_result_estimate, only: result_size, estimate_result_size
    use vibrobeam_resolution_advice, only: resolution_advice_text
    implicit none
    private
@@ -69,13 +70,15 @@ module vibrobeam_check_report
 
 contains
 
-   !> The numbers of `check_report` for a validated scene and its model.
-   subroutine make_check_report(scene, model, report, stat, errmsg)
+   !> The numbers of `check_report` for a validated scene and its model; `contact_points`
+   !! (when known) sizes the compliant stops' force in the result size.
+   subroutine make_check_report(scene, model, report, stat, errmsg, contact_points)
       type(scene_type), intent(in) :: scene
       type(beam_model), intent(in) :: model
       type(check_report), intent(out) :: report
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      integer, intent(in), optional :: contact_points
       integer :: n
       do n = 1, listed_modes
          report%omega(n) = scene%beam%boundary%natural_frequency(n, scene%beam%length, k2_of(scene))
@@ -83,6 +86,7 @@ contains
       report%unknowns = model%unknowns
       call highest_frequency(model, report%omega_max, stat, errmsg)
       if (stat /= 0) return
+      report%size = estimate_result_size(scene, contact_points)
       report%stepped = scene%analysis%kind == 'dynamics'
       if (.not. report%stepped) return
       report%omega1_dt = report%omega(1)*scene%time%dt
@@ -91,20 +95,20 @@ contains
       report%resolved_modes = resolved_modes(scene)
       call velocity_scale(scene, report%velocity, report%velocity_source)
       report%penetration = scene%time%dt*report%velocity
-      report%size = estimate_result_size(scene)
    end subroutine make_check_report
 
-   !> The report as lines of text (the program prints them). With `advice` (default true),
-   !! a dynamics run with obstacles and a statistics window ends with the resolution advice
-   !! for its statistics (`vibrobeam_resolution_advice`); a sweep prints its own.
-   function check_report_text(scene, report, advice) result(text)
+   !> The report as lines of text (the program prints them). A dynamics run ends with its
+   !! estimated result size and, with obstacles and a statistics window, the resolution
+   !! advice for its statistics (`vibrobeam_resolution_advice`); with `sweep` (default
+   !! false) neither: a sweep prints its own (`vibrobeam_sweep_check`).
+   function check_report_text(scene, report, sweep) result(text)
       type(scene_type), intent(in) :: scene
       type(check_report), intent(in) :: report
-      logical, intent(in), optional :: advice
+      logical, intent(in), optional :: sweep
       character(len=:), allocatable :: text
       integer :: n
       real(dp) :: time_scale, beam_stiffness, mass
-      logical :: with_advice
+      logical :: single_run
       text = 'natural frequencies of the '//scene%beam%boundary%name()//' beam (continuum closed form; the '// &
              'obstacles are ignored):'// &
              new_line('a')
@@ -116,10 +120,15 @@ contains
          text = text//new_line('a')
       end do
       text = text//'highest frequency of the discrete model ('//integer_text(report%unknowns)// &
-             ' unknowns): omega_max = '//g(report%omega_max)//' rad/s'
+             ' unknowns): omega_max = '//g(report%omega_max)//' rad/s, f_max = '//g(report%omega_max/(2*pi))//' Hz'
       if (report%stepped) text = text//', omega_max*dt = '//g(report%omega_max_dt)
       text = text//new_line('a')
-      if (.not. report%stepped) return
+      single_run = .true.
+      if (present(sweep)) single_run = .not. sweep
+      if (.not. report%stepped) then
+         text = text//size_line()
+         return
+      end if
       text = text//'steps per period of mode 1: '//g(report%steps_per_period)//'; '// &
              resolved_text(report%resolved_modes, report%unknowns)//new_line('a')
       text = text//'penetration scale dt*|v| = '//g(report%penetration)//' m, with |v| = '//g(report%velocity)// &
@@ -135,13 +144,22 @@ contains
                                                                    g(steps_per_contact_wanted)//')'
          text = text//new_line('a')
       end do
-      text = text//'estimated result size: '//g(report%size%total_bytes)//' bytes (HDF5 '// &
-             g(report%size%hdf5_bytes)//', text '//g(report%size%text_bytes)//'): '//g(report%size%outputs)// &
-             ' output times of '//g(report%size%values_per_output)//' values and '//g(report%size%snapshots)// &
-             ' field snapshots of '//integer_text(scene%mesh%elements + 1)//' nodes; impacts not counted'//new_line('a')
-      with_advice = .true.
-      if (present(advice)) with_advice = advice
-      if (with_advice .and. scene%output%measure_from < scene%time%t_end) text = text//resolution_advice_text(scene, 'this run')
+      if (.not. single_run) return
+      text = text//size_line()
+      if (scene%output%measure_from < scene%time%t_end) text = text//resolution_advice_text(scene, 'this run')
+   contains
+      !> 'estimated result size: ...' of a single run (docs/input.md, "What --check prints").
+      function size_line() result(line)
+         character(len=:), allocatable :: line
+         line = 'estimated result size: '//g(report%size%total_bytes)//' bytes (HDF5 '//g(report%size%hdf5_bytes)// &
+                ', text '//g(report%size%text_bytes)//')'
+         if (report%stepped) line = line//': '//real_text(report%size%steps)//' steps, '//g(report%size%outputs)// &
+                                    ' output times of '// &
+                                    g(report%size%values_per_output)//' values and '//g(report%size%snapshots)// &
+                                    ' field snapshots of '//integer_text(scene%mesh%elements + 1)// &
+                                    ' nodes, spectra, checkpoint; up to 4096 impacts and episodes'
+         line = line//new_line('a')
+      end function size_line
    end function check_report_text
 
    !> Contact time scale of compliant obstacle i of the scene (s; module comment), with the
@@ -311,34 +329,6 @@ contains
    function g(value) result(text)
       real(dp), intent(in) :: value
       character(len=:), allocatable :: text
-      character(len=32) :: buffer
-      integer :: e, exponent, decimals
-      if (abs(value) >= 1e-3_dp .and. abs(value) < 1e6_dp) then
-         decimals = max(0, 5 - floor(log10(abs(value))))
-         write (buffer, '(f0.'//integer_text(decimals)//')') value
-         text = trim(adjustl(buffer))
-         if (index(text, '.') > 0) then
-            do while (text(len(text):) == '0')
-               text = text(1:len(text) - 1)
-            end do
-            if (text(len(text):) == '.') text = text(1:len(text) - 1)
-         end if
-         if (text(1:1) == '.') text = '0'//text
-         if (len(text) >= 2) then
-            if (text(1:2) == '-.') text = '-0'//text(2:)
-         end if
-      else if (abs(value) > 0) then
-         write (buffer, '(es16.5e3)') value
-         e = index(buffer, 'E')
-         read (buffer(e + 1:), *) exponent
-         text = trim(adjustl(buffer(1:e - 1)))
-         do while (text(len(text):) == '0')
-            text = text(1:len(text) - 1)
-         end do
-         if (text(len(text):) == '.') text = text(1:len(text) - 1)
-         text = text//'e'//integer_text(exponent)
-      else
-         text = '0'
-      end if
+      text = significant_text(value, 6)
    end function g
 end module vibrobeam_check_report

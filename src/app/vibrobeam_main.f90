@@ -6,7 +6,7 @@
 !! (docs/output.md, "Exit status").
 program vibrobeam_main
    use, intrinsic :: iso_c_binding, only: c_int
-   use vibrobeam_kinds, only: error_unit, output_unit
+   use vibrobeam_kinds, only: dp, pi, error_unit, output_unit
    use vibrobeam_status, only: exit_ok, exit_other_error, exit_invalid_input, exit_numerical_failure, &
                                exit_interrupted, message_length, stat_numerical_failure, outcome_failed, outcome_interrupted, &
                                outcome_exit_status, stat_invalid_input
@@ -15,7 +15,7 @@ program vibrobeam_main
    use vibrobeam_scene_read, only: read_scene, namelist_groups_text
    use vibrobeam_output_target, only: check_output_target
    use vibrobeam_check_report, only: check_report, make_check_report, check_report_text, scene_warnings
-   use vibrobeam_modal_analysis, only: run_modal
+   use vibrobeam_modal_analysis, only: run_modal, frequencies_text
    use vibrobeam_static_analysis, only: run_equilibrium
    use vibrobeam_problem, only: run_problem, build_problem
    use vibrobeam_dynamics, only: run_dynamics
@@ -84,7 +84,8 @@ program vibrobeam_main
    if (check_only) then
       if (transport_rank() == 0) then
          call print_resolved_scene()
-         if (sweep%present) call write_sweep_check(output_unit, scene, sweep, sweep_threads(), transport_ranks(), resume)
+         if (sweep%present) call write_sweep_check(output_unit, scene, sweep, sweep_threads(), transport_ranks(), resume, &
+                                                 prepared%contacts%count)
       end if
       call finish(exit_ok)
    end if
@@ -234,16 +235,16 @@ contains
                reduction%boundary + reduction%modes, ' unknowns (', reduction%boundary, &
                ' contact displacement'//plural(reduction%boundary)//', ', reduction%modes, &
                ' fixed-interface mode'//plural(reduction%modes)//')'
-            if (reduction%modes > 0) write (output_unit, '(a,es12.5,a)') '  highest fixed-interface mode kept: ', &
-               reduction%omega(reduction%modes), ' rad/s'
-            if (reduction%cutoff > 0) write (output_unit, '(a,es12.5,a)') '  cut-off: ', reduction%cutoff, &
-               ' rad/s'//merge(' (default)', '          ', &
+            if (reduction%modes > 0) write (output_unit, '(a,es12.5,a,es12.5,a)') '  highest fixed-interface mode kept: ', &
+               reduction%omega(reduction%modes), ' rad/s, ', reduction%omega(reduction%modes)/(2*pi), ' Hz'
+            if (reduction%cutoff > 0) write (output_unit, '(a,es12.5,a,es12.5,a)') '  cut-off: ', reduction%cutoff, &
+               ' rad/s, ', reduction%cutoff/(2*pi), ' Hz'//merge(' (default)', '          ', &
                is_unset(scene%mesh%reduction_frequency))
          end associate
       end if
-      call make_check_report(scene, model, report, stat, errmsg)
+      call make_check_report(scene, model, report, stat, errmsg, contacts%count)
       if (stat /= 0) call fail(exit_numerical_failure, errmsg)
-      write (output_unit, '(a)', advance='no') check_report_text(scene, report, advice=.not. sweep%present)
+      write (output_unit, '(a)', advance='no') check_report_text(scene, report, sweep=sweep%present)
       end associate
    end subroutine print_resolved_scene
 
@@ -253,7 +254,8 @@ contains
       call run_modal(scene, prepared, outcome, stat, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
       write (output_unit, '(a,i0,a)') 'vibrobeam: ', size(outcome%omega), ' natural modes written to '// &
-         trim(scene%output%file)
+         trim(scene%output%file)//':'
+      write (output_unit, '(a)', advance='no') frequencies_text(outcome%omega)
       call stop_if_interrupted(outcome%text_skipped)
       call finish(exit_ok)
    end subroutine run_modes
@@ -296,10 +298,14 @@ contains
          call finish(outcome_exit_status(outcome%status))
       end select
       ! impacts and penetration are the rigid stops'; compliant stops show their peak force
-      write (output_unit, '(a,i0,a,i0,a,es10.3,a)', advance='no') 'vibrobeam: ', outcome%steps, ' steps, ', &
-         outcome%impacts, ' impacts, largest penetration ', outcome%max_penetration, ' m, '
-      if (outcome%compliant) write (output_unit, '(a,es10.3,a)', advance='no') 'peak contact force ', &
-         outcome%peak_force, ' N, '
+      ! and how long they were in contact (docs/output.md, "What a run prints")
+      write (output_unit, '(a,i0,a)', advance='no') 'vibrobeam: ', outcome%steps, ' steps, '
+      if (any(scene%obstacles%stiffness <= 0) .or. .not. outcome%compliant) &
+         write (output_unit, '(i0,a,es10.3,a)', advance='no') outcome%impacts, ' impacts, largest penetration ', &
+         outcome%max_penetration, ' m, '
+      if (outcome%compliant) write (output_unit, '(a,es10.3,a,es10.3,a,f0.2,a)', advance='no') 'peak contact force ', &
+         outcome%peak_force, ' N, in contact ', outcome%contact_time, ' s (', &
+         100*outcome%contact_time/max(outcome%steps*scene%time%dt, tiny(1.0_dp)), ' % of the run), '
       write (output_unit, '(f0.2,a)') outcome%wall_seconds, ' s; written to '//trim(scene%output%file)//' (run '// &
          trim(outcome%run_id)//')'
       call stop_if_interrupted(outcome%text_skipped)

@@ -3,8 +3,8 @@
 !! file, not one of the text files derived from its name, on a path the system can
 !! create, on a file system that stores files), `&initial from_file` must be a readable
 !! file, and the results of a dynamics run must fit: their estimated size
-!! (`estimate_result_size`) below a hard limit and below the free space of the target file
-!! system. Failures are invalid input (the program exits 2 and writes nothing).
+!! (`vibrobeam_result_estimate`) below a hard limit and below the free space of the target
+!! file system. Failures are invalid input (the program exits 2 and writes nothing).
 !!
 !! The run's writer guards the same things at write time; these checks are the ones a
 !! user meets first, before an afternoon of computing.
@@ -13,11 +13,12 @@ module vibrobeam_output_target
    use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
-   use vibrobeam_scene, only: scene_type, path_length, step_count
+   use vibrobeam_scene, only: scene_type, path_length
+   use vibrobeam_result_estimate, only: result_size, estimate_result_size
    use vibrobeam_namelist_tokens, only: abbreviated
    implicit none
    private
-   public :: check_output_target, estimate_result_size, result_size, max_result_bytes
+   public :: check_output_target, max_result_bytes
    ! for the checks of a sweep's files (vibrobeam_sweep_check)
    public :: real_path, resolve_directory, split_path, join, bytes_text, free_bytes
 
@@ -30,17 +31,6 @@ module vibrobeam_output_target
    integer, parameter :: path_margin = 64
    integer, parameter :: name_max = 255
 
-   !> What a run will write, estimated from the scene (impacts, whose number is not known
-   !! beforehand, are not counted).
-   type :: result_size
-      real(dp) :: steps = 0            !! time steps
-      real(dp) :: outputs = 0          !! output times (rows of the histories)
-      real(dp) :: snapshots = 0        !! displacement field snapshots
-      real(dp) :: values_per_output = 0   !! numbers written per output time besides the field
-      real(dp) :: hdf5_bytes = 0       !! the HDF5 file's data
-      real(dp) :: text_bytes = 0       !! the .dat files (0 with text = .false.)
-      real(dp) :: total_bytes = 0
-   end type result_size
 
    interface
       function c_path_kind(path) result(kind) bind(C, name='vibrobeam_path_kind')
@@ -205,34 +195,6 @@ contains
          text = ': raise every or field_every, set text = .false., or shorten &time t_end'
       end function size_advice
    end subroutine check_output_target
-
-   !> The size of the results of a dynamics run (kind = 'dynamics'): histories at
-   !! floor(steps/every) + 2 output times (t = 0, every `every` steps, the last step) of
-   !! 16 numbers plus 2 per observation point, and field snapshots of N + 1 values at
-   !! floor(steps/field_every) + 2 times (field_every = 0: every). 8 bytes per number in
-   !! HDF5; in the .dat files 25 characters per number and 49 per field value (x, t, u).
-   !! Computed in reals: the step count may exceed any default integer.
-   pure function estimate_result_size(scene) result(estimate)
-      type(scene_type), intent(in) :: scene
-      type(result_size) :: estimate
-      integer, parameter :: history_columns = 16
-      real(dp), parameter :: bytes_per_number = 8, text_per_number = 25, text_per_field_value = 49
-      integer :: field_every, points
-      real(dp) :: nodes
-      points = 0
-      if (allocated(scene%output%points)) points = size(scene%output%points)
-      estimate%steps = real(step_count(scene), dp)
-      field_every = scene%output%field_every
-      if (field_every == 0) field_every = scene%output%every
-      estimate%outputs = real(step_count(scene)/int(scene%output%every, int64), dp) + 2
-      estimate%snapshots = real(step_count(scene)/int(field_every, int64), dp) + 2
-      estimate%values_per_output = history_columns + 2*points
-      nodes = scene%mesh%elements + 1
-      estimate%hdf5_bytes = bytes_per_number*(estimate%outputs*estimate%values_per_output + estimate%snapshots*nodes)
-      if (scene%output%text) estimate%text_bytes = text_per_number*estimate%outputs*estimate%values_per_output + &
-                                        text_per_field_value*estimate%snapshots*nodes
-      estimate%total_bytes = estimate%hdf5_bytes + estimate%text_bytes
-   end function estimate_result_size
 
    !> '1.2e9 bytes (1.1 GiB)'.
    function bytes_text(bytes) result(text)

@@ -11,40 +11,28 @@
 !! must fit the size limit and the free space. Failures are invalid input (exit status 2).
 !!
 !! `write_sweep_check`: the points in the order they run, with their line, direction,
-!! start and windows; the cost (steps in all, and a wall-time estimate from timing a few
-!! steps of the first point); what runs in parallel; what a run finds in the partial
-!! directory; and the resolution advice for the statistics. Written line by line, so the
-!! time is linear in the number of points.
+!! start and windows; the cost (steps in all, and a CPU-time estimate from timing steps
+!! of the first point, `step_cost`); the result size (`estimate_sweep_size`); what runs
+!! in parallel; what a run finds in the partial directory; and the resolution advice for
+!! the statistics. Written line by line, so the time is linear in the number of points.
 module vibrobeam_sweep_check
-   use vibrobeam_kinds, only: dp, int64, pi
+   use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
-   use vibrobeam_scene, only: scene_type, forcing_of
-   use vibrobeam_problem, only: run_problem, build_problem, new_stepper
-   use vibrobeam_stepper_factory, only: release_stepper
-   use vibrobeam_time_stepper, only: time_stepper
+   use vibrobeam_scene, only: scene_type
    use vibrobeam_filesystem, only: file_exists
    use vibrobeam_namelist_tokens, only: abbreviated
-   use vibrobeam_statistics_layout, only: statistics_layout
-   use vibrobeam_poincare, only: kept_samples
    use vibrobeam_resolution_advice, only: resolution_advice_text, advice_time_step
-   use vibrobeam_output_target, only: estimate_result_size, result_size, max_result_bytes, real_path, &
-      resolve_directory, split_path, join, bytes_text, free_bytes
+   use vibrobeam_output_target, only: max_result_bytes, real_path, resolve_directory, split_path, join, bytes_text, &
+      free_bytes
+   use vibrobeam_result_estimate, only: sweep_size, estimate_sweep_size, step_cost
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, sweep_points, point_scene, point_windows, &
       task_count, max_settle_windows
    use vibrobeam_sweep_runner, only: point_file_name
-   use vibrobeam_sweep_journal, only: record_length, message_words
    use vibrobeam_sweep_partial, only: partial_directory
    use vibrobeam_sweep, only: inspect_partial
    implicit none
    private
    public :: write_sweep_check, check_sweep_files, resolution_advice
-
-   !> The cost estimate times steps of the first point after `warm_up_steps`, for at least
-   !! `timed_seconds` of wall time or `timed_steps` steps.
-   integer, parameter :: warm_up_steps = 50, timed_steps = 20000
-   real(dp), parameter :: timed_seconds = 0.05_dp
-   !> Characters of a row of STEM_sweep.dat (45 columns) and of STEM_poincare.dat (7).
-   real(dp), parameter :: sweep_row_characters = 45*24, poincare_row_characters = 7*24
 
 contains
 
@@ -178,7 +166,7 @@ contains
    !> What the sweep writes against the size limit and the free space: its file and its
    !! journals (both exist when it is published), its text files, and with keep_runs the
    !! result of every point over the point's own windows (with steady_tolerance > 0, the
-   !! longest transient it may need).
+   !! longest transient it may need): `estimate_sweep_size`'s peak.
    subroutine check_size(scene, settings, points, contact_points, stat, errmsg)
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
@@ -186,40 +174,12 @@ contains
       integer, intent(in) :: contact_points
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      type(statistics_layout) :: layout
-      type(scene_type) :: local
-      type(result_size) :: estimate
+      type(sweep_size) :: estimate
       character(len=:), allocatable :: directory, name, resolved, existing
-      integer(int64) :: settle_steps, measure_steps
-      real(dp) :: sweep_bytes, run_bytes, text_bytes, free, omega, kept, total
-      integer :: k, observations
+      real(dp) :: free
       stat = 0
       errmsg = ''
-      observations = 1 + size(scene%output%points)
-      call layout%init(observations, contact_points, size(scene%obstacles))
-      sweep_bytes = 0
-      run_bytes = 0
-      text_bytes = 0
-      do k = 1, size(points)
-         local = point_scene(scene, settings, points(k))
-         call point_windows(settings, local, settle_steps, measure_steps, stat, errmsg)
-         if (stat /= 0) return
-         kept = 0
-         if (forcing_of(local, omega) /= 'none') kept = min(real(kept_samples, dp), &
-                                                            measure_steps*local%time%dt*omega/(2*pi) + 1)
-         ! the sweep file's row and its samples, the journal's record, message and samples
-         sweep_bytes = sweep_bytes + 8*(15 + 2*layout%size) + kept*(24 + 16*observations) + &
-                       8*record_length(layout%size) + 4*(message_words + 1) + kept*8*(1 + 2*observations)
-         if (scene%output%text) text_bytes = text_bytes + sweep_row_characters + kept*poincare_row_characters
-         if (settings%keep_runs) then
-            local%output%text = .false.
-            if (settings%steady_tolerance > 0) &
-               local%time%t_end = (settle_steps + max_settle_windows*measure_steps)*local%time%dt
-            estimate = estimate_result_size(local)
-            run_bytes = run_bytes + estimate%hdf5_bytes
-         end if
-      end do
-      total = sweep_bytes + text_bytes + run_bytes
+      estimate = estimate_sweep_size(scene, settings, points, contact_points)
       call split_path(trim(scene%output%file), directory, name)
       call resolve_directory(directory, resolved, existing, stat, errmsg)
       if (stat /= 0) then
@@ -227,11 +187,11 @@ contains
          errmsg = ''
          return
       end if
-      if (total > max_result_bytes) then
+      if (estimate%peak_bytes > max_result_bytes) then
          stat = 2
          errmsg = size_message()//', more than the limit of '//bytes_text(max_result_bytes)//size_advice()
       else if (free_bytes(existing, free)) then
-         if (total > free) then
+         if (estimate%peak_bytes > free) then
             stat = 2
             errmsg = size_message()//', more than the '//bytes_text(free)//' free on the file system of '''// &
                      abbreviated(existing, 60)//''''//size_advice()
@@ -240,10 +200,10 @@ contains
    contains
       function size_message() result(text)
          character(len=:), allocatable :: text
-         text = '&sweep: '//integer_text(size(points))//' points would write about '//bytes_text(total)// &
-                ' (the sweep file and its journals '//bytes_text(sweep_bytes)
-         if (scene%output%text) text = text//', its text files '//bytes_text(text_bytes)
-         if (settings%keep_runs) text = text//', the points'' result files of keep_runs '//bytes_text(run_bytes)
+         text = '&sweep: '//integer_text(size(points))//' points would write about '//bytes_text(estimate%peak_bytes)// &
+                ' (the sweep file and its journals '//bytes_text(estimate%sweep_bytes + estimate%journal_bytes)
+         if (scene%output%text) text = text//', its text files '//bytes_text(estimate%text_bytes)
+         if (settings%keep_runs) text = text//', the points'' result files of keep_runs '//bytes_text(estimate%point_bytes)
          text = text//')'
       end function size_message
       function size_advice() result(text)
@@ -257,15 +217,17 @@ contains
    end subroutine check_size
 
    !> The --check report of a resolved sweep to `unit`; `threads` and `ranks` as the run
-   !! would use; `resume` what a run finds in the partial directory ('' when nothing).
-   subroutine write_sweep_check(unit, scene, settings, threads, ranks, resume)
+   !! would use; `resume` what a run finds in the partial directory ('' when nothing);
+   !! `contact_points` those of the first point.
+   subroutine write_sweep_check(unit, scene, settings, threads, ranks, resume, contact_points)
       integer, intent(in) :: unit
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
       integer, intent(in) :: threads, ranks
       character(len=*), intent(in) :: resume
+      integer, intent(in) :: contact_points
       type(sweep_point), allocatable :: points(:)
-      integer(int64) :: total_steps
+      integer(int64) :: total_steps, least_steps
       character(len=:), allocatable :: line
       allocate (points, source=sweep_points(settings))
       line = 'sweep of '//trim(settings%axis(1)%parameter)
@@ -273,13 +235,15 @@ contains
                                                            ' ('//integer_text(size(settings%axis(2)%values))//' lines)'
       write (unit, '(a)') line//', mode '''//trim(settings%mode)//''': '//integer_text(size(points))//' points in '// &
          integer_text(task_count(points))//' tasks'
-      call write_point_table(unit, scene, settings, points, total_steps)
+      call write_point_table(unit, scene, settings, points, total_steps, least_steps)
       if (settings%steady_tolerance > 0) then
          write (unit, '(a)') 'steady state: after settle, windows of measure until the RMS tip displacement and the '// &
             'impact rate of two consecutive windows agree within '//real_text(settings%steady_tolerance)// &
             ', at most '//integer_text(max_settle_windows)//' windows'
       end if
-      call write_cost(unit, scene, settings, points, total_steps, threads, ranks)
+      call write_cost(unit, scene, settings, points, total_steps, least_steps, threads, ranks)
+      call write_result_size(unit, scene, settings, points, contact_points)
+      call write_parallel(unit, settings, points, threads, ranks)
       if (settings%keep_runs) write (unit, '(a)') 'keep_runs: every point''s result is also written, as '// &
          'STEM_pointNNNN.h5 beside '//trim(scene%output%file)//', published with it as one set'
       if (len(resume) > 0) then
@@ -292,14 +256,15 @@ contains
    end subroutine write_sweep_check
 
    !> The points in the order they run, one line each: line, direction, start, values
-   !! and windows; `total_steps` the steps of them all (the longest steady-state search
-   !! with steady_tolerance > 0).
-   subroutine write_point_table(unit, scene, settings, points, total_steps)
+   !! and windows; `total_steps` the steps of them all and `least_steps` the fewest (with
+   !! steady_tolerance > 0, at most `max_settle_windows` windows a point, at least two:
+   !! the first comparison).
+   subroutine write_point_table(unit, scene, settings, points, total_steps, least_steps)
       integer, intent(in) :: unit
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
       type(sweep_point), intent(in) :: points(:)
-      integer(int64), intent(out) :: total_steps
+      integer(int64), intent(out) :: total_steps, least_steps
       type(scene_type) :: local
       integer(int64) :: settle_steps, measure_steps
       integer :: k, stat
@@ -311,13 +276,19 @@ contains
       if (len_trim(settings%axis(2)%parameter) > 0) line = line//pad(settings%axis(2)%parameter, 22)
       write (unit, '(a)') line//'  settle (s)    measure (s)'
       total_steps = 0
+      least_steps = 0
       settle_shown = transfer(-1.0_dp, 1_int64)
       measure_shown = settle_shown
       do k = 1, size(points)
          local = point_scene(scene, settings, points(k))
          call point_windows(settings, local, settle_steps, measure_steps, stat, errmsg)
          total_steps = total_steps + settle_steps + measure_steps
-         if (settings%steady_tolerance > 0) total_steps = total_steps + (max_settle_windows - 1)*measure_steps
+         least_steps = least_steps + settle_steps + measure_steps
+         if (settings%steady_tolerance > 0) then
+            ! at most max_settle_windows windows; at least two, the first comparison
+            total_steps = total_steps + (max_settle_windows - 1)*measure_steps
+            least_steps = least_steps + measure_steps
+         end if
          select case (points(k)%direction)
          case (1)
             direction = 'up'
@@ -344,37 +315,68 @@ contains
       end do
    end subroutine write_point_table
 
-   !> The cost (steps in all, and the wall time from timing steps of the first point)
-   !! and what runs in parallel.
-   subroutine write_cost(unit, scene, settings, points, total_steps, threads, ranks)
+   !> The cost: the steps in all (at most `total_steps`, at least `least_steps` with
+   !! steady_tolerance > 0) and the CPU time they take on one core and on the workers that
+   !! will run, from `step_cost` of the first point (docs/sweeps.md, "Checking a sweep").
+   subroutine write_cost(unit, scene, settings, points, total_steps, least_steps, threads, ranks)
       integer, intent(in) :: unit
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
       type(sweep_point), intent(in) :: points(:)
-      integer(int64), intent(in) :: total_steps
+      integer(int64), intent(in) :: total_steps, least_steps
       integer, intent(in) :: threads, ranks
       character(len=:), allocatable :: line
       real(dp) :: seconds_per_step
-      integer :: tasks, workers
-      tasks = task_count(points)
-      seconds_per_step = time_per_step(scene, settings, points(1))
-      workers = max(1, min(tasks, threads*ranks))
+      integer :: workers
+      seconds_per_step = step_cost(point_scene(scene, settings, points(1)))
+      workers = max(1, min(task_count(points), threads*ranks))
       line = 'cost: '//real_text(real(total_steps, dp))//' steps in all'
-      if (settings%steady_tolerance > 0) line = line//' at most'
+      if (settings%steady_tolerance > 0) line = line//' at most (at least '//real_text(real(least_steps, dp))// &
+                                                ', every point settled at its first comparison)'
       if (seconds_per_step > 0) then
-         line = line//', about '//seconds(total_steps*seconds_per_step)//' s of one core ('// &
+         line = line//', about '//seconds(total_steps*seconds_per_step)//' s of CPU on one core ('// &
                 seconds(seconds_per_step*1e6_dp)//' us a step of point 1), about '// &
                 seconds(total_steps*seconds_per_step/workers)//' s on '//integer_text(workers)//' workers'
+         if (settings%steady_tolerance > 0) line = line//' at most (at least '// &
+                                                   seconds(least_steps*seconds_per_step/workers)//' s)'
       end if
       write (unit, '(a)') line
-      line = 'parallel: '//integer_text(tasks)//' independent tasks ('
+   end subroutine write_cost
+
+   !> The result size (`estimate_sweep_size`): the sweep file, its text files and the
+   !! points' result files of keep_runs; apart, the journals that exist while it runs.
+   subroutine write_result_size(unit, scene, settings, points, contact_points)
+      integer, intent(in) :: unit
+      type(scene_type), intent(in) :: scene
+      type(sweep_settings), intent(in) :: settings
+      type(sweep_point), intent(in) :: points(:)
+      integer, intent(in) :: contact_points   !! of the first point
+      type(sweep_size) :: estimate
+      character(len=:), allocatable :: line
+      estimate = estimate_sweep_size(scene, settings, points, contact_points)
+      line = 'estimated result size: '//real_text(real(nint(estimate%total_bytes, int64), dp))// &
+             ' bytes (the sweep file '//bytes_text(estimate%sweep_bytes)
+      if (scene%output%text) line = line//', its text files '//bytes_text(estimate%text_bytes)
+      if (settings%keep_runs) line = line//', the points'' result files '//bytes_text(estimate%point_bytes)
+      write (unit, '(a)') line//'); while it runs, its journals take about '//bytes_text(estimate%journal_bytes)// &
+         ' more'
+   end subroutine write_result_size
+
+   !> What runs in parallel: the tasks, on `threads` threads x `ranks` processes.
+   subroutine write_parallel(unit, settings, points, threads, ranks)
+      integer, intent(in) :: unit
+      type(sweep_settings), intent(in) :: settings
+      type(sweep_point), intent(in) :: points(:)
+      integer, intent(in) :: threads, ranks
+      character(len=:), allocatable :: line
+      line = 'parallel: '//integer_text(task_count(points))//' independent tasks ('
       if (settings%mode == 'independent') then
          line = line//'one per point'
       else
          line = line//'one per line; the points of a continuation branch run in sequence'
       end if
       write (unit, '(a)') line//') on '//integer_text(threads)//' threads x '//integer_text(ranks)//' processes'
-   end subroutine write_cost
+   end subroutine write_parallel
 
    !> `word` left-aligned in `width` characters (at least one blank after it).
    pure function pad(word, width) result(out)
@@ -400,42 +402,6 @@ contains
          out = trim(adjustl(buffer))
       end if
    end function seconds
-
-   !> Wall time of one step of the point's scheme (s), timed over a few steps; 0 when the
-   !! point cannot be prepared.
-   function time_per_step(scene, settings, point) result(seconds)
-      type(scene_type), intent(in) :: scene
-      type(sweep_settings), intent(in) :: settings
-      type(sweep_point), intent(in) :: point
-      real(dp) :: seconds
-      type(scene_type) :: local
-      type(run_problem) :: prepared
-      class(time_stepper), allocatable :: stepper
-      character(len=:), allocatable :: warnings
-      character(len=256) :: errmsg
-      integer(int64) :: start, finish, rate
-      integer :: stat, n
-      seconds = 0
-      local = point_scene(scene, settings, point)
-      warnings = ''
-      call build_problem(local, prepared, warnings, stat, errmsg)
-      if (stat == 0) call new_stepper(local, prepared, stepper, stat, errmsg)
-      if (stat /= 0) return
-      do n = 1, warm_up_steps
-         call stepper%step(stat, errmsg)
-         if (stat /= 0) return
-      end do
-      call system_clock(start, rate)
-      do n = 1, timed_steps
-         call stepper%step(stat, errmsg)
-         if (stat /= 0) exit
-         call system_clock(finish)
-         if (finish - start >= timed_seconds*rate) exit
-      end do
-      call system_clock(finish)
-      seconds = real(finish - start, dp)/rate/max(1, n)
-      call release_stepper(stepper)
-   end function time_per_step
 
    !> The resolution advice for the statistics of a sweep (`vibrobeam_resolution_advice`),
    !! for its least resolved point: the one whose dt is largest against the dt the advice

@@ -4,7 +4,7 @@ module vibrobeam_text
    use vibrobeam_kinds, only: dp, int64
    implicit none
    private
-   public :: real_text, integer_text
+   public :: real_text, integer_text, significant_text
 
 contains
 
@@ -85,4 +85,45 @@ contains
          reads_back = ios == 0 .and. transfer(back, 1_int64) == transfer(value, 1_int64)   ! bitwise
       end function reads_back
    end function real_text
+
+   !> `value` rounded to `digits` significant digits, without blanks or trailing zeros, for
+   !! what a person reads (--check, the modes a run found): 210.347, 0.0213, 1.23457e7
+   !! with 6 digits. Plain decimals from 1e-3 to 1e6, an exponent outside; '0' for zero.
+   function significant_text(value, digits) result(text)
+      real(dp), intent(in) :: value
+      integer, intent(in) :: digits
+      character(len=:), allocatable :: text
+      character(len=48) :: buffer
+      integer :: e, exponent, decimals
+      if (abs(value) >= 1e-3_dp .and. abs(value) < 1e6_dp) then
+         decimals = max(0, digits - 1 - floor(log10(abs(value))))
+         write (buffer, '(f0.'//integer_text(decimals)//')') value
+         text = trim(adjustl(buffer))
+         if (index(text, '.') > 0) then
+            do while (text(len(text):) == '0')
+               text = text(1:len(text) - 1)
+            end do
+            if (text(len(text):) == '.') text = text(1:len(text) - 1)
+         end if
+         if (text(1:1) == '.') text = '0'//text
+         if (len(text) >= 2) then
+            if (text(1:2) == '-.') text = '-0'//text(2:)
+         end if
+      else if (abs(value) > 0) then
+         write (buffer, '(es30.'//integer_text(max(digits - 1, 0))//'e3)') value
+         buffer = adjustl(buffer)
+         e = index(buffer, 'E')
+         read (buffer(e + 1:), *) exponent
+         text = trim(buffer(1:e - 1))
+         if (index(text, '.') > 0) then
+            do while (text(len(text):) == '0')
+               text = text(1:len(text) - 1)
+            end do
+            if (text(len(text):) == '.') text = text(1:len(text) - 1)
+         end if
+         text = text//'e'//integer_text(exponent)
+      else
+         text = '0'
+      end if
+   end function significant_text
 end module vibrobeam_text

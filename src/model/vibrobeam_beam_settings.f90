@@ -6,6 +6,8 @@ module vibrobeam_beam_settings
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, unset, is_unset, &
       unset_integer, keyword_length
    use vibrobeam_boundary, only: boundary_conditions
+   use vibrobeam_namelist_schema, only: namelist_variable
+   use vibrobeam_frequency_twins, only: hertz_twin
    implicit none
    private
    public :: beam_settings, mesh_settings, visit_beam, visit_mesh
@@ -34,6 +36,7 @@ module vibrobeam_beam_settings
       character(len=keyword_length) :: basis = 'hermite'
       character(len=keyword_length) :: reduction = 'none'   !! 'none' | 'craig-bampton' (dynamics only)
       real(dp) :: reduction_frequency = unset   !! cut-off of the fixed-interface modes (rad/s); unset: default
+      real(dp) :: reduction_frequency_hz = unset   !! the same in Hz (`vibrobeam_frequency_twins`)
       integer :: reduction_modes = unset_integer   !! number of fixed-interface modes; unset: set by the cut-off
    contains
       procedure :: unknowns                   !! J of the mesh
@@ -62,19 +65,22 @@ contains
                                      'b in the Rayleigh damping C = a M + b K'), beam%rayleigh_stiffness)
    end subroutine visit_beam
 
-   !> Every variable of &mesh, once (docs/input.md, "&mesh").
+   !> Every variable of &mesh, once (docs/input.md, "&mesh"); the cut-off also in Hz, its
+   !! twin (`vibrobeam_frequency_twins`).
    subroutine visit_mesh(mesh, visitor)
       type(mesh_settings), intent(inout) :: mesh
       class(schema_visitor), intent(inout) :: visitor
+      type(namelist_variable) :: row
       call visitor%variable(integer_row('mesh', 'elements', 1, 1000000, 'number of elements N (uniform mesh)'), &
                             mesh%elements)
       call visitor%variable(keyword_row('mesh', 'basis', 'hermite|bspline', keyword_length, &
                                         'Hermite cubic elements or cubic B-splines'), mesh%basis)
       call visitor%variable(keyword_row('mesh', 'reduction', 'none|craig-bampton', keyword_length, &
                                         'dynamics on the full model or on a Craig-Bampton reduced model'), mesh%reduction)
-      call visitor%variable(real_row('mesh', 'reduction_frequency', 'rad/s', 1e-30_dp, 1e30_dp, &
-                                     'cut-off of the fixed-interface modes the reduced model keeps', optional=.true.), &
-                            mesh%reduction_frequency)
+      row = real_row('mesh', 'reduction_frequency', 'rad/s', 1e-30_dp, 1e30_dp, &
+                     'cut-off of the fixed-interface modes the reduced model keeps', optional=.true.)
+      call visitor%variable(row, mesh%reduction_frequency)
+      call visitor%variable(hertz_twin(row), mesh%reduction_frequency_hz)
       call visitor%variable(integer_row('mesh', 'reduction_modes', 0, 100000, &
                                         'number of fixed-interface modes the reduced model keeps', optional=.true.), &
                             mesh%reduction_modes)

@@ -11,6 +11,8 @@ module vibrobeam_loads
    use vibrobeam_kinds, only: dp
    use vibrobeam_model, only: beam_model, load_vector, point_load_vector, unit_profile
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, unset, is_unset
+   use vibrobeam_namelist_schema, only: namelist_variable
+   use vibrobeam_frequency_twins, only: hertz_twin
    implicit none
    private
    public :: load_set, build_loads, load_settings, visit_load
@@ -22,6 +24,8 @@ module vibrobeam_loads
       real(dp) :: point_force = 0, point_position = unset, point_frequency = 0
       real(dp) :: base_amplitude = 0, base_frequency = 0
       real(dp) :: base_acceleration = 0       !! amplitude of the support's acceleration (m/s^2), instead of base_amplitude
+      !> the frequencies in Hz (`vibrobeam_frequency_twins`): each the rad/s one over 2 pi
+      real(dp) :: distributed_frequency_hz = 0, point_frequency_hz = 0, base_frequency_hz = 0
    contains
       procedure :: base_load_amplitude
    end type load_settings
@@ -41,15 +45,18 @@ module vibrobeam_loads
 
 contains
 
-   !> Every variable of &load, once (docs/input.md, "&load"). point_position's default,
-   !! the tip, is the scene reader's (it follows &beam length).
+   !> Every variable of &load, once (docs/input.md, "&load"); each frequency also in Hz,
+   !! its twin (`vibrobeam_frequency_twins`). point_position's default, the tip, is the
+   !! scene reader's (it follows &beam length).
    subroutine visit_load(load, visitor)
       type(load_settings), intent(inout) :: load
       class(schema_visitor), intent(inout) :: visitor
+      type(namelist_variable) :: row
       call visitor%variable(real_row('load', 'distributed', 'N/m', -1e15_dp, 1e15_dp, &
                                      'amplitude q of the uniform load q cos(Omega t + phi)'), load%distributed)
-      call visitor%variable(real_row('load', 'distributed_frequency', 'rad/s', 0.0_dp, 1e15_dp, &
-                                     'Omega of the uniform load (0: constant)'), load%distributed_frequency)
+      row = real_row('load', 'distributed_frequency', 'rad/s', 0.0_dp, 1e15_dp, 'Omega of the uniform load (0: constant)')
+      call visitor%variable(row, load%distributed_frequency)
+      call visitor%variable(hertz_twin(row), load%distributed_frequency_hz)
       call visitor%variable(real_row('load', 'distributed_phase', 'rad', -1e6_dp, 1e6_dp, &
                                      'phase phi of the uniform load'), load%distributed_phase)
       call visitor%variable(real_row('load', 'point_force', 'N', -1e15_dp, 1e15_dp, &
@@ -57,12 +64,14 @@ contains
       call visitor%variable(real_row('load', 'point_position', 'm', 0.0_dp, 1e6_dp, &
                                      'where the point force acts (default: the tip)', optional=.true.), &
                             load%point_position)
-      call visitor%variable(real_row('load', 'point_frequency', 'rad/s', 0.0_dp, 1e15_dp, &
-                                     'Omega_p of the point force (0: constant)'), load%point_frequency)
+      row = real_row('load', 'point_frequency', 'rad/s', 0.0_dp, 1e15_dp, 'Omega_p of the point force (0: constant)')
+      call visitor%variable(row, load%point_frequency)
+      call visitor%variable(hertz_twin(row), load%point_frequency_hz)
       call visitor%variable(real_row('load', 'base_amplitude', 'm', -1e6_dp, 1e6_dp, &
                                      'amplitude A of the support motion A sin(Omega_b t)'), load%base_amplitude)
-      call visitor%variable(real_row('load', 'base_frequency', 'rad/s', 0.0_dp, 1e15_dp, &
-                                     'Omega_b of the support motion'), load%base_frequency)
+      row = real_row('load', 'base_frequency', 'rad/s', 0.0_dp, 1e15_dp, 'Omega_b of the support motion')
+      call visitor%variable(row, load%base_frequency)
+      call visitor%variable(hertz_twin(row), load%base_frequency_hz)
       call visitor%variable(real_row('load', 'base_acceleration', 'm/s^2', -1e15_dp, 1e15_dp, &
                                      'amplitude of the support''s acceleration, instead of base_amplitude'), &
                             load%base_acceleration)

@@ -13,6 +13,8 @@ module vibrobeam_ignored_values
    use vibrobeam_scene, only: scene_type, scene_variables
    use vibrobeam_namelist_scanned, only: scanned_file
    use vibrobeam_namelist_schema, only: namelist_variable, variable_index
+   use vibrobeam_scene_values, only: real_input
+   use vibrobeam_frequency_twins, only: twin_name
    implicit none
    private
    public :: ignored_values
@@ -72,9 +74,9 @@ contains
 
       ! &beam damping and &output histories: dynamics only
       if (scene%analysis%kind /= 'dynamics') then
-         call given_real(scanned, warnings, 'beam', 'rayleigh_mass', scene%beam%rayleigh_mass, &
+         call given_real(scanned, scene, warnings, 'beam', 'rayleigh_mass', scene%beam%rayleigh_mass, &
                          kind_reason//' has no damping')
-         call given_real(scanned, warnings, 'beam', 'rayleigh_stiffness', scene%beam%rayleigh_stiffness, &
+         call given_real(scanned, scene, warnings, 'beam', 'rayleigh_stiffness', scene%beam%rayleigh_stiffness, &
                          kind_reason//' has no damping')
          ! what shapes a dynamics run's histories, statistics and checkpoints
          item = ' is ignored: '//kind_reason//' writes no histories (they belong to kind = ''dynamics'')'
@@ -83,9 +85,10 @@ contains
          if (scanned%is_given('output', 'field_every')) &
             call add(warnings, '&output field_every = '//integer_text(scene%output%field_every)//item)
          if (scanned%is_given('output', 'points', 1)) call add(warnings, '&output points'//item)
-         call given_real(scanned, warnings, 'output', 'measure_from', scene%output%measure_from, item(14:))
-         call given_real(scanned, warnings, 'output', 'checkpoint_seconds', scene%output%checkpoint_seconds, item(14:))
-         call given_real(scanned, warnings, 'output', 'episode_gap', scene%output%episode_gap, item(14:))
+         call given_real(scanned, scene, warnings, 'output', 'measure_from', scene%output%measure_from, item(14:))
+         call given_real(scanned, scene, warnings, 'output', 'checkpoint_seconds', scene%output%checkpoint_seconds, &
+                         item(14:))
+         call given_real(scanned, scene, warnings, 'output', 'episode_gap', scene%output%episode_gap, item(14:))
          if (scanned%is_given('output', 'poincare_load')) &
             call add(warnings, '&output poincare_load = '''//trim(scene%output%poincare_load)//''''//item)
       end if
@@ -99,7 +102,7 @@ contains
          if (scanned%is_given('mesh', 'reduction_modes')) &
             call add(warnings, '&mesh reduction_modes = '//integer_text(scene%mesh%reduction_modes)//' is ignored: '// &
                      reduction_reason())
-         call given_real(scanned, warnings, 'mesh', 'reduction_frequency', scene%mesh%reduction_frequency, &
+         call given_real(scanned, scene, warnings, 'mesh', 'reduction_frequency', scene%mesh%reduction_frequency, &
                          reduction_reason())
       end if
    contains
@@ -149,31 +152,34 @@ contains
       kind_reason = 'kind = '''//trim(scene%analysis%kind)//''''
       associate (load => scene%load)
          if (abs(load%distributed) <= 0 .and. .not. any(swept == 'load.distributed')) then
-            call given_real(scanned, warnings, 'load', 'distributed_frequency', load%distributed_frequency, &
+            call given_real(scanned, scene, warnings, 'load', 'distributed_frequency', load%distributed_frequency, &
                             'distributed = 0')
-            call given_real(scanned, warnings, 'load', 'distributed_phase', load%distributed_phase, 'distributed = 0')
+            call given_real(scanned, scene, warnings, 'load', 'distributed_phase', load%distributed_phase, &
+                            'distributed = 0')
          end if
          if (abs(load%point_force) <= 0 .and. .not. any(swept == 'load.point_force')) then
-            call given_real(scanned, warnings, 'load', 'point_frequency', load%point_frequency, 'point_force = 0')
-            call given_real(scanned, warnings, 'load', 'point_position', load%point_position, 'point_force = 0')
+            call given_real(scanned, scene, warnings, 'load', 'point_frequency', load%point_frequency, &
+                            'point_force = 0')
+            call given_real(scanned, scene, warnings, 'load', 'point_position', load%point_position, &
+                            'point_force = 0')
          end if
          if (abs(load%base_amplitude) <= 0 .and. abs(load%base_acceleration) <= 0 .and. &
              .not. (any(swept == 'load.base_amplitude') .or. any(swept == 'load.base_acceleration'))) &
-            call given_real(scanned, warnings, 'load', 'base_frequency', load%base_frequency, &
+            call given_real(scanned, scene, warnings, 'load', 'base_frequency', load%base_frequency, &
                             'base_amplitude = 0 and base_acceleration = 0')
          if (scene%analysis%kind /= 'static') return
          ! the loads at t = 0: cos(0) = 1 for the harmonic ones, sin(0) = 0 for the base's
          ! (a frequency beside a zero amplitude has had its warning above)
-         if (abs(load%distributed) > 0) call given_real(scanned, warnings, 'load', 'distributed_frequency', &
+         if (abs(load%distributed) > 0) call given_real(scanned, scene, warnings, 'load', 'distributed_frequency', &
                                                         load%distributed_frequency, kind_reason//' takes the loads at t = 0')
-         if (abs(load%point_force) > 0) call given_real(scanned, warnings, 'load', 'point_frequency', &
+         if (abs(load%point_force) > 0) call given_real(scanned, scene, warnings, 'load', 'point_frequency', &
                                                         load%point_frequency, kind_reason//' takes the loads at t = 0')
-         call given_real(scanned, warnings, 'load', 'base_amplitude', load%base_amplitude, kind_reason// &
+         call given_real(scanned, scene, warnings, 'load', 'base_amplitude', load%base_amplitude, kind_reason// &
                          ' takes the loads at t = 0, where the base excitation''s load (sin 0) is 0')
-         call given_real(scanned, warnings, 'load', 'base_acceleration', load%base_acceleration, kind_reason// &
+         call given_real(scanned, scene, warnings, 'load', 'base_acceleration', load%base_acceleration, kind_reason// &
                          ' takes the loads at t = 0, where the base excitation''s load (sin 0) is 0')
          if (abs(load%base_amplitude) > 0 .or. abs(load%base_acceleration) > 0) &
-            call given_real(scanned, warnings, 'load', 'base_frequency', load%base_frequency, kind_reason// &
+            call given_real(scanned, scene, warnings, 'load', 'base_frequency', load%base_frequency, kind_reason// &
                             ' takes the loads at t = 0, where the base excitation''s load (sin 0) is 0')
       end associate
    end subroutine load_warnings
@@ -187,14 +193,14 @@ contains
       logical :: any_compliant, any_rigid
       any_compliant = any(scene%obstacles%stiffness > 0) .or. any(swept == 'obstacles.stiffness')
       any_rigid = any(scene%obstacles%stiffness <= 0) .or. any(swept == 'obstacles.stiffness')
-      if (scene%time%scheme == 'position') call given_real(scanned, warnings, 'time', 'gamma', scene%time%gamma, &
+      if (scene%time%scheme == 'position') call given_real(scanned, scene, warnings, 'time', 'gamma', scene%time%gamma, &
                                                            'scheme = ''position'' activates contacts by position')
       if (.not. any_compliant .and. scanned%is_given('time', 'compliant_rule')) &
          call add(warnings, '&time compliant_rule = '''//trim(scene%time%compliant_rule)//''' is ignored: no obstacle '// &
                   'is compliant (stiffness > 0)')
       if (.not. any_rigid) then
-         call given_real(scanned, warnings, 'impact', 'restitution', scene%impact%restitution, 'no obstacle is rigid '// &
-                         '(impacts happen at rigid obstacles only)')
+         call given_real(scanned, scene, warnings, 'impact', 'restitution', scene%impact%restitution, &
+                         'no obstacle is rigid (impacts happen at rigid obstacles only)')
          if (scanned%is_given('impact', 'separating_points')) &
             call add(warnings, '&impact separating_points = '''//trim(scene%impact%separating_points)//''' is '// &
                      'ignored: no obstacle is rigid (impacts happen at rigid obstacles only)')
@@ -224,14 +230,15 @@ contains
             if (scanned%is_given('initial', 'displacement_mode')) &
                call add(warnings, '&initial displacement_mode = '//integer_text(initial%displacement_mode)// &
                         ' is ignored: displacement = '''//trim(initial%displacement)//'''')
-            call given_real(scanned, warnings, 'initial', 'displacement_amplitude', initial%displacement_amplitude, &
+            call given_real(scanned, scene, warnings, 'initial', 'displacement_amplitude', &
+                            initial%displacement_amplitude, &
                             'displacement = '''//trim(initial%displacement)//'''')
          end if
          if (initial%velocity /= 'mode' .and. scanned%is_given('initial', 'velocity_mode')) &
             call add(warnings, '&initial velocity_mode = '//integer_text(initial%velocity_mode)//' is ignored: '// &
                      'velocity = '''//trim(initial%velocity)//'''')
          if (initial%velocity == 'zero') &
-            call given_real(scanned, warnings, 'initial', 'velocity_amplitude', initial%velocity_amplitude, &
+            call given_real(scanned, scene, warnings, 'initial', 'velocity_amplitude', initial%velocity_amplitude, &
                             'velocity = ''zero''')
       end associate
    end subroutine initial_warnings
@@ -243,20 +250,29 @@ contains
       warnings = warnings//line//new_line('a')
    end subroutine add
 
-   !> The warning for the real group.name, when given: 'value unit is ignored: reason'.
-   subroutine given_real(scanned, warnings, group, name, value, reason)
+   !> The warning for the real group.name, when given: 'value unit is ignored: reason';
+   !! a frequency given in Hz, by its twin (`vibrobeam_frequency_twins`), the same with
+   !! the twin's name, value and unit.
+   subroutine given_real(scanned, scene, warnings, group, name, value, reason)
       type(scanned_file), intent(in) :: scanned
+      type(scene_type), intent(in) :: scene
       character(len=:), allocatable, intent(inout) :: warnings
       character(len=*), intent(in) :: group, name, reason
       real(dp), intent(in) :: value
       type(namelist_variable), allocatable :: table(:)
       type(namelist_variable) :: variable
-      character(len=:), allocatable :: unit
-      if (.not. scanned%is_given(group, name)) return
+      character(len=:), allocatable :: unit, given
+      real(dp) :: shown
+      logical :: found
+      given = name
+      shown = value
+      if (scanned%is_given(group, twin_name(name))) given = twin_name(name)
+      if (given /= name) call real_input(scene, group, given, 1, shown, found)
+      if (.not. scanned%is_given(group, given)) return
       allocate (table, source=scene_variables())
-      variable = table(variable_index(table, group, name))
+      variable = table(variable_index(table, group, given))
       unit = trim(variable%unit)
       if (len(unit) > 0) unit = ' '//unit
-      call add(warnings, '&'//group//' '//name//' = '//real_text(value)//unit//' is ignored: '//reason)
+      call add(warnings, '&'//group//' '//given//' = '//real_text(shown)//unit//' is ignored: '//reason)
    end subroutine given_real
 end module vibrobeam_ignored_values

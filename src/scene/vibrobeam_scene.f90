@@ -27,6 +27,7 @@ module vibrobeam_scene
    use vibrobeam_schema_visitor, only: schema_visitor, integer_row, keyword_row, unset, is_unset, keyword_length, &
       path_length
    use vibrobeam_schema_operations, only: schema_table, schema_checker, schema_lister, scene_entry => schema_entry
+   use vibrobeam_frequency_twins, only: twin_sync
    use vibrobeam_beam_settings, only: beam_settings, mesh_settings, visit_beam, visit_mesh
    use vibrobeam_obstacles, only: obstacle_type, max_obstacles, visit_obstacles
    use vibrobeam_initial_state, only: initial_settings, visit_initial
@@ -40,7 +41,7 @@ module vibrobeam_scene
    public :: scene_type, analysis_settings, obstacle_type, scene_entry, max_obstacles, max_points, unset
    public :: visit_scene, validate_scene, scene_entries, format_scene, is_unset
    public :: scene_variables, path_length, keyword_length, max_steps, step_count
-   public :: forcing_of, max_sweep_values, parameter_length
+   public :: forcing_of, max_sweep_values, parameter_length, sync_frequency_twins
 
    !> Most time steps of a run: nint(t_end/dt) must fit a 64-bit count with room to spare.
    integer(int64), parameter :: max_steps = 1000000000000000000_int64
@@ -117,6 +118,17 @@ contains
       call move_alloc(collector%rows, table)
    end function scene_variables
 
+   !> Every frequency's twin in Hz agrees with it (`vibrobeam_frequency_twins`): a twin that
+   !! does not (a scene built in code that set a frequency alone) is set to the frequency
+   !! over 2 pi. The rad/s variables are the ones the code uses; they are not changed.
+   subroutine sync_frequency_twins(scene)
+      type(scene_type), intent(inout) :: scene
+      type(twin_sync) :: sync
+      call visit_scene(scene, sync)
+      sync%collecting = .false.
+      call visit_scene(scene, sync)
+   end subroutine sync_frequency_twins
+
    !> The harmonic load whose phase times the Poincare samples (docs/statistics.md): the
    !! one &output poincare_load names, or with 'auto' the first harmonic load (non-zero
    !! amplitude and frequency) of base excitation, point force, distributed load; 'none'
@@ -186,6 +198,7 @@ contains
       end if
       if (stat /= 0) return
       copy = scene
+      call sync_frequency_twins(copy)
       call visit_scene(copy, checker)
       if (checker%stat /= 0) then
          call fail(stat, errmsg, trim(checker%errmsg))
@@ -352,7 +365,8 @@ contains
    end subroutine in_range
 
    !> Every resolved input value as a list of entries (name 'group.variable', value, unit):
-   !! the variables of `visit_scene` (an optional one only when given), with the beam's
+   !! the variables of `visit_scene` (an optional one only when given; every frequency in
+   !! rad/s and, its twin, in Hz), with the beam's
    !! k2 = EI/(rho S) as derived, and its mass per length and bending stiffness.
    function scene_entries(scene) result(list)
       type(scene_type), intent(in) :: scene
@@ -361,6 +375,7 @@ contains
       type(scene_type) :: copy
       integer :: k
       copy = scene
+      call sync_frequency_twins(copy)
       call visit_scene(copy, lister)
       call derived%add_real('beam.mass_per_length', scene%beam%rho_s(), 'kg/m')
       call derived%add_real('beam.bending_stiffness', scene%beam%ei(), 'N m^2')

@@ -14,10 +14,13 @@
 module vibrobeam_scene_read
    use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp
-   use vibrobeam_text, only: integer_text
-   use vibrobeam_scene, only: scene_type, max_obstacles, max_points, scene_variables, visit_scene
+   use vibrobeam_text, only: integer_text, real_text
+   use vibrobeam_scene, only: scene_type, max_obstacles, max_points, scene_variables, visit_scene, &
+      sync_frequency_twins
+   use vibrobeam_scene_values, only: real_input, set_real_input
+   use vibrobeam_frequency_twins, only: is_twin, frequency_name
    use vibrobeam_obstacles, only: obstacle_type
-   use vibrobeam_namelist_schema, only: namelist_variable
+   use vibrobeam_namelist_schema, only: namelist_variable, real_range_problem
    use vibrobeam_namelist_scan, only: scanned_file, scan_namelist_file
    use vibrobeam_schema_operations, only: schema_reader
    use vibrobeam_sweep_input, only: sweep_input, visit_sweep, max_sweep_values
@@ -65,6 +68,7 @@ contains
       end if
       call resolve_obstacles(reader%scanned, count, scene, stat, errmsg)
       if (stat == 0) call resolve_points(reader%scanned, scene, stat, errmsg)
+      if (stat == 0) call resolve_frequency_twins(reader%scanned, scene, stat, errmsg)
       if (stat /= 0) return
       if (.not. reader%scanned%is_given('load', 'point_position')) scene%load%point_position = scene%beam%length
       if (present(sweep)) then
@@ -170,6 +174,48 @@ contains
          end do
       end function given
    end subroutine resolve_obstacles
+
+   !> The frequencies given in Hz (docs/input.md, "Frequencies in Hz"): a twin and its
+   !! frequency are not both given; a twin given (checked against its own range first, so
+   !! that a message names what the file says) sets its frequency to 2 pi times it; every
+   !! other twin is the frequency over 2 pi.
+   subroutine resolve_frequency_twins(scanned, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
+      type(scene_type), intent(inout) :: scene
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(namelist_variable), allocatable :: table(:)
+      character(len=:), allocatable :: group, twin, frequency, problem
+      real(dp) :: value, given
+      logical :: found
+      integer :: k
+      stat = 0
+      errmsg = ''
+      allocate (table, source=scene_variables())
+      do k = 1, size(table)
+         if (.not. is_twin(table(k)%name) .or. table(k)%extent > 0) cycle
+         group = trim(table(k)%group)
+         twin = trim(table(k)%name)
+         frequency = frequency_name(twin)
+         if (.not. scanned%is_given(group, twin)) cycle
+         call real_input(scene, group, twin, 1, given, found)
+         if (scanned%is_given(group, frequency)) then
+            call real_input(scene, group, frequency, 1, value, found)
+            stat = stat_failure
+            errmsg = '&'//group//' '//frequency//' = '//real_text(value)//' rad/s and '//twin//' = '// &
+                     real_text(given)//' Hz are both given: give one of them ('//twin//' = '//frequency//'/(2 pi))'
+            return
+         end if
+         problem = real_range_problem(table(k), given)
+         if (len(problem) > 0) then
+            stat = stat_failure
+            errmsg = '&'//group//' '//twin//' = '//real_text(given)//' '//problem
+            return
+         end if
+         call set_real_input(scene, group, twin, 1, given, found)   ! and the frequency, 2 pi times it
+      end do
+      call sync_frequency_twins(scene)
+   end subroutine resolve_frequency_twins
 
    !> &output points: the leading elements given (points(1), points(2), ...), no gaps.
    subroutine resolve_points(scanned, scene, stat, errmsg)

@@ -21,7 +21,8 @@
 !!   the run ends with less energy than it started with, and for the position scheme the
 !!   documented bound of its energy gains (docs/method.md, "The position-based scheme"):
 !!   the impulses of one step add energy in some steps, never more than a third of the
-!!   energy before that step (the largest gain over the bundled scenes, 0.32 with e = 0.8).
+!!   energy before that step (the largest gain measured, 0.32 with e = 0.8;
+!!   over the bundled scenes 0.22).
 !! With the position scheme and e = 0, 'dissipate' also asserts that no position enters an
 !! obstacle by more than the round-off of the projection.
 !! usage: test_energy SCENE.nml converge DT [DT ...]

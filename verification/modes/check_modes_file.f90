@@ -3,6 +3,8 @@
 !! the command line:  check_modes_file FILE L E RHO AREA INERTIA FREQUENCY_TOLERANCE SHAPE_TOLERANCE
 !! Frequencies are compared in Hz (the roots beta_n L quoted to 20 digits,
 !! scripts/cantilever_roots.py); shapes at the nodes (tip value 1) with the closed form.
+!! /modes/frequency_hz holds the same frequencies in Hz: omega/(2 pi) to one rounding of
+!! the division and of pi (2 eps relative).
 program check_modes_file
    use vibrobeam_kinds, only: dp, output_unit, pi
    use vibrobeam_hdf5_file_reads, only: read_real_1d, read_real_2d
@@ -14,7 +16,7 @@ program check_modes_file
    type(test_counter) :: t
    character(len=512) :: file, argument
    real(dp) :: length, young, density, area, inertia, tolerance, shape_tolerance, exact_hz, shape_error
-   real(dp), allocatable :: omega(:), x(:), shapes(:,:)
+   real(dp), allocatable :: omega(:), x(:), shapes(:,:), hz(:)
    integer :: stat, n, i
    character(len=300) :: errmsg
    character(len=40) :: label
@@ -28,6 +30,8 @@ program check_modes_file
    call real_argument(8, shape_tolerance)
    call read_real_1d(trim(file), '/modes/frequency', omega, stat, errmsg)
    call t%check_true('read /modes/frequency', stat == 0, errmsg)
+   call read_real_1d(trim(file), '/modes/frequency_hz', hz, stat, errmsg)
+   call t%check_true('read /modes/frequency_hz', stat == 0 .and. size(hz) == size(omega), errmsg)
    call read_real_1d(trim(file), '/mesh/x', x, stat, errmsg)
    call t%check_true('read /mesh/x', stat == 0, errmsg)
    call read_real_2d(trim(file), '/modes/shape', shapes, stat, errmsg)
@@ -39,6 +43,8 @@ program check_modes_file
       write (output_unit, '(i5, 2f18.6, es14.2)') n, omega(n)/(2*pi), exact_hz, abs(omega(n)/(2*pi) - exact_hz)/exact_hz
       write (label, '(a,i0,a)') 'frequency of mode ', n, ' (Hz)'
       call t%check_close(trim(label), omega(n)/(2*pi), exact_hz, tolerance)
+      write (label, '(a,i0,a)') '/modes/frequency_hz of mode ', n, ' (Hz)'
+      call t%check_close(trim(label), hz(n), omega(n)/(2*pi), 2*epsilon(1.0_dp))
       shape_error = 0
       do i = 1, size(x)
          shape_error = max(shape_error, abs(shapes(i, n) - cantilever_mode_shape(n, x(i), length, 0)))

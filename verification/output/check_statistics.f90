@@ -4,8 +4,10 @@
 !! reports.   usage: check_statistics FILE.h5
 !!
 !! The scene has its contact points at the tip only (two stops there), so /tip/impulse
-!! (the impulse of each step, every = 1) gives the steps in contact and the contact
+!! (the impulse of each step, every = 1) gives the steps with an impulse and the contact
 !! force; which stop gives an impulse follows from its sign (upwards: the 'below' one).
+!! A step is in contact when it has an impulse or, with a compliant stop, a nonzero spring
+!! force after it (/contact/force, its sign telling the stop in the same way).
 !! With a compliant stop (/contact/force written, every = 1) the force statistics are
 !! recomputed from /contact/force at every step, and the compliant episodes (maximal runs
 !! of steps with nonzero force) from it too; the powers of the contact damping and of the
@@ -53,6 +55,7 @@ program check_statistics
    character(len=:), allocatable :: scheme
    ! impacts and episodes, and the target of the contact statistics being checked
    real(dp), allocatable :: impact_time(:), impact_impulse(:), episode_start(:), episode_impulse(:), step_impulse(:)
+   real(dp), allocatable :: tip_force(:)   ! the compliant stops' force at the tip after each step (0 without)
    integer(int64), allocatable :: impact_step(:), episode_step(:)
    real(dp) :: wanted   ! sign of the impulses of the target (0: any)
 
@@ -96,6 +99,7 @@ program check_statistics
    call check_energy()
    call check_forces()
    call check_spectrum()
+   call check_run_spectra()
    call check_poincare()
    call t%finish('check_statistics '//trim(file))
 
@@ -196,6 +200,7 @@ contains
    subroutine check_contacts()
       integer :: k
       step_impulse = tip_impulse(first + 2:last + 1)   ! the impulse of steps first+1 .. last
+      call tip_forces()
       call load('/impacts/time', impact_time)
       call load('/impacts/impulse', impact_impulse)
       call load('/episodes/start', episode_start)
@@ -251,7 +256,7 @@ contains
    subroutine statistics_over(from, to, values)
       integer(int64), intent(in) :: from, to
       real(dp), intent(out) :: values(7)
-      logical, allocatable :: in_episode(:), in_step(:)
+      logical, allocatable :: in_episode(:), in_step(:), in_contact(:)
       real(dp) :: steps, span
       integer :: n
       steps = real(to - from, dp)
@@ -265,12 +270,26 @@ contains
                                               sqrt(sum(chosen**2)/size(chosen))]
       end associate
       allocate (in_step(to - from))
+      allocate (in_contact(to - from))
       do n = int(from) + 1, int(to)
          in_step(n - from) = abs(tip_impulse(n + 1)) > 0 .and. matches(tip_impulse(n + 1))
+         ! in contact: an impulse, or the springs' force (of the wanted sign) after the step
+         in_contact(n - from) = in_step(n - from) .or. (abs(tip_force(n + 1)) > 0 .and. matches(tip_force(n + 1)))
       end do
-      values(6) = count(in_step)/steps
+      values(6) = count(in_contact)/steps
       values(7) = sum(abs(tip_impulse(from + 2:to + 1)), mask=in_step)/span
    end subroutine statistics_over
+
+   !> tip_force(n + 1): the compliant stops' force at the tip (contact point 1) after step n,
+   !! from /contact/force; zeros without compliant stops.
+   subroutine tip_forces()
+      real(dp), allocatable :: force(:, :)
+      allocate (tip_force(last + 1), source=0.0_dp)
+      if (.not. compliant()) return
+      call read_real_2d(trim(file), '/contact/force', force, stat, errmsg)
+      call t%check_true('read /contact/force', stat == 0 .and. size(force, 2) == last + 1, errmsg)
+      if (stat == 0 .and. size(force, 2) == last + 1) tip_force = force(1, :)
+   end subroutine tip_forces
 
    !> The impulses pushed by the target: positive ones by the stop below, negative by the
    !! one above, any for the tip and the beam.
@@ -411,16 +430,18 @@ contains
 
    !> The three largest local maxima of the amplitude spectrum of the tip displacement
    !! over the window (mean removed, periodic Hann window), by a direct DFT.
-   subroutine check_spectrum()
-      real(dp), allocatable :: amplitude(:), frequency(:), reported_f(:), reported_a(:)
-      real(dp) :: x(samples), w(samples), c(samples), s(samples)
-      real(dp) :: re, im, delta_a, width, left, middle, right, curvature, shift, f, a
-      integer :: n, k, j, i, bins, found
-      integer, allocatable :: peaks(:)
-      logical, allocatable :: candidate(:)
-      n = int(samples)
-      x = tip_u(first + 2:last + 1)
-      x = x - sum(x)/n
+   !> The single-sided amplitude spectrum of `signal` by a direct DFT (mean removed,
+   !! periodic Hann window, docs/method.md "Spectra"), bins k/(n dt), k = 0 .. n/2;
+   !! `delta_a` bounds its rounding: w (x - mean) summed n times, times 2/sum(w) = 4/n,
+   !! 4 n eps max |w (x - mean)|.
+   subroutine direct_spectrum(signal, amplitude, frequency, delta_a)
+      real(dp), intent(in) :: signal(:)
+      real(dp), allocatable, intent(out) :: amplitude(:), frequency(:)
+      real(dp), intent(out) :: delta_a
+      real(dp) :: x(size(signal)), w(size(signal)), c(size(signal)), s(size(signal)), re, im
+      integer :: n, k, j, i, bins
+      n = size(signal)
+      x = signal - sum(signal)/n
       bins = n/2 + 1
       allocate (amplitude(bins), frequency(bins))
       ! the window, and cos and sin of 2 pi r/n, r = j k mod n: every angle reduced exactly
@@ -442,9 +463,65 @@ contains
          if (k > 0 .and. 2*k /= n) amplitude(k + 1) = 2*amplitude(k + 1)
          frequency(k + 1) = k/(n*dt)
       end do
-      width = 1/(n*dt)
-      ! x holds w (x - mean): n products summed, times 2/sum(w) = 4/n
       delta_a = 4*n*eps*maxval(abs(x))
+   end subroutine direct_spectrum
+
+   !> /spectrum (docs/output.md): the amplitude spectra of the whole run (one record: every
+   !! output row, every step here), at the tip and at each observation point, against a
+   !! direct DFT of /tip/displacement and /points/displacement; the frequencies in Hz and
+   !! in rad/s (2 pi f, one rounding of the product and of pi: 2 eps relative), the bin
+   !! width in both.
+   subroutine check_run_spectra()
+      real(dp), allocatable :: frequency(:), frequency_rad_s(:), tip(:), point_amplitude(:, :), amplitude(:), f(:)
+      real(dp) :: delta_a, width, width_rad_s
+      integer :: p, k
+      call load('/spectrum/frequency', frequency)
+      call load('/spectrum/frequency_rad_s', frequency_rad_s)
+      call load('/spectrum/tip_amplitude', tip)
+      call read_real_2d(trim(file), '/spectrum/point_amplitude', point_amplitude, stat, errmsg)
+      call t%check_true('read /spectrum/point_amplitude', stat == 0 .and. size(point_amplitude, 1) == points - 1, errmsg)
+      if (stat /= 0 .or. size(point_amplitude, 1) /= points - 1) return
+      call direct_spectrum(tip_u, amplitude, f, delta_a)
+      call t%check_true('/spectrum: one bin per frequency of the record', size(frequency) == size(f) .and. &
+                        size(frequency_rad_s) == size(f) .and. size(tip) == size(f) .and. &
+                        size(point_amplitude, 2) == size(f))
+      if (size(frequency) /= size(f) .or. size(point_amplitude, 2) /= size(f)) return
+      do k = 1, size(f)
+         call close_to('/spectrum/frequency bin '//integer_text(k), frequency(k), f(k), 4*eps*f(k))
+         call close_to('/spectrum/frequency_rad_s bin '//integer_text(k), frequency_rad_s(k), 2*pi*frequency(k), &
+                       2*eps*2*pi*frequency(k))
+      end do
+      call close_to('/spectrum/tip_amplitude', maxval(abs(tip - amplitude)), 0.0_dp, delta_a)
+      do p = 1, points - 1
+         call direct_spectrum(observed(:, p + 1, 1), amplitude, f, delta_a)
+         call close_to('/spectrum/point_amplitude at point '//integer_text(p), &
+                       maxval(abs(point_amplitude(p, :) - amplitude)), 0.0_dp, delta_a)
+      end do
+      call h5_attribute('/spectrum', 'bin_width', width)
+      call h5_attribute('/spectrum', 'bin_width_rad_s', width_rad_s)
+      call close_to('/spectrum bin_width_rad_s', width_rad_s, 2*pi*width, 2*eps*2*pi*width)
+      call close_to('/spectrum bin_width (Hz)', width, f(2), 4*eps*f(2))
+   end subroutine check_run_spectra
+
+   !> The real attribute `name` of `path`.
+   subroutine h5_attribute(path, name, value)
+      character(len=*), intent(in) :: path, name
+      real(dp), intent(out) :: value
+      value = -1
+      call read_attr_real(trim(file), path, name, value, stat, errmsg)
+      call t%check_true('read '//path//' '//name, stat == 0, errmsg)
+   end subroutine h5_attribute
+
+   subroutine check_spectrum()
+      real(dp), allocatable :: amplitude(:), frequency(:), reported_f(:), reported_a(:), reported_w(:)
+      real(dp) :: delta_a, width, left, middle, right, curvature, shift, f, a, bin_width_hz, bin_width_rad_s
+      integer :: n, j, i, bins, found
+      integer, allocatable :: peaks(:)
+      logical, allocatable :: candidate(:)
+      n = int(samples)
+      call direct_spectrum(tip_u(first + 2:last + 1), amplitude, frequency, delta_a)
+      bins = size(amplitude)
+      width = 1/(n*dt)
       allocate (candidate(bins))
       candidate = .false.
       do i = 2, bins
@@ -462,8 +539,18 @@ contains
       end do
       call load('/statistics/spectrum/peak_frequency', reported_f)
       call load('/statistics/spectrum/peak_amplitude', reported_a)
-      call t%check_true('three peaks', found == 3 .and. size(reported_f) == 3)
-      if (found /= 3 .or. size(reported_f) /= 3) return
+      call load('/statistics/spectrum/peak_frequency_rad_s', reported_w)
+      call t%check_true('three peaks', found == 3 .and. size(reported_f) == 3 .and. size(reported_w) == 3)
+      if (found /= 3 .or. size(reported_f) /= 3 .or. size(reported_w) /= 3) return
+      ! the same in rad/s: 2 pi f, one rounding of the product and of pi
+      do j = 1, 3
+         call close_to('spectrum peak '//integer_text(j)//' frequency (rad/s)', reported_w(j), 2*pi*reported_f(j), &
+                       2*eps*2*pi*reported_f(j))
+      end do
+      call h5_attribute('/statistics/spectrum', 'bin_width', bin_width_hz)
+      call h5_attribute('/statistics/spectrum', 'bin_width_rad_s', bin_width_rad_s)
+      call close_to('/statistics/spectrum bin_width (Hz)', bin_width_hz, width, 4*eps*width)
+      call close_to('/statistics/spectrum bin_width_rad_s', bin_width_rad_s, 2*pi*bin_width_hz, 2*eps*2*pi*bin_width_hz)
       do j = 1, found
          i = peaks(j)
          f = frequency(i)
@@ -509,6 +596,11 @@ contains
       end if
       call t%check_true('a harmonic load', omega > 0)
       if (omega <= 0) return
+      ! the forcing frequency in rad/s and in Hz (one rounding of the division and of pi)
+      call h5_attribute('/statistics', 'poincare_frequency', frequency)
+      call close_to('/statistics poincare_frequency (rad/s)', frequency, omega, 0.0_dp)
+      call h5_attribute('/statistics', 'poincare_frequency_hz', amplitude)
+      call close_to('/statistics poincare_frequency_hz', amplitude, omega/(2*pi), 2*eps*omega/(2*pi))
       call load('/statistics/poincare/time', times)
       call read_real_2d(trim(file), '/statistics/poincare/displacement', u, stat, errmsg)
       call read_real_2d(trim(file), '/statistics/poincare/velocity', v, stat, errmsg)

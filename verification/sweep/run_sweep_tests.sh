@@ -2,7 +2,7 @@
 # Sweep tests (docs/sweeps.md); each compares results bit for bit with compare_sweep.
 # usage: run_sweep_tests.sh MODE VIBROBEAM COMPARE_SWEEP [MPIRUN]
 #   point    every point of an 'independent' sweep equals a single run with its parameter
-#            value and window (both schemes)
+#            value and window (both schemes; and a sweep over a frequency in Hz)
 #   files    keep_runs with steady-state detection and continuation ('up'): each point's
 #            result file holds the statistics of the sweep file's row
 #   threads  the same sweeps (independent points; a 2-D map of up-down lines; independent
@@ -38,6 +38,20 @@ point)
       echo "$scheme, point $k ($frequency rad/s):"
       "$compare" point sweep.h5 $k single$k.h5 || failed=1
     done
+  done
+  # a sweep over a frequency's twin in Hz (docs/input.md, "Frequencies in Hz"): point k
+  # equals the single run that gives that frequency in Hz
+  scene sweep_hz 200 velocity "" "" \
+    "\&sweep parameter = 'load.point_frequency_hz', values = 25.0, 35.0, settle = 0.05, measure = 0.05 /"
+  run sweep_hz
+  k=0
+  for hz in 25.0 35.0; do
+    k=$((k + 1))
+    scene single_hz$k 200 velocity ", t_end = 0.1" ", measure_from = 0.05" ""
+    sed -i "s|point_frequency = 200|point_frequency_hz = $hz|" single_hz$k.nml
+    run single_hz$k
+    echo "sweep over load.point_frequency_hz, point $k ($hz Hz):"
+    "$compare" point sweep_hz.h5 $k single_hz$k.h5 || failed=1
   done
   ;;
 files)

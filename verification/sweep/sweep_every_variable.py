@@ -21,7 +21,9 @@ a rule between inputs refuses the sweep in the first scene, the variable is also
 in the second scene, where the rule does not apply, and must pass there: k2 (the first
 scene's beam is given by E, rho, S, I), base_amplitude (the first scene gives
 base_acceleration), the damping of obstacle 1 (a rigid stop in the first scene); and the
-reduction's cut-off is swept in the reduced second scene.
+reduction's cut-off (in rad/s and its twin in Hz) is swept in the reduced second scene.
+Every frequency's twin in Hz (docs/input.md, "Frequencies in Hz") is a real variable of the
+table, swept like the others: each point must record the value swept in Hz.
 Exit status 0 when every check holds, 1 otherwise (one line per failure), 77 without h5py.
 """
 import concurrent.futures
@@ -80,6 +82,7 @@ EXPECTED = {
     'load.base_amplitude': [('A', 'are both given: give one of them'), ('B', None)],
     'obstacles.damping(1)': [('A', 'contact damping needs a compliant stop'), ('B', None)],
     'mesh.reduction_frequency': [('B', None)],
+    'mesh.reduction_frequency_hz': [('B', None)],
 }
 SWEEP = ("&sweep parameter = '{name}', values = {v1!r}, {v2!r}, mode = 'independent', "
          "settle = 1e-4, measure = 1e-4, keep_runs = .true. /\n")

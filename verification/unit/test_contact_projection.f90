@@ -42,7 +42,8 @@ program test_contact_projection
    use vibrobeam_contact_set, only: contact_set, contact_value, no_bound
    use vibrobeam_contact_projector, only: contact_projector
    use vibrobeam_model, only: beam_model, build_model, node_row
-   use vibrobeam_test_support, only: test_counter, band_abs_times, band_condition, dense_lcp_reference
+   use vibrobeam_test_support, only: test_counter, band_abs_times, band_condition, dense_lcp_reference, &
+                                     use_program_blas_threads
    use vibrobeam_lapack, only: dgesv
    implicit none
 
@@ -53,6 +54,7 @@ program test_contact_projection
    real(dp) :: worst_x = 0, worst_p = 0, worst_residual = 0
    integer :: k, problems = 0, largest_solves = 0, interior_used = 0
 
+   call use_program_blas_threads()
    ! 1. small problems against enumeration: one- and two-sided, both row kinds, both regimes
    do k = 1, 100
       call small_case(1 + mod(k, 2), k <= 50, merge('band    ', 'delassus', mod(k, 3) /= 0))

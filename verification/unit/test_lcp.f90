@@ -17,6 +17,7 @@ program test_lcp
    use vibrobeam_kinds, only: dp, int64, error_unit, output_unit
    use vibrobeam_lapack, only: dgeqrf, dgesv, dorgqr, dsyev
    use vibrobeam_lcp, only: solve_lcp, lcp_residual
+   use vibrobeam_test_support, only: use_program_blas_threads
    use vibrobeam_status, only: stat_no_convergence, stat_linear_solver_failure, stat_residual_check_failed, &
                                stat_invalid_argument
    implicit none
@@ -55,6 +56,7 @@ program test_lcp
    real(dp) :: scale_a, scale_q
    integer(int64) :: clock_start, clock_end, clock_rate
 
+   call use_program_blas_threads()
    call system_clock(clock_start, clock_rate)
    rng_state = 20240607_int64
 

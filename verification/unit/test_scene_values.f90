@@ -8,11 +8,14 @@
 !!    sets a value no variable holds, `real_input` reads it back, and the listing of the
 !!    resolved scene (`scene_entries`, a different walk of the declarations than the
 !!    accessor's) shows it under that variable's name and nowhere else: every other entry
-!!    is unchanged, but for the beam's derived k2, mass per length and bending stiffness.
+!!    is unchanged, but for the beam's derived k2, mass per length and bending stiffness,
+!!    and the twin of a frequency (docs/input.md, "Frequencies in Hz": setting a frequency
+!!    in rad/s sets its twin in Hz to it over 2 pi, setting the twin sets the frequency to 2
+!!    pi times it; compared to 4 eps, one rounding of the product and one of pi).
 !!    E, rho, S and I are set on a beam given by them, the others on a beam given by k2
 !!    (its k2 is listed, not derived).
 !! 3. A name that is not a real input, and an element beyond the scene's, are not found.
-!! The values are compared exactly: they are copied, never computed.
+!! The values are compared exactly: they are copied, never computed (but for the twins).
 program test_scene_values
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: integer_text
@@ -81,8 +84,19 @@ contains
       integer, intent(in) :: element
       real(dp), intent(in) :: marker
       type(scene_type) :: changed
-      integer :: j, shown
+      integer :: j, shown, twin_shown
       logical :: others_same
+      character(len=:), allocatable :: twin
+      real(dp) :: twin_value
+      ! the twin of a frequency (rad/s) or the frequency of a twin (Hz), and its value
+      if (len(variable) > 3 .and. index(variable, '_hz', back=.true.) == len(variable) - 2) then
+         twin = group//'.'//variable(1:len(variable) - 3)
+         twin_value = 8*atan(1.0_dp)*marker
+      else
+         twin = group//'.'//variable//'_hz'
+         twin_value = marker/(8*atan(1.0_dp))
+      end if
+      twin_shown = 0
       changed = scene
       if (group == 'beam' .and. any(variable == [character(len=14) :: 'youngs_modulus', 'density', 'area', &
                                                   'inertia'])) changed = physical_scene
@@ -101,11 +115,15 @@ contains
          else if (any(after(j)%name == [character(len=24) :: 'beam.k2', 'beam.mass_per_length', &
                                          'beam.bending_stiffness'])) then
             cycle   ! derived from the beam's data
+         else if (after(j)%name == twin) then
+            if (abs(after(j)%real_value - twin_value) <= 4*epsilon(1.0_dp)*abs(twin_value)) twin_shown = twin_shown + 1
          else if (.not. same_as_before(after(j))) then
             others_same = .false.
          end if
       end do
       call t%check_true(name//' is listed with the value set', shown == 1)
+      if (any(after%name == twin)) call t%check_true(twin//', the twin of '//name//', is listed with it converted', &
+                                                     twin_shown == 1)
       call t%check_true(name//' changes no other input', others_same)
    end subroutine check_one
 

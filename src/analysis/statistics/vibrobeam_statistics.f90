@@ -10,7 +10,7 @@
 !! Sub-windows for standard errors: `vibrobeam_batch_blocks`. Which statistics:
 !! `vibrobeam_statistics_layout`.
 module vibrobeam_statistics
-   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_state_record, only: state_record
    use vibrobeam_step_observer, only: step_observer, step_events
@@ -253,12 +253,7 @@ contains
             obstacle = obstacle_of(self, c, impulse)
             call contact_sum(c, s_force, abs(impulse))
             if (events%impact(k)) call contact_sum(c, s_impacts, 1.0_dp)
-            touched(c) = .true.
-            touched(beam) = .true.
-            if (obstacle > 0) touched(self%contacts + obstacle) = .true.
-         end do
-         do k = 1, size(touched)
-            if (touched(k)) call blocks%add(target_sum(self, k, s_contact_steps), 1.0_dp)
+            call touch(c, obstacle)
          end do
          do c = 1, self%contacts
             force = abs(stepper%report%contact_force(c))
@@ -267,6 +262,11 @@ contains
             call blocks%add(force_sum(self, c, f_force), force)
             call blocks%add(force_sum(self, c, f_force_square), force**2)
             call blocks%add(force_sum(self, c, f_steps), 1.0_dp)
+            ! in contact with a compliant stop too (contact_fraction counts every kind of stop)
+            call touch(c, obstacle_of(self, c, stepper%report%contact_force(c)))
+         end do
+         do k = 1, size(touched)
+            if (touched(k)) call blocks%add(target_sum(self, k, s_contact_steps), 1.0_dp)
          end do
       end associate
       call self%poincare%sample_step(stepper%steps, reshape(events%observed, [2*self%points]), self%poincare_found, &
@@ -295,6 +295,15 @@ contains
             end if
          end do
       end subroutine force_episodes
+
+      !> Contact point `point` is in contact in this step, pushed by obstacle `by` (0: none):
+      !! so are that obstacle and the beam.
+      subroutine touch(point, by)
+         integer, intent(in) :: point, by
+         touched(point) = .true.
+         touched(beam) = .true.
+         if (by > 0) touched(self%contacts + by) = .true.
+      end subroutine touch
 
       !> Add `value` to sum quantity `q` of contact point c, of its obstacle and of the beam.
       subroutine contact_sum(point, q, value)
@@ -540,10 +549,11 @@ contains
       !! amplitudes of the bin and its two neighbours (none at the last bin).
       subroutine peaks(frequency, amplitude)
          real(dp), intent(in) :: frequency(:), amplitude(:)
-         integer :: j, i, f_at, a_at
+         integer :: j, i, f_at, a_at, w_at
          real(dp) :: left, middle, right, curvature, shift
          f_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_frequency'))%offset
          a_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_amplitude'))%offset
+         w_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_frequency_rad_s'))%offset
          associate (found => spectral_peaks(frequency, amplitude, peak_count, 0.0_dp))
          do j = 1, size(found)
             i = found(j)
@@ -559,6 +569,8 @@ contains
             outcome%values(f_at + j) = frequency(i) + shift*outcome%bin_width
             outcome%values(a_at + j) = middle - 0.25_dp*(left - right)*shift
          end do
+         ! the same peaks in rad/s
+         outcome%values(w_at + 1:w_at + size(found)) = 2*pi*outcome%values(f_at + 1:f_at + size(found))
          end associate
       end subroutine peaks
    end function result

@@ -88,6 +88,7 @@ contains
       end do
       call add('peak_frequency', 'Hz', group_spectrum, peak_count, .false.)
       call add('peak_amplitude', 'm', group_spectrum, peak_count, .false.)
+      call add('peak_frequency_rad_s', 'rad/s', group_spectrum, peak_count, .false.)   ! 2 pi peak_frequency
    contains
       subroutine add(name, unit, group, length, has_error)
          character(len=*), intent(in) :: name, unit

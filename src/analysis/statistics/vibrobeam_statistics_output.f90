@@ -7,10 +7,10 @@
 !! /statistics/contacts/x, lower_obstacle, upper_obstacle; /statistics/poincare/time,
 !! displacement, velocity (samples x observation points). Attributes of /statistics:
 !! measure_from, window_start, window_end (s), window_steps, batches, batch_steps;
-!! poincare_load, poincare_frequency (rad/s), poincare_phase (rad); /statistics/spectrum
-!! bin_width (Hz).
+!! poincare_load, poincare_frequency (rad/s) and poincare_frequency_hz (Hz),
+!! poincare_phase (rad); /statistics/spectrum bin_width (Hz) and bin_width_rad_s (rad/s).
 module vibrobeam_statistics_output
-   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_hdf5_series, only: h5_series, h5_array
    use vibrobeam_statistics_layout, only: statistics_layout
@@ -79,9 +79,11 @@ contains
       if (stat == 0) call writer%attr_int64('/statistics', 'batch_steps', 0_int64, stat, errmsg)
       if (stat == 0) call writer%attr_string('/statistics', 'poincare_load', forcing, stat, errmsg)
       if (stat == 0) call writer%attr_real('/statistics', 'poincare_frequency', omega, stat, errmsg)
+      if (stat == 0) call writer%attr_real('/statistics', 'poincare_frequency_hz', omega/(2*pi), stat, errmsg)
       if (stat == 0) call writer%attr_real('/statistics', 'poincare_phase', phase, stat, errmsg)
       if (stat == 0) call writer%attr_int64('/statistics/poincare', 'samples', 0_int64, stat, errmsg)
       if (stat == 0) call writer%attr_real('/statistics/spectrum', 'bin_width', 0.0_dp, stat, errmsg)
+      if (stat == 0) call writer%attr_real('/statistics/spectrum', 'bin_width_rad_s', 0.0_dp, stat, errmsg)
       self%created = stat == 0
    end subroutine create
 
@@ -148,6 +150,8 @@ contains
       if (stat == 0) call writer%rewrite_attr('/statistics', 'batch_steps', outcome%block_steps, stat, errmsg)
       if (stat == 0) call writer%rewrite_attr('/statistics/poincare', 'samples', outcome%poincare_total, stat, errmsg)
       if (stat == 0) call writer%rewrite_attr('/statistics/spectrum', 'bin_width', outcome%bin_width, stat, errmsg)
+      if (stat == 0) call writer%rewrite_attr('/statistics/spectrum', 'bin_width_rad_s', 2*pi*outcome%bin_width, stat, &
+                                              errmsg)
       do k = 1, size(self%layout%entries)
          call self%values(k)%close()
          call self%errors(k)%close()

@@ -14,14 +14,15 @@
 !! /sweep/transient, window, wall_seconds (points, s); /sweep/statistics/<group>/<name>
 !! and <name>_error: (points) for the groups beam and energy, (points, n) for points,
 !! contacts, obstacles and spectrum; /sweep/statistics/points/x, contacts/x,
-!! lower_obstacle, upper_obstacle; /sweep/statistics/spectrum/bin_width (points);
+!! lower_obstacle, upper_obstacle; /sweep/statistics/spectrum/bin_width (points, Hz) and
+!! bin_width_rad_s (points, rad/s);
 !! /sweep/poincare/point, parameter, parameter2, direction, time (samples) and
 !! displacement, velocity (samples, observation points): the latest Poincare samples of
 !! each point (at most `kept_samples`). Attributes of /sweep: mode, points, lines, tasks,
 !! the windows as given, steady_tolerance, keep_runs, threads, ranks, messages (one line
 !! per point with a message).
 module vibrobeam_sweep_file
-   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_status, only: outcome_interrupted, outcome_name, stat_failure
    use vibrobeam_text, only: integer_text
    use vibrobeam_scene, only: scene_type
@@ -57,9 +58,10 @@ module vibrobeam_sweep_file
    !! of the layout's entries), written a block of points at a time.
    integer, parameter :: t_parameter = 1, t_parameter2 = 2, t_direction = 3, t_line = 4, t_task = 5, &
                          t_status = 6, t_start_point = 7, t_settled = 8, t_batches = 9, t_batch_steps = 10, &
-                         t_poincare_samples = 11, t_transient = 12, t_window = 13, t_wall = 14, t_bin_width = 15
+                         t_poincare_samples = 11, t_transient = 12, t_window = 13, t_wall = 14, t_bin_width = 15, &
+                         t_bin_width_rad_s = 16
    type :: point_tables
-      type(h5_table) :: per_point(15)
+      type(h5_table) :: per_point(16)
       type(h5_table), allocatable :: values(:), errors(:)
       logical :: second_axis = .false.
    end type point_tables
@@ -204,8 +206,8 @@ contains
       end subroutine integer_table
    end subroutine create_point_tables
 
-   !> The datasets of the statistics of every point, empty: the spectrum's bin width and
-   !! each entry of `layout` (value and, where it has one, standard error).
+   !> The datasets of the statistics of every point, empty: the spectrum's bin width (in Hz
+   !! and in rad/s) and each entry of `layout` (value and, where it has one, standard error).
    subroutine create_statistics_tables(h5, layout, points, tables, stat, errmsg)
       type(h5_writer), intent(inout) :: h5
       type(statistics_layout), intent(in) :: layout
@@ -218,6 +220,8 @@ contains
       rows = points
       call tables%per_point(t_bin_width)%create(h5, '/sweep/statistics/spectrum/bin_width', 1, rows, stat, errmsg, &
                                                 unit='Hz', vector=.true.)
+      if (stat == 0) call tables%per_point(t_bin_width_rad_s)%create(h5, '/sweep/statistics/spectrum/bin_width_rad_s', &
+                                                                     1, rows, stat, errmsg, unit='rad/s', vector=.true.)
       if (stat /= 0) return
       allocate (tables%values(size(layout%entries)), tables%errors(size(layout%entries)))
       do e = 1, size(layout%entries)
@@ -360,6 +364,7 @@ contains
       call put(t_window, record(r_measure_steps, :)*record(r_dt, :))
       call put(t_wall, record(r_wall, :))
       call put(t_bin_width, record(r_bin_width, :))
+      call put(t_bin_width_rad_s, 2*pi*record(r_bin_width, :))
       do e = 1, size(layout%entries)
          if (stat /= 0) return
          first_value = record_head + layout%entries(e)%offset + 1

@@ -1,0 +1,132 @@
+!> The damped bundled scenes damp their first two modes as their comment says (issue 24
+!! item 7). Each input given that has Rayleigh damping C = a M + b K (&beam rayleigh_mass a,
+!! rayleigh_stiffness b) must state its intended ratio in a comment line
+!!    ! Damping: Z % in modes 1 and 2, ...
+!! and its damping ratios zeta_n = a/(2 omega_n) + b omega_n/2 (docs/theory.md section 1,
+!! "Damping") of modes 1 and 2 must both be Z %, with omega_n taken
+!!  - from the continuum closed form of the beam (docs/theory.md section 7), independent of
+!!    the solver, and
+!!  - from the natural modes of the input's own mesh (what its run damps: C is diagonal in
+!!    the discrete modes).
+!! Mass damping alone (b = 0) leaves mode 2 at omega_1/omega_2 = 0.16 times mode 1's ratio
+!! and fails (ctest input.bundled_damping_mass_only runs this check on such an input). An
+!! undamped input that states a ratio fails too.
+!!    usage: check_bundled_damping INPUT.nml...
+!!
+!! Tolerance on zeta_n/Z - 1, 1e-4: the inputs write a and b to 5 significant digits, each
+!! within 5e-5 relative of the fitted value (scripts/rayleigh_damping.py), and zeta_n is a
+!! sum of two positive terms, one in a and one in b, so it is within 5e-5 too; a mesh
+!! frequency differs from the closed form by the Hermite discretization error
+!! (beta_n h)^4/1440 relative (verification.modes_convergence), at most 5.1e-6 for mode 2
+!! of the coarsest bundled mesh (N = 16: (4.694/16)^4/1440), which moves zeta_n by at most
+!! as much (|d zeta/d omega| omega <= zeta); round-off is below 1e-14. 5.6e-5 in all.
+program check_bundled_damping
+   use vibrobeam_kinds, only: dp
+   use vibrobeam_text, only: real_text
+   use vibrobeam_scene, only: scene_type, validate_scene
+   use vibrobeam_scene_read, only: read_scene
+   use vibrobeam_sweep_settings, only: sweep_settings
+   use vibrobeam_model, only: beam_model, build_model
+   use vibrobeam_modes, only: compute_modes
+   use vibrobeam_test_support, only: test_counter
+   implicit none
+   real(dp), parameter :: tolerance = 1e-4_dp
+   type(test_counter) :: t
+   character(len=4096) :: file
+   integer :: k, damped
+   damped = 0
+   do k = 1, command_argument_count()
+      call get_command_argument(k, file)
+      call check_input(trim(file))
+   end do
+   call t%check_true('damped inputs found', damped >= 1)
+   call t%finish('check_bundled_damping')
+
+contains
+
+   subroutine check_input(path)
+      character(len=*), intent(in) :: path
+      type(scene_type) :: scene
+      type(sweep_settings) :: sweep
+      type(beam_model) :: model
+      character(len=:), allocatable :: warnings
+      character(len=512) :: errmsg
+      real(dp), allocatable :: omega(:), shapes(:, :), vectors(:, :)
+      real(dp) :: intended, a, b, k2
+      logical :: stated
+      integer :: stat, n
+      warnings = ''
+      call read_scene(path, scene, stat, errmsg, warnings, sweep)   ! a sweep's scene is its base scene
+      if (stat == 0) call validate_scene(scene, stat, errmsg)
+      call t%check_true(path//' is valid', stat == 0, errmsg)
+      if (stat /= 0) return
+      call stated_ratio(path, stated, intended)
+      a = scene%beam%rayleigh_mass
+      b = scene%beam%rayleigh_stiffness
+      if (a <= 0 .and. b <= 0) then
+         call t%check_true(path//' is undamped and states no damping ratio', .not. stated)
+         return
+      end if
+      damped = damped + 1
+      call t%check_true(path//" states its damping ratio ('! Damping: Z % in modes 1 and 2')", stated)
+      if (.not. stated) return
+      write (*, '(a)') path//': a = '//real_text(a)//' 1/s, b = '//real_text(b)//' s, intended '// &
+         real_text(100*intended)//' % in modes 1 and 2'
+      if (scene%beam%boundary%has_closed_form()) then
+         k2 = scene%beam%ei()/scene%beam%rho_s()
+         do n = 1, 2
+            call check_mode(path, 'closed-form', n, scene%beam%boundary%natural_frequency(n, scene%beam%length, k2), &
+                            a, b, intended)
+         end do
+      end if
+      call build_model(scene%mesh%basis, scene%mesh%elements, scene%beam%length, scene%beam%rho_s(), scene%beam%ei(), &
+                       model, stat, errmsg, boundary=scene%beam%boundary)
+      if (stat == 0) call compute_modes(model, 2, omega, shapes, vectors, stat, errmsg)
+      call t%check_true(path//': modes 1 and 2 of its mesh', stat == 0, errmsg)
+      if (stat /= 0) return
+      do n = 1, 2
+         call check_mode(path, 'mesh', n, omega(n), a, b, intended)
+      end do
+   end subroutine check_input
+
+   !> Checks the damping ratio of mode n at the frequency omega (rad/s) against the intended one.
+   subroutine check_mode(path, source, n, omega, a, b, intended)
+      character(len=*), intent(in) :: path, source
+      integer, intent(in) :: n
+      real(dp), intent(in) :: omega, a, b, intended
+      real(dp) :: zeta
+      character(len=1) :: mode
+      zeta = a/(2*omega) + b*omega/2
+      write (mode, '(i1)') n
+      write (*, '(a)') '  mode '//mode//', '//source//' omega = '//real_text(omega)//' rad/s: damping ratio '// &
+         real_text(100*zeta)//' %'
+      call t%check_close(path//': damping ratio of mode '//mode//' ('//source//' frequency)', zeta, intended, tolerance)
+   end subroutine check_mode
+
+   !> The ratio Z/100 of the input's comment line '! Damping: Z % in modes 1 and 2'.
+   subroutine stated_ratio(path, stated, ratio)
+      character(len=*), intent(in) :: path
+      logical, intent(out) :: stated
+      real(dp), intent(out) :: ratio
+      character(len=*), parameter :: prefix = '! Damping:', suffix = '% in modes 1 and 2'
+      character(len=1000) :: line
+      integer :: unit, iostat, at
+      stated = .false.
+      ratio = 0
+      open (newunit=unit, file=path, status='old', action='read', iostat=iostat)
+      if (iostat /= 0) return
+      do
+         read (unit, '(a)', iostat=iostat) line
+         if (iostat /= 0) exit
+         line = adjustl(line)
+         if (index(line, prefix) /= 1) cycle
+         at = index(line, suffix)
+         if (at == 0) cycle
+         read (line(len(prefix) + 1:at - 1), *, iostat=iostat) ratio
+         stated = iostat == 0 .and. ratio > 0
+         ratio = ratio/100
+         exit
+      end do
+      close (unit)
+   end subroutine stated_ratio
+end program check_bundled_damping

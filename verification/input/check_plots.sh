@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# The plotting scripts on small results (docs/output.md and docs/sweeps.md, "Plots";
+# issue 24 items 1 and 4):
+#  - a 2-D sweep map (3 frequencies x 2 gaps): plot_sweep.sh --normalise draws its three
+#    plots without a gnuplot warning; the axis is divided by omega_1 = (beta_1 L)^2
+#    sqrt(EI/(rho S))/L^2, recomputed here from the input (beta_1 L quoted to 20 digits,
+#    scripts/cantilever_roots.py), to 1e-9 relative; the response plot's key names each
+#    line of the second parameter with its value ('obstacles.level_from(1) = 0.0002 m',
+#    drawn as text); --normalise 27.6Hz divides by 2 pi 27.6 rad/s;
+#  - a forced single run with an observation point: plot_results.sh --point 1 draws the
+#    spectrum, the phase portrait and the Poincare section at that point without a
+#    warning, the spectrum on log axes over the band of the response; --point 2 (no such
+#    point) is refused.
+# usage: check_plots.sh VIBROBEAM SCRIPTS_DIRECTORY
+set -uo pipefail
+vibrobeam=$1; scripts=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+failed=0
+fail() { echo "FAIL $*"; failed=1; }
+quiet() { ! grep -i -q -E "warning|error" "$1" || { echo "  $1:"; cat "$1"; return 1; }; }
+# spectrum_axes STEM POINT [BAND_BELOW]: the spectrum plot at observation point POINT is on
+# logarithmic axes over the band of the response: from the first bin above 0 Hz to 1.5
+# times the highest frequency whose amplitude reaches 1e-3 of the largest (at most the
+# Nyquist frequency), recomputed here from STEM_spectrum.dat (column 3 + POINT); gnuplot's
+# axis limits are those values to its own printing (1e-9 relative). With BAND_BELOW, that
+# upper limit must also be below BAND_BELOW times the Nyquist frequency.
+spectrum_axes() {
+  local axes
+  axes=$(gnuplot -e "stem='$1'; point=$2" "$scripts/plot_dynamics_spectrum.gp" \
+           -e "show logscale; print GPVAL_X_MIN, GPVAL_X_MAX" 2>&1 | tr -s ' \t\n' ' ')
+  awk -v axes="$axes" -v c=$((3 + $2)) -v below="${3:-1}" '
+    !/^#/ && NF && $1 > 0 { n++; f[n] = $1; a[n] = $c; if (n == 1) low = $1; if ($c > peak) peak = $c }
+    END { for (i = 1; i <= n; i++) if (a[i] >= 1e-3 * peak) high = f[i]
+          top = 1.5 * high; if (top > f[n]) top = f[n]
+          is_log = (axes ~ /logscaling on x y /)   # "logscaling on x y", then the two limits
+          m = split(axes, g, " "); x_min = g[m - 1]; x_max = g[m]
+          printf "spectrum axis: %s to %s Hz (expected %.9g to %.9g; Nyquist %.9g), logarithmic x and y: %d\n", \
+                 x_min, x_max, low, top, f[n], is_log
+          exit !(x_min - low <= 1e-9 * low && low - x_min <= 1e-9 * low && x_max - top <= 1e-9 * top && \
+                 top - x_max <= 1e-9 * top && is_log && top <= below * f[n]) }' "$1_spectrum.dat" ||
+    fail "$1: the spectrum's axes are not logarithmic over the response's band (gnuplot: $axes)"
+}
+beam="&beam length = 0.5, youngs_modulus = 210e9, density = 7850, area = 2e-4, inertia = 1.6666666666666667e-9, rayleigh_mass = 3 /"
+cat > map.nml <<NML
+$beam
+&mesh elements = 8 /
+&obstacles count = 1, side(1) = 'above', x_from(1) = 0.5, level_from(1) = 2e-4 /
+&impact restitution = 0.7 /
+&time dt = 4e-5 /
+&load point_force = 2, point_frequency = 200 /
+&output file = 'map.h5' /
+&sweep parameter = 'load.point_frequency', from = 150, to = 250, count = 3, mode = 'up',
+       parameter2 = 'obstacles.level_from(1)', values2 = 2e-4, 4e-4, settle_periods = 5, measure_periods = 5 /
+NML
+"$vibrobeam" map.nml > map.out 2> map.err || { fail "the map sweep"; cat map.err; }
+VIBROBEAM=$vibrobeam bash "$scripts/plot_sweep.sh" map.h5 --normalise > plot.out 2> plot.err || fail "plot_sweep.sh --normalise"
+quiet plot.err || fail "plot_sweep.sh printed a warning"
+for png in map_response.png map_bifurcation.png map_map.png; do
+  [ "$(stat -c %s "$png" 2> /dev/null || echo 0)" -gt 10000 ] || fail "$png not drawn"
+done
+scale=$(sed -n 's/^plot_sweep: the parameter axis over omega_1 = \([0-9.eE+-]*\) rad\/s$/\1/p' plot.out)
+awk -v s="${scale:-0}" 'BEGIN { w = 1.8751040687119611664^2 * sqrt(210e9 * 1.6666666666666667e-9 / (7850 * 2e-4)) / 0.5^2;
+  d = (s - w) / w; if (d < 0) d = -d; printf "omega_1: plot %.12g, closed form %.12g, relative difference %.1e\n", s, w, d;
+  exit !(d <= 1e-9) }' || fail "the normalised axis is not over omega_1 (plot.out: $(cat plot.out))"
+VIBROBEAM=$vibrobeam bash "$scripts/plot_sweep.sh" map.h5 --normalise 27.6Hz > plot2.out 2>&1 || fail "--normalise 27.6Hz"
+grep -q -E "over 27.6Hz = 173.41591[0-9]* rad/s" plot2.out || fail "--normalise 27.6Hz is not 2 pi 27.6 rad/s: $(cat plot2.out)"
+gnuplot -e "stem='map'; ylabel2='obstacles.level_from(1) (m)'; text_terminal=1" "$scripts/plot_sweep_response.gp" \
+  2> text.err || fail "the response plot as text"
+for value in 0.0002 0.0004; do
+  grep -q -F "obstacles.level_from(1) = $value m" map_response.txt || fail "no key for the line at $value m"
+done
+
+cat > run.nml <<NML
+$beam
+&mesh elements = 8 /
+&obstacles count = 2, side(1) = 'below', x_from(1) = 0.5, level_from(1) = -5e-4,
+                      side(2) = 'above', x_from(2) = 0.5, level_from(2) = 5e-4 /
+&impact restitution = 0.7 /
+&time t_end = 0.6, dt = 4e-5 /
+&load point_force = 20, point_frequency = 200 /
+&output file = 'run.h5', every = 5, points = 0.25, measure_from = 0.1 /
+NML
+"$vibrobeam" run.nml > run.out 2> run.err || { fail "the single run"; cat run.err; }
+bash "$scripts/plot_results.sh" run.h5 --point 1 > plots.out 2> plots.err || fail "plot_results.sh --point 1"
+quiet plots.err || fail "plot_results.sh printed a warning"
+for png in run_spectrum.png run_phase.png run_poincare.png; do
+  [ "$(stat -c %s "$png" 2> /dev/null || echo 0)" -gt 10000 ] || fail "$png not drawn"
+done
+spectrum_axes run 1
+if bash "$scripts/plot_results.sh" run.h5 --point 2 > bad.out 2>&1; then fail "--point 2 accepted"; fi
+grep -q "has no &output points(2)" bad.out || fail "--point 2: $(cat bad.out)"
+# without stops the response is a few modes: the spectrum's axis ends far below the
+# Nyquist frequency (12.5 kHz at every = 1) that it used to reach
+cat > free.nml <<NML
+$beam
+&mesh elements = 8 /
+&time t_end = 0.6, dt = 4e-5 /
+&load point_force = 20, point_frequency = 200 /
+&output file = 'free.h5', every = 1, points = 0.25 /
+NML
+"$vibrobeam" free.nml > free.out 2> free.err || { fail "the run without stops"; cat free.err; }
+spectrum_axes free 1 0.1
+
+[ $failed -eq 0 ] && echo "check_plots: every plot drawn and checked"
+exit $failed
