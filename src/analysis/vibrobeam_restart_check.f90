@@ -1,7 +1,7 @@
 !> Whether a scene may continue the checkpoint of an earlier result (docs/output.md,
 !! "Checkpoint and restart"; `&initial from_file`, and a sweep that starts from a file):
 !! the scene must match the file in its model (basis, elements, reduction, length, beam
-!! data), its time scheme (scheme, dt, theta, gamma) and its contact points (count and x);
+!! data, end supports and springs), its time scheme (scheme, dt, theta, gamma) and its contact points (count and x);
 !! a single run's continuation also in its compliant stops. Loads, restitution, rigid
 !! obstacle levels, a stop's damping and outputs may change. Reading the checkpoint itself
 !! is `vibrobeam_checkpoint`'s.
@@ -76,6 +76,8 @@ contains
             call compare_entry(file, list(i), prefix, why, stat, errmsg)
             if (stat /= 0) exit compare
          end do
+         call compare_supports()
+         if (stat /= 0) exit compare
          call file%read_reals('/contact/x', x, stat, errmsg)
          if (stat /= 0) then
             errmsg = prefix//trim(errmsg)
@@ -104,6 +106,50 @@ contains
       end block compare
       call file%close()
    contains
+      !> The end supports and springs of &beam: listed only when given (their defaults,
+      !! clamped-free without springs, otherwise), compared as resolved.
+      subroutine compare_supports()
+         character(len=*), parameter :: ends(2) = [character(len=9) :: 'left_end', 'right_end']
+         character(len=*), parameter :: defaults(2) = [character(len=7) :: 'clamped', 'free']
+         character(len=*), parameter :: springs(4) = [character(len=23) :: 'left_spring', 'left_rotational_spring', &
+                                                      'right_spring', 'right_rotational_spring']
+         character(len=*), parameter :: supports_why = '; the end supports and springs make the model''s unknowns '// &
+                                                       'and stiffness: they must match'
+         character(len=:), allocatable :: in_file, in_scene
+         real(dp) :: file_value, scene_value
+         integer :: k, e
+         do k = 1, 2
+            in_file = trim(defaults(k))
+            if (file%has_attr('/', 'beam.'//trim(ends(k)))) call file%attr_string('/', 'beam.'//trim(ends(k)), in_file, &
+                                                                                   stat, errmsg)
+            if (stat /= 0) return
+            in_scene = trim(defaults(k))
+            do e = 1, size(list)
+               if (list(e)%name == 'beam.'//trim(ends(k))) in_scene = trim(list(e)%string_value)
+            end do
+            if (in_file /= in_scene) then
+               call mismatch(prefix, 'beam.'//trim(ends(k)), ''''//in_file//'''', ''''//in_scene//'''', supports_why, &
+                             stat, errmsg)
+               return
+            end if
+         end do
+         do k = 1, 4
+            file_value = 0
+            if (file%has_attr('/', 'beam.'//trim(springs(k)))) call file%attr_real('/', 'beam.'//trim(springs(k)), &
+                                                                                   file_value, stat, errmsg)
+            if (stat /= 0) return
+            scene_value = 0
+            do e = 1, size(list)
+               if (list(e)%name == 'beam.'//trim(springs(k))) scene_value = list(e)%real_value
+            end do
+            if (.not. same_bits(file_value, scene_value)) then
+               call mismatch(prefix, 'beam.'//trim(springs(k)), real_text(file_value), real_text(scene_value), &
+                             supports_why, stat, errmsg)
+               return
+            end if
+         end do
+      end subroutine compare_supports
+
       !> The compliant stops of the file against the scene's (see above).
       subroutine compare_stops()
          character(len=*), parameter :: compared(7) = [character(len=10) :: 'side', 'x_from', 'x_to', &

@@ -5,13 +5,13 @@ module vibrobeam_beam_settings
    use vibrobeam_kinds, only: dp
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, unset, is_unset, &
       unset_integer, keyword_length
-   use vibrobeam_boundary, only: boundary_conditions
+   use vibrobeam_boundary, only: boundary_conditions, end_names, end_code, end_clamped, end_free
    implicit none
    private
    public :: beam_settings, mesh_settings, visit_beam, visit_mesh
 
    !> &beam: the beam's length, stiffness and mass (by E, rho, S, I, or by k2 = EI/(rho S)
-   !! alone, per unit mass), and its Rayleigh damping.
+   !! alone, per unit mass), its end supports and end springs, and its Rayleigh damping.
    type :: beam_settings
       real(dp) :: length = 1                  !! L (m)
       real(dp) :: k2 = 1                      !! EI/(rho S) (m^4/s^2)
@@ -21,11 +21,19 @@ module vibrobeam_beam_settings
       real(dp) :: inertia = unset             !! I (m^4)
       real(dp) :: rayleigh_mass = 0           !! a in C = a M + b K (1/s)
       real(dp) :: rayleigh_stiffness = 0      !! b in C = a M + b K (s)
-      type(boundary_conditions) :: boundary   !! the supports at the ends (clamped-free)
+      !> end supports as given ('' not given: clamped at x = 0, free at x = L; `supports`
+      !! resolves them)
+      character(len=keyword_length) :: left_end = '', right_end = ''
+      !> end springs, translational (N/m) and rotational (N m/rad), per unit rho S when the
+      !! beam is given by k2 (like every force); unset: none (listed only when given, so
+      !! that the results of a scene without them keep their attributes)
+      real(dp) :: left_spring = unset, left_rotational_spring = unset
+      real(dp) :: right_spring = unset, right_rotational_spring = unset
    contains
       procedure :: physical                   !! given by E, rho, S, I?
       procedure :: rho_s                      !! mass per unit length (kg/m)
       procedure :: ei                         !! bending stiffness (N m^2)
+      procedure :: supports                   !! the end supports and springs, resolved
    end type beam_settings
 
    !> &mesh: the finite elements, their basis, and the reduced model of dynamics.
@@ -60,6 +68,20 @@ contains
                                      'a in the Rayleigh damping C = a M + b K'), beam%rayleigh_mass)
       call visitor%variable(real_row('beam', 'rayleigh_stiffness', 's', 0.0_dp, 1e3_dp, &
                                      'b in the Rayleigh damping C = a M + b K'), beam%rayleigh_stiffness)
+      call visitor%variable(keyword_row('beam', 'left_end', end_names, keyword_length, &
+                                        'support at x = 0 (default clamped)', optional=.true.), beam%left_end)
+      call visitor%variable(keyword_row('beam', 'right_end', end_names, keyword_length, &
+                                        'support at x = L (default free)', optional=.true.), beam%right_end)
+      call visitor%variable(real_row('beam', 'left_spring', 'N/m', 0.0_dp, 1e30_dp, &
+                                     'translational spring at x = 0 (default none)', optional=.true.), beam%left_spring)
+      call visitor%variable(real_row('beam', 'left_rotational_spring', 'N m/rad', 0.0_dp, 1e30_dp, &
+                                     'rotational spring at x = 0 (default none)', optional=.true.), &
+                            beam%left_rotational_spring)
+      call visitor%variable(real_row('beam', 'right_spring', 'N/m', 0.0_dp, 1e30_dp, &
+                                     'translational spring at x = L (default none)', optional=.true.), beam%right_spring)
+      call visitor%variable(real_row('beam', 'right_rotational_spring', 'N m/rad', 0.0_dp, 1e30_dp, &
+                                     'rotational spring at x = L (default none)', optional=.true.), &
+                            beam%right_rotational_spring)
    end subroutine visit_beam
 
    !> Every variable of &mesh, once (docs/input.md, "&mesh").
@@ -100,9 +122,36 @@ contains
       if (self%physical()) ei = self%youngs_modulus*self%inertia
    end function ei
 
-   !> Unknowns J of the mesh: 2N (Hermite) or N + 1 (B-splines).
-   pure integer function unknowns(self)
+   !> The end supports and end springs of the beam (docs/input.md, "&beam"): left_end and
+   !! right_end, clamped and free when not given; a spring not given is none.
+   pure function supports(self) result(boundary)
+      class(beam_settings), intent(in) :: self
+      type(boundary_conditions) :: boundary
+      boundary%left = end_code(self%left_end)
+      if (boundary%left == 0) boundary%left = end_clamped
+      boundary%right = end_code(self%right_end)
+      if (boundary%right == 0) boundary%right = end_free
+      boundary%left_spring = given(self%left_spring)
+      boundary%left_rotational_spring = given(self%left_rotational_spring)
+      boundary%right_spring = given(self%right_spring)
+      boundary%right_rotational_spring = given(self%right_rotational_spring)
+   contains
+      pure real(dp) function given(value)
+         real(dp), intent(in) :: value
+         given = 0
+         if (.not. is_unset(value)) given = value
+      end function given
+   end function supports
+
+   !> Unknowns J of the mesh on the supports `boundary` (clamped-free when absent): its
+   !! degrees of freedom, 2(N + 1) (Hermite) or N + 3 (B-splines), less the conditions the
+   !! supports impose (`boundary%held_count`): 2N or N + 1 for the clamped-free beam.
+   pure integer function unknowns(self, boundary)
       class(mesh_settings), intent(in) :: self
-      unknowns = merge(2*self%elements, self%elements + 1, self%basis == 'hermite')
+      type(boundary_conditions), intent(in), optional :: boundary
+      integer :: held
+      held = 2
+      if (present(boundary)) held = boundary%held_count()
+      unknowns = merge(2*self%elements + 2, self%elements + 3, self%basis == 'hermite') - held
    end function unknowns
 end module vibrobeam_beam_settings

@@ -12,8 +12,10 @@
 !!   level interpolated linearly; one covering no node acts at the node nearest its middle,
 !!   with a warning;
 !! - several obstacles on the same side of a node: the most restrictive one counts;
-!! - the clamped node x = 0 never moves: an obstacle there is only checked (u = 0 must be
-!!   admissible);
+!! - a node whose deflection a support holds (the clamped node x = 0 of a cantilever, a
+!!   pinned end, docs/input.md "&beam") never moves: an obstacle there is only checked
+!!   (u = 0 must be admissible); every other node, the ends included, may become a contact
+!!   point;
 !! - a compliant obstacle (stiffness > 0, docs/theory.md section 8) gives each node it
 !!   covers a spring instead of a bound: its stiffness per unit length is lumped at the
 !!   nodes with their tributary lengths inside [x_from, x_to] (h inside, h/2 at an end
@@ -22,6 +24,7 @@
 !!   and side acts beside them (whichever is reached first holds).
 module vibrobeam_obstacles
    use vibrobeam_kinds, only: dp
+   use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, keyword_length
    use vibrobeam_model, only: beam_model, node_row
    use vibrobeam_compliant_law, only: spring_set
@@ -144,8 +147,8 @@ contains
                   level = (1 - xi)*o%level_from + xi*o%level_to
                end if
                if (o%stiffness > 0) then
-                  ! a spring, never a bound; the clamped node never moves and gets none
-                  if (i == 0) cycle
+                  ! a spring, never a bound; a held node never moves and gets none
+                  if (model%deflection_held(i)) cycle
                   covered(i) = .true.
                   j = j + 1
                   spring_node(j) = i
@@ -175,13 +178,27 @@ contains
             end do
          end associate
       end do
-      if (lower(0) > 0 .or. upper(0) < 0) then
-         write (errmsg, '(a,i0,a)') '&obstacles: obstacle ', max(lower_source(0), upper_source(0)), &
-            ' cuts the clamped end x = 0, where u = 0 always; move x_from away from 0 or its level past 0'
-         stat = 1
-         return
-      end if
-      do i = 1, model%elements
+      do i = 0, model%elements
+         if (.not. model%deflection_held(i)) cycle
+         if (lower(i) > 0 .or. upper(i) < 0) then
+            if (i == 0 .and. model%boundary%holds_rotation(1)) then
+               write (errmsg, '(a,i0,a)') '&obstacles: obstacle ', max(lower_source(0), upper_source(0)), &
+                  ' cuts the clamped end x = 0, where u = 0 always; move x_from away from 0 or its level past 0'
+            else
+               errmsg = '&obstacles: obstacle '//integer_text(max(lower_source(i), upper_source(i)))//' (level '// &
+                        real_text(merge(lower(i), upper(i), lower(i) > 0))//' m there) cuts the support at x = '// &
+                        real_text(model%x(i + 1))//' m, where u = 0 always; move it away from the support or its '// &
+                        'level past 0'
+            end if
+            stat = 1
+            return
+         end if
+         ! the support holds u = 0 there: the obstacle has nothing left to act on
+         lower(i) = -no_bound
+         upper(i) = no_bound
+         covered(i) = .false.
+      end do
+      do i = 0, model%elements
          if (lower(i) >= upper(i)) then
             write (errmsg, '(a,i0,a,g0.6,a,i0,a,g0.6,a,g0.6,a)') '&obstacles: the ''below'' obstacle ', &
                lower_source(i), ' (level ', lower(i), ' m) is not under the ''above'' obstacle ', &
@@ -191,13 +208,13 @@ contains
             return
          end if
       end do
-      contacts%count = count(lower(1:) > -no_bound .or. upper(1:) < no_bound .or. covered(1:))
+      contacts%count = count(lower > -no_bound .or. upper < no_bound .or. covered)
       allocate (contacts%node(contacts%count), contacts%x(contacts%count), contacts%lower(contacts%count), &
                 contacts%upper(contacts%count), contacts%dofs(4, contacts%count), &
                 contacts%weights(4, contacts%count), contacts%lower_obstacle(contacts%count), &
                 contacts%upper_obstacle(contacts%count))
       c = 0
-      do i = 1, model%elements
+      do i = 0, model%elements
          if (lower(i) <= -no_bound .and. upper(i) >= no_bound .and. .not. covered(i)) cycle
          c = c + 1
          contacts%node(c) = i

@@ -19,7 +19,9 @@
 !! cancel), M_r = T^T M T (a product with the well-conditioned M), C_r = a M_r + b K_r
 !! (Rayleigh damping projects to Rayleigh damping), F_r = T^T F.
 !!
-!! K^-1 is applied by the double integration of `vibrobeam_flexibility` (accurate at any N),
+!! K^-1 is applied by the double integration of `vibrobeam_flexibility` (accurate at any N;
+!! for other structures than the uniform cantilever the band Cholesky of
+!! `vibrobeam_stiffness_inverse`, which needs a K without rigid-body motion),
 !! and the fixed-interface modes come from the shift-invert Lanczos of `vibrobeam_lanczos`
 !! with the constrained flexibility (I - Psi H) K^-1 as operator: the held displacements
 !! are imposed exactly, without renumbering the band and without the loss of accuracy of a
@@ -36,7 +38,7 @@ module vibrobeam_reduction
    use vibrobeam_model, only: beam_model
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
-   use vibrobeam_flexibility, only: cantilever_flexibility
+   use vibrobeam_stiffness_inverse, only: stiffness_inverse
    use vibrobeam_lanczos, only: lanczos_modes
    use vibrobeam_modes, only: dense_is_cheaper
    use vibrobeam_lapack, only: dpotrf, dpotri, dgeqrf, dormqr, dsygv
@@ -87,7 +89,7 @@ contains
       type(reduced_basis), intent(out) :: basis
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      type(cantilever_flexibility) :: flexibility
+      type(stiffness_inverse) :: flexibility
       real(dp), allocatable :: flexible(:,:), schur(:,:), eigenvalues(:), vectors(:,:)
       integer :: n, m, c, d, available, trial, k
       stat = 0

@@ -27,6 +27,7 @@ module vibrobeam_scene
       path_length
    use vibrobeam_schema_operations, only: schema_table, schema_checker, schema_lister, scene_entry => schema_entry
    use vibrobeam_beam_settings, only: beam_settings, mesh_settings, visit_beam, visit_mesh
+   use vibrobeam_boundary, only: boundary_conditions
    use vibrobeam_obstacles, only: obstacle_type, max_obstacles, visit_obstacles
    use vibrobeam_initial_state, only: initial_settings, visit_initial
    use vibrobeam_loads, only: load_settings, visit_load
@@ -171,6 +172,7 @@ contains
       character(len=*), intent(out) :: errmsg
       type(schema_checker) :: checker
       type(scene_type) :: copy
+      type(boundary_conditions) :: supports
       integer :: i
       character(len=:), allocatable :: item
       stat = 0
@@ -192,6 +194,7 @@ contains
          call fail(trim(checker%errmsg))
          return
       end if
+      supports = copy%beam%supports()
       associate (beam => copy%beam, mesh => copy%mesh, time => copy%time, load => copy%load, &
                  output => copy%output, analysis => copy%analysis)
          ! &beam: the four physical data go together
@@ -201,6 +204,28 @@ contains
             call check_given('area', beam%area)
             call check_given('inertia', beam%inertia)
          end if
+         ! &beam supports: statics solves K U = F, singular with a rigid-body motion
+         if (supports%rigid_motions() > 0) then
+            if (analysis%kind == 'static') call fail(rigid_text()//': &analysis kind = ''static'' needs supports or '// &
+                                                     'end springs that hold it (statics of a beam held by its obstacles '// &
+                                                     'alone is not available); give a support or a spring, or use kind = '// &
+                                                     '''dynamics'' or ''modes''')
+            if (analysis%kind == 'dynamics' .and. copy%initial%displacement == 'static') &
+               call fail(rigid_text()//': &initial displacement = ''static'' needs supports or end springs that hold it; '// &
+                         'give a support or a spring, or another initial displacement')
+            if (analysis%kind == 'dynamics' .and. mesh%reduction /= 'none') &
+               call fail(rigid_text()//': &mesh reduction = '''//trim(mesh%reduction)//''' needs the stiffness K of a '// &
+                         'beam without rigid-body motion (its constraint modes solve with K); use reduction = ''none''')
+         end if
+         if (.not. supports%is_clamped_free() .and. (analysis%kind == 'static' .or. &
+             (analysis%kind == 'dynamics' .and. copy%initial%displacement == 'static'))) then
+            do i = 1, size(copy%obstacles)
+               if (copy%obstacles(i)%stiffness > 0 .and. copy%obstacles(i)%exponent /= 1) &
+                  call fail('&obstacles exponent('//integer_text(i)//') = '//real_text(copy%obstacles(i)%exponent)// &
+                            ': the static equilibrium of a '//supports%name()//' beam takes linear compliant '// &
+                            'stops only (exponent = 1); the clamped-free beam takes any exponent')
+            end do
+         end if
          ! &mesh
          if (mesh%reduction /= 'none' .and. analysis%kind == 'dynamics' .and. len_trim(copy%initial%from_file) > 0) &
             call fail('&mesh reduction = '''//trim(mesh%reduction)//''' cannot continue a checkpoint '// &
@@ -209,7 +234,8 @@ contains
             call fail('&mesh reduction_modes = '//integer_text(mesh%reduction_modes)//' and reduction_frequency = '// &
                       real_text(mesh%reduction_frequency)//' rad/s are both given: give one of them')
          ! &analysis: `modes` is bounded by the mesh only when modes are computed
-         if (analysis%kind == 'modes') call integer_in_range('analysis', 'modes', analysis%modes, 1, mesh%unknowns(), &
+         if (analysis%kind == 'modes') call integer_in_range('analysis', 'modes', analysis%modes, 1, &
+                                                             mesh%unknowns(beam%supports()), &
                                                              ', the unknowns J of the mesh')
          ! &obstacles
          do i = 1, size(copy%obstacles)
@@ -257,6 +283,18 @@ contains
       end associate
 
    contains
+
+      !> The end supports and how many rigid-body motions they leave, for a message.
+      function rigid_text() result(text)
+         character(len=:), allocatable :: text
+         type(boundary_conditions) :: b
+         b = supports
+         text = '&beam left_end = '''//b%end_name(1)//''' and right_end = '''//b%end_name(2)//''''
+         if (b%has_springs()) text = text//' with their springs'
+         text = text//' leave the beam '//integer_text(b%rigid_motions())//' rigid-body motion'
+         if (b%rigid_motions() > 1) text = text//'s'
+         text = text//' (u = a + b x, free of strain)'
+      end function rigid_text
 
       !> A large count to 3 digits: '1.00e30'.
       function rounded(value) result(text)

@@ -82,7 +82,7 @@ contains
       end if
       ! the default number of modes applies only to kind = 'modes', and never beyond J
       if (scene%analysis%kind == 'modes' .and. .not. reader%scanned%is_given('analysis', 'modes') .and. &
-          scene%mesh%elements >= 1) scene%analysis%modes = min(default_modes, scene%mesh%unknowns())
+          scene%mesh%elements >= 1) scene%analysis%modes = min(default_modes, scene%mesh%unknowns(scene%beam%supports()))
       if (present(warnings)) call ignored_values(reader%scanned, scene, swept_inputs(), warnings)
 
    contains
