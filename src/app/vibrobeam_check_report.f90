@@ -25,7 +25,7 @@
 module vibrobeam_check_report
    use vibrobeam_kinds, only: dp, pi
    use vibrobeam_text, only: real_text, integer_text
-   use vibrobeam_scene, only: scene_type, is_unset
+   use vibrobeam_scene, only: scene_type, is_unset, held_conditions
    use vibrobeam_scene_structure, only: scene_frequencies
    use vibrobeam_model, only: beam_model
    use vibrobeam_boundary, only: boundary_conditions
@@ -108,13 +108,22 @@ contains
       real(dp) :: time_scale, beam_stiffness, mass
       logical :: with_advice
       type(boundary_conditions) :: supports
+      character(len=:), allocatable :: what
       supports = scene%beam%supports()
+      what = 'the '//supports%name()//' beam'
+      if (allocated(scene%supports)) then
+         if (size(scene%supports) > 0) what = what//' on '//integer_text(size(scene%supports))//' intermediate support'// &
+                                              trim(merge('s', ' ', size(scene%supports) > 1))
+      end if
+      if (allocated(scene%masses)) then
+         if (size(scene%masses) > 0) what = what//' with '//integer_text(size(scene%masses))//' point mass'// &
+                                            trim(merge('es', '  ', size(scene%masses) > 1))
+      end if
       if (report%closed_form) then
-         text = 'natural frequencies of the '//supports%name()//' beam (continuum closed form; the '// &
-                'obstacles are ignored):'//new_line('a')
+         text = 'natural frequencies of '//what//' (continuum closed form; the obstacles are ignored):'//new_line('a')
       else
-         text = 'natural frequencies of the '//supports%name()//' beam (computed with '// &
-                '64 Hermite elements; the obstacles are ignored):'//new_line('a')
+         text = 'natural frequencies of '//what//' (computed with 64 Hermite elements; the obstacles are ignored):'// &
+                new_line('a')
       end if
       do n = 1, listed_modes
          if (.not. report%omega(n) > 0) then
@@ -299,7 +308,7 @@ contains
       type(boundary_conditions) :: supports
       supports = scene%beam%supports()
       omega_limit = 2*pi/(steps_per_period_wanted*scene%time%dt)
-      unknowns = scene%mesh%unknowns(scene%beam%supports())
+      unknowns = scene%mesh%unknowns(held_conditions(scene))
       resolved_modes = 0
       do n = 1, min(listed_modes, unknowns)
          if (report%omega(n) > omega_limit) return

@@ -143,15 +143,16 @@ contains
       end function given
    end function supports
 
-   !> Unknowns J of the mesh on the supports `boundary` (clamped-free when absent): its
-   !! degrees of freedom, 2(N + 1) (Hermite) or N + 3 (B-splines), less the conditions the
-   !! supports impose (`boundary%held_count`): 2N or N + 1 for the clamped-free beam.
-   pure integer function unknowns(self, boundary)
+   !> Unknowns J of the mesh whose supports impose `held` conditions (a held deflection or
+   !! rotation each; `beam_structure%held_count`; 2, the clamp, when absent): its degrees
+   !! of freedom, 2(N + 1) (Hermite) or N + 3 (B-splines), less these: 2N or N + 1 for the
+   !! clamped-free beam.
+   pure integer function unknowns(self, held)
       class(mesh_settings), intent(in) :: self
-      type(boundary_conditions), intent(in), optional :: boundary
-      integer :: held
-      held = 2
-      if (present(boundary)) held = boundary%held_count()
-      unknowns = merge(2*self%elements + 2, self%elements + 3, self%basis == 'hermite') - held
+      integer, intent(in), optional :: held
+      integer :: conditions
+      conditions = 2
+      if (present(held)) conditions = held
+      unknowns = merge(2*self%elements + 2, self%elements + 3, self%basis == 'hermite') - conditions
    end function unknowns
 end module vibrobeam_beam_settings

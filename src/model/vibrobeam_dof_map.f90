@@ -9,9 +9,10 @@
 !! sliding end (u' = 0, u free) is c_2 = c_1, a change of basis: the two coefficients
 !! become one unknown whose function is B_1 + B_2. At an interior node x_i three
 !! functions are nonzero, B_{i+1}, B_{i+2}, B_{i+3} with values w_1, w_2, w_3 (1/6, 2/3, 1/6
-!! away from the ends) and slopes d_1, d_2, d_3: a pinned support (u(x_i) = 0) sets
-!! c_{i+2} = -(w_1 c_{i+1} + w_3 c_{i+3})/w_2, and a clamped one (u = u' = 0) leaves the
-!! one-dimensional null space n of [w; d]: c_{i+k} = n_k/n_r c_{i+r}, r the largest |n_k|.
+!! away from the ends): a pinned support (u(x_i) = 0) sets
+!! c_{i+2} = -(w_1 c_{i+1} + w_3 c_{i+3})/w_2. A clamped interior support is refused: its
+!! reaction moment bends u'' at the node, which a C^2 spline cannot (`build_model` refuses
+!! every point moment inside a B-spline beam; Hermite elements are only C^1 and take it).
 !! Each such coefficient is a combination of at most two unknowns ("terms"); the elements
 !! keep at most four unknowns and the band its three sub-diagonals as long as no
 !! coefficient takes part in two constraints: B-spline supports must be at least three
@@ -42,18 +43,19 @@ contains
    !> The map of `structure`'s supports on a mesh of `elements` elements of the basis
    !! (`hermite`, else B-splines on `knots`). stat = 1 with a message when two B-spline
    !! supports share a coefficient (module documentation).
-   subroutine build_dof_map(hermite, elements, knots, structure, map, stat, errmsg)
+   subroutine build_dof_map(hermite, elements, knots, structure, support_node, map, stat, errmsg)
       logical, intent(in) :: hermite
       integer, intent(in) :: elements
       real(dp), intent(in) :: knots(:)            !! B-splines: the N + 7 knots (else unused)
       type(beam_structure), intent(in) :: structure
+      integer, intent(in) :: support_node(:)      !! the node (1..N-1) of each intermediate support
       type(dof_map), intent(out) :: map
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer, allocatable :: state(:), target_dof(:,:)
       logical, allocatable :: touched(:)
-      real(dp) :: values(4), slopes(4), w(3), d(3), nullspace(3)
-      integer :: n, k, s, node, i, r, a
+      real(dp) :: values(4), w(3)
+      integer :: n, k, s, node, i, a
       ! state: 0 free, 1 held, 2 a combination of the free degrees of freedom target_dof
       stat = 0
       errmsg = ''
@@ -77,7 +79,7 @@ contains
          end if
       end associate
       do s = 1, structure%supports()
-         node = structure%support_node(s)
+         node = support_node(s)
          if (structure%support_kind(s) /= support_pinned .and. structure%support_kind(s) /= support_clamped) cycle
          map%deflection_held(node) = .true.
          if (hermite) then
@@ -88,29 +90,23 @@ contains
          ! the three coefficients nonzero at x_node: B_(node+1..node+3), from element `node`
          if (any(touched(node + 1:node + 3))) then
             stat = 1
-            write (errmsg, '(a,i0,a)') 'the support at node ', node, ' shares a B-spline coefficient with another '// &
-               'support or a clamped or sliding end: with basis = ''bspline'' supports must be at least 3 elements '// &
-               'apart and 2 from a clamped or sliding end (or use basis = ''hermite'')'
+            write (errmsg, '(a,i0,a,i0,a)') '&supports x(', s, '): its node ', node, ' shares a B-spline coefficient '// &
+               'with another support or a clamped or sliding end: with &mesh basis = ''bspline'' supports must be at '// &
+               'least 3 elements apart and 2 from a clamped or sliding end (or use basis = ''hermite'')'
             return
          end if
          touched(node + 1:node + 3) = .true.
-         values = bspline_shape(knots, node, knots(node + 4), 0)
-         slopes = bspline_shape(knots, node, knots(node + 4), 1)
-         w = values(2:4)
-         d = slopes(2:4)
-         if (structure%support_kind(s) == support_pinned) then
-            state(node + 2) = 2
-            call add_term(node + 2, node + 1, -w(1)/w(2))
-            call add_term(node + 2, node + 3, -w(3)/w(2))
-         else
-            nullspace = [w(2)*d(3) - w(3)*d(2), w(3)*d(1) - w(1)*d(3), w(1)*d(2) - w(2)*d(1)]
-            r = maxloc(abs(nullspace), dim=1)
-            do k = 1, 3
-               if (k == r) cycle
-               state(node + k) = 2
-               call add_term(node + k, node + r, nullspace(k)/nullspace(r))
-            end do
+         if (structure%support_kind(s) == support_clamped) then
+            stat = 1
+            write (errmsg, '(a,i0,a)') '&supports kind(', s, ') = ''clamped'': a clamped support inside the beam '// &
+               'bends u'''' at its node, which &mesh basis = ''bspline'' (C^2 splines) cannot; use basis = ''hermite'''
+            return
          end if
+         values = bspline_shape(knots, node, knots(node + 4), 0)
+         w = values(2:4)
+         state(node + 2) = 2
+         call add_term(node + 2, node + 1, -w(1)/w(2))
+         call add_term(node + 2, node + 3, -w(3)/w(2))
       end do
       ! number the free degrees of freedom, then point the combinations at their unknowns
       allocate (map%unknown_of(n), source=0)

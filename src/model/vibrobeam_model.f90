@@ -16,12 +16,13 @@
 !! (k u w, k_r u' w' in K) at points, each integrated exactly.
 module vibrobeam_model
    use vibrobeam_kinds, only: dp
+   use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_band, only: symmetric_band, band_allocate, band_add
    use vibrobeam_hermite, only: hermite_shape, hermite_element_mass, hermite_element_stiffness, hermite_element_tension
    use vibrobeam_bspline, only: bspline_knots, bspline_shape
    use vibrobeam_lapack, only: dgbsv, poison_failed_solve
    use vibrobeam_boundary, only: boundary_conditions
-   use vibrobeam_structure, only: beam_structure, support_clamped, support_spring
+   use vibrobeam_structure, only: beam_structure
    use vibrobeam_dof_map, only: dof_map, build_dof_map
    implicit none
    private
@@ -60,6 +61,7 @@ module vibrobeam_model
       integer, allocatable :: unknown_of(:)
       type(dof_map) :: terms                 !! the combinations of B-spline supports (`vibrobeam_dof_map`)
       logical, allocatable :: deflection_held(:)   !! (0:N) u(x_i) = 0 held by a support
+      integer, allocatable :: support_node(:)      !! the node (1..N-1) of each intermediate support (nearest its x)
       logical :: uniform = .true.            !! rho S and EI the same in every element
       real(dp), allocatable :: element_rho_s(:), element_ei(:)   !! (N) rho S (kg/m) and EI (N m^2) of each element
    end type beam_model
@@ -124,7 +126,12 @@ contains
          errmsg = 'basis '''//trim(basis)//''' is not available'
          return
       end select
-      call build_dof_map(model%hermite, elements, model%knots, model%structure, model%terms, stat, errmsg)
+      model%support_node = [(min(elements - 1, max(1, nint(model%structure%support_x(i)/model%h))), &
+                             i=1, model%structure%supports())]
+      call build_dof_map(model%hermite, elements, model%knots, model%structure, model%support_node, model%terms, stat, &
+                         errmsg)
+      if (stat /= 0) return
+      call check_point_moments(model, stat, errmsg)
       if (stat /= 0) return
       model%unknown_of = model%terms%unknown_of
       model%unknowns = model%terms%unknowns
@@ -188,6 +195,41 @@ contains
       end subroutine assemble_mapped
    end subroutine build_model
 
+   !> B-splines refuse a point moment inside the beam (a rotational spring of a support,
+   !! the rotary inertia of a mass away from the ends): it makes u'' jump at its point,
+   !! which a C^2 spline cannot follow (the frequencies then converge like h, not h^4;
+   !! measured: 3.6e-3 at N = 32 for a rotational spring support, theory §2). Hermite
+   !! elements are C^1 and take it. stat = 1 with a message naming the input.
+   subroutine check_point_moments(model, stat, errmsg)
+      type(beam_model), intent(in) :: model
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: k
+      character(len=*), parameter :: why = ' makes u'''' jump at its point, which &mesh basis = ''bspline'' '// &
+                                           '(C^2 splines) cannot follow; use basis = ''hermite'''
+      stat = 0
+      errmsg = ''
+      if (model%hermite) return
+      associate (st => model%structure)
+         do k = 1, st%supports()
+            if (st%support_rotational_stiffness(k) > 0) then
+               stat = 1
+               errmsg = '&supports rotational_stiffness('//integer_text(k)//') = '// &
+                        real_text(st%support_rotational_stiffness(k))//' N m/rad: a rotational spring inside the beam'//why
+               return
+            end if
+         end do
+         do k = 1, st%masses()
+            if (st%mass_rotary_inertia(k) > 0 .and. st%mass_position(k) > 0 .and. st%mass_position(k) < model%length) then
+               stat = 1
+               errmsg = '&masses rotary_inertia('//integer_text(k)//') = '//real_text(st%mass_rotary_inertia(k))// &
+                        ' kg m^2 of a mass inside the beam (x = '//real_text(st%mass_position(k))//' m)'//why
+               return
+            end if
+         end do
+      end associate
+   end subroutine check_point_moments
+
    !> The point terms of the structure (theory §1, "Supports, masses, sections, tension"):
    !! end springs and the springs of intermediate supports in K (k u(x) w(x) and
    !! k_r u'(x) w'(x)), point masses in M (m u w + J u' w'). Each is a product of two rows
@@ -199,7 +241,7 @@ contains
          call add_rows(model%stiffness, 0.0_dp, b%left_spring, b%left_rotational_spring)
          call add_rows(model%stiffness, model%length, b%right_spring, b%right_rotational_spring)
          do s = 1, st%supports()
-            call add_rows(model%stiffness, model%x(st%support_node(s) + 1), st%support_stiffness(s), &
+            call add_rows(model%stiffness, model%x(model%support_node(s) + 1), st%support_stiffness(s), &
                           st%support_rotational_stiffness(s))
          end do
          do k = 1, st%masses()
@@ -226,44 +268,11 @@ contains
       end subroutine add_rows
    end subroutine add_point_terms
 
-   !> How many rigid-body motions u = a + b x the structure leaves free (0, 1 or 2; theory
-   !! §1, "Supports"): each held deflection and translational spring (ends, intermediate
-   !! supports) removes the combination a + b x at its position, each held rotation or
-   !! rotational spring removes b, and so does a tensile axial force (its energy
-   !! T int u'^2 = T b^2 L). K is singular exactly when this is positive.
-   integer function rigid_motions(model)
+   !> How many rigid-body motions the model's structure leaves free (0, 1 or 2;
+   !! `beam_structure%rigid_motions`). K is singular exactly when this is positive.
+   pure integer function rigid_motions(model)
       type(beam_model), intent(in) :: model
-      real(dp) :: positions(2*model%structure%supports() + 2)
-      logical :: slope
-      integer :: s, held
-      held = 0
-      associate (b => model%boundary, st => model%structure)
-         slope = b%holds_rotation(1) .or. b%holds_rotation(2) .or. b%left_rotational_spring > 0 .or. &
-                 b%right_rotational_spring > 0 .or. st%axial_force > 0
-         if (b%holds_deflection(1) .or. b%left_spring > 0) call hold(0.0_dp)
-         if (b%holds_deflection(2) .or. b%right_spring > 0) call hold(model%length)
-         do s = 1, st%supports()
-            if (st%support_kind(s) /= support_spring .or. st%support_stiffness(s) > 0) &
-               call hold(model%x(st%support_node(s) + 1))
-            if (st%support_kind(s) == support_clamped .or. st%support_rotational_stiffness(s) > 0) slope = .true.
-         end do
-      end associate
-      ! the values held at two distinct points, or at one point and the slope, fix a and b
-      if (held > 0) then
-         if (any(abs(positions(1:held) - positions(1)) > 0) .or. slope) then
-            rigid_motions = 0
-         else
-            rigid_motions = 1
-         end if
-      else
-         rigid_motions = merge(1, 2, slope)
-      end if
-   contains
-      subroutine hold(x)
-         real(dp), intent(in) :: x
-         held = held + 1
-         positions(held) = x
-      end subroutine hold
+      rigid_motions = model%structure%rigid_motions(model%length)
    end function rigid_motions
 
    !> Does the flexibility by double integration from the clamp (`vibrobeam_flexibility`)
@@ -467,7 +476,7 @@ contains
          bending = bending + point_energy(0.0_dp, b%left_spring, b%left_rotational_spring) + &
                    point_energy(model%length, b%right_spring, b%right_rotational_spring)
          do s = 1, st%supports()
-            bending = bending + point_energy(model%x(st%support_node(s) + 1), st%support_stiffness(s), &
+            bending = bending + point_energy(model%x(model%support_node(s) + 1), st%support_stiffness(s), &
                                              st%support_rotational_stiffness(s))
          end do
          do k = 1, st%masses()

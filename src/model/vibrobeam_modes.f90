@@ -79,9 +79,7 @@ contains
       integer :: n
       stat = 0
       errmsg = ''
-      closed_form = structure%boundary%has_closed_form() .and. structure%supports() == 0 .and. &
-                    structure%masses() == 0 .and. .not. structure%has_sections() .and. &
-                    .not. abs(structure%axial_force) > 0
+      closed_form = structure%has_closed_form()
       if (closed_form) then
          omega = [(structure%boundary%natural_frequency(n, length, ei/rho_s), n=1, size(omega))]
          return

@@ -23,12 +23,16 @@ module vibrobeam_scene
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_namelist_schema, only: namelist_variable
-   use vibrobeam_schema_visitor, only: schema_visitor, integer_row, keyword_row, unset, is_unset, keyword_length, &
+   use vibrobeam_schema_visitor, only: schema_visitor, integer_row, keyword_row, unset, is_unset, unset_integer, &
+      keyword_length, &
       path_length
    use vibrobeam_schema_operations, only: schema_table, schema_checker, schema_lister, scene_entry => schema_entry
    use vibrobeam_beam_settings, only: beam_settings, mesh_settings, visit_beam, visit_mesh
    use vibrobeam_boundary, only: boundary_conditions
+   use vibrobeam_structure, only: beam_structure
    use vibrobeam_obstacles, only: obstacle_type, max_obstacles, visit_obstacles
+   use vibrobeam_support_settings, only: support_settings, mass_settings, visit_supports, visit_masses, &
+      max_supports, max_masses, structure_from
    use vibrobeam_initial_state, only: initial_settings, visit_initial
    use vibrobeam_loads, only: load_settings, visit_load
    use vibrobeam_time_settings, only: time_settings, impact_settings, visit_time, visit_impact
@@ -41,6 +45,7 @@ module vibrobeam_scene
    public :: visit_scene, validate_scene, scene_entries, format_scene, is_unset
    public :: scene_variables, path_length, keyword_length, max_steps, step_count
    public :: forcing_of, max_sweep_values, parameter_length
+   public :: support_settings, mass_settings, max_supports, max_masses, held_conditions, structure_of
 
    !> Most time steps of a run: nint(t_end/dt) must fit a 64-bit count with room to spare.
    integer(int64), parameter :: max_steps = 1000000000000000000_int64
@@ -55,6 +60,8 @@ module vibrobeam_scene
    type :: scene_type
       type(beam_settings) :: beam
       type(mesh_settings) :: mesh
+      type(support_settings), allocatable :: supports(:)   !! &supports (docs/input.md)
+      type(mass_settings), allocatable :: masses(:)         !! &masses
       type(analysis_settings) :: analysis
       type(obstacle_type), allocatable :: obstacles(:)
       type(impact_settings) :: impact
@@ -68,16 +75,32 @@ module vibrobeam_scene
 contains
 
    !> Every variable of the scene, group by group in the order of docs/input.md.
-   !! `obstacle_count` (the reader's): the count read, when `scene%obstacles` holds room
-   !! for max_obstacles; otherwise the count is size(scene%obstacles).
-   subroutine visit_scene(scene, visitor, obstacle_count)
+   !! `obstacle_count`, `support_count`, `mass_count` (the reader's): the counts read, when
+   !! the scene's arrays hold room for the most a file may give; otherwise each count is the
+   !! size of its array (&supports and &masses: not listed when 0, so that a scene without
+   !! them keeps the listing of earlier versions).
+   subroutine visit_scene(scene, visitor, obstacle_count, support_count, mass_count)
       type(scene_type), intent(inout) :: scene
       class(schema_visitor), intent(inout) :: visitor
-      integer, intent(inout), optional :: obstacle_count
+      integer, intent(inout), optional :: obstacle_count, support_count, mass_count
       integer :: count
       if (.not. allocated(scene%obstacles)) allocate (scene%obstacles(0))
+      if (.not. allocated(scene%supports)) allocate (scene%supports(0))
+      if (.not. allocated(scene%masses)) allocate (scene%masses(0))
       call visit_beam(scene%beam, visitor)
       call visit_mesh(scene%mesh, visitor)
+      if (present(support_count)) then
+         call visit_supports(scene%supports, support_count, visitor)
+      else
+         count = merge(size(scene%supports), unset_integer, size(scene%supports) > 0)
+         call visit_supports(scene%supports, count, visitor)
+      end if
+      if (present(mass_count)) then
+         call visit_masses(scene%masses, mass_count, visitor)
+      else
+         count = merge(size(scene%masses), unset_integer, size(scene%masses) > 0)
+         call visit_masses(scene%masses, count, visitor)
+      end if
       call visit_analysis(scene%analysis, visitor)
       if (present(obstacle_count)) then
          call visit_obstacles(scene%obstacles, obstacle_count, visitor)
@@ -155,6 +178,30 @@ contains
       end associate
    end function forcing_of
 
+   !> What `build_model` takes of the scene beyond the uniform beam: its end supports and
+   !! springs, intermediate supports and point masses (`structure_from`; a scene built in
+   !! code may leave the groups unallocated).
+   pure function structure_of(scene) result(structure)
+      type(scene_type), intent(in) :: scene
+      type(beam_structure) :: structure
+      type(support_settings), allocatable :: supports(:)
+      type(mass_settings), allocatable :: masses(:)
+      allocate (supports(0), masses(0))
+      if (allocated(scene%supports)) supports = scene%supports
+      if (allocated(scene%masses)) masses = scene%masses
+      structure = structure_from(scene%beam, supports, masses)
+   end function structure_of
+
+   !> The conditions the scene's supports impose on the displacement (ends and &supports;
+   !! `beam_structure%held_count`): the mesh has `mesh%unknowns(held_conditions(scene))`
+   !! unknowns.
+   pure integer function held_conditions(scene)
+      type(scene_type), intent(in) :: scene
+      type(beam_structure) :: structure
+      structure = structure_of(scene)
+      held_conditions = structure%held_count()
+   end function held_conditions
+
    !> Time steps of a dynamics run, nint(t_end/dt) (at least 1), as a 64-bit count; the
    !! scene must be valid (validate_scene bounds t_end/dt by max_steps).
    pure integer(int64) function step_count(scene)
@@ -173,6 +220,7 @@ contains
       type(schema_checker) :: checker
       type(scene_type) :: copy
       type(boundary_conditions) :: supports
+      type(beam_structure) :: structure
       integer :: i
       character(len=:), allocatable :: item
       stat = 0
@@ -181,6 +229,16 @@ contains
          if (size(scene%obstacles) > max_obstacles) &
             call fail('&obstacles count = '//integer_text(size(scene%obstacles))//' is outside [0, '// &
                       integer_text(max_obstacles)//']')
+      end if
+      if (allocated(scene%supports)) then
+         if (size(scene%supports) > max_supports) &
+            call fail('&supports count = '//integer_text(size(scene%supports))//' is outside [0, '// &
+                      integer_text(max_supports)//']')
+      end if
+      if (allocated(scene%masses)) then
+         if (size(scene%masses) > max_masses) &
+            call fail('&masses count = '//integer_text(size(scene%masses))//' is outside [0, '// &
+                      integer_text(max_masses)//']')
       end if
       if (allocated(scene%output%points)) then
          if (size(scene%output%points) > max_points) &
@@ -195,6 +253,7 @@ contains
          return
       end if
       supports = copy%beam%supports()
+      structure = structure_from(copy%beam, copy%supports, copy%masses)
       associate (beam => copy%beam, mesh => copy%mesh, time => copy%time, load => copy%load, &
                  output => copy%output, analysis => copy%analysis)
          ! &beam: the four physical data go together
@@ -204,8 +263,9 @@ contains
             call check_given('area', beam%area)
             call check_given('inertia', beam%inertia)
          end if
+         call validate_structure()
          ! &beam supports: statics solves K U = F, singular with a rigid-body motion
-         if (supports%rigid_motions() > 0) then
+         if (structure%rigid_motions(beam%length) > 0) then
             if (analysis%kind == 'static') call fail(rigid_text()//': &analysis kind = ''static'' needs supports or '// &
                                                      'end springs that hold it (statics of a beam held by its obstacles '// &
                                                      'alone is not available); give a support or a spring, or use kind = '// &
@@ -217,7 +277,7 @@ contains
                call fail(rigid_text()//': &mesh reduction = '''//trim(mesh%reduction)//''' needs the stiffness K of a '// &
                          'beam without rigid-body motion (its constraint modes solve with K); use reduction = ''none''')
          end if
-         if (.not. supports%is_clamped_free() .and. (analysis%kind == 'static' .or. &
+         if (.not. (supports%is_clamped_free() .and. size(copy%supports) == 0) .and. (analysis%kind == 'static' .or. &
              (analysis%kind == 'dynamics' .and. copy%initial%displacement == 'static'))) then
             do i = 1, size(copy%obstacles)
                if (copy%obstacles(i)%stiffness > 0 .and. copy%obstacles(i)%exponent /= 1) &
@@ -235,7 +295,7 @@ contains
                       real_text(mesh%reduction_frequency)//' rad/s are both given: give one of them')
          ! &analysis: `modes` is bounded by the mesh only when modes are computed
          if (analysis%kind == 'modes') call integer_in_range('analysis', 'modes', analysis%modes, 1, &
-                                                             mesh%unknowns(beam%supports()), &
+                                                             mesh%unknowns(structure%held_count()), &
                                                              ', the unknowns J of the mesh')
          ! &obstacles
          do i = 1, size(copy%obstacles)
@@ -284,17 +344,52 @@ contains
 
    contains
 
-      !> The end supports and how many rigid-body motions they leave, for a message.
+      !> The supports and how many rigid-body motions they leave, for a message.
       function rigid_text() result(text)
          character(len=:), allocatable :: text
-         type(boundary_conditions) :: b
-         b = supports
-         text = '&beam left_end = '''//b%end_name(1)//''' and right_end = '''//b%end_name(2)//''''
-         if (b%has_springs()) text = text//' with their springs'
-         text = text//' leave the beam '//integer_text(b%rigid_motions())//' rigid-body motion'
-         if (b%rigid_motions() > 1) text = text//'s'
+         integer :: rigid
+         rigid = structure%rigid_motions(copy%beam%length)
+         text = '&beam left_end = '''//supports%end_name(1)//''' and right_end = '''//supports%end_name(2)//''''
+         if (supports%has_springs()) text = text//' with their springs'
+         if (size(copy%supports) > 0) text = text//' and the '//integer_text(size(copy%supports))//' &supports'
+         text = text//' leave the beam '//integer_text(rigid)//' rigid-body motion'
+         if (rigid > 1) text = text//'s'
          text = text//' (u = a + b x, free of strain)'
       end function rigid_text
+
+      !> &supports and &masses: each support inside the beam, on a node of its own that is
+      !! not an end's, a 'spring' one with a spring; each mass on the beam.
+      subroutine validate_structure()
+         integer :: node(size(copy%supports)), j
+         real(dp) :: h
+         character(len=:), allocatable :: what
+         h = copy%beam%length/copy%mesh%elements
+         do i = 1, size(copy%supports)
+            item = '('//integer_text(i)//')'
+            associate (p => copy%supports(i))
+               call in_range('supports', 'x'//item, p%x, 0.0_dp, copy%beam%length, ' m, (0, length): a support at '// &
+                             'an end is &beam left_end or right_end')
+               node(i) = nint(p%x/h)
+               if (stat == 0 .and. (node(i) == 0 .or. node(i) == copy%mesh%elements)) &
+                  call fail('&supports x'//item//' = '//real_text(p%x)//' m is nearest the end node x = '// &
+                            real_text(node(i)*h)//' m: a support at an end is &beam left_end or right_end (with '// &
+                            'its springs); put it on an interior node or refine the mesh')
+               do j = 1, i - 1
+                  if (node(j) == node(i)) call fail('&supports x'//item//' = '//real_text(p%x)//' m and x('// &
+                                                    integer_text(j)//') = '//real_text(copy%supports(j)%x)// &
+                                                    ' m act at the same node: give one support per node')
+               end do
+               if (p%kind == 'spring' .and. .not. (p%stiffness > 0 .or. p%rotational_stiffness > 0)) &
+                  call fail('&supports kind'//item//' = ''spring'' has no spring: give stiffness'//item// &
+                            ' > 0 or rotational_stiffness'//item//' > 0 (N/m, N m/rad)')
+            end associate
+         end do
+         do i = 1, size(copy%masses)
+            item = '('//integer_text(i)//')'
+            what = ' m, [0, length]'
+            call in_range('masses', 'x'//item, copy%masses(i)%x, 0.0_dp, copy%beam%length, what)
+         end do
+      end subroutine validate_structure
 
       !> A large count to 3 digits: '1.00e30'.
       function rounded(value) result(text)

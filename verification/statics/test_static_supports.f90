@@ -13,6 +13,10 @@
 !! - sliding-pinned:   half of a pinned-pinned beam of length 2L, xi' = (x + L)/(2L):
 !!                     w = -16 c xi' (1 - 2 xi'^2 + xi'^3);
 !! and the mirror images (x -> L - x) of the last three;
+!! - a cantilever propped by a pinned support at a = 3L/4 (&supports): the prop's reaction
+!!   R = q (6L^2 - 4La + a^2)/(8a) (the clamped-free deflection under q at a, cancelled by
+!!   R a^3/(3 EI)), w = -q x^2 (6L^2 - 4Lx + x^2)/(24 EI) + R x^2 (3a - x)/(6 EI) up to a and
+!!   + R a^2 (3x - a)/(6 EI) beyond (the overhang carries no reaction);
 !! - end springs: a cantilever with a tip spring k (k L^3/EI = 5): the tip reaction
 !!   R = (q L^4/(8 EI))/(1/k + L^3/(3 EI)) upwards, w = -q x^2 (6L^2 - 4Lx + x^2)/(24 EI)
 !!   + R x^2 (3L - x)/(6 EI); a pinned-free beam held by a rotational spring k_r at the pin
@@ -35,7 +39,7 @@
 program test_static_supports
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: integer_text, real_text
-   use vibrobeam_scene, only: scene_type, obstacle_type
+   use vibrobeam_scene, only: scene_type, obstacle_type, support_settings
    use vibrobeam_problem, only: run_problem
    use vibrobeam_model, only: nodal_displacement
    use vibrobeam_static, only: solve_static, static_report
@@ -58,6 +62,7 @@ program test_static_supports
          call end_pair(bases(b), meshes(m), 'sliding', 'pinned', 5)
          call end_pair(bases(b), meshes(m), 'pinned', 'sliding', -5)
          call springs(bases(b), meshes(m))
+         call propped(bases(b), meshes(m))
          call midspan_stop(bases(b), meshes(m), 1e-4_dp, 0.0_dp)
          call midspan_stop(bases(b), meshes(m), 1e-3_dp, 0.0_dp)
          call midspan_stop(bases(b), meshes(m), 1e-4_dp, 48*ei/length**3)
@@ -126,7 +131,8 @@ contains
    subroutine end_pair(basis, elements, left, right, case)
       character(len=*), intent(in) :: basis, left, right
       integer, intent(in) :: elements, case
-      real(dp), allocatable :: w(:), reaction(:), xi(:), exact(:)
+      real(dp), allocatable :: w(:), reaction(:)
+      real(dp) :: xi(elements + 1), exact(elements + 1)
       type(static_report) :: report
       character(len=:), allocatable :: label
       integer :: i
@@ -155,7 +161,8 @@ contains
       character(len=*), intent(in) :: basis
       integer, intent(in) :: elements
       type(scene_type) :: scene
-      real(dp), allocatable :: w(:), reaction(:), x(:), exact(:)
+      real(dp), allocatable :: w(:), reaction(:)
+      real(dp) :: x(elements + 1), exact(elements + 1)
       type(static_report) :: report
       real(dp) :: k, tip_reaction, k_r
       integer :: i
@@ -174,6 +181,29 @@ contains
       exact = -q*length**2/(2*k_r)*x - q*x**2*(6*length**2 - 4*length*x + x**2)/(24*ei)
       call check_deflection(basis//' pinned-free on a rotational spring, N = '//integer_text(elements), w, exact, report)
    end subroutine springs
+
+   !> A cantilever propped by a pinned support at a = 3L/4 (&supports; its overhang beyond).
+   subroutine propped(basis, elements)
+      character(len=*), intent(in) :: basis
+      integer, intent(in) :: elements
+      type(scene_type) :: scene
+      real(dp), allocatable :: w(:), reaction(:)
+      real(dp) :: x(elements + 1), exact(elements + 1)
+      type(static_report) :: report
+      real(dp) :: a, prop
+      integer :: i
+      character(len=:), allocatable :: label
+      a = 0.75_dp*length
+      x = [(length*i/elements, i=0, elements)]
+      scene = static_scene(basis, elements, 'clamped', 'free')
+      scene%supports = [support_settings(x=a)]
+      label = basis//' cantilever propped at 3L/4, N = '//integer_text(elements)
+      call solve(scene, label, w, reaction, report)
+      prop = q*(6*length**2 - 4*length*a + a**2)/(8*a)
+      exact = -q*x**2*(6*length**2 - 4*length*x + x**2)/(24*ei) + &
+              prop*merge(x**2*(3*a - x), a**2*(3*x - a), x <= a)/(6*ei)
+      call check_deflection(label, w, exact, report)
+   end subroutine propped
 
    !> A pinned-pinned beam over a stop at midspan at -g (rigid, or linear of stiffness k).
    subroutine midspan_stop(basis, elements, g, k)
