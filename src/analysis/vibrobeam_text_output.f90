@@ -24,9 +24,9 @@ module vibrobeam_text_output
    integer, parameter :: path_length = 1024
 
    !> Every suffix a result's .dat files can have.
-   character(len=*), parameter :: text_suffixes(16) = [character(len=16) :: 'modes', 'shapes', 'static', &
+   character(len=*), parameter :: text_suffixes(18) = [character(len=16) :: 'modes', 'shapes', 'static', &
       'reactions', 'tip', 'energy', 'impacts', 'episodes', 'points', 'field', 'spectrum', 'obstacles', 'contact', &
-      'force', 'sweep', 'poincare']
+      'force', 'sweep', 'poincare', 'contact_modes', 'contact_shapes']
 
    !> Most values read from the HDF5 file at once (8 MiB).
    integer, parameter :: block_values = 2**20
@@ -98,7 +98,11 @@ contains
       header = '# vibrobeam run '//run_id//' ('//final_h5(slash + 1:)//')'
       derive: block
          if (file%exists('/modes/frequency')) then
-            call modes_files()
+            call modes_files('/modes', 'modes', 'shapes')
+            if (stat /= 0 .or. interrupted) exit derive
+         end if
+         if (file%exists('/contact_modes/frequency')) then
+            call modes_files('/contact_modes', 'contact_modes', 'contact_shapes')
             if (stat /= 0 .or. interrupted) exit derive
          end if
          if (file%exists('/static/displacement')) then
@@ -220,23 +224,26 @@ contains
          if (stat == 0 .and. size(dims) > 0) rows_of = dims(size(dims))
       end function rows_of
 
-      subroutine modes_files()
+      !> STEM_modes.dat and STEM_shapes.dat of the modes in `group` (/modes; /contact_modes
+      !! with the suffixes contact_modes, contact_shapes).
+      subroutine modes_files(group, modes_suffix, shapes_suffix)
+         character(len=*), intent(in) :: group, modes_suffix, shapes_suffix
          type(text_sink) :: sink
          real(dp), allocatable :: omega(:), x(:), shapes(:)
          character(len=64) :: line
          integer :: k, i, nodes
-         call file%read_reals('/modes/frequency', omega, stat, errmsg)
+         call file%read_reals(group//'/frequency', omega, stat, errmsg)
          if (stat == 0) call file%read_reals('/mesh/x', x, stat, errmsg)
-         if (stat == 0) call file%read_reals('/modes/shape', shapes, stat, errmsg)
+         if (stat == 0) call file%read_reals(group//'/shape', shapes, stat, errmsg)
          if (stat /= 0) return
-         call open_sink(sink, 'modes', 'mode  omega (rad/s)  frequency (Hz)')
+         call open_sink(sink, modes_suffix, 'mode  omega (rad/s)  frequency (Hz)')
          do k = 1, size(omega)
             write (line, '(i6, 2es24.15)') k, omega(k), omega(k)/(2*pi)
             call put_line(sink, trim(line))
          end do
          call close_sink(sink)
          if (stat /= 0) return
-         call open_sink(sink, 'shapes', 'x (m)  then the shape of mode 1, 2, ... (tip value 1)')
+         call open_sink(sink, shapes_suffix, 'x (m)  then the shape of mode 1, 2, ... (tip value 1)')
          nodes = size(x)
          do i = 1, nodes
             call put_row(sink, 'wide', [x(i), (shapes(i + (k - 1)*nodes), k=1, size(omega))])

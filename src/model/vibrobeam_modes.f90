@@ -35,7 +35,7 @@ module vibrobeam_modes
    use vibrobeam_lapack, only: dsbgvx, dlamch
    implicit none
    private
-   public :: compute_modes, dense_is_cheaper, mode_shift, reference_frequencies
+   public :: compute_modes, dense_is_cheaper, mode_shift, reference_frequencies, normalize_modes
 
    !> Where dsbgvx is cheaper than Lanczos (measured, docs/method.md): up to this many
    !! unknowns, or for more than J/dense_fraction modes.
@@ -115,8 +115,8 @@ contains
       character(len=*), intent(out) :: errmsg
       character(len=*), intent(in), optional :: method  !! 'lanczos' | 'dense'
       real(dp), allocatable :: eigenvalues(:)
-      integer :: n, k, node, rigid
-      real(dp) :: tip, bending, inertia, shift
+      integer :: n, k, rigid
+      real(dp) :: bending, inertia, shift
       logical :: dense, refine
       stat = 0
       errmsg = ''
@@ -174,17 +174,32 @@ contains
          return
       end if
       if (rigid == 2 .and. count >= 2) call canonical_rigid_motions(model, vectors(:, 1:2))
-      allocate (shapes(model%elements + 1, count))
+      call normalize_modes(model, vectors, shapes, stat, errmsg)
+   end subroutine compute_modes
+
+   !> The mode shapes at the nodes of `vectors` (its columns scaled with them): 1 at a
+   !! free end (the tip of a cantilever; the right end first), else, and for a mode
+   !! (nearly) at rest there, 1 at its largest nodal value. stat = 1 for a mode zero at every
+   !! node.
+   subroutine normalize_modes(model, vectors, shapes, stat, errmsg)
+      type(beam_model), intent(in) :: model
+      real(dp), intent(inout) :: vectors(:,:)            !! (J, modes)
+      real(dp), allocatable, intent(out) :: shapes(:,:)  !! (N+1, modes)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: k, node
+      real(dp) :: tip
+      stat = 0
+      errmsg = ''
+      allocate (shapes(model%elements + 1, size(vectors, 2)))
       node = model%boundary%normalization_node(model%elements)
-      do k = 1, count
+      do k = 1, size(vectors, 2)
          shapes(:, k) = nodal_displacement(model, vectors(:, k))
-         ! scaled to 1 at a free end (the tip of a cantilever), else at its largest value
          if (node >= 0) then
             tip = shapes(node + 1, k)
          else
             tip = shapes(maxloc(abs(shapes(:, k)), dim=1), k)
          end if
-         ! a mode (nearly) at rest at the free end is scaled at its largest value instead
          if (abs(tip) <= 1e-8_dp*maxval(abs(shapes(:, k)))) tip = shapes(maxloc(abs(shapes(:, k)), dim=1), k)
          if (abs(tip) <= tiny(tip)) then
             stat = 1
@@ -194,7 +209,7 @@ contains
          shapes(:, k) = shapes(:, k)/tip
          vectors(:, k) = vectors(:, k)/tip
       end do
-   end subroutine compute_modes
+   end subroutine normalize_modes
 
    !> Two rigid-body modes (any basis of the plane of u = a + b x the solver returned) as a
    !! translation (u = 1 up to scale) and the rotation about the centre of mass M-orthogonal

@@ -41,6 +41,8 @@ contains
       if (scene%analysis%kind /= 'modes' .and. scanned%is_given('analysis', 'modes')) &
          call add('&analysis modes = '//integer_text(scene%analysis%modes)//' is ignored: '//kind_reason// &
                   ' computes no natural modes')
+      if (scene%analysis%kind /= 'modes' .and. scene%analysis%contact_modes) &
+         call add('&analysis contact_modes = .true. is ignored: '//kind_reason//' computes no natural modes')
       if (scanned%is_given('beam', 'k2') .and. (scanned%is_given('beam', 'youngs_modulus') .or. &
           scanned%is_given('beam', 'density') .or. scanned%is_given('beam', 'area') .or. &
           scanned%is_given('beam', 'inertia'))) &
@@ -48,6 +50,8 @@ contains
       select case (scene%analysis%kind)
       case ('modes')
          do k = 1, size(unused_by_modes)
+            ! the modes in contact hold the contact points of the obstacles
+            if (unused_by_modes(k) == 'obstacles' .and. scene%analysis%contact_modes) cycle
             if (scanned%group_given(trim(unused_by_modes(k)))) &
                call add('&'//trim(unused_by_modes(k))//' is ignored: kind = ''modes'' computes the modes of the '// &
                         'free cantilever')

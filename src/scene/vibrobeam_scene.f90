@@ -23,7 +23,8 @@ module vibrobeam_scene
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_namelist_schema, only: namelist_variable
-   use vibrobeam_schema_visitor, only: schema_visitor, integer_row, keyword_row, unset, is_unset, unset_integer, &
+   use vibrobeam_schema_visitor, only: schema_visitor, integer_row, keyword_row, logical_row, unset, is_unset, &
+      unset_integer, &
       keyword_length, &
       path_length
    use vibrobeam_schema_operations, only: schema_table, schema_checker, schema_lister, scene_entry => schema_entry
@@ -54,6 +55,7 @@ module vibrobeam_scene
    type :: analysis_settings
       character(len=keyword_length) :: kind = 'dynamics'   !! 'modes' | 'static' | 'dynamics'
       integer :: modes = 6                                 !! natural modes computed (kind = 'modes')
+      logical :: contact_modes = .false.                   !! also the modes with every contact point held
    end type analysis_settings
 
    !> Every input value of a run, after defaults: the settings of each group.
@@ -124,6 +126,9 @@ contains
                                         'natural modes, static equilibrium, or time integration'), analysis%kind)
       call visitor%variable(integer_row('analysis', 'modes', 1, 2000000, 'number of natural modes computed'), &
                             analysis%modes)
+      call visitor%variable(logical_row('analysis', 'contact_modes', 'also the natural modes with every contact '// &
+                                        'point held at its obstacle (kind = ''modes'')', optional=.true.), &
+                            analysis%contact_modes)
    end subroutine visit_analysis
 
    !> Every input variable, the scene's and &sweep's: group, name, kind, extent, longest
@@ -297,6 +302,9 @@ contains
          if (analysis%kind == 'modes') call integer_in_range('analysis', 'modes', analysis%modes, 1, &
                                                              mesh%unknowns(structure%held_count()), &
                                                              ', the unknowns J of the mesh')
+         if (analysis%kind == 'modes' .and. analysis%contact_modes .and. size(copy%obstacles) == 0) &
+            call fail('&analysis contact_modes = .true. needs obstacles: the modes in contact hold every contact '// &
+                      'point of &obstacles; give obstacles or contact_modes = .false.')
          ! &obstacles
          do i = 1, size(copy%obstacles)
             item = '('//integer_text(i)//')'

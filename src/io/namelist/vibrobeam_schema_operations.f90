@@ -293,7 +293,7 @@ contains
             call self%add_string(name//'('//integer_text(i)//')', text_values(i))
          end do
       else if (present(logical_value)) then
-         call self%add_logical(name, logical_value)
+         if (.not. (row%optional .and. .not. logical_value)) call self%add_logical(name, logical_value)
       end if
    end subroutine list_variable
 

@@ -172,10 +172,13 @@ contains
       row = namelist_variable(group=group, name=name, kind=kind_string, max_length=max_length, meaning=meaning)
    end function text_row
 
-   !> A logical (.true. or .false.).
-   pure function logical_row(group, name, meaning) result(row)
+   !> A logical (.true. or .false.); `optional`: .false. stands for "not asked for" and is
+   !! not listed (a switch added later, so that results without it keep their attributes).
+   pure function logical_row(group, name, meaning, optional) result(row)
       character(len=*), intent(in) :: group, name, meaning
+      logical, intent(in), optional :: optional
       type(namelist_variable) :: row
       row = namelist_variable(group=group, name=name, kind=kind_logical, meaning=meaning)
+      if (present(optional)) row%optional = optional
    end function logical_row
 end module vibrobeam_schema_visitor
