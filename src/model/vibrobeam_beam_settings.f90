@@ -6,6 +6,7 @@ module vibrobeam_beam_settings
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, unset, is_unset, &
       unset_integer, keyword_length
    use vibrobeam_boundary, only: boundary_conditions, end_names, end_code, end_clamped, end_free
+   use vibrobeam_modal_damping, only: max_damped_modes
    implicit none
    private
    public :: beam_settings, mesh_settings, visit_beam, visit_mesh
@@ -21,6 +22,10 @@ module vibrobeam_beam_settings
       real(dp) :: inertia = unset             !! I (m^4)
       real(dp) :: rayleigh_mass = 0           !! a in C = a M + b K (1/s)
       real(dp) :: rayleigh_stiffness = 0      !! b in C = a M + b K (s)
+      !> damping ratio of every mode up to the time step's cut-off (unset: none), and of mode
+      !! k (unset: `modal_damping`); `vibrobeam_modal_damping`
+      real(dp) :: modal_damping = unset
+      real(dp) :: modal_damping_ratios(max_damped_modes) = unset
       !> end supports as given ('' not given: clamped at x = 0, free at x = L; `supports`
       !! resolves them)
       character(len=keyword_length) :: left_end = '', right_end = ''
@@ -34,6 +39,7 @@ module vibrobeam_beam_settings
       procedure :: rho_s                      !! mass per unit length (kg/m)
       procedure :: ei                         !! bending stiffness (N m^2)
       procedure :: supports                   !! the end supports and springs, resolved
+      procedure :: modal                      !! is any damping per mode given?
    end type beam_settings
 
    !> &mesh: the finite elements, their basis, and the reduced model of dynamics.
@@ -68,6 +74,12 @@ contains
                                      'a in the Rayleigh damping C = a M + b K'), beam%rayleigh_mass)
       call visitor%variable(real_row('beam', 'rayleigh_stiffness', 's', 0.0_dp, 1e3_dp, &
                                      'b in the Rayleigh damping C = a M + b K'), beam%rayleigh_stiffness)
+      call visitor%variable(real_row('beam', 'modal_damping', '', 0.0_dp, 1.0_dp, &
+                                     'damping ratio of every mode the time step resolves (default none)', &
+                                     optional=.true.), beam%modal_damping)
+      call visitor%variable(real_row('beam', 'modal_damping_ratios', '', 0.0_dp, 1.0_dp, &
+                                     'damping ratio of mode k, overriding modal_damping', extent=max_damped_modes, &
+                                     optional=.true.), beam%modal_damping_ratios)
       call visitor%variable(keyword_row('beam', 'left_end', end_names, keyword_length, &
                                         'support at x = 0 (default clamped)', optional=.true.), beam%left_end)
       call visitor%variable(keyword_row('beam', 'right_end', end_names, keyword_length, &
@@ -142,6 +154,12 @@ contains
          if (.not. is_unset(value)) given = value
       end function given
    end function supports
+
+   !> Is a damping ratio per mode given (`modal_damping` or any `modal_damping_ratios`)?
+   pure logical function modal(self)
+      class(beam_settings), intent(in) :: self
+      modal = .not. (is_unset(self%modal_damping) .and. all(is_unset(self%modal_damping_ratios)))
+   end function modal
 
    !> Unknowns J of the mesh whose supports impose `held` conditions (a held deflection or
    !! rotation each; `beam_structure%held_count`; 2, the clamp, when absent): its degrees
