@@ -3,7 +3,7 @@
 !! `contact_modes` those of the beam held at every contact point (`contact_modes`), written
 !! to the result file and published (docs/output.md, "Natural modes").
 module vibrobeam_modal_analysis
-   use vibrobeam_status, only: stat_ok
+   use vibrobeam_status, only: stat_ok, outcome_interrupted
    use vibrobeam_scene, only: scene_type
    use vibrobeam_problem, only: run_problem
    use vibrobeam_modes, only: compute_modes
@@ -46,7 +46,7 @@ contains
       if (stat == stat_ok .and. scene%analysis%contact_modes) &
          call files%write_modes(contact_omega, contact_shapes, stat, errmsg, '/contact_modes')
       summary%wall_seconds = meter%elapsed()
-      if (interrupt_requested()) summary%status = 'interrupted'
+      if (interrupt_requested()) summary%status = outcome_interrupted
       call files%finish(summary, meter, outcome%text_skipped, stat, errmsg)
       if (stat /= stat_ok) return
       outcome%status = summary%status

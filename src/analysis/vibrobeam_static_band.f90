@@ -91,7 +91,7 @@ contains
          return
       end if
       if (contacts%springs%count > 0) then
-         if (any(contacts%springs%exponent /= 1)) stat = stat_invalid_argument
+         if (any(abs(contacts%springs%exponent - 1) > 0)) stat = stat_invalid_argument
       end if
       if (stat == stat_invalid_argument) then
          stat = stat_invalid_argument

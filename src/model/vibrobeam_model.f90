@@ -15,6 +15,7 @@
 !! stiffness T int u' w' of an axial force, point masses (m u w + J u' w' in M) and springs
 !! (k u w, k_r u' w' in K) at points, each integrated exactly.
 module vibrobeam_model
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_band, only: symmetric_band, band_allocate, band_add
@@ -122,7 +123,7 @@ contains
          model%hermite = .false.
          model%knots = bspline_knots(elements, length)
       case default
-         stat = 1
+         stat = stat_failure
          errmsg = 'basis '''//trim(basis)//''' is not available'
          return
       end select
@@ -199,7 +200,7 @@ contains
    !! the rotary inertia of a mass away from the ends): it makes u'' jump at its point,
    !! which a C^2 spline cannot follow (the frequencies then converge like h, not h^4;
    !! measured: 3.6e-3 at N = 32 for a rotational spring support, theory §2). Hermite
-   !! elements are C^1 and take it. stat = 1 with a message naming the input.
+   !! elements are C^1 and take it. stat = stat_failure with a message naming the input.
    subroutine check_point_moments(model, stat, errmsg)
       type(beam_model), intent(in) :: model
       integer, intent(out) :: stat
@@ -213,7 +214,7 @@ contains
       associate (st => model%structure)
          do k = 1, st%supports()
             if (st%support_rotational_stiffness(k) > 0) then
-               stat = 1
+               stat = stat_failure
                errmsg = '&supports rotational_stiffness('//integer_text(k)//') = '// &
                         real_text(st%support_rotational_stiffness(k))//' N m/rad: a rotational spring inside the beam'//why
                return
@@ -221,7 +222,7 @@ contains
          end do
          do k = 1, st%masses()
             if (st%mass_rotary_inertia(k) > 0 .and. st%mass_position(k) > 0 .and. st%mass_position(k) < model%length) then
-               stat = 1
+               stat = stat_failure
                errmsg = '&masses rotary_inertia('//integer_text(k)//') = '//real_text(st%mass_rotary_inertia(k))// &
                         ' kg m^2 of a mass inside the beam (x = '//real_text(st%mass_position(k))//' m)'//why
                return

@@ -122,7 +122,7 @@ contains
       errmsg = ''
       n = model%unknowns
       if (count < 1 .or. count > n) then
-         stat = 1
+         stat = stat_failure
          write (errmsg, '(a,i0,a,i0,a)') 'number of modes ', count, ' is outside [1, ', n, ']'
          return
       end if
@@ -179,7 +179,7 @@ contains
 
    !> The mode shapes at the nodes of `vectors` (its columns scaled with them): 1 at a
    !! free end (the tip of a cantilever; the right end first), else, and for a mode
-   !! (nearly) at rest there, 1 at its largest nodal value. stat = 1 for a mode zero at every
+   !! (nearly) at rest there, 1 at its largest nodal value. stat = stat_failure for a mode zero at every
    !! node.
    subroutine normalize_modes(model, vectors, shapes, stat, errmsg)
       type(beam_model), intent(in) :: model
@@ -202,7 +202,7 @@ contains
          end if
          if (abs(tip) <= 1e-8_dp*maxval(abs(shapes(:, k)))) tip = shapes(maxloc(abs(shapes(:, k)), dim=1), k)
          if (abs(tip) <= tiny(tip)) then
-            stat = 1
+            stat = stat_failure
             write (errmsg, '(a,i0,a)') 'mode ', k, ' has zero displacement at every node and cannot be normalized'
             return
          end if

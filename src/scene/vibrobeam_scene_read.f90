@@ -12,6 +12,7 @@
 !! follow another input, the variables an obstacle requires, the observation points
 !! listed without gaps, and the warnings for values the analysis ignores.
 module vibrobeam_scene_read
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: integer_text
    use vibrobeam_scene, only: scene_type, max_obstacles, max_points, max_supports, max_masses, scene_variables, &
@@ -83,7 +84,7 @@ contains
                'ignored by a sweep: each point measures after its settle window'//new_line('a')
          end if
       else if (reader%scanned%group_given('sweep')) then
-         stat = 1
+         stat = stat_failure
          errmsg = '&sweep: this program reads a single run''s scene (a sweep is run by vibrobeam itself)'
          return
       end if
@@ -137,7 +138,7 @@ contains
                                                   'level_to', 'stiffness', 'exponent', 'damping']
       call check_count(scanned, 'obstacles', 'obstacle', names, count, max_obstacles, stat, errmsg)
       if (stat /= 0) return
-      stat = 1
+      stat = stat_failure
       call move_alloc(scene%obstacles, read)
       allocate (scene%obstacles(count))
       do i = 1, count
@@ -169,7 +170,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: i, k
-      stat = 1
+      stat = stat_failure
       if (count < 0 .or. count > most) then
          errmsg = '&'//group//' count = '//integer_text(count)//' is outside [0, '//integer_text(most)//']'
          return
@@ -205,7 +206,7 @@ contains
       scene%supports = scene%supports(1:given)
       do i = 1, size(scene%supports)
          if (.not. scanned%is_given('supports', 'x', i)) then
-            stat = 1
+            stat = stat_failure
             errmsg = '&supports x('//integer_text(i)//') is missing: give the position (m) of the support'
             return
          end if
@@ -230,7 +231,7 @@ contains
       scene%masses = scene%masses(1:given)
       do i = 1, size(scene%masses)
          if (.not. scanned%is_given('masses', 'x', i)) then
-            stat = 1
+            stat = stat_failure
             errmsg = '&masses x('//integer_text(i)//') is missing: give the position (m) of the mass'
             return
          end if
@@ -249,7 +250,7 @@ contains
       count_points = leading_given(scanned, 'output', 'points', max_points)
       do k = count_points + 1, max_points
          if (scanned%is_given('output', 'points', k)) then
-            stat = 1
+            stat = stat_failure
             errmsg = '&output points('//integer_text(k)//') is given but points('//integer_text(count_points + 1)// &
                      ') is not: list the observation points from points(1) on, without gaps'
             return
@@ -326,7 +327,7 @@ contains
          given = leading_given(reader%scanned, 'sweep', 'values'//suffix, max_sweep_values)
          do j = given + 1, max_sweep_values
             if (reader%scanned%is_given('sweep', 'values'//suffix, j)) then
-               stat = 1
+               stat = stat_failure
                errmsg = '&sweep values'//suffix//'('//integer_text(j)//') is given but values'//suffix//'('// &
                         integer_text(given + 1)//') is not: list the values from values'//suffix//'(1) on, without gaps'
                return
@@ -338,7 +339,7 @@ contains
                                         reader%scanned%is_given('sweep', 'count'//suffix)
          if (settings%axis(a)%range_given .and. .not. (reader%scanned%is_given('sweep', 'from'//suffix) .and. &
                                                        reader%scanned%is_given('sweep', 'to'//suffix))) then
-            stat = 1
+            stat = stat_failure
             errmsg = '&sweep: a range needs from'//suffix//' and to'//suffix//' (and count'//suffix//')'
             return
          end if

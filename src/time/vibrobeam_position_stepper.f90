@@ -189,10 +189,7 @@ contains
                       self%multiplier, stat, errmsg)
          self%report%iterations = c%iterations
          self%report%linear_solves = c%linear_solves
-         if (stat /= 0) then
-            stat = 3
-            return
-         end if
+         if (stat /= 0) return   ! (the compliant solver's own code: docs/output.md, "Status codes")
          call self%check_compliant_work(p0, c%p1, stat, errmsg)
          if (stat /= 0) return
          ! energy: the beam's half-step energy loses sum f dpbar; Phi(pbar) stores it
