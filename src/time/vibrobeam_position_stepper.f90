@@ -225,9 +225,9 @@ contains
       class(position_stepper), intent(in) :: self
       type(dynamic_state) :: state
       state%step = self%steps
-      state%u = self%u
-      state%v = self%v
-      state%extra = self%u_previous
+      allocate (state%u, source=self%u)   ! (an assignment to the unallocated result warns in Debug builds)
+      allocate (state%v, source=self%v)
+      allocate (state%extra, source=self%u_previous)
    end function position_state
 
    !> The state a checkpoint of this scheme holds: the base's, and U^{n-1} as extra.

@@ -208,7 +208,7 @@ contains
          return
       end if
       if (c_h5_start_swmr_write(int(self%file_id, c_int64_t)) /= 0) then
-         call fail(stat, errmsg, 'cannot switch HDF5 file ''' // self%temporary_name // &
+         call fail(stat, errmsg, 'cannot switch HDF5 file ''' // self%temporary_file() // &
             ''' to SWMR write mode')
          return
       end if
@@ -228,7 +228,7 @@ contains
          return
       end if
       call h5fflush_f(self%file_id, H5F_SCOPE_GLOBAL_F, hdferr)
-      if (hdferr < 0) call fail(stat, errmsg, 'cannot write HDF5 file ''' // self%temporary_name // '''')
+      if (hdferr < 0) call fail(stat, errmsg, 'cannot write HDF5 file ''' // self%temporary_file() // '''')
    end subroutine writer_flush
 
    !> Identifier of the open file (for `vibrobeam_hdf5_series`).
@@ -276,7 +276,7 @@ contains
       real(dp), allocatable :: contiguous_values(:)
 
       dims = int(shape(values), hsize_t)
-      call create_dataset(self%is_open, self%file_id, self%link_creation_list, self%temporary_name, path, &
+      call create_dataset(self%is_open, self%file_id, self%link_creation_list, self%temporary_file(), path, &
          h5kind_to_type(dp, H5_REAL_KIND), 1, dims, dataset_id, stat, errmsg)
       if (stat /= 0) return
       hdferr = 0
@@ -292,7 +292,7 @@ contains
                dims, hdferr)
          end if
       end if
-      call finish_dataset(self%temporary_name, path, dataset_id, hdferr, unit, stat, errmsg)
+      call finish_dataset(self%temporary_file(), path, dataset_id, hdferr, unit, stat, errmsg)
    end subroutine writer_write_real_1d
 
    !> Write the 2-d real dataset `path`. The Fortran array `values(n1, n2)` becomes a
@@ -312,7 +312,7 @@ contains
       real(dp), allocatable :: contiguous_values(:, :)
 
       dims = int(shape(values), hsize_t)
-      call create_dataset(self%is_open, self%file_id, self%link_creation_list, self%temporary_name, path, &
+      call create_dataset(self%is_open, self%file_id, self%link_creation_list, self%temporary_file(), path, &
          h5kind_to_type(dp, H5_REAL_KIND), 2, dims, dataset_id, stat, errmsg)
       if (stat /= 0) return
       hdferr = 0
@@ -328,7 +328,7 @@ contains
                dims, hdferr)
          end if
       end if
-      call finish_dataset(self%temporary_name, path, dataset_id, hdferr, unit, stat, errmsg)
+      call finish_dataset(self%temporary_file(), path, dataset_id, hdferr, unit, stat, errmsg)
    end subroutine writer_write_real_2d
 
    !> Write the 1-d integer dataset `path` (default integer kind).
@@ -344,7 +344,7 @@ contains
       integer, allocatable :: contiguous_values(:)
 
       dims = int(shape(values), hsize_t)
-      call create_dataset(self%is_open, self%file_id, self%link_creation_list, self%temporary_name, path, &
+      call create_dataset(self%is_open, self%file_id, self%link_creation_list, self%temporary_file(), path, &
          h5kind_to_type(kind(values), H5_INTEGER_KIND), 1, dims, dataset_id, stat, errmsg)
       if (stat /= 0) return
       hdferr = 0
@@ -359,7 +359,7 @@ contains
                contiguous_values, dims, hdferr)
          end if
       end if
-      call finish_dataset(self%temporary_name, path, dataset_id, hdferr, stat=stat, errmsg=errmsg)
+      call finish_dataset(self%temporary_file(), path, dataset_id, hdferr, stat=stat, errmsg=errmsg)
    end subroutine writer_write_int_1d
 
    !> Write the scalar (rank-0) real dataset `path`, with an optional string attribute
@@ -375,11 +375,11 @@ contains
       integer(hsize_t) :: dims(0)
       integer :: hdferr
 
-      call create_dataset(self%is_open, self%file_id, self%link_creation_list, self%temporary_name, path, &
+      call create_dataset(self%is_open, self%file_id, self%link_creation_list, self%temporary_file(), path, &
          h5kind_to_type(dp, H5_REAL_KIND), 0, dims, dataset_id, stat, errmsg)
       if (stat /= 0) return
       call h5dwrite_f(dataset_id, h5kind_to_type(dp, H5_REAL_KIND), value, [1_hsize_t], hdferr)
-      call finish_dataset(self%temporary_name, path, dataset_id, hdferr, unit, stat, errmsg)
+      call finish_dataset(self%temporary_file(), path, dataset_id, hdferr, unit, stat, errmsg)
    end subroutine writer_write_real_scalar
 
    !> Set the real attribute `name` of the object `object_path` ('/' for the file's root
@@ -428,12 +428,12 @@ contains
       character(len=:), allocatable :: failed_step
       integer :: close_error
 
-      call open_or_create_object(self%is_open, self%file_id, self%link_creation_list, self%temporary_name, &
+      call open_or_create_object(self%is_open, self%file_id, self%link_creation_list, self%temporary_file(), &
          object_path, object_id, stat, errmsg)
       if (stat /= 0) return
       call put_scalar_attribute(object_id, name, value, failed_step)
       call h5oclose_f(object_id, close_error)
-      call attribute_outcome(self%temporary_name, object_path, name, failed_step, stat, errmsg)
+      call attribute_outcome(self%temporary_file(), object_path, name, failed_step, stat, errmsg)
    end subroutine put_attribute
 
    !> Set the fixed-length string attribute `name` of the object `object_path` (see
@@ -452,12 +452,12 @@ contains
       character(len=:), allocatable :: failed_step
       integer :: close_error
 
-      call open_or_create_object(self%is_open, self%file_id, self%link_creation_list, self%temporary_name, &
+      call open_or_create_object(self%is_open, self%file_id, self%link_creation_list, self%temporary_file(), &
          object_path, object_id, stat, errmsg)
       if (stat /= 0) return
       call put_string_attribute(object_id, name, value, failed_step, capacity)
       call h5oclose_f(object_id, close_error)
-      call attribute_outcome(self%temporary_name, object_path, name, failed_step, stat, errmsg)
+      call attribute_outcome(self%temporary_file(), object_path, name, failed_step, stat, errmsg)
    end subroutine writer_attr_string
 
 
@@ -474,11 +474,11 @@ contains
       integer(hid_t) :: object_id
       character(len=:), allocatable :: failed_step
       integer :: close_error
-      call open_existing_object(self%is_open, self%file_id, self%temporary_name, object_path, object_id, stat, errmsg)
+      call open_existing_object(self%is_open, self%file_id, self%temporary_file(), object_path, object_id, stat, errmsg)
       if (stat /= 0) return
       call rewrite_attribute(object_id, name, value, failed_step, capacity)
       call h5oclose_f(object_id, close_error)
-      call attribute_outcome(self%temporary_name, object_path, name, failed_step, stat, errmsg)
+      call attribute_outcome(self%temporary_file(), object_path, name, failed_step, stat, errmsg)
    end subroutine writer_rewrite_attr
 
    !> Flush and close the temporary file and sync it to disk (fsync). The file keeps its
@@ -498,7 +498,7 @@ contains
       end if
       call h5fflush_f(self%file_id, H5F_SCOPE_GLOBAL_F, flush_error)
       if (flush_error < 0) then
-         call fail(stat, errmsg, 'cannot write HDF5 file ''' // self%temporary_name // '''')
+         call fail(stat, errmsg, 'cannot write HDF5 file ''' // self%temporary_file() // '''')
          return   ! still open: `discard` closes it
       end if
       call close_property_list(self%link_creation_list)
@@ -507,7 +507,7 @@ contains
       self%is_open = .false.
       self%swmr = .false.
       if (close_error < 0) then
-         call fail(stat, errmsg, 'cannot close HDF5 file ''' // self%temporary_name // '''')
+         call fail(stat, errmsg, 'cannot close HDF5 file ''' // self%temporary_file() // '''')
          return
       end if
       call sync_file(self%temporary_name, stat, errmsg)
