@@ -1,12 +1,14 @@
 !> A modes run from start to published result (&analysis kind = 'modes'): the natural
-!! frequencies and mode shapes of the discrete beam (`vibrobeam_modes`), written to the
-!! result file and published (docs/output.md, "Natural modes"), and the frequencies as
-!! the run prints them (`frequencies_text`).
+!! frequencies and mode shapes of the discrete beam (`vibrobeam_modes`), and with
+!! `contact_modes` those of the beam held at every contact point (`contact_modes`), written
+!! to the result file and published (docs/output.md, "Natural modes"), and the frequencies
+!! as the run prints them (`frequencies_text`).
 module vibrobeam_modal_analysis
    use vibrobeam_status, only: stat_ok, outcome_interrupted
    use vibrobeam_scene, only: scene_type
    use vibrobeam_problem, only: run_problem
    use vibrobeam_modes, only: compute_modes
+   use vibrobeam_reduction, only: contact_modes
    use vibrobeam_result_files, only: result_files, run_summary, run_outcome
    use vibrobeam_progress, only: progress_meter
    use vibrobeam_signals, only: interrupt_requested
@@ -33,15 +35,24 @@ contains
       type(run_outcome), intent(out) :: outcome
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp), allocatable :: omega(:), shapes(:,:), vectors(:,:)
+      real(dp), allocatable :: omega(:), shapes(:,:), vectors(:,:), contact_omega(:), contact_shapes(:,:)
       type(result_files) :: files
       type(progress_meter) :: meter
       type(run_summary) :: summary
       call meter%init(scene%output%progress)
       call compute_modes(prepared%model, scene%analysis%modes, omega, shapes, vectors, stat, errmsg)
       if (stat /= stat_ok) return
+      if (scene%analysis%contact_modes) then
+         ! the beam held at every contact point (as many modes as asked, or as it has)
+         call contact_modes(prepared%model, prepared%contacts, &
+                            min(scene%analysis%modes, prepared%model%unknowns - prepared%contacts%count), &
+                            contact_omega, contact_shapes, stat, errmsg)
+         if (stat /= stat_ok) return
+      end if
       call files%open(scene, prepared%model, stat, errmsg)
       if (stat == stat_ok) call files%write_modes(omega, shapes, stat, errmsg)
+      if (stat == stat_ok .and. scene%analysis%contact_modes) &
+         call files%write_modes(contact_omega, contact_shapes, stat, errmsg, '/contact_modes')
       summary%wall_seconds = meter%elapsed()
       if (interrupt_requested()) summary%status = outcome_interrupted
       call files%finish(summary, meter, outcome%text_skipped, stat, errmsg)

@@ -10,7 +10,8 @@ module vibrobeam_problem
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_status, only: stat_failure, stat_numerical_failure
    use vibrobeam_text, only: real_text
-   use vibrobeam_scene, only: scene_type, step_count, is_unset
+   use vibrobeam_scene, only: scene_type, step_count, is_unset, structure_of
+   use vibrobeam_scene_structure, only: support_warnings
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_obstacles, only: build_contact_points
@@ -26,6 +27,7 @@ module vibrobeam_problem
    use vibrobeam_compliant_law, only: rule_code
    use vibrobeam_reduction, only: reduced_basis, build_reduction, reduce_model, reduce_contacts, reduce_loads, &
                                   reduce_state, default_reduction_frequency
+   use vibrobeam_modal_damping, only: build_modal_damping
    implicit none
    private
    public :: run_problem, build_problem, new_stepper, stepper_settings_of, reduction_cutoff
@@ -51,6 +53,9 @@ module vibrobeam_problem
       logical :: resuming = .false.    !! continues the checkpoint of &initial from_file
       type(state_record) :: resume     !! that checkpoint
       real(dp) :: resume_time = 0      !! its time (s)
+      !> damping per mode in the system's coordinates (`vibrobeam_modal_damping`; Y = M Phi,
+      !! projected T^T Y on a reduced model, and c): unallocated without
+      real(dp), allocatable :: modal_forces(:,:), modal_rates(:)
    end type run_problem
 
 contains
@@ -68,15 +73,16 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       call build_model(scene%mesh%basis, scene%mesh%elements, scene%beam%length, scene%beam%rho_s(), scene%beam%ei(), &
-                       prepared%model, stat, errmsg, &
-                       boundary=scene%beam%boundary)
+                       prepared%model, stat, errmsg, structure=structure_of(scene))
       if (stat /= 0) return
+      warnings = warnings//support_warnings(scene, prepared%model)
       call build_contact_points(scene%obstacles, prepared%model, prepared%contacts, warnings, stat, errmsg)
       if (stat /= 0) return
       call build_loads(scene%load, prepared%model, scene%beam%rho_s(), prepared%loads)
       if (scene%analysis%kind == 'dynamics' .and. len_trim(scene%initial%from_file) > 0) then
          call resume_from_file(scene, prepared, warnings, stat, errmsg)
          if (stat == 0) call full_system(prepared)
+         if (stat == 0) call modal_damping_of(scene, prepared, stat, errmsg)
          return
       end if
       call initial_displacement(scene, prepared, stat, errmsg)
@@ -93,7 +99,34 @@ contains
       else
          call full_system(prepared)
       end if
+      if (stat == 0) call modal_damping_of(scene, prepared, stat, errmsg)
    end subroutine build_problem
+
+   !> The damping per mode of a dynamics scene (&beam modal_damping, modal_damping_ratios):
+   !! on the mesh's modes, every mode below the default cut-off of the reduced model
+   !! (`default_reduction_frequency`: resolved by dt to 1 % and 10 times past the forcing)
+   !! with modal_damping; on a reduced model, T^T Y (C_r = T^T C T).
+   subroutine modal_damping_of(scene, prepared, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(run_problem), intent(inout) :: prepared
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp) :: every, forcing(3)
+      logical :: loaded(3)
+      stat = 0
+      errmsg = ''
+      if (scene%analysis%kind /= 'dynamics' .or. .not. scene%beam%modal()) return
+      every = 0
+      if (.not. is_unset(scene%beam%modal_damping)) every = scene%beam%modal_damping
+      forcing = [scene%load%distributed_frequency, scene%load%point_frequency, scene%load%base_frequency]
+      loaded = [abs(scene%load%distributed) > 0, abs(scene%load%point_force) > 0, abs(scene%load%base_amplitude) > 0]
+      call build_modal_damping(prepared%model, every, scene%beam%modal_damping_ratios, &
+                               default_reduction_frequency(scene%time%dt, pack(forcing, loaded)), &
+                               scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness, scene%time%dt, &
+                               prepared%modal_forces, prepared%modal_rates, stat, errmsg)
+      if (stat /= 0) return
+      if (prepared%reduced) prepared%modal_forces = matmul(transpose(prepared%reduction%transform), prepared%modal_forces)
+   end subroutine modal_damping_of
 
    !> The system of the mesh itself, starting from the initial fields.
    subroutine full_system(prepared)
@@ -129,11 +162,16 @@ contains
       class(time_stepper), allocatable, intent(out) :: stepper
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      type(stepper_settings) :: settings
+      settings = stepper_settings_of(scene)
+      if (allocated(prepared%modal_rates)) then
+         settings%modal_forces = prepared%modal_forces
+         settings%modal_rates = prepared%modal_rates
+      end if
       if (prepared%resuming) then
-         call new_time_stepper(prepared%system, stepper_settings_of(scene), prepared%start, stepper, stat, errmsg, &
-                               prepared%resume)
+         call new_time_stepper(prepared%system, settings, prepared%start, stepper, stat, errmsg, prepared%resume)
       else
-         call new_time_stepper(prepared%system, stepper_settings_of(scene), prepared%start, stepper, stat, errmsg)
+         call new_time_stepper(prepared%system, settings, prepared%start, stepper, stat, errmsg)
       end if
    end subroutine new_stepper
 

@@ -29,6 +29,7 @@ module vibrobeam_recorder
    use vibrobeam_text, only: real_text
    use vibrobeam_scene, only: scene_type, is_unset, forcing_of
    use vibrobeam_model, only: beam_model, nodal_displacement, point_row, node_row
+   use vibrobeam_modes, only: reference_frequencies
    use vibrobeam_reduction, only: reduced_basis
    use vibrobeam_contact_set, only: contact_value
    use vibrobeam_time_stepper, only: time_stepper
@@ -110,12 +111,19 @@ module vibrobeam_recorder
 
 contains
 
-   !> The default of &output episode_gap: 0.05 of the period 2 pi/omega_1 of the first mode
-   !! of the continuum on the model's supports (closed form, `boundary%natural_frequency`) (s).
+   !> The default of &output episode_gap: 0.05 of the period 2 pi/omega of the first
+   !! flexible mode of the beam on the model's supports (`reference_frequencies`: the
+   !! continuum's closed form where there is one) (s); 0 when it has none.
    function default_episode_gap(model) result(gap)
       type(beam_model), intent(in) :: model
-      real(dp) :: gap
-      gap = 0.05_dp*2*acos(-1.0_dp)/model%boundary%natural_frequency(1, model%length, model%ei/model%rho_s)
+      real(dp) :: gap, omega(3)
+      logical :: closed_form
+      integer :: stat, first
+      character(len=256) :: errmsg
+      call reference_frequencies(model%structure, model%length, model%rho_s, model%ei, omega, closed_form, stat, errmsg)
+      first = findloc(omega > 0, .true., dim=1)
+      gap = 0
+      if (stat == 0 .and. first > 0) gap = 0.05_dp*2*acos(-1.0_dp)/omega(first)
    end function default_episode_gap
 
    !> Set up for a run that ends at step `last_step`. `v0` is the initial velocity of the

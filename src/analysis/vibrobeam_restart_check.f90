@@ -1,7 +1,7 @@
 !> Whether a scene may continue the checkpoint of an earlier result (docs/output.md,
 !! "Checkpoint and restart"; `&initial from_file`, and a sweep that starts from a file):
 !! the scene must match the file in its model (basis, elements, reduction, length, beam
-!! data), its time scheme (scheme, dt, theta, gamma) and its contact points (count and x);
+!! data, supports, springs and point masses), its time scheme (scheme, dt, theta, gamma) and its contact points (count and x);
 !! a single run's continuation also in its compliant stops. Loads, restitution, rigid
 !! obstacle levels, a stop's damping and outputs may change. Reading the checkpoint itself
 !! is `vibrobeam_checkpoint`'s.
@@ -70,6 +70,8 @@ contains
          end if
          call compare_model(file, list, prefix, stat, errmsg)
          if (stat /= 0) exit compare
+         call compare_structure(file, list, prefix, stat, errmsg)
+         if (stat /= 0) exit compare
          call compare_contact_points(file, contact_x, prefix, stat, errmsg)
          if (stat /= 0) exit compare
          if (present(stops)) then
@@ -110,6 +112,78 @@ contains
          if (stat /= 0) return
       end do
    end subroutine compare_model
+
+   !> The supports, springs and point masses (&beam left_end, right_end and its springs,
+   !! &supports, &masses): listed only when given, so each is compared as resolved (the
+   !! ends clamped-free, the springs 0, the groups empty when absent), then element by
+   !! element.
+   subroutine compare_structure(file, list, prefix, stat, errmsg)
+      type(h5_reader), intent(in) :: file
+      type(scene_entry), intent(in) :: list(:)
+      character(len=*), intent(in) :: prefix
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=*), parameter :: ends(2) = [character(len=9) :: 'left_end', 'right_end']
+      character(len=*), parameter :: defaults(2) = [character(len=7) :: 'clamped', 'free']
+      character(len=*), parameter :: springs(4) = [character(len=23) :: 'left_spring', 'left_rotational_spring', &
+                                                   'right_spring', 'right_rotational_spring']
+      character(len=*), parameter :: groups(2) = [character(len=8) :: 'supports', 'masses']
+      character(len=*), parameter :: why = '; the supports, springs and point masses make the model''s unknowns, '// &
+                                           'stiffness and mass: they must match'
+      character(len=:), allocatable :: in_file, in_scene, name
+      real(dp) :: file_value, scene_value
+      integer(int64) :: file_count, scene_count
+      integer :: k, e
+      stat = 0
+      errmsg = ''
+      do k = 1, 2
+         name = 'beam.'//trim(ends(k))
+         in_file = trim(defaults(k))
+         if (file%has_attr('/', name)) call file%attr_string('/', name, in_file, stat, errmsg)
+         if (stat /= 0) return
+         in_scene = trim(defaults(k))
+         do e = 1, size(list)
+            if (list(e)%name == name) in_scene = trim(list(e)%string_value)
+         end do
+         if (in_file /= in_scene) then
+            call mismatch(prefix, name, ''''//in_file//'''', ''''//in_scene//'''', why, stat, errmsg)
+            return
+         end if
+      end do
+      do k = 1, 4
+         name = 'beam.'//trim(springs(k))
+         file_value = 0
+         if (file%has_attr('/', name)) call file%attr_real('/', name, file_value, stat, errmsg)
+         if (stat /= 0) return
+         scene_value = 0
+         do e = 1, size(list)
+            if (list(e)%name == name) scene_value = list(e)%real_value
+         end do
+         if (.not. same_bits(file_value, scene_value)) then
+            call mismatch(prefix, name, real_text(file_value), real_text(scene_value), why, stat, errmsg)
+            return
+         end if
+      end do
+      do k = 1, 2
+         name = trim(groups(k))//'.count'
+         file_count = 0
+         if (file%has_attr('/', name)) call file%attr_int64('/', name, file_count, stat, errmsg)
+         if (stat /= 0) return
+         scene_count = 0
+         do e = 1, size(list)
+            if (list(e)%name == name) scene_count = list(e)%integer_value
+         end do
+         if (file_count /= scene_count) then
+            call mismatch(prefix, name, integer_text(int(file_count)), integer_text(int(scene_count)), why, stat, errmsg)
+            return
+         end if
+         do e = 1, size(list)
+            if (index(list(e)%name, trim(groups(k))//'.') /= 1 .or. list(e)%name == name) cycle
+            call compare_entry(file, list(e), prefix, why, stat, errmsg)
+            if (stat /= 0) return
+         end do
+      end do
+   end subroutine compare_structure
 
    !> The file's contact points (/contact/x) against `contact_x`, count and positions
    !! bitwise.

@@ -314,16 +314,21 @@ contains
       call self%h5%discard()
    end subroutine discard_results
 
-   !> /modes/frequency (rad/s) and /modes/frequency_hz (Hz), /modes/shape.
-   subroutine write_modes(self, omega, shapes, stat, errmsg)
+   !> /modes/frequency (rad/s) and /modes/frequency_hz (Hz), /modes/shape (or the same
+   !! under `group`).
+   subroutine write_modes(self, omega, shapes, stat, errmsg, group)
       class(result_files), intent(inout) :: self
       real(dp), intent(in) :: omega(:)       !! angular frequencies (rad/s)
       real(dp), intent(in) :: shapes(:,:)    !! (N+1, modes), tip value 1
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      call self%h5%write_real_1d('/modes/frequency', omega, 'rad/s', stat, errmsg)
-      if (stat == 0) call self%h5%write_real_1d('/modes/frequency_hz', omega/(2*pi), 'Hz', stat, errmsg)
-      if (stat == 0) call self%h5%write_real_2d('/modes/shape', shapes, '1 (tip value 1)', stat, errmsg)
+      character(len=*), intent(in), optional :: group   !! '/modes' (default) or '/contact_modes'
+      character(len=:), allocatable :: name
+      name = '/modes'
+      if (present(group)) name = group
+      call self%h5%write_real_1d(name//'/frequency', omega, 'rad/s', stat, errmsg)
+      if (stat == 0) call self%h5%write_real_1d(name//'/frequency_hz', omega/(2*pi), 'Hz', stat, errmsg)
+      if (stat == 0) call self%h5%write_real_2d(name//'/shape', shapes, '1 (tip value 1)', stat, errmsg)
    end subroutine write_modes
 
    !> /static/displacement, /static/reaction and /static/contact_x.

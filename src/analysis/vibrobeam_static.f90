@@ -23,6 +23,9 @@
 !!   change otherwise (Judice & Pires 1994, as in theory §5), started on nested subsets of
 !!   the contact points (every 2^l-th node and the ends of each run of nodes, coarsest
 !!   first), so that each level only moves the ends of the contact zones by a node or two;
+!! - (other structures than the uniform clamped-free beam, where this double integration
+!!   from the clamp does not apply, go to `vibrobeam_static_band`: a band Cholesky of K
+!!   and the contact points' dense coupling)
 !! - an a-posteriori check (`check_equilibrium`): the held nodes on their bounds, the free
 !!   ones within them and the springs' forces on their laws to the derived round-off bound
 !!   of the positions, and U against K^-1 (F + H^T P) recomputed independently to its
@@ -31,7 +34,9 @@
 module vibrobeam_static
    use vibrobeam_kinds, only: dp
    use vibrobeam_status, only: stat_no_convergence, stat_residual_check_failed
-   use vibrobeam_model, only: beam_model, nodal_displacement
+   use vibrobeam_model, only: beam_model, nodal_displacement, flexibility_applies
+   use vibrobeam_static_report, only: static_report
+   use vibrobeam_static_band, only: solve_static_band
    use vibrobeam_flexibility, only: cantilever_flexibility, flexibility_rounding
    use vibrobeam_contact_set, only: contact_set, no_bound
    use vibrobeam_static_iterate, only: static_state, solve_supported, index_springs, has_springs, spring_law, &
@@ -44,24 +49,6 @@ module vibrobeam_static
    integer, parameter :: coarsest_points = 32
    !> Active-set iterations (held-set solves) allowed per level when `max_iterations` is 0.
    integer, parameter :: default_level_iterations = 100
-
-   !> What a static solve did and how accurate its answer is (/static attributes).
-   type :: static_report
-      integer :: iterations = 0          !! held-set solves (each O(J))
-      integer :: levels = 0              !! nested subsets of contact points solved
-      real(dp) :: error_estimate = 0     !! max over the nodes |u - (K^-1 (F + H^T P))_node| (m)
-      real(dp) :: error_bound = 0        !! the largest round-off bound it was compared with (m)
-      real(dp) :: position_bound = 0     !! the largest bound of a nodal displacement's round-off (m)
-      real(dp) :: displacement_scale = 0 !! max |u| over the nodes (m)
-      real(dp), allocatable :: unknown_bound(:)   !! (J) derived bound of the round-off of each unknown
-      real(dp), allocatable :: reaction_bound(:)  !! (contact points) derived bound of the round-off of each reaction (N)
-      !> derived bound of the round-off of the sum of the reactions (N): the moments' errors
-      !! telescope in the sum, sum_j P_j = (lambda_0 - lambda_1)/L_1, leaving theirs at the
-      !! first span; each slope (lambda_(j-1) - lambda_j)/L_j is computed once and enters two
-      !! reactions with opposite signs, so of the rounding of forming the P_j only that of
-      !! the first slope (2 eps) and of each final subtraction (eps |P_j|) remains
-      real(dp) :: reaction_sum_bound = 0
-   end type static_report
 
 contains
 
@@ -86,6 +73,11 @@ contains
       type(static_report) :: done
       real(dp), allocatable :: free_curvature(:), curvature_error(:)
       integer :: limit
+      if (.not. flexibility_applies(model)) then
+         ! every other structure: the band Cholesky of K (docs/method.md, "Statics")
+         call solve_static_band(model, contacts, force, u, reaction, iterations, stat, errmsg, max_iterations, report)
+         return
+      end if
       iterations = 0
       u = 0
       reaction = 0

@@ -18,9 +18,9 @@ module vibrobeam_text_output
    public :: derived_file, derive_text_files, discard_derived, text_file_name, text_suffixes, path_length
 
    !> Every suffix a result's .dat files can have.
-   character(len=*), parameter :: text_suffixes(16) = [character(len=16) :: 'modes', 'shapes', 'static', &
+   character(len=*), parameter :: text_suffixes(18) = [character(len=16) :: 'modes', 'shapes', 'static', &
       'reactions', 'tip', 'energy', 'impacts', 'episodes', 'points', 'field', 'spectrum', 'obstacles', 'contact', &
-      'force', 'sweep', 'poincare']
+      'force', 'sweep', 'poincare', 'contact_modes', 'contact_shapes']
 
 contains
 
@@ -59,7 +59,11 @@ contains
       allocate (run%files(0))
       derive: block
          if (run%file%exists('/modes/frequency')) then
-            call modes_files(run, stat, errmsg)
+            call modes_files(run, '/modes', 'modes', 'shapes', stat, errmsg)
+            if (stat /= 0 .or. run%interrupted) exit derive
+         end if
+         if (run%file%exists('/contact_modes/frequency')) then
+            call modes_files(run, '/contact_modes', 'contact_modes', 'contact_shapes', stat, errmsg)
             if (stat /= 0 .or. run%interrupted) exit derive
          end if
          if (run%file%exists('/static/displacement')) then
@@ -80,20 +84,23 @@ contains
       end if
    end subroutine derive_text_files
 
-   !> STEM_modes.dat (each mode's frequency) and STEM_shapes.dat (the mode shapes).
-   subroutine modes_files(run, stat, errmsg)
+   !> STEM_modes.dat (each mode's frequency) and STEM_shapes.dat (the mode shapes) of the
+   !! modes in `group` (/modes; /contact_modes with the suffixes contact_modes,
+   !! contact_shapes).
+   subroutine modes_files(run, group, modes_suffix, shapes_suffix, stat, errmsg)
       type(derivation), intent(inout) :: run
+      character(len=*), intent(in) :: group, modes_suffix, shapes_suffix
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(text_sink) :: sink
       real(dp), allocatable :: omega(:), x(:), shapes(:)
       character(len=64) :: line
       integer :: k, i, nodes
-      call run%file%read_reals('/modes/frequency', omega, stat, errmsg)
+      call run%file%read_reals(group//'/frequency', omega, stat, errmsg)
       if (stat == 0) call run%file%read_reals('/mesh/x', x, stat, errmsg)
-      if (stat == 0) call run%file%read_reals('/modes/shape', shapes, stat, errmsg)
+      if (stat == 0) call run%file%read_reals(group//'/shape', shapes, stat, errmsg)
       if (stat /= 0) return
-      call run%open_sink(sink, 'modes', 'mode  omega (rad/s)  frequency (Hz)', stat, errmsg)
+      call run%open_sink(sink, modes_suffix, 'mode  omega (rad/s)  frequency (Hz)', stat, errmsg)
       if (stat /= 0) return
       do k = 1, size(omega)
          write (line, '(i6, 2es24.15)') k, omega(k), omega(k)/(2*pi)
@@ -102,7 +109,7 @@ contains
       end do
       call run%close_sink(sink, stat, errmsg)
       if (stat /= 0) return
-      call run%open_sink(sink, 'shapes', 'x (m)  then the shape of mode 1, 2, ... (tip value 1)', stat, errmsg)
+      call run%open_sink(sink, shapes_suffix, 'x (m)  then the shape of mode 1, 2, ... (tip value 1)', stat, errmsg)
       if (stat /= 0) return
       nodes = size(x)
       do i = 1, nodes

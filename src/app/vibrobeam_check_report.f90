@@ -1,8 +1,9 @@
 !> What `vibrobeam --check` tells about a valid scene before it is run, and the warnings
 !! every run prints first (docs/input.md, "What --check prints" and "Warnings").
 !!
-!! - the first natural frequencies of the clamped-free beam: the continuum closed form
-!!   (theory §7, `vibrobeam_cantilever_exact`), which ignores the obstacles;
+!! - the first natural frequencies of the beam on its supports: the continuum closed form
+!!   (theory §7) or computed (`scene_frequencies`), which ignore the obstacles; the first
+!!   flexible mode stands for "mode 1" below when rigid-body motions come first;
 !! - the highest frequency of the discrete model (`vibrobeam_highest_frequency`);
 !! - omega dt for mode 1 and for the highest mode, steps per period of mode 1, and how many
 !!   modes get at least `steps_per_period_wanted` steps per period;
@@ -25,8 +26,10 @@
 module vibrobeam_check_report
    use vibrobeam_kinds, only: dp, pi
    use vibrobeam_text, only: real_text, integer_text, significant_text
-   use vibrobeam_scene, only: scene_type, is_unset
+   use vibrobeam_scene, only: scene_type, is_unset, held_conditions
+   use vibrobeam_scene_structure, only: scene_frequencies
    use vibrobeam_model, only: beam_model
+   use vibrobeam_boundary, only: boundary_conditions
    use vibrobeam_highest_frequency, only: highest_frequency
    use vibrobeam_result_estimate, only: result_size, estimate_result_size
    use vibrobeam_resolution_advice, only: resolution_advice_text
@@ -55,7 +58,9 @@ module vibrobeam_check_report
 
    !> The numbers --check prints.
    type :: check_report
-      real(dp) :: omega(listed_modes) = 0     !! continuum natural frequencies (rad/s)
+      real(dp) :: omega(listed_modes) = 0     !! natural frequencies (rad/s), `scene_frequencies`
+      integer :: first = 1                    !! the first flexible mode (omega > 0) among them; 0: none
+      logical :: closed_form = .true.         !! omega is the continuum's closed form (else computed)
       integer :: unknowns = 0                 !! J
       real(dp) :: omega_max = 0               !! highest frequency of the discrete model (rad/s)
       logical :: stepped = .false.            !! kind = 'dynamics': the time-step numbers mean something
@@ -79,20 +84,17 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer, intent(in), optional :: contact_points
-      integer :: n
-      do n = 1, listed_modes
-         report%omega(n) = scene%beam%boundary%natural_frequency(n, scene%beam%length, k2_of(scene))
-      end do
+      call scene_frequencies(scene, report%omega, report%first, report%closed_form)
       report%unknowns = model%unknowns
       call highest_frequency(model, report%omega_max, stat, errmsg)
       if (stat /= 0) return
       report%size = estimate_result_size(scene, contact_points)
       report%stepped = scene%analysis%kind == 'dynamics'
       if (.not. report%stepped) return
-      report%omega1_dt = report%omega(1)*scene%time%dt
+      if (report%first > 0) report%omega1_dt = report%omega(report%first)*scene%time%dt
       report%omega_max_dt = report%omega_max*scene%time%dt
-      report%steps_per_period = 2*pi/report%omega1_dt
-      report%resolved_modes = resolved_modes(scene)
+      if (report%first > 0) report%steps_per_period = 2*pi/report%omega1_dt
+      report%resolved_modes = resolved_modes(scene, report)
       call velocity_scale(scene, report%velocity, report%velocity_source)
       report%penetration = scene%time%dt*report%velocity
    end subroutine make_check_report
@@ -109,10 +111,29 @@ contains
       integer :: n
       real(dp) :: time_scale, beam_stiffness, mass
       logical :: single_run
-      text = 'natural frequencies of the '//scene%beam%boundary%name()//' beam (continuum closed form; the '// &
-             'obstacles are ignored):'// &
-             new_line('a')
+      type(boundary_conditions) :: supports
+      character(len=:), allocatable :: what
+      supports = scene%beam%supports()
+      what = 'the '//supports%name()//' beam'
+      if (allocated(scene%supports)) then
+         if (size(scene%supports) > 0) what = what//' on '//integer_text(size(scene%supports))//' intermediate support'// &
+                                              trim(merge('s', ' ', size(scene%supports) > 1))
+      end if
+      if (allocated(scene%masses)) then
+         if (size(scene%masses) > 0) what = what//' with '//integer_text(size(scene%masses))//' point mass'// &
+                                            trim(merge('es', '  ', size(scene%masses) > 1))
+      end if
+      if (report%closed_form) then
+         text = 'natural frequencies of '//what//' (continuum closed form; the obstacles are ignored):'//new_line('a')
+      else
+         text = 'natural frequencies of '//what//' (computed with 64 Hermite elements; the obstacles are ignored):'// &
+                new_line('a')
+      end if
       do n = 1, listed_modes
+         if (.not. report%omega(n) > 0) then
+            text = text//'  mode '//integer_text(n)//': omega = 0, a rigid-body motion'//new_line('a')
+            cycle
+         end if
          text = text//'  mode '//integer_text(n)//': omega = '//g(report%omega(n))//' rad/s, f = '// &
                 g(report%omega(n)/(2*pi))//' Hz'
          if (report%stepped) text = text//', omega*dt = '//g(report%omega(n)*scene%time%dt)//', '// &
@@ -129,8 +150,9 @@ contains
          text = text//size_line()
          return
       end if
-      text = text//'steps per period of mode 1: '//g(report%steps_per_period)//'; '// &
-             resolved_text(report%resolved_modes, report%unknowns)//new_line('a')
+      if (report%first > 0) text = text//'steps per period of mode '//integer_text(report%first)//': '// &
+                                   g(report%steps_per_period)//'; '// &
+                                   resolved_text(report%resolved_modes, report%unknowns)//new_line('a')
       text = text//'penetration scale dt*|v| = '//g(report%penetration)//' m, with |v| = '//g(report%velocity)// &
              ' m/s: '//report%velocity_source//new_line('a')
       do n = 1, size(scene%obstacles)
@@ -169,7 +191,8 @@ contains
       type(scene_type), intent(in) :: scene
       integer, intent(in) :: i
       real(dp), intent(out) :: time_scale, beam_stiffness, effective_mass
-      real(dp) :: x, k, omega1
+      real(dp) :: x, k, omega1, omega(listed_modes)
+      integer :: first
       time_scale = 0
       beam_stiffness = 0
       effective_mass = 0
@@ -181,7 +204,9 @@ contains
          if (o%x_to - o%x_from > 1e-9_dp*scene%beam%length/scene%mesh%elements) k = k*(o%x_to - o%x_from)
          ! ei() is k2 = EI/(rho S) when the beam is given by k2: then per unit rho S, like k
          beam_stiffness = 3*scene%beam%ei()/x**3
-         omega1 = scene%beam%boundary%natural_frequency(1, scene%beam%length, k2_of(scene))
+         call scene_frequencies(scene, omega, first)
+         if (first == 0) return
+         omega1 = omega(first)
          effective_mass = beam_stiffness/omega1**2
          time_scale = pi*sqrt(effective_mass/(k + beam_stiffness))
       end associate
@@ -192,17 +217,21 @@ contains
    function scene_warnings(scene) result(text)
       type(scene_type), intent(in) :: scene
       character(len=:), allocatable :: text
-      real(dp) :: omega1, steps, ratio, time_scale, beam_stiffness, mass
-      integer :: i
+      real(dp) :: omega1, steps, ratio, time_scale, beam_stiffness, mass, omega(listed_modes)
+      integer :: i, first
       text = ''
       if (scene%analysis%kind == 'dynamics') then
-         omega1 = scene%beam%boundary%natural_frequency(1, scene%beam%length, k2_of(scene))
-         steps = 2*pi/(omega1*scene%time%dt)
-         if (steps < steps_per_period_wanted) &
-            call add('&time dt = '//real_text(scene%time%dt)//' s gives '//g(steps)//' steps per period of mode 1 '// &
-                     '(omega_1 = '//g(omega1)//' rad/s, continuum): fewer than '//g(steps_per_period_wanted)// &
-                     ', so no natural mode is resolved; dt <= '//g(2*pi/(omega1*steps_per_period_wanted))// &
-                     ' s resolves mode 1')
+         call scene_frequencies(scene, omega, first)
+         if (first > 0) then
+            omega1 = omega(first)
+            steps = 2*pi/(omega1*scene%time%dt)
+            if (steps < steps_per_period_wanted) &
+               call add('&time dt = '//real_text(scene%time%dt)//' s gives '//g(steps)//' steps per period of mode '// &
+                        integer_text(first)//' (omega_'//integer_text(first)//' = '//g(omega1)// &
+                        ' rad/s, continuum): fewer than '//g(steps_per_period_wanted)// &
+                        ', so no natural mode is resolved; dt <= '//g(2*pi/(omega1*steps_per_period_wanted))// &
+                        ' s resolves mode '//integer_text(first))
+         end if
          do i = 1, size(scene%obstacles)
             call contact_time_scale(scene, i, time_scale, beam_stiffness, mass)
             if (time_scale <= 0) cycle
@@ -246,15 +275,15 @@ contains
       type(scene_type), intent(in) :: scene
       real(dp), intent(out) :: velocity
       character(len=:), allocatable, intent(out) :: source
-      real(dp) :: candidate, deflection, ei, length, a
+      real(dp) :: candidate, deflection, ei, length, a, omega(100)
+      integer :: first
       velocity = 0
       source = 'nothing moves (zero initial data, no loads): no penetration expected'
       if (scene%initial%velocity /= 'zero') call consider(abs(scene%initial%velocity_amplitude), 'the initial velocity '// &
                                                   '(&initial velocity_amplitude)')
+      call scene_frequencies(scene, omega(1:max(listed_modes, scene%initial%displacement_mode)), first)
       if (scene%initial%displacement == 'mode') &
-         call consider(abs(scene%initial%displacement_amplitude)* &
-                       scene%beam%boundary%natural_frequency(scene%initial%displacement_mode, scene%beam%length, &
-                                                             k2_of(scene)), &
+         call consider(abs(scene%initial%displacement_amplitude)*omega(scene%initial%displacement_mode), &
                        'a free oscillation of the initial displacement (displacement_amplitude x omega_'// &
                        integer_text(scene%initial%displacement_mode)//')')
       if (abs(scene%load%base_acceleration) > 0) then
@@ -268,8 +297,8 @@ contains
       length = scene%beam%length
       a = scene%load%point_position
       deflection = abs(scene%load%distributed)*length**4/(8*ei) + abs(scene%load%point_force)*a**2*(3*length - a)/(6*ei)
-      call consider(deflection*scene%beam%boundary%natural_frequency(1, length, k2_of(scene)), &
-                    'a free oscillation in mode 1 with the static tip deflection under the loads ('// &
+      if (first > 0) call consider(deflection*omega(first), &
+                    'a free oscillation in mode '//integer_text(first)//' with the static tip deflection under the loads ('// &
                     g(deflection)//' m) as amplitude (a resonant load moves faster)')
    contains
       subroutine consider(value, what)
@@ -283,24 +312,36 @@ contains
       end subroutine consider
    end subroutine velocity_scale
 
-   !> Continuum modes with at least steps_per_period_wanted steps per period, up to J.
-   !! Beyond the listed modes, beta_n L = (2n - 1) pi/2 to within exp(-beta_n L) (the
-   !! frequency equation 1 + cos b cosh b = 0), which gives the count in closed form
-   !! without evaluating cosh of large arguments.
-   integer function resolved_modes(scene)
+   !> Modes with at least steps_per_period_wanted steps per period, up to J (the rigid-body
+   !! motions count as resolved). Beyond the listed modes the roots b_n = L (omega_n^2/k2)^(1/4)
+   !! of every pair of end supports are spaced by pi to within exp(-b_n) (theory §7; for
+   !! the clamped-free beam b_n = (2n - 1) pi/2), which gives the count without evaluating
+   !! cosh of large arguments; for other structures the spacing is the continuum's
+   !! asymptote, so the count is an estimate.
+   integer function resolved_modes(scene, report)
       type(scene_type), intent(in) :: scene
-      real(dp) :: omega_limit, count
-      integer :: n
+      type(check_report), intent(in) :: report
+      real(dp) :: omega_limit, count, b_limit, b_last
+      integer :: n, unknowns
+      type(boundary_conditions) :: supports
+      supports = scene%beam%supports()
       omega_limit = 2*pi/(steps_per_period_wanted*scene%time%dt)
+      unknowns = scene%mesh%unknowns(held_conditions(scene))
       resolved_modes = 0
-      do n = 1, min(listed_modes, scene%mesh%unknowns())
-         if (scene%beam%boundary%natural_frequency(n, scene%beam%length, k2_of(scene)) > omega_limit) return
+      do n = 1, min(listed_modes, unknowns)
+         if (report%omega(n) > omega_limit) return
          resolved_modes = n
       end do
       if (resolved_modes < listed_modes) return
-      ! omega_n = ((2n - 1) pi/2)^2 sqrt(k2)/L^2 <= omega_limit
-      count = ((2/pi)*sqrt(omega_limit*scene%beam%length**2/sqrt(k2_of(scene))) + 1)/2
-      resolved_modes = int(min(real(scene%mesh%unknowns(), dp), max(real(listed_modes, dp), aint(count))))
+      b_limit = sqrt(omega_limit*scene%beam%length**2/sqrt(k2_of(scene)))
+      if (supports%is_clamped_free() .and. report%closed_form) then
+         ! omega_n = ((2n - 1) pi/2)^2 sqrt(k2)/L^2 <= omega_limit
+         count = ((2/pi)*b_limit + 1)/2
+      else
+         b_last = sqrt(report%omega(listed_modes)*scene%beam%length**2/sqrt(k2_of(scene)))
+         count = listed_modes + (b_limit - b_last)/pi
+      end if
+      resolved_modes = int(min(real(unknowns, dp), max(real(listed_modes, dp), aint(count))))
    end function resolved_modes
 
    function resolved_text(modes, unknowns) result(text)

@@ -13,6 +13,7 @@ module vibrobeam_resolution_advice
    use vibrobeam_kinds, only: dp, pi
    use vibrobeam_text, only: integer_text
    use vibrobeam_scene, only: scene_type
+   use vibrobeam_scene_structure, only: scene_frequencies
    implicit none
    private
    public :: resolution_advice_text, advice_time_step, elements_converged, steps_per_period_converged
@@ -28,11 +29,17 @@ module vibrobeam_resolution_advice
 contains
 
    !> The largest dt the advice asks for: steps_per_period_converged steps per period of
-   !! mode 1 of the clamped-free beam (continuum closed form, theory §7).
-   real(dp) function advice_time_step(scene)
+   !! the first flexible mode of the beam on its supports (continuum closed form, theory §7,
+   !! or `scene_frequencies`); huge when the beam has none.
+   real(dp) function advice_time_step(scene, mode)
       type(scene_type), intent(in) :: scene
-      advice_time_step = 2*pi/(scene%beam%boundary%natural_frequency(1, scene%beam%length, scene%beam%ei()/scene%beam%rho_s())* &
-                               steps_per_period_converged)
+      integer, intent(out), optional :: mode   !! that mode's number (1 unless rigid-body motions come first)
+      real(dp) :: omega(3)
+      integer :: first
+      call scene_frequencies(scene, omega, first)
+      advice_time_step = huge(1.0_dp)
+      if (first > 0) advice_time_step = 2*pi/(omega(first)*steps_per_period_converged)
+      if (present(mode)) mode = max(first, 1)
    end function advice_time_step
 
    !> The advice as lines of text, for a dynamics scene with at least one obstacle (empty
@@ -44,20 +51,22 @@ contains
       character(len=:), allocatable :: text
       real(dp) :: dt_wanted, steps
       logical :: time_ok, mesh_ok
+      integer :: mode
       text = ''
       if (scene%analysis%kind /= 'dynamics' .or. size(scene%obstacles) == 0) return
-      dt_wanted = advice_time_step(scene)
+      dt_wanted = advice_time_step(scene, mode)
       steps = steps_per_period_converged*dt_wanted/scene%time%dt
       time_ok = scene%time%dt <= dt_wanted
       mesh_ok = scene%mesh%elements >= elements_converged
       text = 'resolution advice for the statistics (docs/statistics.md, "Which statistics converge"):'// &
              new_line('a')
       text = text//'  converge to about 2 standard errors with dt <= '//g(dt_wanted)//' s ('// &
-             integer_text(nint(steps_per_period_converged))//' steps per period of mode 1) and elements >= '// &
+             integer_text(nint(steps_per_period_converged))//' steps per period of mode '//integer_text(mode)// &
+             ') and elements >= '// &
              integer_text(elements_converged)//': RMS tip displacement, episode rate, impulse per episode, '// &
              'contact force, power input and dissipated in all, dominant frequency'//new_line('a')
       text = text//'  '//what//': dt = '//g(scene%time%dt)//' s ('//integer_text(int(steps))// &
-             ' steps per period of mode 1), elements = '//integer_text(scene%mesh%elements)//': '
+             ' steps per period of mode '//integer_text(mode)//'), elements = '//integer_text(scene%mesh%elements)//': '
       if (time_ok .and. mesh_ok) then
          text = text//'resolved'
       else

@@ -11,7 +11,7 @@ module vibrobeam_lapack
    implicit none
    private
    public :: poison_failed_solve
-   public :: dpbtrf, dpbtrs, dpbcon, dsbmv, dsbgvx, dpttrf, dpttrs
+   public :: dpbtrf, dpbtrs, dpbcon, dpbrfs, dsbmv, dsbgvx, dpttrf, dpttrs
    public :: dpotrf, dpotrs, dpotri, dgbtrf, dgbtrs, dgbsv, dgesv, dlamch, dgeqrf, dormqr, dsygv
    public :: dgetrf, dorgqr, dsyev   ! the tests' dense references
 
@@ -43,6 +43,18 @@ module vibrobeam_lapack
          real(dp), intent(out) :: rcond, work(*)
          integer, intent(out) :: iwork(*), info
       end subroutine dpbcon
+      !> Iterative refinement of the solutions X of A X = B (dpbtrf's factor AFB of A), with a
+      !! bound FERR of each solution's forward error (relative, max norm) and its
+      !! componentwise backward error BERR.
+      subroutine dpbrfs(uplo, n, kd, nrhs, ab, ldab, afb, ldafb, b, ldb, x, ldx, ferr, berr, work, iwork, info)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, kd, nrhs, ldab, ldafb, ldb, ldx
+         real(dp), intent(in) :: ab(ldab, *), afb(ldafb, *), b(ldb, *)
+         real(dp), intent(inout) :: x(ldx, *)
+         real(dp), intent(out) :: ferr(*), berr(*), work(*)
+         integer, intent(out) :: iwork(*), info
+      end subroutine dpbrfs
       !> y = alpha A x + beta y.
       subroutine dsbmv(uplo, n, k, alpha, a, lda, x, incx, beta, y, incy)
          import :: dp

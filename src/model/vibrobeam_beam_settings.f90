@@ -5,15 +5,16 @@ module vibrobeam_beam_settings
    use vibrobeam_kinds, only: dp
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, unset, is_unset, &
       unset_integer, keyword_length
-   use vibrobeam_boundary, only: boundary_conditions
+   use vibrobeam_boundary, only: boundary_conditions, end_names, end_code, end_clamped, end_free
    use vibrobeam_namelist_schema, only: namelist_variable
    use vibrobeam_frequency_twins, only: hertz_twin
+   use vibrobeam_modal_damping, only: max_damped_modes
    implicit none
    private
    public :: beam_settings, mesh_settings, visit_beam, visit_mesh
 
    !> &beam: the beam's length, stiffness and mass (by E, rho, S, I, or by k2 = EI/(rho S)
-   !! alone, per unit mass), and its Rayleigh damping.
+   !! alone, per unit mass), its end supports and end springs, and its Rayleigh damping.
    type :: beam_settings
       real(dp) :: length = 1                  !! L (m)
       real(dp) :: k2 = 1                      !! EI/(rho S) (m^4/s^2)
@@ -23,11 +24,24 @@ module vibrobeam_beam_settings
       real(dp) :: inertia = unset             !! I (m^4)
       real(dp) :: rayleigh_mass = 0           !! a in C = a M + b K (1/s)
       real(dp) :: rayleigh_stiffness = 0      !! b in C = a M + b K (s)
-      type(boundary_conditions) :: boundary   !! the supports at the ends (clamped-free)
+      !> damping ratio of every mode up to the time step's cut-off (unset: none), and of mode
+      !! k (unset: `modal_damping`); `vibrobeam_modal_damping`
+      real(dp) :: modal_damping = unset
+      real(dp) :: modal_damping_ratios(max_damped_modes) = unset
+      !> end supports as given ('' not given: clamped at x = 0, free at x = L; `supports`
+      !! resolves them)
+      character(len=keyword_length) :: left_end = '', right_end = ''
+      !> end springs, translational (N/m) and rotational (N m/rad), per unit rho S when the
+      !! beam is given by k2 (like every force); unset: none (listed only when given, so
+      !! that the results of a scene without them keep their attributes)
+      real(dp) :: left_spring = unset, left_rotational_spring = unset
+      real(dp) :: right_spring = unset, right_rotational_spring = unset
    contains
       procedure :: physical                   !! given by E, rho, S, I?
       procedure :: rho_s                      !! mass per unit length (kg/m)
       procedure :: ei                         !! bending stiffness (N m^2)
+      procedure :: supports                   !! the end supports and springs, resolved
+      procedure :: modal                      !! is any damping per mode given?
    end type beam_settings
 
    !> &mesh: the finite elements, their basis, and the reduced model of dynamics.
@@ -63,6 +77,26 @@ contains
                                      'a in the Rayleigh damping C = a M + b K'), beam%rayleigh_mass)
       call visitor%variable(real_row('beam', 'rayleigh_stiffness', 's', 0.0_dp, 1e3_dp, &
                                      'b in the Rayleigh damping C = a M + b K'), beam%rayleigh_stiffness)
+      call visitor%variable(real_row('beam', 'modal_damping', '', 0.0_dp, 1.0_dp, &
+                                     'damping ratio of every mode the time step resolves (default none)', &
+                                     optional=.true.), beam%modal_damping)
+      call visitor%variable(real_row('beam', 'modal_damping_ratios', '', 0.0_dp, 1.0_dp, &
+                                     'damping ratio of mode k, overriding modal_damping', extent=max_damped_modes, &
+                                     optional=.true.), beam%modal_damping_ratios)
+      call visitor%variable(keyword_row('beam', 'left_end', end_names, keyword_length, &
+                                        'support at x = 0 (default clamped)', optional=.true.), beam%left_end)
+      call visitor%variable(keyword_row('beam', 'right_end', end_names, keyword_length, &
+                                        'support at x = L (default free)', optional=.true.), beam%right_end)
+      call visitor%variable(real_row('beam', 'left_spring', 'N/m', 0.0_dp, 1e30_dp, &
+                                     'translational spring at x = 0 (default none)', optional=.true.), beam%left_spring)
+      call visitor%variable(real_row('beam', 'left_rotational_spring', 'N m/rad', 0.0_dp, 1e30_dp, &
+                                     'rotational spring at x = 0 (default none)', optional=.true.), &
+                            beam%left_rotational_spring)
+      call visitor%variable(real_row('beam', 'right_spring', 'N/m', 0.0_dp, 1e30_dp, &
+                                     'translational spring at x = L (default none)', optional=.true.), beam%right_spring)
+      call visitor%variable(real_row('beam', 'right_rotational_spring', 'N m/rad', 0.0_dp, 1e30_dp, &
+                                     'rotational spring at x = L (default none)', optional=.true.), &
+                            beam%right_rotational_spring)
    end subroutine visit_beam
 
    !> Every variable of &mesh, once (docs/input.md, "&mesh"); the cut-off also in Hz, its
@@ -106,9 +140,43 @@ contains
       if (self%physical()) ei = self%youngs_modulus*self%inertia
    end function ei
 
-   !> Unknowns J of the mesh: 2N (Hermite) or N + 1 (B-splines).
-   pure integer function unknowns(self)
+   !> The end supports and end springs of the beam (docs/input.md, "&beam"): left_end and
+   !! right_end, clamped and free when not given; a spring not given is none.
+   pure function supports(self) result(boundary)
+      class(beam_settings), intent(in) :: self
+      type(boundary_conditions) :: boundary
+      boundary%left = end_code(self%left_end)
+      if (boundary%left == 0) boundary%left = end_clamped
+      boundary%right = end_code(self%right_end)
+      if (boundary%right == 0) boundary%right = end_free
+      boundary%left_spring = given(self%left_spring)
+      boundary%left_rotational_spring = given(self%left_rotational_spring)
+      boundary%right_spring = given(self%right_spring)
+      boundary%right_rotational_spring = given(self%right_rotational_spring)
+   contains
+      pure real(dp) function given(value)
+         real(dp), intent(in) :: value
+         given = 0
+         if (.not. is_unset(value)) given = value
+      end function given
+   end function supports
+
+   !> Is a damping ratio per mode given (`modal_damping` or any `modal_damping_ratios`)?
+   pure logical function modal(self)
+      class(beam_settings), intent(in) :: self
+      modal = .not. (is_unset(self%modal_damping) .and. all(is_unset(self%modal_damping_ratios)))
+   end function modal
+
+   !> Unknowns J of the mesh whose supports impose `held` conditions (a held deflection or
+   !! rotation each; `beam_structure%held_count`; 2, the clamp, when absent): its degrees
+   !! of freedom, 2(N + 1) (Hermite) or N + 3 (B-splines), less these: 2N or N + 1 for the
+   !! clamped-free beam.
+   pure integer function unknowns(self, held)
       class(mesh_settings), intent(in) :: self
-      unknowns = merge(2*self%elements, self%elements + 1, self%basis == 'hermite')
+      integer, intent(in), optional :: held
+      integer :: conditions
+      conditions = 2
+      if (present(held)) conditions = held
+      unknowns = merge(2*self%elements + 2, self%elements + 3, self%basis == 'hermite') - conditions
    end function unknowns
 end module vibrobeam_beam_settings

@@ -1,14 +1,23 @@
-!> Closed-form free vibration of an Euler-Bernoulli cantilever (theory §7).
+!> Closed-form free vibration of uniform Euler-Bernoulli beams (theory §7).
 !!
 !! Used for initial data in a natural mode and as the independent reference of the
 !! verification tests. The frequency equation of a beam clamped at 0 and free at L is
 !! `1 + cos(b) cosh(b) = 0`, b = beta L; a beam clamped at 0 and pinned at L (held by a
-!! tip obstacle) has `tan(b) = tanh(b)`.
+!! tip obstacle) has `tan(b) = tanh(b)`. The other pairs of end supports (Blevins,
+!! "Formulas for natural frequency and mode shape", 1979, table 8-1; theory §7) have
+!! `1 - cos(b) cosh(b) = 0` (clamped-clamped, free-free), `sin(b) = 0` (pinned-pinned,
+!! sliding-sliding), `tan(b) + tanh(b) = 0` (clamped-sliding, sliding-free) and
+!! `cos(b) = 0` (sliding-pinned); the last two have the roots n pi and (n - 1/2) pi, the
+!! others are solved here by Newton's method on an overflow-free form (`newton_root`).
 module vibrobeam_cantilever_exact
    use vibrobeam_kinds, only: dp, pi
    implicit none
    private
    public :: cantilever_root, pinned_tip_root, cantilever_frequency, cantilever_mode_shape
+   public :: clamped_clamped_root, clamped_sliding_root
+
+   !> The frequency equations `newton_root` solves.
+   integer, parameter :: clamped_free = 1, clamped_pinned = 2, clamped_clamped = 3, clamped_sliding = 4
 
 contains
 
@@ -17,33 +26,65 @@ contains
    pure function cantilever_root(n) result(b)
       integer, intent(in) :: n   !! mode number, n >= 1
       real(dp) :: b
-      real(dp) :: f, df
-      integer :: iteration
       b = (2*n - 1)*pi/2
       if (n == 1) b = 1.875_dp
-      do iteration = 1, 50
-         f = cos(b) + 1.0_dp/cosh(b)
-         df = -sin(b) - tanh(b)/cosh(b)
-         b = b - f/df
-         if (abs(f/df) <= 4*epsilon(b)*b) exit
-      end do
+      b = newton_root(clamped_free, b)
    end function cantilever_root
 
-   !> n-th positive root b of tan(b) = tanh(b) (clamped-pinned beam), by Newton's method on
-   !! f(b) = sin(b) - cos(b) tanh(b).
+   !> n-th positive root b of tan(b) = tanh(b) (clamped-pinned and pinned-free beams), by
+   !! Newton's method on f(b) = sin(b) - cos(b) tanh(b), from (n + 1/4) pi.
    pure function pinned_tip_root(n) result(b)
       integer, intent(in) :: n   !! mode number, n >= 1
       real(dp) :: b
+      b = newton_root(clamped_pinned, (4*n + 1)*pi/4)
+   end function pinned_tip_root
+
+   !> n-th positive root b of 1 - cos(b) cosh(b) = 0 (clamped-clamped and free-free beams),
+   !! by Newton's method on f(b) = cos(b) - 1/cosh(b), from (n + 1/2) pi (the roots approach
+   !! it like 2 exp(-b): 4.7300, 7.8532, ...).
+   pure function clamped_clamped_root(n) result(b)
+      integer, intent(in) :: n   !! mode number, n >= 1
+      real(dp) :: b
+      b = newton_root(clamped_clamped, (2*n + 1)*pi/2)
+   end function clamped_clamped_root
+
+   !> n-th positive root b of tan(b) + tanh(b) = 0 (clamped-sliding and sliding-free beams),
+   !! by Newton's method on f(b) = sin(b) + cos(b) tanh(b), from (n - 1/4) pi (2.3650,
+   !! 5.4978, ...).
+   pure function clamped_sliding_root(n) result(b)
+      integer, intent(in) :: n   !! mode number, n >= 1
+      real(dp) :: b
+      b = newton_root(clamped_sliding, (4*n - 1)*pi/4)
+   end function clamped_sliding_root
+
+   !> Newton's method on the overflow-free form f of frequency equation `equation` from b,
+   !! until the step is within 4 eps of the root.
+   pure function newton_root(equation, start) result(b)
+      integer, intent(in) :: equation
+      real(dp), intent(in) :: start
+      real(dp) :: b
       real(dp) :: f, df
       integer :: iteration
-      b = (4*n + 1)*pi/4
+      b = start
       do iteration = 1, 50
-         f = sin(b) - cos(b)*tanh(b)
-         df = cos(b) + sin(b)*tanh(b) - cos(b)/cosh(b)**2
+         select case (equation)
+         case (clamped_free)
+            f = cos(b) + 1.0_dp/cosh(b)
+            df = -sin(b) - tanh(b)/cosh(b)
+         case (clamped_pinned)
+            f = sin(b) - cos(b)*tanh(b)
+            df = cos(b) + sin(b)*tanh(b) - cos(b)/cosh(b)**2
+         case (clamped_clamped)
+            f = cos(b) - 1.0_dp/cosh(b)
+            df = -sin(b) + tanh(b)/cosh(b)
+         case default
+            f = sin(b) + cos(b)*tanh(b)
+            df = cos(b) - sin(b)*tanh(b) + cos(b)/cosh(b)**2
+         end select
          b = b - f/df
          if (abs(f/df) <= 4*epsilon(b)*b) exit
       end do
-   end function pinned_tip_root
+   end function newton_root
 
    !> Natural angular frequency (rad/s) of mode n of a cantilever of length `length` (m)
    !! with k2 = EI/(rho S) (m^4/s^2): omega_n = (beta_n L)^2 sqrt(k2)/L^2.

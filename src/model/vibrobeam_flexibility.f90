@@ -35,7 +35,7 @@ module vibrobeam_flexibility
    use vibrobeam_kinds, only: dp
    use vibrobeam_lapack, only: dpttrf, dpttrs, poison_failed_solve
    use vibrobeam_status, only: stat_invalid_argument
-   use vibrobeam_model, only: beam_model
+   use vibrobeam_model, only: beam_model, flexibility_applies
    implicit none
    private
    public :: cantilever_flexibility, flexibility_rounding
@@ -72,9 +72,10 @@ module vibrobeam_flexibility
 
 contains
 
-   !> Prepare K^-1 for the model, which must be clamped at x = 0 and free at x = L (the
-   !! double integration starts at the clamp). stat = stat_invalid_argument for other
-   !! supports; otherwise stat /= 0 only if G cannot be factored (a model with a
+   !> Prepare K^-1 for the model, which must be a uniform beam clamped at x = 0 and free at
+   !! x = L, without end springs, intermediate supports or axial force (`flexibility_applies`:
+   !! the double integration starts at the clamp). stat = stat_invalid_argument for another
+   !! structure; otherwise stat /= 0 only if G cannot be factored (a model with a
    !! non-positive element length or EI).
    subroutine setup(self, model, stat, errmsg)
       class(cantilever_flexibility), intent(out) :: self
@@ -82,10 +83,10 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: e, i, m, n
-      if (.not. model%boundary%is_clamped_free()) then
+      if (.not. flexibility_applies(model)) then
          stat = stat_invalid_argument
-         errmsg = 'the flexibility by double integration is that of the clamped-free beam, not of a '// &
-                  model%boundary%name()//' one'
+         errmsg = 'the flexibility by double integration is that of the uniform clamped-free beam, not of a '// &
+                  model%boundary%name()//' one with its supports, sections or axial force'
          return
       end if
       self%hermite = model%hermite

@@ -7,7 +7,7 @@ module vibrobeam_hermite
    use vibrobeam_kinds, only: dp
    implicit none
    private
-   public :: hermite_shape, hermite_element_mass, hermite_element_stiffness
+   public :: hermite_shape, hermite_element_mass, hermite_element_stiffness, hermite_element_tension
 
 contains
 
@@ -47,4 +47,16 @@ contains
                    -12.0_dp, -6*h, 12.0_dp, -6*h, &
                    6*h, 2*h**2, -6*h, 4*h**2], [4, 4])/h**3
    end function hermite_element_stiffness
+
+   !> Geometric stiffness of an axial force T = 1 (theory §1, "Supports, masses, sections,
+   !! tension"): int N_a' N_b' dx over the element, exact: 1/(30 h) [36 3h -36 3h;
+   !! 3h 4h^2 -3h -h^2; -36 -3h 36 -3h; 3h -h^2 -3h 4h^2].
+   pure function hermite_element_tension(h) result(k)
+      real(dp), intent(in) :: h   !! element length (m)
+      real(dp) :: k(4, 4)
+      k = reshape([36.0_dp, 3*h, -36.0_dp, 3*h, &
+                   3*h, 4*h**2, -3*h, -h**2, &
+                   -36.0_dp, -3*h, 36.0_dp, -3*h, &
+                   3*h, -h**2, -3*h, 4*h**2], [4, 4])/(30*h)
+   end function hermite_element_tension
 end module vibrobeam_hermite

@@ -1,19 +1,25 @@
 !> Initial displacement and velocity of a dynamics run (docs/input.md `&initial`).
 !!
-!! 'mode' data are the closed-form cantilever mode shapes (theory §7), scaled so that the
-!! tip value is the given amplitude, and interpolated on the mesh (Hermite: nodal values
-!! and slopes; B-splines: the spline through the nodal values with the tip slope).
+!! 'mode' data of the uniform clamped-free beam are the closed-form cantilever mode shapes
+!! (theory §7), scaled so that the tip value is the given amplitude, and interpolated on the
+!! mesh (Hermite: nodal values and slopes; B-splines: the spline through the nodal values
+!! with the tip slope). Every other structure (docs/input.md, "&beam" supports) takes the
+!! mode of the discrete model itself (`compute_modes`), scaled like the modes of
+!! &analysis kind = 'modes': the amplitude at a free end, else at its largest nodal value.
 !! 'uniform' velocity is a rigid translation at `amplitude` everywhere but next to the
-!! clamp, ramping monotonically from 0 there: Hermite, v = amplitude at every node with zero
-!! rotation rates (the ramp is the first element); B-splines, every coefficient equal to
+!! clamp (or another end whose deflection a support holds), ramping monotonically from 0
+!! there: Hermite, v = amplitude at every node with zero rotation rates (the ramp is the
+!! first element); B-splines, every coefficient equal to
 !! the amplitude, v = amplitude (1 - B_1 - B_2) by the partition of unity (the ramp spans
 !! the first two elements, v(h) = 3/4 amplitude). Interpolating the nodal values instead,
 !! as for mode data, overshoots: the spline through 0 (value and slope) at the clamp and
 !! the amplitude at every node reaches 1.137 times the amplitude at x = 1.38 h, for every N
 !! (a cubic spline's response to the clamp's jump, decaying by 2 - sqrt(3) per element).
 module vibrobeam_initial_state
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use vibrobeam_kinds, only: dp
-   use vibrobeam_model, only: beam_model, interpolate_field
+   use vibrobeam_model, only: beam_model, interpolate_field, flexibility_applies
+   use vibrobeam_modes, only: compute_modes
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, text_row, &
       keyword_length, path_length
    implicit none
@@ -55,14 +61,26 @@ contains
                             initial%from_file)
    end subroutine visit_initial
 
-   !> Unknowns of amplitude * (closed-form mode `mode`, tip value 1) on the mesh.
+   !> Unknowns of amplitude * (mode `mode`, 1 at the tip) on the mesh: the closed form of
+   !! the uniform clamped-free beam, else the discrete mode (module documentation). NaN
+   !! when that mode cannot be computed (the caller reports a field that is not finite).
    function mode_field(model, mode, amplitude) result(u)
       type(beam_model), intent(in) :: model
       integer, intent(in) :: mode
       real(dp), intent(in) :: amplitude
       real(dp) :: u(model%unknowns)
       real(dp) :: value(model%elements), slope(model%elements)
-      integer :: i
+      real(dp), allocatable :: omega(:), shapes(:,:), vectors(:,:)
+      integer :: i, stat
+      character(len=256) :: errmsg
+      if (.not. (model%boundary%has_mode_shapes() .and. flexibility_applies(model) .and. &
+                 model%structure%masses() == 0)) then
+         u = ieee_value(1.0_dp, ieee_quiet_nan)
+         if (mode > model%unknowns) return
+         call compute_modes(model, mode, omega, shapes, vectors, stat, errmsg)
+         if (stat == 0) u = amplitude*vectors(:, mode)
+         return
+      end if
       do i = 1, model%elements
          value(i) = model%boundary%mode_shape(mode, model%x(i + 1), model%length, 0)
          slope(i) = model%boundary%mode_shape(mode, model%x(i + 1), model%length, 1)
@@ -85,6 +103,8 @@ contains
          else
             v = interpolate_field(model, [(initial%velocity_amplitude, i=1, model%elements)], &
                                   [(0.0_dp, i=1, model%elements)])
+            ! a left end free to move moves too (only a held end ramps the velocity)
+            if (model%unknown_of(1) > 0) v(model%unknown_of(1)) = initial%velocity_amplitude
          end if
       case default
          v = 0

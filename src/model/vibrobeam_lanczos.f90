@@ -1,8 +1,10 @@
 !> The lowest eigenpairs of K phi = lambda M phi by shift-invert Lanczos: ARPACK-NG's
 !! implicitly restarted Lanczos (dsaupd, then dseupd for the vectors) in its mode 3 with
-!! shift 0, OP = K^-1 M, B = M, driven by reverse communication. K^-1 is applied by
-!! `vibrobeam_flexibility` (double integration of the curvature: accurate at any N, where a
-!! Cholesky solve with K is not), M by the band product.
+!! shift sigma = -s <= 0, OP = (K + s M)^-1 M, B = M, driven by reverse communication.
+!! (K + s M)^-1 is applied by `vibrobeam_stiffness_inverse`: for the uniform clamped-free
+!! beam and s = 0 the double integration of `vibrobeam_flexibility` (accurate at any N,
+!! where a Cholesky solve with K is not), otherwise the band Cholesky of K + s M (s > 0 for
+!! a structure with rigid-body motions, whose K is singular); M by the band product.
 !!
 !! The eigenvalues of OP are 1/lambda: the wanted lowest lambda are the largest in
 !! magnitude and separate fast (for a beam lambda_k grows like k^4). Memory: the ncv
@@ -14,7 +16,7 @@ module vibrobeam_lanczos
    use vibrobeam_status, only: stat_failure, stat_invalid_argument
    use vibrobeam_band, only: band_matvec
    use vibrobeam_model, only: beam_model
-   use vibrobeam_flexibility, only: cantilever_flexibility
+   use vibrobeam_stiffness_inverse, only: stiffness_inverse
    implicit none
    private
    public :: lanczos_modes
@@ -59,9 +61,10 @@ contains
       ncv = min(n, max(2*count + 1, 20))
    end function lanczos_basis_size
 
-   !> The `count` lowest eigenvalues lambda (ascending) of K phi = lambda M phi of the
-   !! clamped-free beam, with their M-orthonormal eigenvectors. stat /= 0 with errmsg if
-   !! count is not in [1, J-1] or on any ARPACK error.
+   !> The `count` lowest eigenvalues lambda (ascending) of K phi = lambda M phi, with their
+   !! M-orthonormal eigenvectors, computed with the shift `shift` = s >= 0 (default 0;
+   !! module documentation). stat /= 0 with errmsg if count is not in [1, J-1], if K + s M
+   !! cannot be factored, or on any ARPACK error.
    !!
    !! With `held_dofs`, `held_weights` and `constraint_modes` the modes are those of the beam
    !! with the m displacements H_c U (rows of 4 unknowns and weights) held at 0, the
@@ -70,7 +73,7 @@ contains
    !! constraint modes. It is M-symmetric (K^-1 - K^-1 H^T S^-1 H K^-1 is symmetric), its
    !! range is {H U = 0}, and its m zero eigenvalues are the smallest, never wanted.
    subroutine lanczos_modes(model, count, eigenvalues, vectors, stat, errmsg, held_dofs, held_weights, &
-                            constraint_modes)
+                            constraint_modes, shift)
       type(beam_model), intent(in) :: model
       integer, intent(in) :: count                   !! 1 <= count <= J - 1
       real(dp), intent(out) :: eigenvalues(:)        !! (count) lambda (rad^2/s^2), ascending
@@ -80,7 +83,9 @@ contains
       integer, intent(in), optional :: held_dofs(:,:)           !! (4, m) unknowns of each held row (0: none)
       real(dp), intent(in), optional :: held_weights(:,:)       !! (4, m) its weights
       real(dp), intent(in), optional :: constraint_modes(:,:)   !! (J, m) Psi
-      type(cantilever_flexibility) :: flexibility
+      real(dp), intent(in), optional :: shift                   !! s (rad^2/s^2), >= 0
+      type(stiffness_inverse) :: flexibility
+      real(dp) :: s
       real(dp), allocatable :: lanczos_vectors(:,:), workd(:), workl(:), resid(:)
       logical, allocatable :: select(:)
       integer :: n, ncv, ido, info, iparam(11), ipntr(11), i
@@ -93,7 +98,9 @@ contains
          write (errmsg, '(a,i0,a,i0,a)') 'Lanczos: number of modes ', count, ' is outside [1, ', n - 1, ']'
          return
       end if
-      call flexibility%setup(model, stat, errmsg)
+      s = 0
+      if (present(shift)) s = shift
+      call flexibility%setup(model, stat, errmsg, s)
       if (stat /= 0) return
       ncv = lanczos_basis_size(n, count)
       ! ARPACK's work length ncv (ncv + 8) is a default integer
@@ -143,7 +150,8 @@ contains
             errmsg = 'Lanczos: '//arpack_message('dsaupd', info, iparam(5), count, ncv)
             return
          end if
-         call dseupd(.true., 'A', select, eigenvalues, vectors, n, 0.0_dp, 'G', n, 'LM', count, tolerance, resid, &
+         ! with sigma = -s, dseupd returns lambda = sigma + 1/nu from the eigenvalues nu of OP
+         call dseupd(.true., 'A', select, eigenvalues, vectors, n, -s, 'G', n, 'LM', count, tolerance, resid, &
                      ncv, lanczos_vectors, n, iparam, ipntr, workd, workl, size(workl), info)
          if (info /= 0) then
             stat = stat_failure
@@ -159,7 +167,7 @@ contains
    subroutine apply_operator(model, flexibility, ido, ipntr, workd, stat, errmsg, held_dofs, held_weights, &
                              constraint_modes)
       type(beam_model), intent(in) :: model
-      type(cantilever_flexibility), intent(inout) :: flexibility
+      type(stiffness_inverse), intent(inout) :: flexibility
       integer, intent(in) :: ido, ipntr(11)
       real(dp), intent(inout) :: workd(:)
       integer, intent(out) :: stat

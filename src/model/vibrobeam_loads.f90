@@ -5,8 +5,9 @@
 !! consistent load vector of a unit uniform load, F_p that of a unit point force, q(t) =
 !! distributed cos(Omega t + phi) and P(t) = point_force cos(Omega_p t). The last term is
 !! base excitation: in the frame of the support s(t) = A sin(Omega_b t) the beam feels the
-!! inertial load -rho S s''(t). Displacements are then relative to the support, and the
-!! obstacles move with the support (they are fixed in its frame).
+!! inertial load -rho S s''(t), and each point mass m_k (&masses) the point force
+!! -m_k s''(t) at x_k. Displacements are then relative to the support, and the obstacles
+!! move with the support (they are fixed in its frame).
 module vibrobeam_loads
    use vibrobeam_kinds, only: dp
    use vibrobeam_model, only: beam_model, load_vector, point_load_vector, unit_profile
@@ -38,6 +39,10 @@ module vibrobeam_loads
       real(dp) :: point_force = 0, point_frequency = 0
       real(dp) :: base_load = 0              !! rho S A Omega_b^2 (N/m)
       real(dp) :: base_frequency = 0
+      !> the point masses' share of the base excitation per unit base_load: sum_k (m_k/rho S)
+      !! phi(x_k) (m; J), when the beam carries point masses (`masses`)
+      logical :: masses = .false.
+      real(dp), allocatable :: mass_points(:)
    contains
       procedure :: at => load_at
       procedure :: evaluate => load_evaluate
@@ -88,11 +93,15 @@ contains
       end if
    end function base_load_amplitude
 
+   !> The loads of &load on the model (module documentation): the uniform load, the point
+   !! force and the base excitation, whose inertial load acts on rho S and on the point
+   !! masses of the model's structure.
    subroutine build_loads(load, model, rho_s, loads)
       type(load_settings), intent(in) :: load
       type(beam_model), intent(in) :: model
       real(dp), intent(in) :: rho_s
       type(load_set), intent(out) :: loads
+      integer :: k
       loads%distributed = load%distributed
       loads%distributed_frequency = load%distributed_frequency
       loads%distributed_phase = load%distributed_phase
@@ -106,6 +115,13 @@ contains
       loads%base_frequency = load%base_frequency
       loads%present = abs(loads%distributed) > 0 .or. abs(loads%point_force) > 0 .or. abs(loads%base_load) > 0
       loads%uniform = load_vector(model, unit_profile)
+      ! the base's inertial load acts on the point masses too: -m_k s''(t) at x_k
+      loads%masses = model%structure%masses() > 0
+      allocate (loads%mass_points(model%unknowns), source=0.0_dp)
+      do k = 1, model%structure%masses()
+         loads%mass_points = loads%mass_points + model%structure%mass_value(k)/rho_s* &
+                             point_load_vector(model, model%structure%mass_position(k))
+      end do
       if (abs(loads%point_force) > 0) then
          ! the default position, the tip, when a scene built in code leaves it unset
          loads%point = point_load_vector(model, merge(model%length, load%point_position, is_unset(load%point_position)))
@@ -132,5 +148,6 @@ contains
       f = (self%distributed*cos(self%distributed_frequency*t + self%distributed_phase) + &
            self%base_load*sin(self%base_frequency*t))*self%uniform
       if (abs(self%point_force) > 0) f = f + self%point_force*cos(self%point_frequency*t)*self%point
+      if (self%masses) f = f + self%base_load*sin(self%base_frequency*t)*self%mass_points
    end subroutine load_evaluate
 end module vibrobeam_loads

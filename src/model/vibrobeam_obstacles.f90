@@ -12,8 +12,10 @@
 !!   level interpolated linearly; one covering no node acts at the node nearest its middle,
 !!   with a warning;
 !! - several obstacles on the same side of a node: the most restrictive one counts;
-!! - the clamped node x = 0 never moves: an obstacle there is only checked (u = 0 must be
-!!   admissible);
+!! - a node whose deflection a support holds (the clamped node x = 0 of a cantilever, a
+!!   pinned end, docs/input.md "&beam") never moves: an obstacle there is only checked
+!!   (u = 0 must be admissible); every other node, the ends included, may become a contact
+!!   point;
 !! - a compliant obstacle (stiffness > 0, docs/theory.md section 8) gives each node it
 !!   covers a spring instead of a bound: its stiffness per unit length is lumped at the
 !!   nodes with their tributary lengths inside [x_from, x_to] (h inside, h/2 at an end
@@ -23,6 +25,7 @@
 module vibrobeam_obstacles
    use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp
+   use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, keyword_length
    use vibrobeam_model, only: beam_model, node_row
    use vibrobeam_contact_set, only: contact_set, no_bound
@@ -162,7 +165,7 @@ contains
 
    !> Obstacle k at the nodes first..last: its level interpolated linearly along it; a
    !! rigid one tightens the bound of its side where it is more restrictive, a compliant
-   !! one gives each node (but the clamp) a spring of its tributary length inside
+   !! one gives each node (but a held one) a spring of its tributary length inside
    !! [x_from, x_to] (h inside, h/2 at an end node; a punctual one its whole stiffness).
    subroutine add_obstacle(o, k, model, first, last, nodes)
       type(obstacle_type), intent(in) :: o
@@ -180,8 +183,8 @@ contains
             level = (1 - xi)*o%level_from + xi*o%level_to
          end if
          if (o%stiffness > 0) then
-            ! a spring, never a bound; the clamped node never moves and gets none
-            if (i == 0) cycle
+            ! a spring, never a bound; a held node never moves and gets none
+            if (model%deflection_held(i)) cycle
             nodes%covered(i) = .true.
             nodes%springs = nodes%springs + 1
             j = nodes%springs
@@ -212,8 +215,9 @@ contains
       end do
    end subroutine add_obstacle
 
-   !> stat = stat_failure when a bound cuts the clamp (u = 0 must be admissible) or a 'below' level
-   !! is not under an 'above' level at a node.
+   !> stat = stat_failure when a bound cuts a support (u = 0 must be admissible at a node
+   !! whose deflection a support holds) or a 'below' level is not under an 'above' level at
+   !! a node.
    subroutine check_bounds(nodes, model, stat, errmsg)
       type(nodal_bounds), intent(in) :: nodes
       type(beam_model), intent(in) :: model
@@ -222,13 +226,24 @@ contains
       integer :: i
       stat = 0
       errmsg = ''
-      if (nodes%lower(0) > 0 .or. nodes%upper(0) < 0) then
-         write (errmsg, '(a,i0,a)') '&obstacles: obstacle ', max(nodes%lower_source(0), nodes%upper_source(0)), &
-            ' cuts the clamped end x = 0, where u = 0 always; move x_from away from 0 or its level past 0'
-         stat = stat_failure
-         return
-      end if
-      do i = 1, model%elements
+      do i = 0, model%elements
+         if (.not. model%deflection_held(i)) cycle
+         if (nodes%lower(i) > 0 .or. nodes%upper(i) < 0) then
+            if (i == 0 .and. model%boundary%holds_rotation(1)) then
+               write (errmsg, '(a,i0,a)') '&obstacles: obstacle ', max(nodes%lower_source(0), nodes%upper_source(0)), &
+                  ' cuts the clamped end x = 0, where u = 0 always; move x_from away from 0 or its level past 0'
+            else
+               errmsg = '&obstacles: obstacle '//integer_text(max(nodes%lower_source(i), nodes%upper_source(i)))// &
+                        ' (level '//real_text(merge(nodes%lower(i), nodes%upper(i), nodes%lower(i) > 0))// &
+                        ' m there) cuts the support at x = '//real_text(model%x(i + 1))// &
+                        ' m, where u = 0 always; move it away from the support or its level past 0'
+            end if
+            stat = stat_failure
+            return
+         end if
+      end do
+      do i = 0, model%elements
+         if (model%deflection_held(i)) cycle
          if (nodes%lower(i) >= nodes%upper(i)) then
             write (errmsg, '(a,i0,a,g0.6,a,i0,a,g0.6,a,g0.6,a)') '&obstacles: the ''below'' obstacle ', &
                nodes%lower_source(i), ' (level ', nodes%lower(i), ' m) is not under the ''above'' obstacle ', &
@@ -240,21 +255,23 @@ contains
       end do
    end subroutine check_bounds
 
-   !> A contact point at every node (but the clamp) with a bound or a spring, in the
-   !! order of the nodes.
+   !> A contact point at every node whose deflection no support holds with a bound or a
+   !! spring, in the order of the nodes.
    subroutine collect_points(nodes, model, contacts)
       type(nodal_bounds), intent(in) :: nodes
       type(beam_model), intent(in) :: model
       type(contact_set), intent(inout) :: contacts
       integer :: i, c
       associate (lower => nodes%lower, upper => nodes%upper)
-         contacts%count = count(lower(1:) > -no_bound .or. upper(1:) < no_bound .or. nodes%covered(1:))
+         contacts%count = count((lower > -no_bound .or. upper < no_bound .or. nodes%covered) .and. &
+                                .not. model%deflection_held)
          allocate (contacts%node(contacts%count), contacts%x(contacts%count), contacts%lower(contacts%count), &
                    contacts%upper(contacts%count), contacts%dofs(4, contacts%count), &
                    contacts%weights(4, contacts%count), contacts%lower_obstacle(contacts%count), &
                    contacts%upper_obstacle(contacts%count))
          c = 0
-         do i = 1, model%elements
+         do i = 0, model%elements
+            if (model%deflection_held(i)) cycle
             if (lower(i) <= -no_bound .and. upper(i) >= no_bound .and. .not. nodes%covered(i)) cycle
             c = c + 1
             contacts%node(c) = i

@@ -19,7 +19,9 @@
 !! cancel), M_r = T^T M T (a product with the well-conditioned M), C_r = a M_r + b K_r
 !! (Rayleigh damping projects to Rayleigh damping), F_r = T^T F.
 !!
-!! K^-1 is applied by the double integration of `vibrobeam_flexibility` (accurate at any N),
+!! K^-1 is applied by the double integration of `vibrobeam_flexibility` (accurate at any N;
+!! for other structures than the uniform cantilever the band Cholesky of
+!! `vibrobeam_stiffness_inverse`, which needs a K without rigid-body motion),
 !! and the fixed-interface modes come from the shift-invert Lanczos of `vibrobeam_lanczos`
 !! with the constrained flexibility (I - Psi H) K^-1 as operator: the held displacements
 !! are imposed exactly, without renumbering the band and without the loss of accuracy of a
@@ -32,18 +34,19 @@
 !! are (band kernels other than kd = 3 go to LAPACK).
 module vibrobeam_reduction
    use vibrobeam_kinds, only: dp
+   use vibrobeam_status, only: stat_invalid_argument
    use vibrobeam_band, only: band_allocate, band_matvec, band_to_dense
-   use vibrobeam_model, only: beam_model
+   use vibrobeam_model, only: beam_model, energy_integrals, rigid_motions
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
-   use vibrobeam_flexibility, only: cantilever_flexibility
+   use vibrobeam_stiffness_inverse, only: stiffness_inverse
    use vibrobeam_lanczos, only: lanczos_modes
-   use vibrobeam_modes, only: dense_is_cheaper
+   use vibrobeam_modes, only: dense_is_cheaper, normalize_modes
    use vibrobeam_lapack, only: dpotrf, dpotri, dgeqrf, dormqr, dsygv
    implicit none
    private
    public :: reduced_basis, build_reduction, reduce_model, reduce_contacts, reduce_loads, reduce_state
-   public :: default_reduction_frequency, frequency_error_limit
+   public :: default_reduction_frequency, frequency_error_limit, contact_modes
 
    !> Relative frequency error of the trapezoidal rule that sets the default cut-off: the
    !! velocity scheme with theta = 1/2 steps a mode of frequency omega at
@@ -87,7 +90,7 @@ contains
       type(reduced_basis), intent(out) :: basis
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      type(cantilever_flexibility) :: flexibility
+      type(stiffness_inverse) :: flexibility
       real(dp), allocatable :: flexible(:,:), schur(:,:), eigenvalues(:), vectors(:,:)
       integer :: n, m, c, d, available, trial, k
       stat = 0
@@ -169,6 +172,49 @@ contains
       real(dp), parameter :: pi = acos(-1.0_dp)
       free_modes_below = int(min(1e8_dp, sqrt(omega/sqrt(model%ei/model%rho_s))*model%length/pi + 0.5_dp))
    end function free_modes_below
+
+   !> The modes in contact (docs/theory.md §7, "Modes in contact"; &analysis contact_modes):
+   !! the `count` lowest natural modes of the beam with every contact point held at its
+   !! obstacle (H phi = 0), the fixed-interface modes of the reduced model, as frequencies
+   !! (rad/s, each the Rayleigh quotient of its eigenvector from element integrals, as
+   !! `compute_modes` does) and shapes at the nodes scaled like the free modes
+   !! (`normalize_modes`). count <= J - m. A beam with rigid-body motions (singular K,
+   !! which the constraint modes need) takes the dense path.
+   subroutine contact_modes(model, contacts, count, omega, shapes, stat, errmsg)
+      type(beam_model), intent(in) :: model
+      type(contact_set), intent(in) :: contacts
+      integer, intent(in) :: count
+      real(dp), allocatable, intent(out) :: omega(:), shapes(:,:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(reduced_basis) :: basis
+      real(dp), allocatable :: eigenvalues(:), vectors(:,:)
+      real(dp) :: bending, inertia
+      integer :: k, n, m
+      n = model%unknowns
+      m = contacts%count
+      if (count < 1 .or. count > n - m) then
+         stat = stat_invalid_argument
+         write (errmsg, '(a,i0,a,i0,a)') 'contact modes: ', count, ' modes asked, the beam held at its contact points '// &
+            'has ', n - m, ' (J - m)'
+         return
+      end if
+      if (rigid_motions(model) > 0 .or. m == 0) then
+         allocate (eigenvalues(count), vectors(n, count))
+         call dense_fixed_interface_modes(model, contacts, count, eigenvalues, vectors, stat, errmsg)
+      else
+         call build_reduction(model, contacts, 0.0_dp, 0, basis, stat, errmsg)   ! the constraint modes only
+         if (stat == 0) call fixed_interface_modes(model, contacts, basis%transform(:, 1:m), count, eigenvalues, &
+                                                   vectors, stat, errmsg)
+      end if
+      if (stat /= 0) return
+      allocate (omega(count))
+      do k = 1, count
+         call energy_integrals(model, vectors(:, k), bending, inertia)
+         omega(k) = sqrt(max(bending, 0.0_dp)/inertia)
+      end do
+      call normalize_modes(model, vectors, shapes, stat, errmsg)
+   end subroutine contact_modes
 
    !> The `count` lowest modes with H phi = 0, M-orthonormal, ascending eigenvalues.
    subroutine fixed_interface_modes(model, contacts, constraint_modes, count, eigenvalues, vectors, stat, errmsg)
@@ -303,6 +349,7 @@ contains
       reduced = loads
       reduced%uniform = matmul(loads%uniform, basis%transform)
       reduced%point = matmul(loads%point, basis%transform)
+      reduced%mass_points = matmul(loads%mass_points, basis%transform)
    end subroutine reduce_loads
 
    !> Reduced coordinates of a state U of the full model: y = H U exactly (so a state on its

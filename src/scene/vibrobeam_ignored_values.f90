@@ -53,6 +53,8 @@ contains
       if (scene%analysis%kind /= 'modes' .and. scanned%is_given('analysis', 'modes')) &
          call add(warnings, '&analysis modes = '//integer_text(scene%analysis%modes)//' is ignored: '//kind_reason// &
                   ' computes no natural modes')
+      if (scene%analysis%kind /= 'modes' .and. scene%analysis%contact_modes) &
+         call add(warnings, '&analysis contact_modes = .true. is ignored: '//kind_reason//' computes no natural modes')
       if (scanned%is_given('beam', 'k2') .and. (scanned%is_given('beam', 'youngs_modulus') .or. &
           scanned%is_given('beam', 'density') .or. scanned%is_given('beam', 'area') .or. &
           scanned%is_given('beam', 'inertia'))) &
@@ -60,6 +62,8 @@ contains
       select case (scene%analysis%kind)
       case ('modes')
          do k = 1, size(unused_by_modes)
+            ! the modes in contact hold the contact points of the obstacles
+            if (unused_by_modes(k) == 'obstacles' .and. scene%analysis%contact_modes) cycle
             if (scanned%group_given(trim(unused_by_modes(k)))) &
                call add(warnings, '&'//trim(unused_by_modes(k))//' is ignored: kind = ''modes'' computes the modes '// &
                         'of the free cantilever')
@@ -78,6 +82,8 @@ contains
                          kind_reason//' has no damping')
          call given_real(scanned, scene, warnings, 'beam', 'rayleigh_stiffness', scene%beam%rayleigh_stiffness, &
                          kind_reason//' has no damping')
+         if (scene%beam%modal()) call add(warnings, '&beam modal_damping and modal_damping_ratios are ignored: '// &
+                                          kind_reason//' has no damping')
          ! what shapes a dynamics run's histories, statistics and checkpoints
          item = ' is ignored: '//kind_reason//' writes no histories (they belong to kind = ''dynamics'')'
          if (scanned%is_given('output', 'every')) &

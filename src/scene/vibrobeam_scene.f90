@@ -24,12 +24,17 @@ module vibrobeam_scene
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_namelist_schema, only: namelist_variable
-   use vibrobeam_schema_visitor, only: schema_visitor, integer_row, keyword_row, unset, is_unset, keyword_length, &
+   use vibrobeam_schema_visitor, only: schema_visitor, integer_row, keyword_row, logical_row, unset, is_unset, &
+      unset_integer, keyword_length, &
       path_length
    use vibrobeam_schema_operations, only: schema_table, schema_checker, schema_lister, scene_entry => schema_entry
    use vibrobeam_frequency_twins, only: twin_sync
    use vibrobeam_beam_settings, only: beam_settings, mesh_settings, visit_beam, visit_mesh
+   use vibrobeam_boundary, only: boundary_conditions
+   use vibrobeam_structure, only: beam_structure
    use vibrobeam_obstacles, only: obstacle_type, max_obstacles, visit_obstacles
+   use vibrobeam_support_settings, only: support_settings, mass_settings, visit_supports, visit_masses, &
+      max_supports, max_masses, structure_from
    use vibrobeam_initial_state, only: initial_settings, visit_initial
    use vibrobeam_loads, only: load_settings, visit_load
    use vibrobeam_time_settings, only: time_settings, impact_settings, visit_time, visit_impact
@@ -42,6 +47,7 @@ module vibrobeam_scene
    public :: visit_scene, validate_scene, scene_entries, format_scene, is_unset
    public :: scene_variables, path_length, keyword_length, max_steps, step_count
    public :: forcing_of, max_sweep_values, parameter_length, sync_frequency_twins
+   public :: support_settings, mass_settings, max_supports, max_masses, held_conditions, structure_of
 
    !> Most time steps of a run: nint(t_end/dt) must fit a 64-bit count with room to spare.
    integer(int64), parameter :: max_steps = 1000000000000000000_int64
@@ -50,12 +56,15 @@ module vibrobeam_scene
    type :: analysis_settings
       character(len=keyword_length) :: kind = 'dynamics'   !! 'modes' | 'static' | 'dynamics'
       integer :: modes = 6                                 !! natural modes computed (kind = 'modes')
+      logical :: contact_modes = .false.                   !! also the modes with every contact point held
    end type analysis_settings
 
    !> Every input value of a run, after defaults: the settings of each group.
    type :: scene_type
       type(beam_settings) :: beam
       type(mesh_settings) :: mesh
+      type(support_settings), allocatable :: supports(:)   !! &supports (docs/input.md)
+      type(mass_settings), allocatable :: masses(:)         !! &masses
       type(analysis_settings) :: analysis
       type(obstacle_type), allocatable :: obstacles(:)
       type(impact_settings) :: impact
@@ -69,16 +78,32 @@ module vibrobeam_scene
 contains
 
    !> Every variable of the scene, group by group in the order of docs/input.md.
-   !! `obstacle_count` (the reader's): the count read, when `scene%obstacles` holds room
-   !! for max_obstacles; otherwise the count is size(scene%obstacles).
-   subroutine visit_scene(scene, visitor, obstacle_count)
+   !! `obstacle_count`, `support_count`, `mass_count` (the reader's): the counts read, when
+   !! the scene's arrays hold room for the most a file may give; otherwise each count is the
+   !! size of its array (&supports and &masses: not listed when 0, so that a scene without
+   !! them keeps the listing of earlier versions).
+   subroutine visit_scene(scene, visitor, obstacle_count, support_count, mass_count)
       type(scene_type), intent(inout) :: scene
       class(schema_visitor), intent(inout) :: visitor
-      integer, intent(inout), optional :: obstacle_count
+      integer, intent(inout), optional :: obstacle_count, support_count, mass_count
       integer :: count
       if (.not. allocated(scene%obstacles)) allocate (scene%obstacles(0))
+      if (.not. allocated(scene%supports)) allocate (scene%supports(0))
+      if (.not. allocated(scene%masses)) allocate (scene%masses(0))
       call visit_beam(scene%beam, visitor)
       call visit_mesh(scene%mesh, visitor)
+      if (present(support_count)) then
+         call visit_supports(scene%supports, support_count, visitor)
+      else
+         count = merge(size(scene%supports), unset_integer, size(scene%supports) > 0)
+         call visit_supports(scene%supports, count, visitor)
+      end if
+      if (present(mass_count)) then
+         call visit_masses(scene%masses, mass_count, visitor)
+      else
+         count = merge(size(scene%masses), unset_integer, size(scene%masses) > 0)
+         call visit_masses(scene%masses, count, visitor)
+      end if
       call visit_analysis(scene%analysis, visitor)
       if (present(obstacle_count)) then
          call visit_obstacles(scene%obstacles, obstacle_count, visitor)
@@ -102,6 +127,9 @@ contains
                                         'natural modes, static equilibrium, or time integration'), analysis%kind)
       call visitor%variable(integer_row('analysis', 'modes', 1, 2000000, 'number of natural modes computed'), &
                             analysis%modes)
+      call visitor%variable(logical_row('analysis', 'contact_modes', 'also the natural modes with every contact '// &
+                                        'point held at its obstacle (kind = ''modes'')', optional=.true.), &
+                            analysis%contact_modes)
    end subroutine visit_analysis
 
    !> Every input variable, the scene's and &sweep's: group, name, kind, extent, longest
@@ -167,6 +195,30 @@ contains
       end associate
    end function forcing_of
 
+   !> What `build_model` takes of the scene beyond the uniform beam: its end supports and
+   !! springs, intermediate supports and point masses (`structure_from`; a scene built in
+   !! code may leave the groups unallocated).
+   pure function structure_of(scene) result(structure)
+      type(scene_type), intent(in) :: scene
+      type(beam_structure) :: structure
+      type(support_settings), allocatable :: supports(:)
+      type(mass_settings), allocatable :: masses(:)
+      allocate (supports(0), masses(0))
+      if (allocated(scene%supports)) supports = scene%supports
+      if (allocated(scene%masses)) masses = scene%masses
+      structure = structure_from(scene%beam, supports, masses)
+   end function structure_of
+
+   !> The conditions the scene's supports impose on the displacement (ends and &supports;
+   !! `beam_structure%held_count`): the mesh has `mesh%unknowns(held_conditions(scene))`
+   !! unknowns.
+   pure integer function held_conditions(scene)
+      type(scene_type), intent(in) :: scene
+      type(beam_structure) :: structure
+      structure = structure_of(scene)
+      held_conditions = structure%held_count()
+   end function held_conditions
+
    !> Time steps of a dynamics run, nint(t_end/dt) (at least 1), as a 64-bit count; the
    !! scene must be valid (validate_scene bounds t_end/dt by max_steps).
    pure integer(int64) function step_count(scene)
@@ -191,6 +243,16 @@ contains
             call fail(stat, errmsg, '&obstacles count = '//integer_text(size(scene%obstacles))//' is outside [0, '// &
                       integer_text(max_obstacles)//']')
       end if
+      if (allocated(scene%supports)) then
+         if (size(scene%supports) > max_supports) &
+            call fail(stat, errmsg, '&supports count = '//integer_text(size(scene%supports))//' is outside [0, '// &
+                      integer_text(max_supports)//']')
+      end if
+      if (allocated(scene%masses)) then
+         if (size(scene%masses) > max_masses) &
+            call fail(stat, errmsg, '&masses count = '//integer_text(size(scene%masses))//' is outside [0, '// &
+                      integer_text(max_masses)//']')
+      end if
       if (allocated(scene%output%points)) then
          if (size(scene%output%points) > max_points) &
             call fail(stat, errmsg, '&output points: '//integer_text(size(scene%output%points))// &
@@ -205,6 +267,7 @@ contains
          return
       end if
       call model_rules(copy, stat, errmsg)
+      call structure_rules(copy, stat, errmsg)
       call obstacle_rules(copy, stat, errmsg)
       call time_rules(copy, stat, errmsg)
       call load_rules(copy, stat, errmsg)
@@ -213,7 +276,7 @@ contains
 
    !> &beam: the four physical data go together; &mesh: a reduced model cannot continue a
    !! checkpoint, and its cut-off is given one way; &analysis: `modes` is bounded by the
-   !! mesh only when modes are computed.
+   !! mesh only when modes are computed, and the modes in contact need obstacles.
    subroutine model_rules(scene, stat, errmsg)
       type(scene_type), intent(in) :: scene
       integer, intent(inout) :: stat
@@ -233,9 +296,12 @@ contains
                       ' and reduction_frequency = '//real_text(mesh%reduction_frequency)// &
                       ' rad/s are both given: give one of them')
          if (analysis%kind == 'modes') then
-            if (analysis%modes < 1 .or. analysis%modes > mesh%unknowns()) &
+            if (analysis%modes < 1 .or. analysis%modes > mesh%unknowns(held_conditions(scene))) &
                call fail(stat, errmsg, '&analysis modes = '//integer_text(analysis%modes)//' is outside [1, '// &
-                         integer_text(mesh%unknowns())//'], the unknowns J of the mesh')
+                         integer_text(mesh%unknowns(held_conditions(scene)))//'], the unknowns J of the mesh')
+            if (analysis%contact_modes .and. size(scene%obstacles) == 0) &
+               call fail(stat, errmsg, '&analysis contact_modes = .true. needs obstacles: the modes in contact hold '// &
+                         'every contact point of &obstacles; give obstacles or contact_modes = .false.')
          end if
       end associate
    contains
@@ -247,6 +313,88 @@ contains
                                         'area and inertia go together (or give k2 alone)')
       end subroutine check_given
    end subroutine model_rules
+
+   !> The supports (&beam ends and springs, &supports) and point masses (&masses): each
+   !! support inside the beam, on a node of its own that is not an end's, a 'spring' one
+   !! with a spring; each mass on the beam; statics, an initial static equilibrium and the
+   !! reduced model need a beam without rigid-body motion (K U = F); statics of another
+   !! structure than the clamped-free beam takes linear compliant stops only.
+   subroutine structure_rules(scene, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      type(boundary_conditions) :: supports
+      type(beam_structure) :: structure
+      integer :: node(size(scene%supports)), i, j
+      real(dp) :: h
+      character(len=:), allocatable :: item
+      supports = scene%beam%supports()
+      structure = structure_of(scene)
+      h = scene%beam%length/scene%mesh%elements
+      do i = 1, size(scene%supports)
+         item = '('//integer_text(i)//')'
+         associate (p => scene%supports(i))
+            call in_range(stat, errmsg, 'supports', 'x'//item, p%x, 0.0_dp, scene%beam%length, &
+                          ' m, (0, length): a support at an end is &beam left_end or right_end')
+            node(i) = nint(p%x/h)
+            if (stat == 0 .and. (node(i) == 0 .or. node(i) == scene%mesh%elements)) &
+               call fail(stat, errmsg, '&supports x'//item//' = '//real_text(p%x)//' m is nearest the end node x = '// &
+                         real_text(node(i)*h)//' m: a support at an end is &beam left_end or right_end (with '// &
+                         'its springs); put it on an interior node or refine the mesh')
+            do j = 1, i - 1
+               if (node(j) == node(i)) call fail(stat, errmsg, '&supports x'//item//' = '//real_text(p%x)//' m and x('// &
+                                                 integer_text(j)//') = '//real_text(scene%supports(j)%x)// &
+                                                 ' m act at the same node: give one support per node')
+            end do
+            if (p%kind == 'spring' .and. .not. (p%stiffness > 0 .or. p%rotational_stiffness > 0)) &
+               call fail(stat, errmsg, '&supports kind'//item//' = ''spring'' has no spring: give stiffness'//item// &
+                         ' > 0 or rotational_stiffness'//item//' > 0 (N/m, N m/rad)')
+         end associate
+      end do
+      do i = 1, size(scene%masses)
+         call in_range(stat, errmsg, 'masses', 'x('//integer_text(i)//')', scene%masses(i)%x, 0.0_dp, &
+                       scene%beam%length, ' m, [0, length]')
+      end do
+      associate (analysis => scene%analysis, mesh => scene%mesh)
+         ! statics solves K U = F, singular with a rigid-body motion
+         if (structure%rigid_motions(scene%beam%length) > 0) then
+            if (analysis%kind == 'static') &
+               call fail(stat, errmsg, rigid_text()//': &analysis kind = ''static'' needs supports or end springs '// &
+                         'that hold it (statics of a beam held by its obstacles alone is not available); give a '// &
+                         'support or a spring, or use kind = ''dynamics'' or ''modes''')
+            if (analysis%kind == 'dynamics' .and. scene%initial%displacement == 'static') &
+               call fail(stat, errmsg, rigid_text()//': &initial displacement = ''static'' needs supports or end '// &
+                         'springs that hold it; give a support or a spring, or another initial displacement')
+            if (analysis%kind == 'dynamics' .and. mesh%reduction /= 'none') &
+               call fail(stat, errmsg, rigid_text()//': &mesh reduction = '''//trim(mesh%reduction)//''' needs the '// &
+                         'stiffness K of a beam without rigid-body motion (its constraint modes solve with K); use '// &
+                         'reduction = ''none''')
+         end if
+         if (.not. (supports%is_clamped_free() .and. size(scene%supports) == 0) .and. (analysis%kind == 'static' .or. &
+             (analysis%kind == 'dynamics' .and. scene%initial%displacement == 'static'))) then
+            do i = 1, size(scene%obstacles)
+               if (scene%obstacles(i)%stiffness > 0 .and. abs(scene%obstacles(i)%exponent - 1) > 0) &
+                  call fail(stat, errmsg, '&obstacles exponent('//integer_text(i)//') = '// &
+                            real_text(scene%obstacles(i)%exponent)//': the static equilibrium of a '// &
+                            supports%name()//' beam takes linear compliant stops only (exponent = 1); the '// &
+                            'clamped-free beam takes any exponent')
+            end do
+         end if
+      end associate
+   contains
+      !> The supports and how many rigid-body motions they leave, for a message.
+      function rigid_text() result(text)
+         character(len=:), allocatable :: text
+         integer :: rigid
+         rigid = structure%rigid_motions(scene%beam%length)
+         text = '&beam left_end = '''//supports%end_name(1)//''' and right_end = '''//supports%end_name(2)//''''
+         if (supports%has_springs()) text = text//' with their springs'
+         if (size(scene%supports) > 0) text = text//' and the '//integer_text(size(scene%supports))//' &supports'
+         text = text//' leave the beam '//integer_text(rigid)//' rigid-body motion'
+         if (rigid > 1) text = text//'s'
+         text = text//' (u = a + b x, free of strain)'
+      end function rigid_text
+   end subroutine structure_rules
 
    !> &obstacles: damping only on a compliant stop; each obstacle on the beam, x_to not
    !! before x_from.

@@ -15,8 +15,8 @@ module vibrobeam_scene_read
    use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: integer_text, real_text
-   use vibrobeam_scene, only: scene_type, max_obstacles, max_points, scene_variables, visit_scene, &
-      sync_frequency_twins
+   use vibrobeam_scene, only: scene_type, max_obstacles, max_points, max_supports, max_masses, scene_variables, &
+      visit_scene, held_conditions, sync_frequency_twins
    use vibrobeam_scene_values, only: real_input, set_real_input
    use vibrobeam_frequency_twins, only: is_twin, frequency_name
    use vibrobeam_obstacles, only: obstacle_type
@@ -52,21 +52,27 @@ contains
       !! sweep%present is false without one
       type(sweep_settings), intent(out), optional :: sweep
       type(schema_reader) :: reader
-      integer :: count
+      integer :: count, support_count, mass_count
       call scan_namelist_file(filename, scene_variables(), reader%scanned, stat, errmsg)
       if (stat /= 0) return
-      ! room for every obstacle and point the file may describe; cut to what it gives below
-      allocate (scene%obstacles(max_obstacles), scene%output%points(max_points))
+      ! room for every obstacle, support, mass and point the file may describe; cut to what
+      ! it gives below
+      allocate (scene%obstacles(max_obstacles), scene%output%points(max_points), scene%supports(max_supports), &
+                scene%masses(max_masses))
       scene%obstacles(:)%side = ''
       scene%output%points = 0
       count = 0
-      call visit_scene(scene, reader, obstacle_count=count)
+      support_count = 0
+      mass_count = 0
+      call visit_scene(scene, reader, obstacle_count=count, support_count=support_count, mass_count=mass_count)
       if (reader%stat /= 0) then
          stat = reader%stat
          errmsg = reader%errmsg
          return
       end if
       call resolve_obstacles(reader%scanned, count, scene, stat, errmsg)
+      if (stat == 0) call resolve_supports(reader%scanned, support_count, scene, stat, errmsg)
+      if (stat == 0) call resolve_masses(reader%scanned, mass_count, scene, stat, errmsg)
       if (stat == 0) call resolve_points(reader%scanned, scene, stat, errmsg)
       if (stat == 0) call resolve_frequency_twins(reader%scanned, scene, stat, errmsg)
       if (stat /= 0) return
@@ -87,7 +93,7 @@ contains
       end if
       ! the default number of modes applies only to kind = 'modes', and never beyond J
       if (scene%analysis%kind == 'modes' .and. .not. reader%scanned%is_given('analysis', 'modes') .and. &
-          scene%mesh%elements >= 1) scene%analysis%modes = min(default_modes, scene%mesh%unknowns())
+          scene%mesh%elements >= 1) scene%analysis%modes = min(default_modes, scene%mesh%unknowns(held_conditions(scene)))
       if (present(warnings)) call ignored_values(reader%scanned, scene, swept_inputs(), warnings)
 
    contains
@@ -131,18 +137,11 @@ contains
       type(obstacle_type), allocatable :: read(:)
       integer :: i
       character(len=:), allocatable :: number
+      character(len=*), parameter :: names(8) = [character(len=10) :: 'side', 'x_from', 'x_to', 'level_from', &
+                                                  'level_to', 'stiffness', 'exponent', 'damping']
+      call check_count(scanned, 'obstacles', 'obstacle', names, count, max_obstacles, stat, errmsg)
+      if (stat /= 0) return
       stat = stat_failure
-      if (count < 0 .or. count > max_obstacles) then
-         errmsg = '&obstacles count = '//integer_text(count)//' is outside [0, '//integer_text(max_obstacles)//']'
-         return
-      end if
-      do i = count + 1, max_obstacles
-         if (given(i)) then
-            errmsg = '&obstacles: obstacle '//integer_text(i)//' is described but count = '//integer_text(count)// &
-                     '; raise count or remove it'
-            return
-         end if
-      end do
       call move_alloc(scene%obstacles, read)
       allocate (scene%obstacles(count))
       do i = 1, count
@@ -162,17 +161,6 @@ contains
       end do
       stat = 0
       errmsg = ''
-   contains
-      logical function given(i)
-         integer, intent(in) :: i
-         character(len=*), parameter :: names(8) = [character(len=10) :: 'side', 'x_from', 'x_to', 'level_from', &
-                                                     'level_to', 'stiffness', 'exponent', 'damping']
-         integer :: k
-         given = .false.
-         do k = 1, size(names)
-            given = given .or. scanned%is_given('obstacles', trim(names(k)), i)
-         end do
-      end function given
    end subroutine resolve_obstacles
 
    !> The frequencies given in Hz (docs/input.md, "Frequencies in Hz"): a twin and its
@@ -216,6 +204,83 @@ contains
       end do
       call sync_frequency_twins(scene)
    end subroutine resolve_frequency_twins
+   !> The count of an array of settings (&obstacles, &supports, &masses) against what the
+   !! file describes: in [0, most], and no element beyond it given (any of `names`).
+   subroutine check_count(scanned, group, element, names, count, most, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
+      character(len=*), intent(in) :: group, element   !! 'obstacles', 'obstacle'
+      character(len=*), intent(in) :: names(:)           !! the variables of an element
+      integer, intent(in) :: count, most
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: i, k
+      stat = stat_failure
+      if (count < 0 .or. count > most) then
+         errmsg = '&'//group//' count = '//integer_text(count)//' is outside [0, '//integer_text(most)//']'
+         return
+      end if
+      do i = count + 1, most
+         do k = 1, size(names)
+            if (scanned%is_given(group, trim(names(k)), i)) then
+               errmsg = '&'//group//': '//element//' '//integer_text(i)//' is described but count = '// &
+                        integer_text(count)//'; raise count or remove it'
+               return
+            end if
+         end do
+      end do
+      stat = 0
+      errmsg = ''
+   end subroutine check_count
+
+   !> &supports after reading: count (0 when not given) and what it allows; each support
+   !! needs its x.
+   subroutine resolve_supports(scanned, count, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
+      integer, intent(in) :: count
+      type(scene_type), intent(inout) :: scene
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=*), parameter :: names(4) = [character(len=20) :: 'x', 'kind', 'stiffness', 'rotational_stiffness']
+      integer :: i, given
+      ! count is unset (-1) when not given; given, even -1 is checked
+      given = 0
+      if (scanned%is_given('supports', 'count')) given = count
+      call check_count(scanned, 'supports', 'support', names, given, max_supports, stat, errmsg)
+      if (stat /= 0) return
+      scene%supports = scene%supports(1:given)
+      do i = 1, size(scene%supports)
+         if (.not. scanned%is_given('supports', 'x', i)) then
+            stat = stat_failure
+            errmsg = '&supports x('//integer_text(i)//') is missing: give the position (m) of the support'
+            return
+         end if
+      end do
+   end subroutine resolve_supports
+
+   !> &masses after reading: count (0 when not given) and what it allows; each mass needs
+   !! its x.
+   subroutine resolve_masses(scanned, count, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
+      integer, intent(in) :: count
+      type(scene_type), intent(inout) :: scene
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=*), parameter :: names(3) = [character(len=14) :: 'x', 'mass', 'rotary_inertia']
+      integer :: i, given
+      ! count is unset (-1) when not given; given, even -1 is checked
+      given = 0
+      if (scanned%is_given('masses', 'count')) given = count
+      call check_count(scanned, 'masses', 'mass', names, given, max_masses, stat, errmsg)
+      if (stat /= 0) return
+      scene%masses = scene%masses(1:given)
+      do i = 1, size(scene%masses)
+         if (.not. scanned%is_given('masses', 'x', i)) then
+            stat = stat_failure
+            errmsg = '&masses x('//integer_text(i)//') is missing: give the position (m) of the mass'
+            return
+         end if
+      end do
+   end subroutine resolve_masses
 
    !> &output points: the leading elements given (points(1), points(2), ...), no gaps.
    subroutine resolve_points(scanned, scene, stat, errmsg)

@@ -8,7 +8,7 @@ module vibrobeam_sweep_settings
    use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
-   use vibrobeam_scene, only: scene_type, scene_variables, validate_scene
+   use vibrobeam_scene, only: scene_type, scene_variables, validate_scene, structure_of
    use vibrobeam_namelist_schema, only: namelist_variable, variable_index, choices_text
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_contact_set, only: contact_set
@@ -167,7 +167,8 @@ contains
       stat = 0
       errmsg = ''
       allocate (points, source=sweep_points(settings))
-      same_model = .not. any(settings%axis%group == 'beam' .or. settings%axis%group == 'mesh')
+      same_model = .not. any(settings%axis%group == 'beam' .or. settings%axis%group == 'mesh' .or. &
+                             settings%axis%group == 'supports' .or. settings%axis%group == 'masses')
       same_contacts = same_model .and. .not. any(settings%axis%group == 'obstacles')
       contact_count = -1
       do k = 1, size(points)
@@ -176,7 +177,7 @@ contains
          if (stat == 0) call point_windows(settings, trial, settle_steps, measure_steps, stat, errmsg)
          if (stat == 0 .and. (k == 1 .or. .not. same_model)) &
             call build_model(trial%mesh%basis, trial%mesh%elements, trial%beam%length, trial%beam%rho_s(), &
-                             trial%beam%ei(), model, stat, errmsg)
+                             trial%beam%ei(), model, stat, errmsg, structure=structure_of(trial))
          if (stat == 0 .and. (k == 1 .or. .not. same_contacts)) then
             warnings = ''
             call build_contact_points(trial%obstacles, model, contacts, warnings, stat, errmsg)

@@ -78,6 +78,7 @@ contains
          acceleration = system%loads%at(0.0_dp) - ku
          if (settings%rayleigh_mass > 0 .or. settings%rayleigh_stiffness > 0) &
             acceleration = acceleration - self%damping_times(v0)
+         if (self%modal) call self%add_modal_damping(-v0, acceleration)
          call band_solve(mass_factor, acceleration)
          self%u = u0
          self%u_previous = u0 - dt*v0 + 0.5_dp*dt**2*acceleration
@@ -95,7 +96,7 @@ contains
       class(position_stepper), intent(inout) :: self
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp), dimension(size(self%u)) :: rhs, work_vector, u_free, z_free, z, u_new, force, stride
+      real(dp), dimension(size(self%u)) :: rhs, work_vector, u_free, z_free, z, u_new, force, stride, modal_force
       real(dp) :: e, before, after, reaction
       integer :: c, m
       associate (dt => self%dt, theta => self%theta, u => self%u, u_old => self%u_previous)
@@ -106,6 +107,12 @@ contains
          rhs = rhs - dt**2*work_vector + dt**2*force
          if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) &
             rhs = rhs + 0.5_dp*dt*self%damping_times(u_old)
+         if (self%modal) then
+            ! the damping per mode at v^{n-1/2} = (U^n - U^{n-1})/dt (explicit: W keeps its band)
+            modal_force = 0
+            call self%add_modal_damping((u - u_old)/dt, modal_force)
+            rhs = rhs - dt**2*modal_force
+         end if
          call band_solve(self%iteration_factor, rhs)
          u_free = rhs
          z_free = (u_free + e*u_old)/(1 + e)
@@ -127,6 +134,9 @@ contains
          if (self%loads%present) self%energy%work = self%energy%work + 0.5_dp*dot_product(force, stride)
          if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) self%energy%dissipated_damping = &
             self%energy%dissipated_damping + 0.5_dp*dot_product(stride, self%damping_times(stride))/(2*dt)
+         ! the damping per mode's force -C_m v^{n-1/2} at t_n does the work -1/2 stride.C_m v^{n-1/2}
+         if (self%modal) self%energy%dissipated_damping = self%energy%dissipated_damping + &
+                                                          0.5_dp*dot_product(stride, modal_force)
          ! contact record: reaction r = (1 + e) P_z/dt^2 (W (U^{n+1} - U_free) = dt^2 H^T r)
          m = 0
          do c = 1, self%contacts%count

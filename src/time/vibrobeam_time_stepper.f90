@@ -39,6 +39,10 @@ module vibrobeam_time_stepper
       real(dp) :: separating_restitution = 1
       real(dp) :: rayleigh_mass = 0                  !! a in C = a M + b K (1/s)
       real(dp) :: rayleigh_stiffness = 0             !! b in C = a M + b K (s)
+      !> damping per mode (docs/theory.md §1, "Damping"): C_m = Y diag(c) Y^T, Y = M Phi
+      !! (J x K, the first K modes, M-orthonormal) and c_k = 2 zeta_k omega_k - a - b
+      !! omega_k^2 (1/s), taken explicitly (at V^n); unallocated: none
+      real(dp), allocatable :: modal_forces(:,:), modal_rates(:)
       integer :: compliant_rule = rule_gradient      !! how a step takes a compliant stop's force
       type(contact_options) :: contact               !! the contact projection's regime, method, iterations
    end type stepper_settings
@@ -90,6 +94,9 @@ module vibrobeam_time_stepper
    type, abstract :: time_stepper
       real(dp) :: dt = 0, theta = 0.5_dp, restitution = 1
       real(dp) :: rayleigh_mass = 0, rayleigh_stiffness = 0
+      logical :: modal = .false.                   !! damping per mode (`modal_forces`, `modal_rates`)
+      real(dp), allocatable :: modal_forces(:,:)   !! Y = M Phi (J x K)
+      real(dp), allocatable :: modal_rates(:)      !! c_k (1/s)
       type(symmetric_band) :: mass, stiffness
       type(symmetric_band) :: iteration_matrix     !! W of the scheme, factored once per run
       type(band_cholesky) :: iteration_factor
@@ -117,6 +124,7 @@ module vibrobeam_time_stepper
       procedure :: set_up_system
       procedure :: damping_times
       procedure :: damping_into
+      procedure :: add_modal_damping
       procedure :: save_state => save_stepper_state
       procedure :: restore_state => restore_stepper_state
    end type time_stepper
@@ -260,6 +268,12 @@ contains
       self%restitution = settings%restitution
       self%rayleigh_mass = settings%rayleigh_mass
       self%rayleigh_stiffness = settings%rayleigh_stiffness
+      self%modal = allocated(settings%modal_rates)
+      if (self%modal) then
+         self%modal = size(settings%modal_rates) > 0
+         self%modal_forces = settings%modal_forces
+         self%modal_rates = settings%modal_rates
+      end if
       self%compliant_rule = settings%compliant_rule
       self%mass = system%model%mass
       self%stiffness = system%model%stiffness
@@ -379,6 +393,17 @@ contains
          y = y + self%rayleigh_stiffness*z
       end if
    end subroutine damping_into
+
+   !> y := y + C_m x = y + Y (c * (Y^T x)): the damping per mode (`stepper_settings`), 4 J K
+   !! operations (docs/method.md, "Damping per mode").
+   subroutine add_modal_damping(self, x, y)
+      class(time_stepper), intent(in) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(inout) :: y(:)
+      real(dp) :: coordinates(size(self%modal_rates))
+      coordinates = self%modal_rates*matmul(x, self%modal_forces)
+      y = y + matmul(self%modal_forces, coordinates)
+   end subroutine add_modal_damping
 
    !> C x = a M x + b K x (Rayleigh damping).
    function damping_times(self, x) result(y)

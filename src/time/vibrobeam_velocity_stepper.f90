@@ -47,11 +47,11 @@ module vibrobeam_velocity_stepper
       real(dp), allocatable :: force(:)            !! F(t_n)
       !> work space of `step` (J each), allocated once by `init`: a step allocates nothing
       real(dp), allocatable :: rhs(:), work_vector(:), damping_vector(:), v_free(:), v_new(:), u_new(:), &
-                               force_new(:), force_theta(:)
+                               force_new(:), force_theta(:), modal_vector(:)
       real(dp), allocatable :: signs(:), offsets(:)   !! (contact points) work space of `step`
       ! u = U^n, v = V^n; work = sum F^{n+theta}.(U^{n+1} - U^n),
       ! dissipated_impacts = -sum P.H (V^{n+1} + V^n)/2,
-      ! dissipated_damping = sum dt V^{n+theta}.C V^{n+theta},
+      ! dissipated_damping = sum dt V^{n+theta}.C V^{n+theta} (+ dt V^{n+theta}.C_m V^n per mode),
       ! dissipated_numerical = sum (theta - 1/2) (dV.M dV + dU.K dU - P.H dV) + the springs' rule error
       !                        (`compliant_energy`; the springs take no part in the theta-term)
    contains
@@ -87,7 +87,7 @@ contains
       self%force = system%loads%at(0.0_dp)
       n = size(start%u)
       allocate (self%rhs(n), self%work_vector(n), self%damping_vector(n), self%v_free(n), self%v_new(n), &
-                self%u_new(n), self%force_new(n), self%force_theta(n), source=0.0_dp)
+                self%u_new(n), self%force_new(n), self%force_theta(n), self%modal_vector(n), source=0.0_dp)
       allocate (self%signs(system%contacts%count), self%offsets(system%contacts%count))
    end subroutine init
 
@@ -124,8 +124,14 @@ contains
             force_theta = theta*force_new + (1 - theta)*self%force
          end if                                                        ! (else both stay 0)
          rhs = self%u + theta*dt*self%v
-         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) then
+         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0 .or. self%modal) then
             call self%damping_into(self%v, damping_vector, work_vector)
+            if (self%modal) then
+               ! the damping per mode at V^n (explicit: W keeps its band)
+               self%modal_vector = 0
+               call self%add_modal_damping(self%v, self%modal_vector)
+               damping_vector = damping_vector + self%modal_vector
+            end if
             damping_vector = force_theta - damping_vector
             call band_residual_solve(self%iteration_factor, self%stiffness, rhs, damping_vector, v_free)
          else
@@ -237,6 +243,9 @@ contains
                call self%damping_into(rhs, self%damping_vector, work_vector)
                self%energy%dissipated_damping = self%energy%dissipated_damping + dt*dot_product(rhs, self%damping_vector)
             end if
+            ! the damping per mode's force -C_m V^n does the work -dt V^{n+theta}.C_m V^n
+            if (self%modal) self%energy%dissipated_damping = self%energy%dissipated_damping + &
+                                                             dt*dot_product(theta*v_next + (1 - theta)*v, self%modal_vector)
             if (abs(theta - 0.5_dp) > 0) then
                rhs = v_next - v
                call band_matvec(self%mass, rhs, work_vector)

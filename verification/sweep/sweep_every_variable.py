@@ -23,7 +23,9 @@ scene's beam is given by E, rho, S, I), base_amplitude (the first scene gives
 base_acceleration), the damping of obstacle 1 (a rigid stop in the first scene); and the
 reduction's cut-off (in rad/s and its twin in Hz) is swept in the reduced second scene.
 Every frequency's twin in Hz (docs/input.md, "Frequencies in Hz") is a real variable of the
-table, swept like the others: each point must record the value swept in Hz.
+table, swept like the others: each point must record the value swept in Hz. The variables
+of the structures (supports, springs, masses, damping per mode) are swept in the third
+scene.
 Exit status 0 when every check holds, 1 otherwise (one line per failure), 77 without h5py.
 """
 import concurrent.futures
@@ -71,9 +73,25 @@ SCENE_B = """
 &load      point_force = 0.1, point_frequency = 300, base_frequency = 200 /
 &output    file = 'scene.h5', points = 0.25, text = .false. @OUTPUT@ /
 """
-SCENES = {'A': SCENE_A, 'B': SCENE_B}
+# The third scene: the structures of issue 18 (end supports and springs, an intermediate
+# spring support, a point mass with rotary inertia, damping per mode); the support and the
+# mass stay nearest their nodes when moved by 5 %.
+SCENE_C = """
+&beam      length = 0.5, youngs_modulus = 210e9, density = 7850, area = 2e-4,
+           inertia = 1.6666666666666667e-9, left_end = 'pinned', left_spring = 1e4, left_rotational_spring = 100.0,
+           right_spring = 1e4, right_rotational_spring = 10.0, modal_damping = 0.01,
+           modal_damping_ratios(1) = 0.02 /
+&mesh      elements = 4 /
+&supports  count = 1, x(1) = 0.26, kind(1) = 'spring', stiffness(1) = 1e4, rotational_stiffness(1) = 5.0 /
+&masses    count = 1, x(1) = 0.4, mass(1) = 0.05, rotary_inertia(1) = 1e-6 /
+&obstacles count = 1, side(1) = 'below', x_from(1) = 0.3, x_to(1) = 0.45, level_from(1) = -1e-3 /
+&time      dt = 2e-5 @TIME@ /
+&load      base_acceleration = 2.0, base_frequency = 200 /
+&output    file = 'scene.h5', text = .false. @OUTPUT@ /
+"""
+SCENES = {'A': SCENE_A, 'B': SCENE_B, 'C': SCENE_C}
 # (scene, None: the sweep runs, or the text of the rule that refuses it); every other real
-# variable: [('A', None)]. The rules: docs/sweeps.md, "The parameter"; docs/input.md.
+# variable: [(the first scene that gives it, None)]. The rules: docs/sweeps.md, "The parameter"; docs/input.md.
 EXPECTED = {
     'time.t_end': [('A', 'is set by the sweep itself')],
     'output.measure_from': [('A', 'is set by the sweep itself')],
@@ -159,12 +177,14 @@ def main():
             if extent == 0:
                 names = [variable]
             else:
-                # every element the scene gives (its obstacles, its observation points)
-                names = [f'{variable}({i})' for i in range(1, extent + 1) if f'{variable}({i})' in values['A']]
+                # every element a scene gives (its obstacles, observation points, supports, ...)
+                names = [f'{variable}({i})' for i in range(1, extent + 1)
+                         if any(f'{variable}({i})' in values[key] for key in SCENES)]
                 if not names:
-                    failures.append(f'{variable}: scene A gives no element of it to sweep')
+                    failures.append(f'{variable}: no scene gives an element of it to sweep')
             for name in names:
-                for key, rule in EXPECTED.get(name, [('A', None)]):
+                first = next((key for key in SCENES if name in values[key]), 'A')
+                for key, rule in EXPECTED.get(name, [(first, None)]):
                     jobs.append((vibrobeam, work, values[key], key, name, rule, lowest, highest))
         # two at a time: a sweep of two points spends most of its time syncing its files
         with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:

@@ -5,7 +5,8 @@
 !!    the variable handed over with it agree in kind and rank (`schema_table%mismatch`).
 !! 2. For every real variable of the table outside &sweep, and for elements 1 and 2 of an
 !!    array (a scene with two obstacles and two observation points), `set_real_input`
-!!    sets a value no variable holds, `real_input` reads it back, and the listing of the
+!!    sets a value no variable holds (two supports and two masses too), `real_input`
+!!    reads it back, and the listing of the
 !!    resolved scene (`scene_entries`, a different walk of the declarations than the
 !!    accessor's) shows it under that variable's name and nowhere else: every other entry
 !!    is unchanged, but for the beam's derived k2, mass per length and bending stiffness,
@@ -19,7 +20,8 @@
 program test_scene_values
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: integer_text
-   use vibrobeam_scene, only: scene_type, scene_entry, scene_entries, visit_scene, obstacle_type
+   use vibrobeam_scene, only: scene_type, scene_entry, scene_entries, visit_scene, obstacle_type, support_settings, &
+      mass_settings
    use vibrobeam_scene_values, only: real_input, set_real_input
    use vibrobeam_schema_operations, only: schema_table
    use vibrobeam_sweep_input, only: sweep_input, visit_sweep
@@ -46,6 +48,9 @@ program test_scene_values
                       obstacle_type(side='above', x_from=1.0_dp, x_to=1.0_dp, level_from=0.01_dp, &
                                     level_to=0.01_dp, stiffness=1e5_dp, damping=0.1_dp)]
    scene%output%points = [0.25_dp, 0.75_dp]
+   ! two intermediate supports and two point masses
+   scene%supports = [support_settings(x=0.3_dp), support_settings(x=0.6_dp, kind='spring', stiffness=1e3_dp)]
+   scene%masses = [mass_settings(x=1.0_dp, mass=0.2_dp), mass_settings(x=0.5_dp, mass=0.1_dp, rotary_inertia=1e-4_dp)]
    physical_scene = scene
    physical_scene%beam%youngs_modulus = 2.1e11_dp
    physical_scene%beam%density = 7850

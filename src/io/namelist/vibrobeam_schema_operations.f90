@@ -212,13 +212,14 @@ contains
          if (.not. (row%optional .and. is_unset(real_value))) call check_real(label(), real_value)
       else if (present(real_values)) then
          do i = 1, size(real_values)
-            call check_real(label(i), real_values(i))
+            if (.not. (row%optional .and. is_unset(real_values(i)))) call check_real(label(i), real_values(i))
          end do
       else if (present(integer_value)) then
          if (row%optional .and. integer_value == unset_integer) return
          problem = integer_range_problem(row, integer_value)
          if (len(problem) > 0) call fail(label()//' = '//integer_text(integer_value)//' '//problem)
       else if (present(text_value)) then
+         if (row%optional .and. len_trim(text_value) == 0) return
          call check_keyword(label(), text_value)
       else if (present(text_values)) then
          do i = 1, size(text_values)
@@ -281,18 +282,19 @@ contains
          if (.not. (row%optional .and. is_unset(real_value))) call self%add_real(name, real_value, row%unit)
       else if (present(real_values)) then
          do i = 1, size(real_values)
-            call self%add_real(name//'('//integer_text(i)//')', real_values(i), row%unit)
+            if (.not. (row%optional .and. is_unset(real_values(i)))) &
+               call self%add_real(name//'('//integer_text(i)//')', real_values(i), row%unit)
          end do
       else if (present(integer_value)) then
          if (.not. (row%optional .and. integer_value == unset_integer)) call self%add_integer(name, integer_value)
       else if (present(text_value)) then
-         call self%add_string(name, text_value)
+         if (.not. (row%optional .and. len_trim(text_value) == 0)) call self%add_string(name, text_value)
       else if (present(text_values)) then
          do i = 1, size(text_values)
             call self%add_string(name//'('//integer_text(i)//')', text_values(i))
          end do
       else if (present(logical_value)) then
-         call self%add_logical(name, logical_value)
+         if (.not. (row%optional .and. .not. logical_value)) call self%add_logical(name, logical_value)
       end if
    end subroutine list_variable
 

@@ -121,7 +121,8 @@ contains
    !> A real variable: hard range [lowest, highest] in `unit` ('' dimensionless); `extent`
    !! > 0 for an array of that many elements; `element`: the element handed over (an array
    !! of settings, 0: none, the row only describes); `optional`: the `unset` marker stands
-   !! for a default computed from other inputs (not checked, not listed).
+   !! for a default computed from other inputs (not checked, not listed; for an array, each
+   !! element left unset).
    pure function real_row(group, name, unit, lowest, highest, meaning, extent, element, optional) result(row)
       character(len=*), intent(in) :: group, name, unit, meaning
       real(dp), intent(in) :: lowest, highest
@@ -148,16 +149,19 @@ contains
    end function integer_row
 
    !> A keyword: one of `choices` ('a|b|c'), at most `max_length` characters, read in lower
-   !! case; `extent` and `element` as for `real_row`.
-   pure function keyword_row(group, name, choices, max_length, meaning, extent, element) result(row)
+   !! case; `extent` and `element` as for `real_row`; `optional`: '' stands for a default
+   !! the reader or the user of the value resolves (not checked, not listed).
+   pure function keyword_row(group, name, choices, max_length, meaning, extent, element, optional) result(row)
       character(len=*), intent(in) :: group, name, choices, meaning
       integer, intent(in) :: max_length
       integer, intent(in), optional :: extent, element
+      logical, intent(in), optional :: optional
       type(namelist_variable) :: row
       row = namelist_variable(group=group, name=name, kind=kind_string, max_length=max_length, choices=choices, &
                               meaning=meaning)
       if (present(extent)) row%extent = extent
       if (present(element)) row%element = element
+      if (present(optional)) row%optional = optional
    end function keyword_row
 
    !> Free text (a file name, a parameter name) of at most `max_length` characters, read as written.
@@ -168,10 +172,13 @@ contains
       row = namelist_variable(group=group, name=name, kind=kind_string, max_length=max_length, meaning=meaning)
    end function text_row
 
-   !> A logical (.true. or .false.).
-   pure function logical_row(group, name, meaning) result(row)
+   !> A logical (.true. or .false.); `optional`: .false. stands for "not asked for" and is
+   !! not listed (a switch added later, so that results without it keep their attributes).
+   pure function logical_row(group, name, meaning, optional) result(row)
       character(len=*), intent(in) :: group, name, meaning
+      logical, intent(in), optional :: optional
       type(namelist_variable) :: row
       row = namelist_variable(group=group, name=name, kind=kind_logical, meaning=meaning)
+      if (present(optional)) row%optional = optional
    end function logical_row
 end module vibrobeam_schema_visitor
