@@ -14,7 +14,8 @@ module vibrobeam_problem
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_obstacles, only: build_contact_points
-   use vibrobeam_loads, only: load_set, build_loads
+   use vibrobeam_loads, only: load_set, build_loads, add_forces
+   use vibrobeam_forces, only: forces_frequencies
    use vibrobeam_initial_state, only: mode_field, initial_velocity
    use vibrobeam_static, only: solve_static
    use vibrobeam_discrete_system, only: discrete_system
@@ -74,6 +75,8 @@ contains
       call build_contact_points(scene%obstacles, prepared%model, prepared%contacts, warnings, stat, errmsg)
       if (stat /= 0) return
       call build_loads(scene%load, prepared%model, scene%beam%rho_s(), prepared%loads)
+      call add_forces(prepared%loads, scene%forces, prepared%model, scene%beam%rho_s(), stat, errmsg)
+      if (stat /= 0) return
       if (scene%analysis%kind == 'dynamics' .and. len_trim(scene%initial%from_file) > 0) then
          call resume_from_file(scene, prepared, warnings, stat, errmsg)
          if (stat == 0) call full_system(prepared)
@@ -150,7 +153,7 @@ contains
       end if
       forcing = [scene%load%distributed_frequency, scene%load%point_frequency, scene%load%base_frequency]
       loaded = [abs(scene%load%distributed) > 0, abs(scene%load%point_force) > 0, abs(scene%load%base_amplitude) > 0]
-      cutoff = default_reduction_frequency(scene%time%dt, pack(forcing, loaded))
+      cutoff = default_reduction_frequency(scene%time%dt, [pack(forcing, loaded), forces_frequencies(scene%forces)])
    end function reduction_cutoff
 
    !> The Craig-Bampton reduced model of a prepared scene (`vibrobeam_reduction`).

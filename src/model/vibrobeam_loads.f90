@@ -7,13 +7,17 @@
 !! base excitation: in the frame of the support s(t) = A sin(Omega_b t) the beam feels the
 !! inertial load -rho S s''(t). Displacements are then relative to the support, and the
 !! obstacles move with the support (they are fixed in its frame).
+!!
+!! The loads of &forces (`vibrobeam_forces`: any number of point, distributed and base
+!! loads with harmonic or table signals) are added to these.
 module vibrobeam_loads
    use vibrobeam_kinds, only: dp
    use vibrobeam_model, only: beam_model, load_vector, point_load_vector, unit_profile
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, unset, is_unset
+   use vibrobeam_forces, only: force_set, forces_settings, build_forces
    implicit none
    private
-   public :: load_set, build_loads, load_settings, visit_load
+   public :: load_set, build_loads, load_settings, visit_load, add_forces
 
    !> &load as the input gives it (docs/input.md, "&load"): a uniform load, a point force
    !! and a base excitation, each constant or harmonic.
@@ -34,6 +38,7 @@ module vibrobeam_loads
       real(dp) :: point_force = 0, point_frequency = 0
       real(dp) :: base_load = 0              !! rho S A Omega_b^2 (N/m)
       real(dp) :: base_frequency = 0
+      type(force_set) :: forces              !! the loads of &forces
    contains
       procedure :: at => load_at
       procedure :: evaluate => load_evaluate
@@ -105,17 +110,42 @@ contains
       end if
    end subroutine build_loads
 
-   !> F(t) (N per unknown; per unit mass when the beam is given by k2).
-   pure function load_at(self, t) result(f)
+   !> The loads of &forces (`build_forces`), added to `loads`. stat and errmsg as
+   !! `build_forces` says (a table that cannot be read, ...).
+   subroutine add_forces(loads, settings, model, rho_s, stat, errmsg)
+      type(load_set), intent(inout) :: loads
+      type(forces_settings), intent(in) :: settings
+      type(beam_model), intent(in) :: model
+      real(dp), intent(in) :: rho_s   !! kg/m
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      call build_forces(settings, model, rho_s, loads%forces, stat, errmsg)
+      loads%present = loads%present .or. loads%forces%count > 0
+   end subroutine add_forces
+
+   !> F(t) (N per unknown; per unit mass when the beam is given by k2), for a caller that
+   !! keeps no state: the same values as `evaluate`, which the steppers use.
+   function load_at(self, t) result(f)
       class(load_set), intent(in) :: self
       real(dp), intent(in) :: t   !! time (s)
       real(dp) :: f(size(self%uniform))
-      call load_evaluate(self, t, f)
+      call add_loads(self, t, f)
+      if (self%forces%count > 0) call self%forces%add_uncached(t, f)
    end function load_at
 
-   !> F(t) into f (the time steppers: no temporary array).
-   pure subroutine load_evaluate(self, t, f)
-      class(load_set), intent(in) :: self
+   !> F(t) into f (the time steppers: no temporary array; the tables keep their position,
+   !! so a step costs what the loads touch).
+   subroutine load_evaluate(self, t, f)
+      class(load_set), intent(inout) :: self
+      real(dp), intent(in) :: t   !! time (s)
+      real(dp), intent(out) :: f(:)   !! (J)
+      call add_loads(self, t, f)
+      if (self%forces%count > 0) call self%forces%add_to(t, f)
+   end subroutine load_evaluate
+
+   !> The loads of &load at t into f.
+   pure subroutine add_loads(self, t, f)
+      type(load_set), intent(in) :: self
       real(dp), intent(in) :: t   !! time (s)
       real(dp), intent(out) :: f(:)   !! (J)
       f = 0
@@ -123,5 +153,5 @@ contains
       f = (self%distributed*cos(self%distributed_frequency*t + self%distributed_phase) + &
            self%base_load*sin(self%base_frequency*t))*self%uniform
       if (abs(self%point_force) > 0) f = f + self%point_force*cos(self%point_frequency*t)*self%point
-   end subroutine load_evaluate
+   end subroutine add_loads
 end module vibrobeam_loads

@@ -13,6 +13,7 @@ module vibrobeam_ignored_values
    use vibrobeam_scene, only: scene_type, scene_variables
    use vibrobeam_namelist_scanned, only: scanned_file
    use vibrobeam_namelist_schema, only: namelist_variable, variable_index
+   use vibrobeam_forces, only: ignored_forces
    implicit none
    private
    public :: ignored_values
@@ -27,8 +28,8 @@ contains
       type(scene_type), intent(in) :: scene
       character(len=*), intent(in) :: swept(:)
       character(len=:), allocatable, intent(inout) :: warnings
-      character(len=*), parameter :: unused_by_modes(6) = [character(len=9) :: 'obstacles', 'impact', 'time', &
-                                                            'initial', 'load', 'solver']
+      character(len=*), parameter :: unused_by_modes(7) = [character(len=9) :: 'obstacles', 'impact', 'time', &
+                                                            'initial', 'load', 'forces', 'solver']
       character(len=*), parameter :: unused_by_static(3) = [character(len=9) :: 'impact', 'time', 'initial']
       !> &initial variables that describe the initial state
       character(len=*), parameter :: initial_state(6) = [character(len=22) :: 'displacement', 'displacement_mode', &
@@ -137,6 +138,8 @@ contains
             call given_real('load', 'base_frequency', scene%load%base_frequency, kind_reason//' takes the loads at '// &
                             't = 0, where the base excitation''s load (sin 0) is 0')
       end if
+
+      call ignored_forces(scanned, scene%forces, scene%analysis%kind == 'static', warnings)
 
       if (scene%analysis%kind /= 'dynamics') return
 

@@ -30,6 +30,7 @@ module vibrobeam_scene
    use vibrobeam_obstacles, only: obstacle_type, max_obstacles, visit_obstacles
    use vibrobeam_initial_state, only: initial_settings, visit_initial
    use vibrobeam_loads, only: load_settings, visit_load
+   use vibrobeam_forces, only: forces_settings, visit_forces, check_forces, max_forces
    use vibrobeam_time_settings, only: time_settings, impact_settings, visit_time, visit_impact
    use vibrobeam_contact_options, only: contact_options, visit_solver
    use vibrobeam_output_settings, only: output_settings, visit_output, max_points
@@ -39,7 +40,7 @@ module vibrobeam_scene
    public :: scene_type, analysis_settings, obstacle_type, scene_entry, max_obstacles, max_points, unset
    public :: visit_scene, validate_scene, scene_entries, format_scene, is_unset
    public :: scene_variables, path_length, keyword_length, max_steps, step_count
-   public :: forcing_of, max_sweep_values, parameter_length
+   public :: forcing_of, max_sweep_values, parameter_length, max_forces
 
    !> Most time steps of a run: nint(t_end/dt) must fit a 64-bit count with room to spare.
    integer(int64), parameter :: max_steps = 1000000000000000000_int64
@@ -60,6 +61,7 @@ module vibrobeam_scene
       type(time_settings) :: time
       type(initial_settings) :: initial
       type(load_settings) :: load
+      type(forces_settings) :: forces
       type(contact_options) :: solver
       type(output_settings) :: output
    end type scene_type
@@ -67,12 +69,13 @@ module vibrobeam_scene
 contains
 
    !> Every variable of the scene, group by group in the order of docs/input.md.
-   !! `obstacle_count` (the reader's): the count read, when `scene%obstacles` holds room
-   !! for max_obstacles; otherwise the count is size(scene%obstacles).
-   subroutine visit_scene(scene, visitor, obstacle_count)
+   !! `obstacle_count` and `force_count` (the reader's): the counts read, when
+   !! `scene%obstacles` and `scene%forces%load` hold room for max_obstacles and max_forces;
+   !! otherwise the counts are their sizes.
+   subroutine visit_scene(scene, visitor, obstacle_count, force_count)
       type(scene_type), intent(inout) :: scene
       class(schema_visitor), intent(inout) :: visitor
-      integer, intent(inout), optional :: obstacle_count
+      integer, intent(inout), optional :: obstacle_count, force_count
       integer :: count
       if (.not. allocated(scene%obstacles)) allocate (scene%obstacles(0))
       call visit_beam(scene%beam, visitor)
@@ -88,6 +91,13 @@ contains
       call visit_time(scene%time, visitor)
       call visit_initial(scene%initial, visitor)
       call visit_load(scene%load, visitor)
+      if (.not. allocated(scene%forces%load)) allocate (scene%forces%load(0))
+      if (present(force_count)) then
+         call visit_forces(scene%forces, force_count, visitor)
+      else
+         count = size(scene%forces%load)
+         call visit_forces(scene%forces, count, visitor)
+      end if
       call visit_solver(scene%solver, visitor)
       call visit_output(scene%output, visitor)
    end subroutine visit_scene
@@ -242,6 +252,8 @@ contains
          if (abs(load%base_acceleration) > 0 .and. load%base_frequency <= 0) &
             call fail('&load base_acceleration = '//real_text(load%base_acceleration)// &
                       ' needs base_frequency > 0 (the support moves as (a/Omega^2) sin(Omega t))')
+         ! &forces
+         if (stat == 0) call check_forces(copy%forces, beam%length, stat, errmsg)
          ! &output
          if (len_trim(output%file) == 0) &
             call fail('&output file = '''' is empty: give a file name such as ''results/run.h5''')
@@ -311,17 +323,23 @@ contains
       type(scene_entry), allocatable :: list(:)
       type(schema_lister) :: lister, derived
       type(scene_type) :: copy
-      integer :: k
+      integer :: k, n
       copy = scene
       call visit_scene(copy, lister)
       call derived%add_real('beam.mass_per_length', scene%beam%rho_s(), 'kg/m')
       call derived%add_real('beam.bending_stiffness', scene%beam%ei(), 'N m^2')
-      allocate (list(0))
-      do k = 1, size(lister%entries)
+      allocate (list(lister%count + derived%count))
+      n = 0
+      do k = 1, lister%count
          if (lister%entries(k)%name == 'beam.k2') lister%entries(k)%real_value = scene%beam%ei()/scene%beam%rho_s()
-         if (lister%entries(k)%name == 'beam.rayleigh_mass') list = [list, derived%entries]
-         list = [list, lister%entries(k)]
+         if (lister%entries(k)%name == 'beam.rayleigh_mass') then
+            list(n + 1:n + derived%count) = derived%entries(1:derived%count)
+            n = n + derived%count
+         end if
+         n = n + 1
+         list(n) = lister%entries(k)
       end do
+      list = list(1:n)
    end function scene_entries
 
    !> The resolved scene as text, one 'group.variable = value  ! unit' line per entry.

@@ -14,7 +14,7 @@
 module vibrobeam_scene_read
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: integer_text
-   use vibrobeam_scene, only: scene_type, max_obstacles, max_points, scene_variables, visit_scene
+   use vibrobeam_scene, only: scene_type, max_obstacles, max_points, max_forces, scene_variables, visit_scene
    use vibrobeam_obstacles, only: obstacle_type
    use vibrobeam_namelist_schema, only: namelist_variable
    use vibrobeam_namelist_scan, only: scanned_file, scan_namelist_file
@@ -23,6 +23,7 @@ module vibrobeam_scene_read
    use vibrobeam_sweep_settings, only: sweep_settings
    use vibrobeam_ignored_values, only: ignored_values
    use vibrobeam_namelist_tokens, only: lowercase
+   use vibrobeam_filesystem, only: directory_of
    use vibrobeam_schema_operations, only: schema_checker
    use vibrobeam_sweep_input, only: parameter_length
    implicit none
@@ -48,21 +49,23 @@ contains
       !! sweep%present is false without one
       type(sweep_settings), intent(out), optional :: sweep
       type(schema_reader) :: reader
-      integer :: count
+      integer :: count, force_count
       call scan_namelist_file(filename, scene_variables(), reader%scanned, stat, errmsg)
       if (stat /= 0) return
-      ! room for every obstacle and point the file may describe; cut to what it gives below
-      allocate (scene%obstacles(max_obstacles), scene%output%points(max_points))
+      ! room for every obstacle, load and point the file may describe; cut to what it gives below
+      allocate (scene%obstacles(max_obstacles), scene%output%points(max_points), scene%forces%load(max_forces))
       scene%obstacles(:)%side = ''
       scene%output%points = 0
       count = 0
-      call visit_scene(scene, reader, obstacle_count=count)
+      force_count = 0
+      call visit_scene(scene, reader, obstacle_count=count, force_count=force_count)
       if (reader%stat /= 0) then
          stat = reader%stat
          errmsg = reader%errmsg
          return
       end if
       call resolve_obstacles(reader%scanned, count, scene, stat, errmsg)
+      if (stat == 0) call resolve_forces(reader%scanned, force_count, filename, scene, stat, errmsg)
       if (stat == 0) call resolve_points(reader%scanned, scene, stat, errmsg)
       if (stat /= 0) return
       if (.not. reader%scanned%is_given('load', 'point_position')) scene%load%point_position = scene%beam%length
@@ -169,6 +172,62 @@ contains
          end do
       end function given
    end subroutine resolve_obstacles
+
+   !> &forces after reading: nothing may be described beyond `count` (any array variable
+   !! of &forces, as the table of variables declares them); the loads are cut to it; a
+   !! relative file name of a table is taken from the directory of the input file
+   !! `filename` (docs/input.md, "Tables"), so that a scene and its tables move together.
+   !! The defaults that follow other inputs are taken when the loads are built.
+   subroutine resolve_forces(scanned, count, filename, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
+      integer, intent(in) :: count
+      character(len=*), intent(in) :: filename
+      type(scene_type), intent(inout) :: scene
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(namelist_variable), allocatable :: table(:)
+      integer :: i, k
+      stat = 1
+      if (count < 0 .or. count > max_forces) then
+         errmsg = '&forces count = '//integer_text(count)//' is outside [0, '//integer_text(max_forces)//']'
+         return
+      end if
+      allocate (table, source=scene_variables())
+      do i = count + 1, max_forces
+         do k = 1, size(table)
+            if (table(k)%group /= 'forces' .or. table(k)%extent == 0) cycle
+            if (scanned%is_given('forces', trim(table(k)%name), i)) then
+               errmsg = '&forces: load '//integer_text(i)//' is described ('//trim(table(k)%name)//'('// &
+                        integer_text(i)//')) but count = '//integer_text(count)//'; raise count or remove it'
+               return
+            end if
+         end do
+      end do
+      scene%forces%load = scene%forces%load(1:count)
+      stat = 0
+      errmsg = ''
+      do i = 1, count
+         call beside_input('table', scene%forces%load(i)%table, i)
+      end do
+   contains
+      !> A relative path taken from the input file's directory; an absolute one as it is.
+      subroutine beside_input(name, path, i)
+         character(len=*), intent(in) :: name
+         character(len=*), intent(inout) :: path
+         integer, intent(in) :: i
+         character(len=:), allocatable :: directory
+         if (stat /= 0 .or. len_trim(path) == 0 .or. path(1:1) == '/') return
+         directory = directory_of(filename)
+         if (directory == '.') return
+         if (len(directory) + 1 + len_trim(path) > len(path)) then
+            errmsg = '&forces '//name//'('//integer_text(i)//') = '''//trim(path)//''' taken from the directory '// &
+                     'of the input file is longer than '//integer_text(len(path))//' characters'
+            stat = 1
+            return
+         end if
+         path = directory//'/'//trim(path)
+      end subroutine beside_input
+   end subroutine resolve_forces
 
    !> &output points: the leading elements given (points(1), points(2), ...), no gaps.
    subroutine resolve_points(scanned, scene, stat, errmsg)

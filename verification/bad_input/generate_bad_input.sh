@@ -36,6 +36,15 @@ case "$case_name" in
   overlong_keyword) printf "&mesh basis = '%s' /\n" "hermite$(letters 100)" > "$name" ;;
   input_too_large) { echo '&mesh elements = 4 /'; for i in $(seq 1 40000); do echo '! padding padding padding padding padding'; done; } > "$name" ;;
   input_is_directory) mkdir "$name" ;;
+  forces_table_not_increasing)
+    printf "&forces count = 1, signal(1) = 'table', table(1) = 'record.dat' /\n&output file = 'out/bad.h5' /\n" > "$name"
+    printf '# t (s), force (N)\n0.0 1.0\n0.5 2.0\n0.4 3.0\n' > record.dat ;;
+  forces_table_not_a_number)
+    printf "&forces count = 1, signal(1) = 'table', table(1) = 'record.dat' /\n&output file = 'out/bad.h5' /\n" > "$name"
+    printf '0.0 1.0\n0.5 two\n' > record.dat ;;
+  forces_table_one_pair)
+    printf "&forces count = 1, signal(1) = 'table', table(1) = 'record.dat' /\n&output file = 'out/bad.h5' /\n" > "$name"
+    printf '# only one pair\n0.0 1.0\n' > record.dat ;;
   output_is_link_to_input)
     printf "&mesh elements = 4 /\n&time t_end = 1e-3, dt = 1e-4 /\n&output file = 'link.h5' /\n" > "$name"
     ln -s "$name" link.h5 ;;

@@ -7,6 +7,10 @@
 #
 #   bash verification/bitwise/compare_builds.sh OLD/vibrobeam NEW/vibrobeam [SCENE.nml ...]
 #
+# A change that adds input variables lists their defaults in every result: name them in
+# VIBROBEAM_NEW_INPUTS (e.g. VIBROBEAM_NEW_INPUTS='forces.') to leave them out of the
+# comparison (compare_results.py).
+#
 # Scenes that need files the test harness writes first (from_file of an earlier run) run as
 # they are: both builds must then fail alike. Prints one line per scene and a summary;
 # exit 0 when every scene agrees, 1 otherwise. Needs python3 with h5py.

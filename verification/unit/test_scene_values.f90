@@ -4,7 +4,7 @@
 !! 1. The table of every variable is built from the settings' declarations; each row and
 !!    the variable handed over with it agree in kind and rank (`schema_table%mismatch`).
 !! 2. For every real variable of the table outside &sweep, and for elements 1 and 2 of an
-!!    array (a scene with two obstacles and two observation points), `set_real_input`
+!!    array (a scene with two obstacles, two loads of &forces and two observation points), `set_real_input`
 !!    sets a value no variable holds, `real_input` reads it back, and the listing of the
 !!    resolved scene (`scene_entries`, a different walk of the declarations than the
 !!    accessor's) shows it under that variable's name and nowhere else: every other entry
@@ -43,6 +43,7 @@ program test_scene_values
                       obstacle_type(side='above', x_from=1.0_dp, x_to=1.0_dp, level_from=0.01_dp, &
                                     level_to=0.01_dp, stiffness=1e5_dp, damping=0.1_dp)]
    scene%output%points = [0.25_dp, 0.75_dp]
+   allocate (scene%forces%load(2))   ! two loads of &forces (their defaults)
    physical_scene = scene
    physical_scene%beam%youngs_modulus = 2.1e11_dp
    physical_scene%beam%density = 7850
@@ -68,6 +69,8 @@ program test_scene_values
    call t%check_true('an integer input is not a real input', .not. found)
    call real_input(scene, 'obstacles', 'stiffness', 3, value, found)
    call t%check_true('obstacle 3 of a scene with 2 is not found', .not. found)
+   call real_input(scene, 'forces', 'amplitude', 3, value, found)
+   call t%check_true('load 3 of a scene with 2 is not found', .not. found)
    call real_input(scene, 'output', 'points', 3, value, found)
    call t%check_true('point 3 of a scene with 2 is not found', .not. found)
    call real_input(scene, 'beam', 'no_such_variable', 1, value, found)
