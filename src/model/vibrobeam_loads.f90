@@ -9,7 +9,7 @@
 !! obstacles move with the support (they are fixed in its frame).
 !!
 !! The loads of &forces (`vibrobeam_forces`: any number of point, distributed and base
-!! loads with harmonic or table signals) are added to these.
+!! loads with harmonic, table or random signals) are added to these.
 module vibrobeam_loads
    use vibrobeam_kinds, only: dp
    use vibrobeam_model, only: beam_model, load_vector, point_load_vector, unit_profile
@@ -112,14 +112,15 @@ contains
 
    !> The loads of &forces (`build_forces`), added to `loads`. stat and errmsg as
    !! `build_forces` says (a table that cannot be read, ...).
-   subroutine add_forces(loads, settings, model, rho_s, stat, errmsg)
+   subroutine add_forces(loads, settings, model, rho_s, dt, stat, errmsg)
       type(load_set), intent(inout) :: loads
       type(forces_settings), intent(in) :: settings
       type(beam_model), intent(in) :: model
       real(dp), intent(in) :: rho_s   !! kg/m
+      real(dp), intent(in) :: dt      !! the sample step of random signals (s)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      call build_forces(settings, model, rho_s, loads%forces, stat, errmsg)
+      call build_forces(settings, model, rho_s, dt, loads%forces, stat, errmsg)
       loads%present = loads%present .or. loads%forces%count > 0
    end subroutine add_forces
 
@@ -133,8 +134,8 @@ contains
       if (self%forces%count > 0) call self%forces%add_uncached(t, f)
    end function load_at
 
-   !> F(t) into f (the time steppers: no temporary array; the tables keep their position,
-   !! so a step costs what the loads touch).
+   !> F(t) into f (the time steppers: no temporary array; the tables keep their position
+   !! and the random signals their block of samples, so a step costs what the loads touch).
    subroutine load_evaluate(self, t, f)
       class(load_set), intent(inout) :: self
       real(dp), intent(in) :: t   !! time (s)

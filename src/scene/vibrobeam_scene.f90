@@ -253,7 +253,7 @@ contains
             call fail('&load base_acceleration = '//real_text(load%base_acceleration)// &
                       ' needs base_frequency > 0 (the support moves as (a/Omega^2) sin(Omega t))')
          ! &forces
-         if (stat == 0) call check_forces(copy%forces, beam%length, stat, errmsg)
+         if (stat == 0) call check_forces(copy%forces, beam%length, time%dt, analysis%kind == 'dynamics', stat, errmsg)
          ! &output
          if (len_trim(output%file) == 0) &
             call fail('&output file = '''' is empty: give a file name such as ''results/run.h5''')

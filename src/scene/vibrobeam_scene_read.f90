@@ -208,6 +208,7 @@ contains
       errmsg = ''
       do i = 1, count
          call beside_input('table', scene%forces%load(i)%table, i)
+         call beside_input('psd_table', scene%forces%load(i)%psd_table, i)
       end do
    contains
       !> A relative path taken from the input file's directory; an absolute one as it is.

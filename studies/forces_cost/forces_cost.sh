@@ -11,7 +11,13 @@
 #       point force of &load, N = 1024;
 #   (4) the same scenes at N = 16 (the loads a larger share of a cheap step);
 #   (5) a table signal read from a record of 10^6 lines against the harmonic it samples
-#       (the reading, then an O(1) search per step), N = 16, 200000 steps.
+#       (the reading, then an O(1) search per step), N = 16, 200000 steps;
+#   (6) a random point force (one-sided density over 5..300 Hz: 2^15 filter taps at
+#       dt = 1e-5 s) against a harmonic one, N = 16 and 1024;
+#   (7) a random distributed load with spatial coherence over the whole beam (N + 1 field
+#       points) against a harmonic uniform load, N = 64;
+#   (8) memory: the peak resident size of the random scenes of (6) and (7) run 10 times
+#       longer (it must not grow with the run's length).
 # Writes studies/forces_cost/forces_cost.txt. Builds Release in BUILD_DIR (default build).
 #   usage: studies/forces_cost/forces_cost.sh [BUILD_DIR] [RUNS]
 set -euo pipefail
@@ -76,6 +82,21 @@ done
 # a record of 10^6 samples every 2e-6 s (2 s) of 0.3 cos(100 t), and the harmonic itself
 awk 'BEGIN { for (k = 0; k < 1000000; k++) printf "%.7e %.16e\n", k * 2e-6, 0.3 * cos(100 * k * 2e-6) }' > "$work/record.dat"
 scene "forces_table_16" 16 200000 "&forces count = 1, signal(1) = 'table', table(1) = 'record.dat' /"
+random_point="&forces count = 1, signal(1) = 'random', psd_level(1) = 0.01, band_from(1) = 5.0, band_to(1) = 300.0 /"
+random_field="&forces count = 1, kind(1) = 'distributed', signal(1) = 'random', psd_level(1) = 0.01, band_from(1) = 5.0,
+        band_to(1) = 300.0, correlation_length(1) = 0.05 /"
+scene "random_point_16" 16 200000 "$random_point"
+scene "random_point_1024" 1024 20000 "$random_point"
+scene "random_field_64" 64 100000 "$random_field"
+scene "forces_uniform_64" 64 100000 "&forces count = 1, kind(1) = 'distributed', amplitude(1) = 0.1, frequency(1) = 100.0 /"
+scene "random_point_16_long" 16 2000000 "$random_point"
+scene "random_field_64_long" 64 1000000 "$random_field"
+# peak NAME: the peak resident size (kB) of one run
+peak() {
+  /usr/bin/time -f "%M" -o "$work/m.txt" "$build/vibrobeam" "$work/$1.nml" > /dev/null 2>&1 ||
+    { echo "forces_cost: $1 failed" >&2; exit 1; }
+  cat "$work/m.txt"
+}
 
 {
   echo "# forces_cost.sh: processor microseconds per step (user + system, whole executable, set-up and writing"
@@ -90,4 +111,10 @@ scene "forces_table_16" 16 200000 "&forces count = 1, signal(1) = 'table', table
     time_pair "64 point forces of &forces / 1 of &load, N = $n" "forces_many_$n" "load_point_$n" $steps
   done
   time_pair "table of 1e6 lines / harmonic, N = 16" "forces_table_16" "forces_point_16" 200000
+  time_pair "random point force / harmonic, N = 16" "random_point_16" "forces_point_16" 200000
+  time_pair "random point force / harmonic, N = 1024" "random_point_1024" "forces_point_1024" 20000
+  time_pair "random coherent field (65 points) / uniform, N = 64" "random_field_64" "forces_uniform_64" 100000
+  echo "# peak resident size (kB): random point force, N = 16, 2e5 and 2e6 steps:" \
+    "$(peak random_point_16) $(peak random_point_16_long);" \
+    "random field, N = 64, 1e5 and 1e6 steps: $(peak random_field_64) $(peak random_field_64_long)"
 } | tee "$table"

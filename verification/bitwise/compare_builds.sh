@@ -30,12 +30,14 @@ trap 'rm -rf "$work"' EXIT
 same=0 differ=0
 for scene in "${scenes[@]}"; do
   name=$(basename "$(dirname "$scene")")/$(basename "$scene" .nml)
+  scene_path=$(readlink -f "$scene")
   rm -rf "$work/old" "$work/new"
   mkdir -p "$work/old" "$work/new"
   for side in old new; do
-    cp "$scene" "$work/$side/scene.nml"
     binary=$old; [ $side = new ] && binary=$new
-    (cd "$work/$side" && timeout 300 "$binary" scene.nml > stdout.txt 2> stderr.txt; echo $? > status.txt)
+    # the scene where it lies (the files it names, a load's table, are beside it), its
+    # results in the work directory
+    (cd "$work/$side" && timeout 300 "$binary" "$scene_path" > stdout.txt 2> stderr.txt; echo $? > status.txt)
   done
   problems=()
   [ "$(cat "$work/old/status.txt")" = "$(cat "$work/new/status.txt")" ] ||

@@ -34,14 +34,14 @@
 !!       here, the difference may have any frequency), times 10 for the accumulation
 !!       over the damping's memory.
 program test_forces_harmonic
-   use vibrobeam_kinds, only: dp, int64, output_unit
+   use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
    use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_model, only: beam_model, point_row, node_row, point_load_vector
    use vibrobeam_band, only: symmetric_band, band_combination
-   use vibrobeam_linear_response, only: dense_transfer, theta_frequency
-   use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene, band_condition
+   use vibrobeam_linear_response, only: dense_transfer, theta_frequency, simpson_load_vector
+   use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene, band_condition, same_bits
    implicit none
    type(test_counter) :: t
    type(scene_type) :: scene, single
@@ -66,9 +66,9 @@ program test_forces_harmonic
       allocate (load(model%unknowns, 5), omega(5))
       load(:, 1) = 0.7_dp*exp(cmplx(0.0_dp, 0.4_dp, dp))*point_load_vector(model, 0.6_dp)
       omega(1) = 3
-      load(:, 2) = -1.3_dp*exp(cmplx(0.0_dp, -1.0_dp, dp))*segment_vector(model, 0.2_dp, 0.7_dp)
+      load(:, 2) = -1.3_dp*exp(cmplx(0.0_dp, -1.0_dp, dp))*simpson_load_vector(model, 0.2_dp, 0.7_dp)
       omega(2) = 11
-      load(:, 3) = -scene%beam%rho_s()*0.5_dp*segment_vector(model, 0.0_dp, l)   ! -rho S a(t)
+      load(:, 3) = -scene%beam%rho_s()*0.5_dp*simpson_load_vector(model, 0.0_dp, l)   ! -rho S a(t)
       omega(3) = 25
       load(:, 4) = 0.2_dp*point_load_vector(model, l)
       omega(4) = 0
@@ -203,7 +203,7 @@ contains
       complex(dp) :: tip_value
       associate (model => prepared%model)
          x = dense_transfer(model%mass, model%stiffness, scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness, &
-                            cmplx(0.0_dp, w, dp), cmplx(segment_vector(model, 0.0_dp, scene%beam%length), 0.0_dp, dp))
+                            cmplx(0.0_dp, w, dp), cmplx(simpson_load_vector(model, 0.0_dp, scene%beam%length), 0.0_dp, dp))
          tip_value = 0
          do a = 1, 4
             if (tip_dofs(a) /= 0) tip_value = tip_value + tip_weights(a)*x(tip_dofs(a))
@@ -260,35 +260,4 @@ contains
          end do
       end associate
    end function response
-
-   !> The integral of phi_j over [a, b] by Simpson's rule on each element's part (exact
-   !! for the cubic shape functions).
-   function segment_vector(model, a, b) result(f)
-      type(beam_model), intent(in) :: model
-      real(dp), intent(in) :: a, b
-      real(dp) :: f(model%unknowns), weights(4), lo, hi, x, simpson(3)
-      integer :: dofs(4), e, i, j
-      f = 0
-      simpson = [1.0_dp, 4.0_dp, 1.0_dp]/6
-      do e = 1, model%elements
-         lo = max(a, model%x(e))
-         hi = min(b, model%x(e + 1))
-         if (hi <= lo) cycle
-         do i = 0, 2
-            x = lo + i*(hi - lo)/2
-            ! the element's own shape functions, also at its ends
-            call point_row(model, min(max(x, model%x(e) + 1e-14_dp*model%h), model%x(e + 1) - 1e-14_dp*model%h), &
-                           dofs, weights)
-            do j = 1, 4
-               if (dofs(j) /= 0) f(dofs(j)) = f(dofs(j)) + simpson(i + 1)*(hi - lo)*weights(j)
-            end do
-         end do
-      end do
-   end function segment_vector
-
-   !> a and b are the same double, bit for bit.
-   elemental logical function same_bits(a, b)
-      real(dp), intent(in) :: a, b
-      same_bits = transfer(a, 0_int64) == transfer(b, 0_int64)
-   end function same_bits
 end program test_forces_harmonic

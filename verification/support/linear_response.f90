@@ -2,13 +2,15 @@
 !! response, docs/theory.md section 9): the transfer function of the discrete model, by
 !! dense complex LU (LAPACK zgesv) on the matrices expanded from band storage, for the
 !! semi-discrete system (s = i omega) and for the velocity scheme's theta-method (s = the
-!! scheme's own discrete s of z = exp(i omega dt), below).
+!! scheme's own discrete s of z = exp(i omega dt), below); the load vector of a uniform
+!! load over a segment by Simpson's rule (the library uses Gauss' rule).
 module vibrobeam_linear_response
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_to_dense
+   use vibrobeam_model, only: beam_model, point_row
    implicit none
    private
-   public :: dense_transfer, theta_frequency
+   public :: dense_transfer, theta_frequency, simpson_load_vector
 
    interface
       subroutine zgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
@@ -56,4 +58,29 @@ contains
       z = exp(cmplx(0.0_dp, omega*dt, dp))
       s = (z - 1)/(dt*(theta*z + 1 - theta))
    end function theta_frequency
+
+   !> The integral of phi_j over [a, b] by Simpson's rule on each element's part (exact
+   !! for the cubic shape functions).
+   function simpson_load_vector(model, a, b) result(f)
+      type(beam_model), intent(in) :: model
+      real(dp), intent(in) :: a, b
+      real(dp) :: f(model%unknowns), weights(4), lo, hi, x, simpson(3)
+      integer :: dofs(4), e, i, j
+      f = 0
+      simpson = [1.0_dp, 4.0_dp, 1.0_dp]/6
+      do e = 1, model%elements
+         lo = max(a, model%x(e))
+         hi = min(b, model%x(e + 1))
+         if (hi <= lo) cycle
+         do i = 0, 2
+            x = lo + i*(hi - lo)/2
+            ! the element's own shape functions, also at its ends
+            call point_row(model, min(max(x, model%x(e) + 1e-14_dp*model%h), model%x(e + 1) - 1e-14_dp*model%h), &
+                           dofs, weights)
+            do j = 1, 4
+               if (dofs(j) /= 0) f(dofs(j)) = f(dofs(j)) + simpson(i + 1)*(hi - lo)*weights(j)
+            end do
+         end do
+      end do
+   end function simpson_load_vector
 end module vibrobeam_linear_response
