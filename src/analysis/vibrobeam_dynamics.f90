@@ -14,6 +14,7 @@
 !! result is published with /run status = 'interrupted'.
 module vibrobeam_dynamics
    use vibrobeam_kinds, only: dp, int64, error_unit
+   use vibrobeam_status, only: outcome_interrupted
    use vibrobeam_text, only: real_text
    use vibrobeam_scene, only: scene_type, step_count
    use vibrobeam_problem, only: run_problem, new_stepper
@@ -24,8 +25,8 @@ module vibrobeam_dynamics
    use vibrobeam_checkpoint, only: checkpoint_slots
    use vibrobeam_state_record, only: state_record
    use vibrobeam_progress, only: progress_meter
-   use vibrobeam_signals, only: interrupt_requested
    use vibrobeam_statistics, only: statistics_result
+   use vibrobeam_run_loop, only: advance, run_hooks
    implicit none
    private
    public :: run_dynamics, flush_seconds
@@ -33,6 +34,31 @@ module vibrobeam_dynamics
    !> Wall time between two flushes of the temporary file (s).
    real(dp), parameter :: flush_seconds = 2
 
+   !> The result file of a run while it goes on: created with every dataset before the
+   !! steps, flushed every `flush_interval` of wall time (with a checkpoint every
+   !! `checkpoint_seconds`, when asked), progress reported; finished and published at the
+   !! end. Every HDF5 call is in the critical section `vibrobeam_hdf5` (a sweep's keep_runs
+   !! points run this from several threads).
+   type, extends(run_hooks) :: result_stream
+      type(result_files) :: files
+      type(checkpoint_slots) :: slots
+      type(state_record) :: record             !! the last checkpoint's state
+      type(progress_meter) :: meter
+      type(run_summary) :: summary
+      integer(int64) :: rate = 1               !! clock ticks per second
+      integer(int64) :: last_flush = 0, last_checkpoint = 0   !! clock ticks
+      real(dp) :: flush_interval = flush_seconds   !! wall s between flushes
+      real(dp) :: checkpoint_seconds = 0       !! &output checkpoint_seconds
+      integer(int64) :: last_step = 0          !! the run's last step
+      real(dp) :: dt = 0
+   contains
+      procedure :: after_step => stream_after_step
+      procedure :: open => open_stream
+      procedure :: finish => finish_stream
+      procedure :: save_state => stream_save_state
+      procedure :: flush_all
+      procedure :: progress_text
+   end type result_stream
 
 contains
 
@@ -42,9 +68,8 @@ contains
    !!
    !! A sweep runs its points' result files through here (&sweep keep_runs, possibly from
    !! several threads): `quiet` turns the progress reports off, `statistics` and
-   !! `final_state` hand back the window's statistics and the last state (a checkpoint
-   !! record), and every call that may touch HDF5 (not thread-safe) is in the critical
-   !! section `vibrobeam_hdf5`.
+   !! `final_state` hand back the window's statistics and the last state, and every call
+   !! that may touch HDF5 (not thread-safe) is in the critical section `vibrobeam_hdf5`.
    subroutine run_dynamics(scene, prepared, outcome, stat, errmsg, quiet, statistics, final_state)
       type(scene_type), intent(in) :: scene
       type(run_problem), intent(in) :: prepared
@@ -56,22 +81,14 @@ contains
       type(dynamic_state), intent(out), optional :: final_state
       class(time_stepper), allocatable :: stepper
       type(dynamics_recorder) :: recorder
-      type(result_files) :: files
-      type(checkpoint_slots) :: slots
-      type(state_record) :: record
-      type(progress_meter) :: meter
-      type(run_summary) :: summary
-      integer(int64) :: last, n, start, now, rate, last_flush, last_checkpoint
-      real(dp) :: flush_interval
-      integer :: step_stat
-      character(len=512) :: step_message
+      type(result_stream) :: stream
+      integer(int64) :: last
       character(len=:), allocatable :: warning
 
-      call meter%init(scene%output%progress)
+      call stream%meter%init(scene%output%progress)
       if (present(quiet)) then
-         if (quiet) meter%enabled = .false.
+         if (quiet) stream%meter%enabled = .false.
       end if
-      call system_clock(start, rate)
       last = step_count(scene)
       ! (n dt rounds to the nearest double of t_end: allow a few of its ulps)
       if (.not. prepared%resuming .and. abs(last*scene%time%dt - scene%time%t_end) > &
@@ -80,7 +97,6 @@ contains
          real_text(last*scene%time%dt)//' s'
       call new_stepper(scene, prepared, stepper, stat, errmsg)
       if (stat /= 0) return
-      summary%start_step = stepper%steps
       call recorder%init(scene, stepper, prepared, last)
       if (prepared%resuming) then
          call recorder%restore_state(prepared%resume, stat, errmsg)
@@ -93,161 +109,169 @@ contains
       if (len(warning) > 0) write (error_unit, '(a)') 'vibrobeam: warning: '//warning
 
       ! every dataset exists before the file enters SWMR mode
-      call open_result()
-      if (stat /= 0) return
-      run: block
-         call system_clock(last_flush)
-         last_checkpoint = last_flush
-         flush_interval = flush_seconds
-         if (scene%output%checkpoint_seconds > 0) flush_interval = min(flush_seconds, scene%output%checkpoint_seconds)
-
-         do n = stepper%steps + 1, last
-            call stepper%step(step_stat, step_message)
-            if (step_stat /= 0) then
-               outcome%status = 'failed'
-               write (outcome%failure, '(a,i0,a,es14.7,a)') 'step ', n, ' (t = ', n*scene%time%dt, ' s): '//trim(step_message)
-               exit
-            end if
-            call record_step(n)
-            if (stat /= 0) exit run
-            if (interrupt_requested()) then
-               outcome%status = 'interrupted'
-               exit
-            end if
-            call system_clock(now)
-            if (now - last_flush >= flush_interval*rate) then
-               call flush_and_checkpoint(now)
-               if (stat /= 0) exit run
-               last_flush = now
-            end if
-            if (meter%due()) call meter%report(progress_text(n))
-         end do
-
-         call finish_result()
-         if (stat /= 0) exit run
-         outcome%wall_seconds = meter%elapsed()
-         call meter%end_line()
-         if (present(statistics)) statistics = recorder%window_statistics(stepper)
-         if (present(final_state)) final_state = stepper%state()
-         call release_stepper(stepper)   ! (a sweep's keep_runs runs this once per point)
+      call stream%open(scene, prepared, stepper, recorder, last, stat, errmsg)
+      outcome%run_id = stream%files%run_id
+      if (stat == 0) call advance(stepper, recorder, prepared%model, last, outcome%status, outcome%failure, stat, &
+                                  errmsg, stream)
+      if (stat == 0) call stream%finish(prepared, stepper, recorder, outcome, stat, errmsg)
+      call stream%meter%end_line()
+      if (stat /= 0) then
+         ! an I/O failure: nothing is published
+         !$omp critical (vibrobeam_hdf5)
+         call stream%files%discard()
+         !$omp end critical (vibrobeam_hdf5)
+         call release_stepper(stepper)
          return
-      end block run
-      ! an I/O failure: nothing is published
-      call meter%end_line()
+      end if
+      outcome%wall_seconds = stream%meter%elapsed()
+      if (present(statistics)) statistics = recorder%window_statistics(stepper)
+      if (present(final_state)) final_state = stepper%state()
+      call release_stepper(stepper)   ! (a sweep's keep_runs runs this once per point)
+   end subroutine run_dynamics
+
+   !> Create the result file, every dataset, the checkpoint slots, enter SWMR mode, take
+   !! the first sample and flush; on failure nothing is left (stat /= 0).
+   subroutine open_stream(self, scene, prepared, stepper, recorder, last, stat, errmsg)
+      class(result_stream), intent(inout) :: self
+      type(scene_type), intent(in) :: scene
+      type(run_problem), intent(in) :: prepared
+      class(time_stepper), intent(in) :: stepper
+      type(dynamics_recorder), intent(inout) :: recorder
+      integer(int64), intent(in) :: last
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(int64) :: start
+      call system_clock(start, self%rate)
+      self%last_step = last
+      self%dt = scene%time%dt
+      self%summary%start_step = stepper%steps
+      self%checkpoint_seconds = scene%output%checkpoint_seconds
       !$omp critical (vibrobeam_hdf5)
-      call files%discard()
-      !$omp end critical (vibrobeam_hdf5)
-      call release_stepper(stepper)
-      if (stat == 0) stat = 1
-
-   contains
-
-      !> Create the result file, every dataset, the checkpoint slots, enter SWMR mode, take
-      !! the first sample and flush; on failure nothing is left (stat /= 0).
-      subroutine open_result()
-         !$omp critical (vibrobeam_hdf5)
-         call files%open(scene, prepared%model, stat, errmsg)
-         outcome%run_id = files%run_id
-         if (stat == 0) call recorder%create_datasets(files%h5, stepper, prepared%model, stat, errmsg)
-         if (stat == 0) then
-            call save_state()
-            call slots%create(files%h5, record, merge(2, 1, scene%output%checkpoint_seconds > 0), stat, errmsg)
-         end if
-         if (stat == 0 .and. len_trim(scene%initial%from_file) > 0) &
-            call files%h5%attr_string('/run', 'continued_from', trim(scene%initial%from_file), stat, errmsg)
-         if (stat == 0) call files%h5%start_swmr(stat, errmsg)
-         if (stat == 0 .and. .not. prepared%resuming) then
-            call recorder%sample(stepper, stat, errmsg)
-            if (stat == 0) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
-         end if
-         if (stat == 0) call flush_all()
-         if (stat /= 0) call files%discard()
-         !$omp end critical (vibrobeam_hdf5)
-         if (stat /= 0) call meter%end_line()
-      end subroutine open_result
-
-      !> The recorder's work after step n (impacts, episodes, statistics, the samples due).
-      subroutine record_step(step)
-         integer(int64), intent(in) :: step
-         !$omp critical (vibrobeam_hdf5)
-         call recorder%after_step(stepper, stat, errmsg)
-         if (stat == 0 .and. recorder%output_due(step)) call recorder%sample(stepper, stat, errmsg)
-         if (stat == 0 .and. recorder%field_due(step)) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
-         !$omp end critical (vibrobeam_hdf5)
-      end subroutine record_step
-
-      !> A flush, and a checkpoint when `checkpoint_seconds` have passed since the last.
-      subroutine flush_and_checkpoint(now)
-         integer(int64), intent(in) :: now
-         !$omp critical (vibrobeam_hdf5)
-         call flush_all()
-         if (stat == 0 .and. scene%output%checkpoint_seconds > 0 .and. &
-             now - last_checkpoint >= scene%output%checkpoint_seconds*rate) then
-            call save_state()
-            call slots%write(files%h5, record, stepper%steps, stepper%t, stat, errmsg)
-            if (stat == 0) last_checkpoint = now
-         end if
-         !$omp end critical (vibrobeam_hdf5)
-      end subroutine flush_and_checkpoint
-
-      !> The last sample, the final statistics and checkpoint, /run, and publication.
-      subroutine finish_result()
-         !$omp critical (vibrobeam_hdf5)
-         ! the result ends with a sample of the last (good) state
+      call self%files%open(scene, prepared%model, stat, errmsg)
+      if (stat == 0) call recorder%create_datasets(self%files%h5, stepper, prepared%model, stat, errmsg)
+      if (stat == 0) then
+         call self%save_state(stepper, recorder)
+         call self%slots%create(self%files%h5, self%record, merge(2, 1, self%checkpoint_seconds > 0), stat, errmsg)
+      end if
+      if (stat == 0 .and. len_trim(scene%initial%from_file) > 0) &
+         call self%files%h5%attr_string('/run', 'continued_from', trim(scene%initial%from_file), stat, errmsg)
+      if (stat == 0) call self%files%h5%start_swmr(stat, errmsg)
+      if (stat == 0 .and. .not. prepared%resuming) then
          call recorder%sample(stepper, stat, errmsg)
          if (stat == 0) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
-         if (stat == 0) then
-            call save_state()
-            call recorder%finish(files%h5, stepper, stat, errmsg)
+      end if
+      if (stat == 0) call self%flush_all(stepper, recorder, stat, errmsg)
+      if (stat /= 0) call self%files%discard()
+      !$omp end critical (vibrobeam_hdf5)
+      call system_clock(self%last_flush)
+      self%last_checkpoint = self%last_flush
+      if (self%checkpoint_seconds > 0) self%flush_interval = min(flush_seconds, self%checkpoint_seconds)
+   end subroutine open_stream
+
+   !> After each step: a flush when `flush_interval` has passed (and a checkpoint when
+   !! `checkpoint_seconds` have passed since the last), a progress report when due.
+   subroutine stream_after_step(self, stepper, recorder, step, stat, errmsg)
+      class(result_stream), intent(inout) :: self
+      class(time_stepper), intent(in) :: stepper
+      type(dynamics_recorder), intent(inout) :: recorder
+      integer(int64), intent(in) :: step
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(int64) :: now
+      stat = 0
+      errmsg = ''
+      call system_clock(now)
+      if (now - self%last_flush >= self%flush_interval*self%rate) then
+         !$omp critical (vibrobeam_hdf5)
+         call self%flush_all(stepper, recorder, stat, errmsg)
+         if (stat == 0 .and. self%checkpoint_seconds > 0 .and. &
+             now - self%last_checkpoint >= self%checkpoint_seconds*self%rate) then
+            call self%save_state(stepper, recorder)
+            call self%slots%write(self%files%h5, self%record, stepper%steps, stepper%t, stat, errmsg)
+            if (stat == 0) self%last_checkpoint = now
          end if
-         if (stat == 0) call slots%write(files%h5, record, stepper%steps, stepper%t, stat, errmsg)
-         if (stat == 0) then
-            call slots%close()
-            outcome%steps = stepper%steps
-            outcome%impacts = recorder%impacts
-            outcome%max_penetration = recorder%max_penetration
-            outcome%compliant = recorder%compliant
-            if (outcome%compliant) outcome%peak_force = maxval(recorder%peak_force)
-            summary%status = outcome%status
-            summary%steps = stepper%steps
-            summary%wall_seconds = meter%elapsed()
-            summary%iterations_total = recorder%iterations_total
-            summary%iterations_max = recorder%iterations_max
-            summary%linear_solves_total = recorder%linear_solves_total
-            summary%linear_solves_max = recorder%linear_solves_max
-            summary%fallback_steps = recorder%fallback_steps
-            call files%set_flushed(stepper%steps, recorder%rows(), stat, errmsg)
-         end if
-         if (stat == 0) call files%set_run(summary, stat, errmsg)
-         if (stat == 0) call files%publish(meter, outcome%status /= 'interrupted', outcome%text_skipped, stat, errmsg)
          !$omp end critical (vibrobeam_hdf5)
-      end subroutine finish_result
+         if (stat /= 0) return
+         self%last_flush = now
+      end if
+      if (self%meter%due()) call self%meter%report(self%progress_text(step))
+   end subroutine stream_after_step
 
-      !> The state of stepper and recorder, as a checkpoint holds it.
-      subroutine save_state()
-         call record%clear()
-         call stepper%save_state(record)
-         call recorder%save_state(record)
-      end subroutine save_state
+   !> The last sample, the final statistics and checkpoint, /run, and publication.
+   subroutine finish_stream(self, prepared, stepper, recorder, outcome, stat, errmsg)
+      class(result_stream), intent(inout) :: self
+      type(run_problem), intent(in) :: prepared
+      class(time_stepper), intent(in) :: stepper
+      type(dynamics_recorder), intent(inout) :: recorder
+      type(run_outcome), intent(inout) :: outcome
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      !$omp critical (vibrobeam_hdf5)
+      ! the result ends with a sample of the last (good) state
+      call recorder%sample(stepper, stat, errmsg)
+      if (stat == 0) call recorder%sample_field(stepper, prepared%model, stat, errmsg)
+      if (stat == 0) then
+         call self%save_state(stepper, recorder)
+         call recorder%finish(self%files%h5, stepper, stat, errmsg)
+      end if
+      if (stat == 0) call self%slots%write(self%files%h5, self%record, stepper%steps, stepper%t, stat, errmsg)
+      if (stat == 0) then
+         call self%slots%close()
+         outcome%steps = stepper%steps
+         outcome%impacts = recorder%impacts
+         outcome%max_penetration = recorder%max_penetration
+         outcome%compliant = recorder%compliant
+         if (outcome%compliant) outcome%peak_force = maxval(recorder%peak_force)
+         self%summary%status = outcome%status
+         self%summary%steps = stepper%steps
+         self%summary%wall_seconds = self%meter%elapsed()
+         self%summary%iterations_total = recorder%iterations_total
+         self%summary%iterations_max = recorder%iterations_max
+         self%summary%linear_solves_total = recorder%linear_solves_total
+         self%summary%linear_solves_max = recorder%linear_solves_max
+         self%summary%fallback_steps = recorder%fallback_steps
+         call self%files%set_flushed(stepper%steps, recorder%rows(), stat, errmsg)
+      end if
+      if (stat == 0) call self%files%set_run(self%summary, stat, errmsg)
+      if (stat == 0) call self%files%publish(self%meter, outcome%status /= outcome_interrupted, outcome%text_skipped, stat, &
+                                             errmsg)
+      !$omp end critical (vibrobeam_hdf5)
+   end subroutine finish_stream
 
-      !> Buffered rows to the file, what it holds into /run, then H5Fflush.
-      subroutine flush_all()
-         call recorder%write_buffers(stat, errmsg)
-         if (stat == 0) call files%h5%flush(stat, errmsg)
-         if (stat == 0) call files%set_flushed(stepper%steps, recorder%rows(), stat, errmsg)
-         if (stat == 0) call files%h5%flush(stat, errmsg)
-      end subroutine flush_all
+   !> The state of stepper and recorder, as a checkpoint holds it.
+   subroutine stream_save_state(self, stepper, recorder)
+      class(result_stream), intent(inout) :: self
+      class(time_stepper), intent(in) :: stepper
+      type(dynamics_recorder), intent(in) :: recorder
+      call self%record%clear()
+      call stepper%save_state(self%record)
+      call recorder%save_state(self%record)
+   end subroutine stream_save_state
 
-      function progress_text(step) result(text)
-         integer(int64), intent(in) :: step
-         character(len=:), allocatable :: text
-         character(len=160) :: buffer
-         real(dp) :: elapsed, fraction
-         elapsed = meter%elapsed()
-         fraction = real(step - summary%start_step, dp)/max(1_int64, last - summary%start_step)
-         write (buffer, '(f6.2,a,es11.4,a,f9.1,a,f9.1,a)') 100.0_dp*step/last, ' %  t = ', step*scene%time%dt, &
-            ' s  wall ', elapsed, ' s  left ~', elapsed*(1 - fraction)/max(fraction, 1e-12_dp), ' s'
-         text = trim(buffer)
-      end function progress_text
-   end subroutine run_dynamics
+   !> Buffered rows to the file, what it holds into /run, then H5Fflush.
+   subroutine flush_all(self, stepper, recorder, stat, errmsg)
+      class(result_stream), intent(inout) :: self
+      class(time_stepper), intent(in) :: stepper
+      type(dynamics_recorder), intent(inout) :: recorder
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      call recorder%write_buffers(stat, errmsg)
+      if (stat == 0) call self%files%h5%flush(stat, errmsg)
+      if (stat == 0) call self%files%set_flushed(stepper%steps, recorder%rows(), stat, errmsg)
+      if (stat == 0) call self%files%h5%flush(stat, errmsg)
+   end subroutine flush_all
+
+   !> 'p %  t = ...  wall ... s  left ~... s' after step `step`.
+   function progress_text(self, step) result(text)
+      class(result_stream), intent(in) :: self
+      integer(int64), intent(in) :: step
+      character(len=:), allocatable :: text
+      character(len=160) :: buffer
+      real(dp) :: elapsed, fraction
+      elapsed = self%meter%elapsed()
+      fraction = real(step - self%summary%start_step, dp)/max(1_int64, self%last_step - self%summary%start_step)
+      write (buffer, '(f6.2,a,es11.4,a,f9.1,a,f9.1,a)') 100.0_dp*step/self%last_step, ' %  t = ', step*self%dt, &
+         ' s  wall ', elapsed, ' s  left ~', elapsed*(1 - fraction)/max(fraction, 1e-12_dp), ' s'
+      text = trim(buffer)
+   end function progress_text
 end module vibrobeam_dynamics

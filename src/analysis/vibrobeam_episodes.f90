@@ -109,7 +109,7 @@ contains
    subroutine observe_step(self, stepper, events, stat, errmsg)
       class(episode_tracker), intent(inout) :: self
       class(time_stepper), intent(in) :: stepper
-      type(step_events), intent(in) :: events
+      type(step_events), intent(inout) :: events
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp) :: t
@@ -178,6 +178,11 @@ contains
          end if
       end do
       end associate
+      ! what the episodes decided, for the observers after them (the statistics)
+      events%closed_count = self%closed_count
+      events%closed_point = self%closed_point
+      events%closed_impulse = self%closed_impulse
+      events%opened = self%opened
    contains
       subroutine close_episode(point, still_open)
          integer, intent(in) :: point

@@ -2,7 +2,7 @@
 !! frequencies and mode shapes of the discrete beam (`vibrobeam_modes`), written to the
 !! result file and published (docs/output.md, "Natural modes").
 module vibrobeam_modal_analysis
-   use vibrobeam_status, only: stat_ok
+   use vibrobeam_status, only: stat_ok, outcome_interrupted
    use vibrobeam_scene, only: scene_type
    use vibrobeam_problem, only: run_problem
    use vibrobeam_modes, only: compute_modes
@@ -35,7 +35,7 @@ contains
       call files%open(scene, prepared%model, stat, errmsg)
       if (stat == stat_ok) call files%write_modes(omega, shapes, stat, errmsg)
       summary%wall_seconds = meter%elapsed()
-      if (interrupt_requested()) summary%status = 'interrupted'
+      if (interrupt_requested()) summary%status = outcome_interrupted
       call files%finish(summary, meter, outcome%text_skipped, stat, errmsg)
       if (stat /= stat_ok) return
       outcome%status = summary%status

@@ -34,7 +34,9 @@ module vibrobeam_recorder
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_problem, only: run_problem
    use vibrobeam_hdf5, only: h5_writer
-   use vibrobeam_hdf5_series, only: h5_series, h5_array
+   use vibrobeam_histories, only: run_histories, history_paths, history_count, h_time, h_tip_u, h_tip_v, &
+      h_tip_reaction, h_tip_impulse, h_kinetic, h_elastic, h_total, h_work, h_dissipated, h_impacts, h_damping, &
+      h_numerical, h_balance, h_penetration
    use vibrobeam_state_record, only: state_record
    use vibrobeam_step_observer, only: step_events
    use vibrobeam_episodes, only: episode_tracker
@@ -44,22 +46,6 @@ module vibrobeam_recorder
    implicit none
    private
    public :: dynamics_recorder, default_episode_gap, history_paths
-
-   !> The histories sampled at every output time, in the order of a sample row.
-   integer, parameter :: history_count = 15
-   integer, parameter :: h_time = 1, h_tip_u = 2, h_tip_v = 3, h_tip_reaction = 4, h_tip_impulse = 5, &
-                         h_kinetic = 6, h_elastic = 7, h_total = 8, h_work = 9, h_dissipated = 10, &
-                         h_impacts = 11, h_damping = 12, h_numerical = 13, h_balance = 14, h_penetration = 15
-   character(len=*), parameter :: history_paths(history_count) = [character(len=40) :: '/time', &
-      '/tip/displacement', '/tip/velocity', '/tip/reaction', '/tip/impulse', '/energy/kinetic', &
-      '/energy/elastic', '/energy/total', '/energy/work', '/energy/dissipated', '/energy/dissipated_impacts', &
-      '/energy/dissipated_damping', '/energy/dissipated_numerical', '/energy/balance', '/contact/penetration']
-   character(len=*), parameter :: history_units(history_count) = [character(len=8) :: 's', 'm', 'm/s', 'N', &
-      'N s', 'J', 'J', 'J', 'J', 'J', 'J', 'J', 'J', 'J', 'm']
-   !> Columns of /impacts.
-   character(len=*), parameter :: impact_paths(5) = [character(len=32) :: '/impacts/time', '/impacts/x', &
-      '/impacts/impulse', '/impacts/velocity_before', '/impacts/velocity_after']
-   character(len=*), parameter :: impact_units(5) = [character(len=8) :: 's', 'm', 'N s', 'm/s', 'm/s']
 
    type :: dynamics_recorder
       integer(int64) :: every = 1, field_every = 1   !! output intervals (steps)
@@ -99,14 +85,8 @@ module vibrobeam_recorder
       type(run_statistics) :: statistics
       type(statistics_datasets) :: statistics_files
       type(step_events) :: events
-      ! streamed datasets
-      type(h5_series) :: histories(history_count), point_u, point_v, field_time, field, impact_columns(5)
-      type(h5_series) :: spectrum_frequency, spectrum_amplitude
-      type(h5_array) :: fraction
-      ! compliant stops (docs/output.md): created only when the scene has springs
-      logical :: compliant = .false.
-      type(h5_series) :: contact_potential, contact_damping, contact_force
-      type(h5_array) :: peak_force_array
+      type(run_histories) :: files                   !! the datasets of the result file
+      logical :: compliant = .false.                 !! the scene has compliant stops (docs/output.md)
       real(dp), allocatable :: peak_force(:)         !! largest |force| per contact point over every step (N)
    contains
       procedure :: init => recorder_init
@@ -116,6 +96,7 @@ module vibrobeam_recorder
       procedure :: field_due
       procedure :: sample
       procedure :: sample_field
+      procedure :: record_step
       procedure :: write_buffers
       procedure :: rows
       procedure :: finish
@@ -222,6 +203,28 @@ contains
       end function reduced_row
    end subroutine recorder_init
 
+   !> The recorder's work after step n: impacts, episodes, statistics (`after_step`) and,
+   !! when it writes a result file, the samples due; the HDF5 part in the critical
+   !! section `vibrobeam_hdf5` (HDF5 is not thread-safe: a sweep's keep_runs points write
+   !! from several threads), the rest outside it.
+   subroutine record_step(self, stepper, model, step, stat, errmsg)
+      class(dynamics_recorder), intent(inout) :: self
+      class(time_stepper), intent(in) :: stepper
+      type(beam_model), intent(in) :: model
+      integer(int64), intent(in) :: step
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      if (.not. self%write_rows) then
+         call self%after_step(stepper, stat, errmsg)
+         return
+      end if
+      !$omp critical (vibrobeam_hdf5)
+      call self%after_step(stepper, stat, errmsg)
+      if (stat == 0 .and. self%output_due(step)) call self%sample(stepper, stat, errmsg)
+      if (stat == 0 .and. self%field_due(step)) call self%sample_field(stepper, model, stat, errmsg)
+      !$omp end critical (vibrobeam_hdf5)
+   end subroutine record_step
+
    !> u and v at the tip and at the observation points into events%observed (the same
    !! combinations of unknowns as /tip and /points).
    subroutine observe(self, stepper)
@@ -300,52 +303,10 @@ contains
       type(beam_model), intent(in) :: model
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer :: k
-      do k = 1, history_count
-         call self%histories(k)%create(writer, trim(history_paths(k)), 1, trim(history_units(k)), stat, errmsg)
-         if (stat /= 0) return
-      end do
-      do k = 1, 5
-         call self%impact_columns(k)%create(writer, trim(impact_paths(k)), 1, trim(impact_units(k)), stat, errmsg)
-         if (stat /= 0) return
-      end do
-      call self%field_time%create(writer, '/field/time', 1, 's', stat, errmsg)
-      if (stat == 0) call self%field%create(writer, '/field/displacement', model%elements + 1, 'm', stat, errmsg, &
-                                            matrix=.true.)
-      if (stat == 0 .and. size(self%point_x) > 0) then
-         call writer%write_real_1d('/points/x', self%point_x, 'm', stat, errmsg)
-         if (stat == 0) call self%point_u%create(writer, '/points/displacement', size(self%point_x), 'm', &
-                                                 stat, errmsg, matrix=.true.)
-         if (stat == 0) call self%point_v%create(writer, '/points/velocity', size(self%point_x), 'm/s', &
-                                                 stat, errmsg, matrix=.true.)
-      end if
-      if (stat == 0) call writer%write_real_1d('/contact/x', stepper%contacts%x, 'm', stat, errmsg)
-      if (stat == 0) call writer%write_real_1d('/contact/lower', stepper%contacts%lower, 'm', stat, errmsg)
-      if (stat == 0) call writer%write_real_1d('/contact/upper', stepper%contacts%upper, 'm', stat, errmsg)
-      if (stat == 0) call self%fraction%create(writer, '/contact/fraction', stepper%contacts%count, .false., &
-                                               stat, errmsg)
-      if (stat == 0) call writer%attr_string('/contact/fraction', 'unit', '1', stat, errmsg)
-      if (stat == 0) call writer%attr_real('/contact', 'max_penetration', 0.0_dp, stat, errmsg)
-      if (stat == 0) call writer%attr_real('/contact', 'max_penetration_time', 0.0_dp, stat, errmsg)
-      if (stat == 0) call writer%attr_int64('/impacts', 'count', 0_int64, stat, errmsg)
-      if (stat == 0) call writer%attr_real('/spectrum', 'sampling_interval', self%spectrum%dt, stat, errmsg)
-      if (stat == 0) call writer%attr_real('/spectrum', 'bin_width', 0.0_dp, stat, errmsg)
-      if (stat == 0) call writer%attr_int64('/spectrum', 'segments', 0_int64, stat, errmsg)
-      if (stat == 0) call writer%attr_int64('/spectrum', 'samples', 0_int64, stat, errmsg)
-      if (stat == 0) call writer%attr_string('/spectrum', 'window', 'hann', stat, errmsg)
-      if (stat == 0) call self%spectrum_frequency%create(writer, '/spectrum/frequency', 1, 'Hz', stat, errmsg)
-      if (stat == 0) call self%spectrum_amplitude%create(writer, '/spectrum/tip_amplitude', 1, 'm', stat, errmsg)
+      call self%files%create(writer, self%point_x, stepper%contacts, model%elements + 1, self%spectrum%dt, &
+                             self%compliant, stat, errmsg)
       if (stat == 0) call self%episodes%create_datasets(writer, stat, errmsg)
-      if (stat == 0 .and. self%compliant) then
-         call self%contact_potential%create(writer, '/energy/contact_potential', 1, 'J', stat, errmsg)
-         if (stat == 0) call self%contact_damping%create(writer, '/energy/dissipated_contact_damping', 1, 'J', &
-                                                         stat, errmsg)
-         if (stat == 0) call self%contact_force%create(writer, '/contact/force', stepper%contacts%count, 'N', &
-                                                       stat, errmsg, matrix=.true.)
-         if (stat == 0) call self%peak_force_array%create(writer, '/contact/peak_force', stepper%contacts%count, &
-                                                          .false., stat, errmsg)
-         if (stat == 0) call writer%attr_string('/contact/peak_force', 'unit', 'N', stat, errmsg)
-      end if
+      if (stat == 0 .and. self%compliant) call self%files%create_compliant(writer, stepper%contacts, stat, errmsg)
       if (stat == 0 .and. self%statistics%active) &
          call self%statistics_files%create(writer, self%statistics%layout, [self%length, self%point_x], &
                                            stepper%contacts%x, stepper%contacts%lower_obstacle, &
@@ -389,9 +350,10 @@ contains
          if (.not. self%in_contact(c) .and. stepper%report%approaching(k)) then
             self%events%impact(k) = .true.
             self%impacts = self%impacts + 1
-            if (self%write_rows) call append_impact([stepper%report%impulse_time, stepper%contacts%x(c), &
-               stepper%report%impulse(k), &
-                                                     stepper%report%velocity_before(k), stepper%report%velocity_after(k)])
+            if (self%write_rows) call self%files%append_impact([stepper%report%impulse_time, stepper%contacts%x(c), &
+                                                                stepper%report%impulse(k), &
+                                                                stepper%report%velocity_before(k), &
+                                                                stepper%report%velocity_after(k)], stat, errmsg)
             if (stat /= 0) return
          end if
          if (c == self%tip_contact) self%tip_impulse = self%tip_impulse + stepper%report%impulse(k)
@@ -419,11 +381,7 @@ contains
       if (stepper%report%used_fallback) self%fallback_steps = self%fallback_steps + 1
       call self%episodes%observe_step(stepper, self%events, stat, errmsg)
       if (stat /= 0 .or. .not. self%statistics%active) return
-      ! what the episodes decided, and the observed values, for the statistics
-      self%events%closed_count = self%episodes%closed_count
-      self%events%closed_point = self%episodes%closed_point
-      self%events%closed_impulse = self%episodes%closed_impulse
-      self%events%opened = self%episodes%opened
+      ! the observed values, for the statistics
       call self%observe(stepper)
       call self%statistics%observe_step(stepper, self%events, stat, errmsg)
       if (stat /= 0) then
@@ -434,15 +392,6 @@ contains
          call self%statistics_files%append_poincare(self%statistics%sample_times(1:self%statistics%poincare_found), &
                                                     self%statistics%sample_values(:, 1:self%statistics%poincare_found), &
                                                     stat, errmsg)
-   contains
-      subroutine append_impact(row)
-         real(dp), intent(in) :: row(5)
-         integer :: column
-         do column = 1, 5
-            call self%impact_columns(column)%append(row(column:column), stat, errmsg)
-            if (stat /= 0) return
-         end do
-      end subroutine append_impact
    end subroutine after_step
 
    !> True when step n is an output time of the histories.
@@ -467,7 +416,6 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp) :: row(history_count), interval, potential
-      integer :: k
       stat = 0
       errmsg = ''
       if (stepper%steps == self%last_output_step) return
@@ -487,27 +435,18 @@ contains
       row(h_damping) = stepper%energy%dissipated_damping
       row(h_numerical) = stepper%energy%dissipated_numerical
       row(h_dissipated) = row(h_impacts) + row(h_damping) + row(h_numerical)
+      potential = 0
       if (self%compliant) then
          ! the stops' stored energy is part of the total, their damping a dissipation
          potential = stepper%contact_potential()
          row(h_total) = row(h_total) + potential
          row(h_dissipated) = row(h_dissipated) + stepper%energy%dissipated_contact_damping
-         call self%contact_potential%append([potential], stat, errmsg)
-         if (stat == 0) call self%contact_damping%append([stepper%energy%dissipated_contact_damping], stat, errmsg)
-         if (stat == 0) call self%contact_force%append(stepper%report%contact_force, stat, errmsg)
-         if (stat /= 0) return
       end if
       row(h_balance) = row(h_total) - row(h_work) + row(h_dissipated)
       row(h_penetration) = penetration(stepper)
-      do k = 1, history_count
-         call self%histories(k)%append(row(k:k), stat, errmsg)
-         if (stat /= 0) return
-      end do
-      if (size(self%point_x) > 0) then
-         call self%point_u%append(self%events%observed(2:, 1), stat, errmsg)
-         if (stat == 0) call self%point_v%append(self%events%observed(2:, 2), stat, errmsg)
-         if (stat /= 0) return
-      end if
+      call self%files%append_sample(row, self%events%observed(2:, 1), self%events%observed(2:, 2), potential, &
+                                    stepper%energy%dissipated_contact_damping, stepper%report%contact_force, stat, errmsg)
+      if (stat /= 0) return
       ! the spectrum takes the uniformly spaced rows only (not a last row off the grid)
       if (mod(stepper%steps, self%every) == 0) call self%spectrum%add(row(h_tip_u), stat, errmsg)
       if (stat /= 0) return
@@ -526,11 +465,11 @@ contains
       stat = 0
       errmsg = ''
       if (stepper%steps == self%last_field_step) return
-      call self%field_time%append([stepper%t], stat, errmsg)
       if (allocated(self%reduction)) then
-         if (stat == 0) call self%field%append(nodal_displacement(model, self%reduction%expand(stepper%u)), stat, errmsg)
+         call self%files%append_field(stepper%t, nodal_displacement(model, self%reduction%expand(stepper%u)), stat, &
+                                      errmsg)
       else
-         if (stat == 0) call self%field%append(nodal_displacement(model, stepper%u), stat, errmsg)
+         call self%files%append_field(stepper%t, nodal_displacement(model, stepper%u), stat, errmsg)
       end if
       self%last_field_step = stepper%steps
    end subroutine sample_field
@@ -540,23 +479,9 @@ contains
       class(dynamics_recorder), intent(inout) :: self
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer :: k
-      do k = 1, history_count
-         call self%histories(k)%write(stat, errmsg)
-         if (stat /= 0) return
-      end do
-      do k = 1, 5
-         call self%impact_columns(k)%write(stat, errmsg)
-         if (stat /= 0) return
-      end do
-      call self%field_time%write(stat, errmsg)
-      if (stat == 0) call self%field%write(stat, errmsg)
-      if (stat == 0 .and. size(self%point_x) > 0) call self%point_u%write(stat, errmsg)
-      if (stat == 0 .and. size(self%point_x) > 0) call self%point_v%write(stat, errmsg)
+      call self%files%write(stat, errmsg)
       if (stat == 0) call self%episodes%write_buffers(stat, errmsg)
-      if (stat == 0 .and. self%compliant) call self%contact_potential%write(stat, errmsg)
-      if (stat == 0 .and. self%compliant) call self%contact_damping%write(stat, errmsg)
-      if (stat == 0 .and. self%compliant) call self%contact_force%write(stat, errmsg)
+      if (stat == 0) call self%files%write_compliant(stat, errmsg)
       if (stat == 0) call self%statistics_files%write_buffers(stat, errmsg)
    end subroutine write_buffers
 
@@ -564,8 +489,7 @@ contains
    function rows(self) result(counts)
       class(dynamics_recorder), intent(in) :: self
       integer(int64) :: counts(4)
-      counts = [self%histories(1)%rows(), self%field_time%rows(), self%impact_columns(1)%rows(), &
-                self%episodes%rows()]
+      counts = [self%files%rows(), self%episodes%rows()]
    end function rows
 
    !> End of the run: the spectrum, the contact fractions and largest penetration, the
@@ -579,54 +503,18 @@ contains
       real(dp), allocatable :: frequency(:), amplitude(:)
       integer(int64) :: segments
       real(dp) :: width
-      integer :: k
       call self%statistics_files%finish(writer, self%window_statistics(stepper), stat, errmsg)
       if (stat == 0) call self%episodes%finish(writer, stat, errmsg)
       if (stat == 0) call self%write_buffers(stat, errmsg)
-      if (stat /= 0) return
-      call self%fraction%write_reals(self%contact_time/max(stepper%t, tiny(1.0_dp)), stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr('/contact', 'max_penetration', self%max_penetration, stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr('/contact', 'max_penetration_time', self%max_penetration_time, &
-                                                   stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr('/impacts', 'count', self%impacts, stat, errmsg)
-      if (stat == 0 .and. self%compliant) call self%peak_force_array%write_reals(self%peak_force, stat, errmsg)
       if (stat /= 0) return
       call self%spectrum%spectrum(frequency, amplitude, segments, width, stat, errmsg)
       if (stat /= 0) then
          errmsg = 'tip spectrum: '//trim(errmsg)
          return
       end if
-      call writer%rewrite_attr('/spectrum', 'bin_width', width, stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr('/spectrum', 'segments', segments, stat, errmsg)
-      if (stat == 0) call writer%rewrite_attr('/spectrum', 'samples', self%spectrum%samples, stat, errmsg)
-      if (stat /= 0) return
-      ! the spectrum's datasets were created empty with the others (SWMR: no new objects)
-      do k = 1, size(frequency)
-         call self%spectrum_frequency%append(frequency(k:k), stat, errmsg)
-         if (stat == 0) call self%spectrum_amplitude%append(amplitude(k:k), stat, errmsg)
-         if (stat /= 0) return
-      end do
-      call self%spectrum_frequency%write(stat, errmsg)
-      if (stat == 0) call self%spectrum_amplitude%write(stat, errmsg)
-      do k = 1, history_count
-         call self%histories(k)%close()
-      end do
-      do k = 1, 5
-         call self%impact_columns(k)%close()
-      end do
-      call self%field_time%close()
-      call self%field%close()
-      call self%point_u%close()
-      call self%point_v%close()
-      call self%fraction%close()
-      if (self%compliant) then
-         call self%contact_potential%close()
-         call self%contact_damping%close()
-         call self%contact_force%close()
-         call self%peak_force_array%close()
-      end if
-      call self%spectrum_frequency%close()
-      call self%spectrum_amplitude%close()
+      call self%files%finish(writer, self%contact_time/max(stepper%t, tiny(1.0_dp)), self%max_penetration, &
+                             self%max_penetration_time, self%impacts, self%peak_force, frequency, amplitude, width, &
+                             segments, self%spectrum%samples, stat, errmsg)
    end subroutine finish
 
    !> Everything a continued run needs (module documentation).

@@ -19,6 +19,7 @@
 module vibrobeam_result_files
    use, intrinsic :: iso_c_binding, only: c_long
    use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_status, only: outcome_ok, outcome_interrupted, outcome_name
    use vibrobeam_version, only: version_string
    use vibrobeam_scene, only: scene_type, scene_entry, scene_entries, format_scene
    use vibrobeam_model, only: beam_model
@@ -38,7 +39,7 @@ module vibrobeam_result_files
 
    !> What /run records about a run (docs/output.md).
    type :: run_summary
-      character(len=16) :: status = 'ok'             !! 'ok' | 'failed' | 'interrupted'
+      integer :: status = outcome_ok                 !! outcome_ok | outcome_failed | outcome_interrupted
       integer(int64) :: steps = 0                    !! global step number at the end
       integer(int64) :: start_step = 0               !! global step number at the start
       real(dp) :: wall_seconds = 0
@@ -92,7 +93,7 @@ module vibrobeam_result_files
 
    !> What a run (modes, static or dynamics) reports back to the program.
    type :: run_outcome
-      character(len=16) :: status = 'ok'       !! 'ok' | 'failed' | 'interrupted' (/run status)
+      integer :: status = outcome_ok           !! outcome_ok | outcome_failed | outcome_interrupted (/run status)
       logical :: text_skipped = .false.        !! a signal stopped the text derivation
       integer(int64) :: steps = 0              !! global step number at the end
       integer(int64) :: impacts = 0
@@ -190,7 +191,7 @@ contains
       type(run_summary), intent(in) :: summary
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      call self%h5%rewrite_attr('/run', 'status', trim(summary%status), stat, errmsg, capacity=status_capacity)
+      call self%h5%rewrite_attr('/run', 'status', outcome_name(summary%status), stat, errmsg, capacity=status_capacity)
       call put('steps', summary%steps)
       call put('start_step', summary%start_step)
       if (stat == 0) call self%h5%rewrite_attr('/run', 'wall_seconds', summary%wall_seconds, stat, errmsg)
@@ -302,7 +303,7 @@ contains
       character(len=*), intent(inout) :: errmsg
       text_skipped = .false.
       if (stat == 0) call self%set_run(summary, stat, errmsg)
-      if (stat == 0) call self%publish(meter, summary%status /= 'interrupted', text_skipped, stat, errmsg)
+      if (stat == 0) call self%publish(meter, summary%status /= outcome_interrupted, text_skipped, stat, errmsg)
       if (stat /= 0) call self%discard()
    end subroutine finish
 

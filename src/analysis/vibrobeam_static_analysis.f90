@@ -6,7 +6,7 @@
 !! the reason in /static failure.
 module vibrobeam_static_analysis
    use vibrobeam_kinds, only: dp
-   use vibrobeam_status, only: stat_ok, message_length
+   use vibrobeam_status, only: stat_ok, message_length, outcome_failed, outcome_interrupted
    use vibrobeam_scene, only: scene_type
    use vibrobeam_problem, only: run_problem
    use vibrobeam_model, only: nodal_displacement
@@ -42,7 +42,7 @@ contains
          allocate (u(model%unknowns), reaction(contacts%count))
          call solve_static(model, contacts, loads%at(0.0_dp), u, reaction, iterations, solve_stat, solve_message, &
                            scene%solver%contact_max_iterations, report)
-         if (solve_stat /= stat_ok) summary%status = 'failed'
+         if (solve_stat /= stat_ok) summary%status = outcome_failed
          call files%open(scene, model, stat, errmsg)
          if (stat == stat_ok) call files%write_static(nodal_displacement(model, u), contacts%x, reaction, stat, errmsg)
          if (stat == stat_ok) call files%write_static_accuracy(report%error_estimate, report%error_bound, &
@@ -51,7 +51,7 @@ contains
          summary%wall_seconds = meter%elapsed()
          summary%iterations_total = iterations
          summary%iterations_max = iterations
-         if (interrupt_requested()) summary%status = 'interrupted'
+         if (interrupt_requested()) summary%status = outcome_interrupted
          call files%finish(summary, meter, outcome%text_skipped, stat, errmsg)
          if (stat /= stat_ok) return
          outcome%status = summary%status

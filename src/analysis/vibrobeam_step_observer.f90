@@ -1,15 +1,12 @@
 !> What an accumulator of a dynamics run sees (docs/output.md, "Streaming"): the recorder
-!! calls each observer after every step, at every history output, when buffers are
-!! written and at the end, and puts each one's state into the checkpoint. Contact
-!! episodes (`vibrobeam_episodes`) are one, the statistics over a window
-!! (`vibrobeam_statistics`) another, which sees what the episodes decided in the step.
-!!
-!! Datasets must be created in `create_datasets` (the file then enters SWMR mode, where
-!! no object or attribute can be created; `finish` writes into what exists).
+!! calls each observer after every step and puts each one's state into the checkpoint.
+!! Contact episodes (`vibrobeam_episodes`) are one, the statistics over a window
+!! (`vibrobeam_statistics`) another, which sees what the episodes decided in the step
+!! (`step_events`). An observer that writes datasets creates them with the recorder's
+!! (before the file enters SWMR mode, where no object or attribute can be created).
 module vibrobeam_step_observer
    use vibrobeam_kinds, only: dp
    use vibrobeam_time_stepper, only: time_stepper
-   use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_state_record, only: state_record
    implicit none
    private
@@ -32,97 +29,42 @@ module vibrobeam_step_observer
       logical, allocatable :: opened(:)
    end type step_events
 
+   !> An accumulator of a dynamics run: it sees every step (and what the observers before
+   !! it decided in the step, in `events`) and keeps its state in the checkpoint. The
+   !! recorder calls its observers in order: the episodes, then the statistics.
    type, abstract :: step_observer
    contains
       procedure(observe_step_interface), deferred :: observe_step
-      procedure :: observe_output
-      procedure :: create_datasets
-      procedure :: write_buffers
-      procedure :: finish
-      procedure :: save_state
-      procedure :: restore_state
+      procedure(save_state_interface), deferred :: save_state
+      procedure(restore_state_interface), deferred :: restore_state
    end type step_observer
 
    abstract interface
-      !> After every step.
+      !> After every step: `events` holds what the recorder and the observers before this
+      !! one decided about the step; an observer adds its own decisions for those after it.
       subroutine observe_step_interface(self, stepper, events, stat, errmsg)
          import :: step_observer, time_stepper, step_events
          class(step_observer), intent(inout) :: self
          class(time_stepper), intent(in) :: stepper
-         type(step_events), intent(in) :: events
+         type(step_events), intent(inout) :: events
          integer, intent(out) :: stat
          character(len=*), intent(out) :: errmsg
       end subroutine observe_step_interface
+
+      !> Put the observer's state into a checkpoint record.
+      subroutine save_state_interface(self, record)
+         import :: step_observer, state_record
+         class(step_observer), intent(in) :: self
+         type(state_record), intent(inout) :: record
+      end subroutine save_state_interface
+
+      !> Take the observer's state back from a checkpoint record.
+      subroutine restore_state_interface(self, record, stat, errmsg)
+         import :: step_observer, state_record
+         class(step_observer), intent(inout) :: self
+         type(state_record), intent(in) :: record
+         integer, intent(out) :: stat
+         character(len=*), intent(out) :: errmsg
+      end subroutine restore_state_interface
    end interface
-
-contains
-
-   !> At every history output time (default: nothing).
-   subroutine observe_output(self, stepper, stat, errmsg)
-      class(step_observer), intent(inout) :: self
-      class(time_stepper), intent(in) :: stepper
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      stat = 0
-      errmsg = ''
-      if (.false.) call unused(self, stepper%t)
-   end subroutine observe_output
-
-   !> Create the observer's datasets, before the file enters SWMR mode (default: none).
-   subroutine create_datasets(self, writer, stat, errmsg)
-      class(step_observer), intent(inout) :: self
-      type(h5_writer), intent(inout) :: writer
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      stat = 0
-      errmsg = ''
-      if (.false.) call unused(self, real(len(writer%temporary_file()), dp))
-   end subroutine create_datasets
-
-   !> Write buffered rows (at a flush; default: nothing).
-   subroutine write_buffers(self, stat, errmsg)
-      class(step_observer), intent(inout) :: self
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      stat = 0
-      errmsg = ''
-      if (.false.) call unused(self, 0.0_dp)
-   end subroutine write_buffers
-
-   !> Write the final results at the end of the run into the datasets and attributes made
-   !! by `create_datasets` (default: nothing).
-   subroutine finish(self, writer, stat, errmsg)
-      class(step_observer), intent(inout) :: self
-      type(h5_writer), intent(inout) :: writer
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      stat = 0
-      errmsg = ''
-      if (.false.) call unused(self, real(len(writer%temporary_file()), dp))
-   end subroutine finish
-
-   !> Put the observer's state into a checkpoint record (default: none).
-   subroutine save_state(self, record)
-      class(step_observer), intent(in) :: self
-      type(state_record), intent(inout) :: record
-      if (.false.) call unused(self, real(record%count, dp))
-   end subroutine save_state
-
-   !> Take the observer's state back from a checkpoint record (default: none).
-   subroutine restore_state(self, record, stat, errmsg)
-      class(step_observer), intent(inout) :: self
-      type(state_record), intent(in) :: record
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      stat = 0
-      errmsg = ''
-      if (.false.) call unused(self, real(record%count, dp))
-   end subroutine restore_state
-
-   !> Keeps -Wunused-dummy-argument quiet in the empty defaults.
-   subroutine unused(self, value)
-      class(step_observer), intent(in) :: self
-      real(dp), intent(in) :: value
-      if (.false.) print *, same_type_as(self, self), value
-   end subroutine unused
 end module vibrobeam_step_observer

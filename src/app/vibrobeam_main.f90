@@ -8,7 +8,8 @@ program vibrobeam_main
    use, intrinsic :: iso_c_binding, only: c_int
    use vibrobeam_kinds, only: error_unit, output_unit
    use vibrobeam_status, only: exit_ok, exit_other_error, exit_invalid_input, exit_numerical_failure, &
-                               exit_interrupted, message_length, stat_numerical_failure
+                               exit_interrupted, message_length, stat_numerical_failure, outcome_failed, outcome_interrupted, &
+                               outcome_exit_status, stat_invalid_input
    use vibrobeam_version, only: version_string
    use vibrobeam_scene, only: scene_type, validate_scene, format_scene, is_unset
    use vibrobeam_scene_read, only: read_scene, namelist_groups_text
@@ -265,7 +266,7 @@ contains
       type(run_outcome) :: outcome
       call run_equilibrium(scene, prepared, outcome, stat, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
-      if (outcome%status == 'failed') then
+      if (outcome%status == outcome_failed) then
          write (error_unit, '(a)') 'vibrobeam: static equilibrium failed: '//trim(outcome%failure)
          write (error_unit, '(a)') 'vibrobeam: the last iterate, not an equilibrium, written to '// &
             trim(scene%output%file)//' (/run status = ''failed'', the reason in /static failure)'
@@ -284,16 +285,16 @@ contains
       call run_dynamics(scene, prepared, outcome, stat, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
       select case (outcome%status)
-      case ('failed')
+      case (outcome_failed)
          write (error_unit, '(a)') 'vibrobeam: numerical failure at '//trim(outcome%failure)
          write (error_unit, '(a)') 'vibrobeam: results up to the failure written to '//trim(scene%output%file)// &
             ' (/run status = ''failed'')'
-         call finish(exit_numerical_failure)
-      case ('interrupted')
+         call finish(outcome_exit_status(outcome%status))
+      case (outcome_interrupted)
          write (error_unit, '(a,i0,a)') 'vibrobeam: interrupted by '//interrupt_name()//' after step ', &
             outcome%steps, '; results up to it written to '//trim(scene%output%file)//' (/run status = ''interrupted'')'
          call stop_if_interrupted(outcome%text_skipped)
-         call finish(exit_interrupted)
+         call finish(outcome_exit_status(outcome%status))
       end select
       ! impacts and penetration are the rigid stops'; compliant stops show their peak force
       write (output_unit, '(a,i0,a,i0,a,es10.3,a)', advance='no') 'vibrobeam: ', outcome%steps, ' steps, ', &
@@ -313,10 +314,10 @@ contains
    subroutine run_sweep_input()
       type(sweep_outcome) :: outcome
       call run_sweep(scene, sweep, outcome, stat, errmsg)
-      if (stat == 2) call fail(exit_invalid_input, errmsg)
+      if (stat == stat_invalid_input) call fail(exit_invalid_input, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
       if (transport_rank() /= 0) then
-         if (outcome%status == 'interrupted') call finish(exit_interrupted)
+         if (outcome%status == outcome_interrupted) call finish(exit_interrupted)
          if (outcome%failed > 0) call finish(exit_numerical_failure)
          if (interrupt_requested()) call finish(exit_interrupted)
          call finish(exit_ok)
@@ -327,7 +328,7 @@ contains
       write (output_unit, '(i0,a,i0,a,f0.2,a,i0,a,i0,a)') outcome%failed, ' failed, ', outcome%interrupted, &
          ' interrupted), ', outcome%wall_seconds, ' s on ', outcome%threads, ' threads x ', outcome%ranks, &
          ' processes; written to '//trim(scene%output%file)
-      if (outcome%status == 'interrupted') then
+      if (outcome%status == outcome_interrupted) then
          write (error_unit, '(a,i0,a)') 'vibrobeam: interrupted by '//signal_name()//'; the points done are in '// &
             trim(scene%output%file)//' (/run status = ''interrupted''), ', outcome%not_run + outcome%interrupted, &
             ' to run: run the same input again to go on (they are kept in '//trim(scene%output%file)//'.partial)'

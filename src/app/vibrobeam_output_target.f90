@@ -10,6 +10,7 @@
 !! user meets first, before an afternoon of computing.
 module vibrobeam_output_target
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_double, c_size_t, c_null_char
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type, path_length, step_count
@@ -86,7 +87,7 @@ contains
       type(result_size) :: estimate
       real(dp) :: free, capacity
       logical :: known_space
-      stat = 1
+      stat = stat_failure
       file = trim(scene%output%file)
       if (len(file) == 0) then
          errmsg = '&output file = '''' is empty: give a file name such as ''results/run.h5'''
@@ -119,7 +120,7 @@ contains
          errmsg = shown//': '//trim(errmsg)
          return
       end if
-      stat = 1
+      stat = stat_failure
       ! a file system that stores nothing (/proc, /sys): every run would fail to write
       known_space = c_free_bytes(c_string(existing), free, capacity) == 0
       if (known_space .and. capacity <= 0) then
@@ -280,7 +281,7 @@ contains
             missing = part//'/'//missing
             existing = head
          case default
-            stat = 1
+            stat = stat_failure
             errmsg = ''''//abbreviated(existing, 60)//''' exists and is not a directory'
             return
          end select

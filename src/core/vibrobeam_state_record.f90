@@ -6,6 +6,7 @@
 !! 'recorder.contact_time'); an item keeps its size for a whole run, so that the
 !! checkpoint datasets can be created once.
 module vibrobeam_state_record
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: integer_text
    implicit none
@@ -197,12 +198,12 @@ contains
       errmsg = ''
       k = self%find(name)
       if (k == 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'the checkpoint has no ''' // trim(name) // ''''
          return
       end if
       if (self%items(k)%integers .neqv. integers) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'the checkpoint''s ''' // trim(name) // ''' has the wrong type'
          return
       end if
@@ -212,7 +213,7 @@ contains
          found = size(self%items(k)%reals)
       end if
       if (found /= expected) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'the checkpoint''s ''' // trim(name) // ''' holds ' // integer_text(found) // &
                   ' values, expected ' // integer_text(expected)
       end if

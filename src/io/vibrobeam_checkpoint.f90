@@ -19,6 +19,7 @@
 !! reported as not verified). Whether a scene may continue it is
 !! `vibrobeam_restart_check`'s question.
 module vibrobeam_checkpoint
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: integer_text, real_text
    use vibrobeam_hdf5, only: h5_writer
@@ -168,7 +169,7 @@ contains
    end function item_size
 
    !> Read the latest complete checkpoint of `filename` into `record`; `time` is its time.
-   !! The state must match the checksum of its slot (stat = 1 otherwise: the file is
+   !! The state must match the checksum of its slot (stat = stat_failure otherwise: the file is
    !! damaged); `verified` (optional) is false when the slot carries no checksum (a file of
    !! vibrobeam 0.2.0), which is read unverified.
    subroutine read_checkpoint(filename, record, time, stat, errmsg, verified)
@@ -196,7 +197,7 @@ contains
          if (stat == 0) call file%attr_real('/checkpoint', 'time', time, stat, errmsg)
          if (stat /= 0) exit read_items
          if (current < 1 .or. current > 2) then
-            stat = 1
+            stat = stat_failure
             errmsg = '''' // trim(filename) // ''' holds no complete checkpoint yet'
             exit read_items
          end if
@@ -214,7 +215,7 @@ contains
          call file%attr_int64(slot_path(int(current)), 'checksum', checksum, stat, errmsg)
          if (stat /= 0) exit read_items
          if (checksum /= record_checksum(record)) then
-            stat = 1
+            stat = stat_failure
             errmsg = 'its latest checkpoint (/checkpoint/state_'//integer_text(int(current))//', t = '// &
                      real_text(time)//' s) fails its checksum: the file is damaged and cannot be continued '// &
                      '(continue an undamaged copy, or run again)'
@@ -241,12 +242,12 @@ contains
       end subroutine read_item
    end subroutine read_checkpoint
 
-   !> stat = 1: `filename` is no result of a dynamics run.
+   !> stat = stat_failure: `filename` is no result of a dynamics run.
    subroutine no_checkpoint(filename, stat, errmsg)
       character(len=*), intent(in) :: filename
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      stat = 1
+      stat = stat_failure
       errmsg = '''' // trim(filename) // ''' holds no checkpoint (not a dynamics result of vibrobeam 0.2 or later)'
    end subroutine no_checkpoint
 

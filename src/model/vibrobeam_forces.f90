@@ -11,7 +11,7 @@
 !! costs what the loads touch (4 unknowns for a point force), not the mesh size per load.
 module vibrobeam_forces
    use vibrobeam_kinds, only: dp, int64
-   use vibrobeam_status, only: stat_failure
+   use vibrobeam_status, only: stat_failure, stat_invalid_input
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, text_row, unset, &
       is_unset, unset_integer, keyword_length, path_length
@@ -162,8 +162,8 @@ contains
    end subroutine visit_forces
 
    !> The rules between the variables of &forces (docs/input.md, "&forces") for a beam of
-   !! `length` (m) stepped with `dt` (s) when `dynamics`. stat = 1 and a message naming the
-   !! variable, its value and what is allowed at the first violation.
+   !! `length` (m) stepped with `dt` (s) when `dynamics`. stat = stat_failure and a message
+   !! naming the variable, its value and what is allowed at the first violation.
    subroutine check_forces(forces, length, dt, dynamics, stat, errmsg)
       type(forces_settings), intent(in) :: forces
       real(dp), intent(in) :: length, dt
@@ -226,7 +226,7 @@ contains
       subroutine fail(message)
          character(len=*), intent(in) :: message
          if (stat /= 0) return
-         stat = 1
+         stat = stat_failure
          errmsg = message
       end subroutine fail
    end subroutine check_forces
@@ -297,9 +297,9 @@ contains
 
    !> The loads of `forces` on `model` (rho S in kg/m: base excitation loads the beam with
    !! -rho S times the support's acceleration), their random signals sampled every `dt`
-   !! (s). Reads the tables. stat = stat_failure with a message naming the variable and the
-   !! file's line when a table cannot be read or does not fit (a spectrum above the Nyquist
-   !! frequency, a negative density).
+   !! (s). Reads the tables. stat = stat_invalid_input with a message naming the variable
+   !! and the file's line when a table cannot be read or does not fit (a spectrum above the
+   !! Nyquist frequency, a negative density), stat_failure when FFTW cannot plan.
    subroutine build_forces(settings, model, rho_s, dt, forces, stat, errmsg)
       type(forces_settings), intent(in) :: settings
       type(beam_model), intent(in) :: model
@@ -364,7 +364,10 @@ contains
             term%scale = 1
             if (.not. is_unset(f%amplitude)) term%scale = f%amplitude
             call read_table(trim(f%table), term%table, stat, errmsg)
-            if (stat /= 0) errmsg = '&forces table'//item//' = '''//trim(f%table)//''': '//trim(errmsg)
+            if (stat /= 0) then
+               stat = stat_invalid_input
+               errmsg = '&forces table'//item//' = '''//trim(f%table)//''': '//trim(errmsg)
+            end if
             term%table%hold_ends = f%table_end == 'hold'
          case ('random')
             term%signal = signal_random
@@ -372,16 +375,17 @@ contains
                shape%tabulated = .true.
                call read_table(trim(f%psd_table), shape%table, stat, errmsg)
                if (stat /= 0) then
+                  stat = stat_invalid_input
                   errmsg = '&forces psd_table'//item//' = '''//trim(f%psd_table)//''': '//trim(errmsg)
                else if (shape%table%x(1) < 0 .or. any(shape%table%y < 0)) then
-                  stat = stat_failure
+                  stat = stat_invalid_input
                   errmsg = '&forces psd_table'//item//' = '''//trim(f%psd_table)//''' holds a negative frequency '// &
                            'or density: f >= 0 Hz and S >= 0 are allowed'
                else if (shape%variance() <= 0) then
-                  stat = stat_failure
+                  stat = stat_invalid_input
                   errmsg = '&forces psd_table'//item//' = '''//trim(f%psd_table)//''' has a zero density everywhere'
                else if (shape%highest() > 1/(2*dt)) then
-                  stat = stat_failure
+                  stat = stat_invalid_input
                   errmsg = '&forces psd_table'//item//' = '''//trim(f%psd_table)//''' reaches '// &
                            real_text(shape%highest())//' Hz, above the Nyquist frequency 1/(2 dt) = '// &
                            real_text(1/(2*dt))//' Hz of &time dt: cut the table or lower dt'
@@ -401,7 +405,7 @@ contains
                call term%random%design(shape, dt, random_key(seed, int(settings%realisation, int64) - 1), stat, errmsg)
             end if
             if (stat == 0 .and. int(term%random%taps, int64)*size(term%channel) > max_block_samples) then
-               stat = stat_failure
+               stat = stat_invalid_input
                errmsg = '&forces load'//item//': its random signal keeps 2 x '// &
                         integer_text(term%random%taps)//' samples for each of its '//integer_text(size(term%channel))// &
                         ' points, more than 1 GiB: give correlation_length = 0 or fewer elements, or a band further '// &

@@ -12,6 +12,7 @@
 !! relative; verification/unit/test_highest_frequency.f90 compares it with dsbgvx and a
 !! dense eigensolver.
 module vibrobeam_highest_frequency
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: band_cholesky, band_combination, band_factor
    use vibrobeam_model, only: beam_model
@@ -49,7 +50,7 @@ contains
          low = low/2
       end do
       if (above_spectrum(low) .or. .not. above_spectrum(high)) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'highest frequency: no bracket of the largest eigenvalue found'
          return
       end if

@@ -11,6 +11,7 @@
 !! order. For the clamped-free beam: (w_1, theta_1, ..., w_N, theta_N), J = 2N, or
 !! c_3..c_{N+3}, J = N + 1 (the clamp u(0) = u_x(0) = 0 sets c_1 = c_2 = 0).
 module vibrobeam_model
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_allocate, band_add
    use vibrobeam_hermite, only: hermite_shape, hermite_element_mass, hermite_element_stiffness
@@ -94,13 +95,13 @@ contains
          model%hermite = .false.
          model%knots = bspline_knots(elements, length)
       case default
-         stat = 1
+         stat = stat_failure
          errmsg = 'basis '''//trim(basis)//''' is not available'
          return
       end select
       call model%boundary%basis_dof_held(model%hermite, elements, held, expressible)
       if (.not. expressible) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'the '//model%boundary%name()//' supports cannot be expressed in the '''//trim(basis)//''' basis'
          return
       end if

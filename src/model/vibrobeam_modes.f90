@@ -61,7 +61,7 @@ contains
       errmsg = ''
       n = model%unknowns
       if (count < 1 .or. count > n) then
-         stat = 1
+         stat = stat_failure
          write (errmsg, '(a,i0,a,i0,a)') 'number of modes ', count, ' is outside [1, ', n, ']'
          return
       end if
@@ -103,7 +103,7 @@ contains
             tip = shapes(maxloc(abs(shapes(:, k)), dim=1), k)
          end if
          if (abs(tip) <= tiny(tip)) then
-            stat = 1
+            stat = stat_failure
             write (errmsg, '(a,i0,a)') 'mode ', k, ' has zero displacement at its free end and cannot be normalized'
             return
          end if

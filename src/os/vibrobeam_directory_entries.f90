@@ -5,6 +5,7 @@
 !! `errmsg` (the path and the C library's reason), as `vibrobeam_filesystem` does.
 module vibrobeam_directory_entries
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_ptr, c_null_ptr, c_associated
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_filesystem, only: c_string, error_text
    implicit none
    private
@@ -100,7 +101,7 @@ contains
       stat = 0
       errmsg = ''
       if (error_number /= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = what // ': ' // error_text(error_number)
       end if
    end subroutine outcome

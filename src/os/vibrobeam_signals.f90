@@ -6,6 +6,7 @@
 !! `ulimit -f` fails with EFBIG and is reported like any other I/O error.
 module vibrobeam_signals
    use, intrinsic :: iso_c_binding, only: c_int
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_filesystem, only: error_text
    implicit none
    private
@@ -42,7 +43,7 @@ contains
       error_number = c_ignore_file_size_signal()
       if (error_number == 0) error_number = c_install_interrupt_handlers()
       if (error_number /= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot install the signal handlers: ' // error_text(error_number)
       end if
    end subroutine watch_signals

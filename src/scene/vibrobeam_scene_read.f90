@@ -12,6 +12,7 @@
 !! follow another input, the variables an obstacle requires, the observation points
 !! listed without gaps, and the warnings for values the analysis ignores.
 module vibrobeam_scene_read
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: integer_text
    use vibrobeam_scene, only: scene_type, max_obstacles, max_points, max_forces, scene_variables, visit_scene
@@ -79,7 +80,7 @@ contains
                'ignored by a sweep: each point measures after its settle window'//new_line('a')
          end if
       else if (reader%scanned%group_given('sweep')) then
-         stat = 1
+         stat = stat_failure
          errmsg = '&sweep: this program reads a single run''s scene (a sweep is run by vibrobeam itself)'
          return
       end if
@@ -129,7 +130,7 @@ contains
       type(obstacle_type), allocatable :: read(:)
       integer :: i
       character(len=:), allocatable :: number
-      stat = 1
+      stat = stat_failure
       if (count < 0 .or. count > max_obstacles) then
          errmsg = '&obstacles count = '//integer_text(count)//' is outside [0, '//integer_text(max_obstacles)//']'
          return
@@ -187,7 +188,7 @@ contains
       character(len=*), intent(out) :: errmsg
       type(namelist_variable), allocatable :: table(:)
       integer :: i, k
-      stat = 1
+      stat = stat_failure
       if (count < 0 .or. count > max_forces) then
          errmsg = '&forces count = '//integer_text(count)//' is outside [0, '//integer_text(max_forces)//']'
          return
@@ -223,7 +224,7 @@ contains
          if (len(directory) + 1 + len_trim(path) > len(path)) then
             errmsg = '&forces '//name//'('//integer_text(i)//') = '''//trim(path)//''' taken from the directory '// &
                      'of the input file is longer than '//integer_text(len(path))//' characters'
-            stat = 1
+            stat = stat_failure
             return
          end if
          path = directory//'/'//trim(path)
@@ -242,7 +243,7 @@ contains
       count_points = leading_given(scanned, 'output', 'points', max_points)
       do k = count_points + 1, max_points
          if (scanned%is_given('output', 'points', k)) then
-            stat = 1
+            stat = stat_failure
             errmsg = '&output points('//integer_text(k)//') is given but points('//integer_text(count_points + 1)// &
                      ') is not: list the observation points from points(1) on, without gaps'
             return
@@ -319,7 +320,7 @@ contains
          given = leading_given(reader%scanned, 'sweep', 'values'//suffix, max_sweep_values)
          do j = given + 1, max_sweep_values
             if (reader%scanned%is_given('sweep', 'values'//suffix, j)) then
-               stat = 1
+               stat = stat_failure
                errmsg = '&sweep values'//suffix//'('//integer_text(j)//') is given but values'//suffix//'('// &
                         integer_text(given + 1)//') is not: list the values from values'//suffix//'(1) on, without gaps'
                return
@@ -331,7 +332,7 @@ contains
                                         reader%scanned%is_given('sweep', 'count'//suffix)
          if (settings%axis(a)%range_given .and. .not. (reader%scanned%is_given('sweep', 'from'//suffix) .and. &
                                                        reader%scanned%is_given('sweep', 'to'//suffix))) then
-            stat = 1
+            stat = stat_failure
             errmsg = '&sweep: a range needs from'//suffix//' and to'//suffix//' (and count'//suffix//')'
             return
          end if

@@ -179,10 +179,7 @@ contains
                       self%multiplier, stat, errmsg)
          self%report%iterations = c%iterations
          self%report%linear_solves = c%linear_solves
-         if (stat /= 0) then
-            stat = 3
-            return
-         end if
+         if (stat /= 0) return   ! (the compliant solver's own code: docs/output.md, "Status codes")
          call self%check_compliant_work(p0, c%p1, stat, errmsg)
          if (stat /= 0) return
          ! energy: the beam's half-step energy loses sum f dpbar; Phi(pbar) stores it
@@ -218,9 +215,9 @@ contains
       class(position_stepper), intent(in) :: self
       type(dynamic_state) :: state
       state%step = self%steps
-      state%u = self%u
-      state%v = self%v
-      state%extra = self%u_previous
+      allocate (state%u, source=self%u)   ! (an assignment to the unallocated result warns in Debug builds)
+      allocate (state%v, source=self%v)
+      allocate (state%extra, source=self%u_previous)
    end function position_state
 
    !> The state a checkpoint of this scheme holds: the base's, and U^{n-1} as extra.

@@ -291,8 +291,8 @@ contains
       class(time_stepper), intent(in) :: self
       type(dynamic_state) :: state
       state%step = self%steps
-      state%u = self%u
-      state%v = self%v
+      allocate (state%u, source=self%u)   ! (an assignment to the unallocated result warns in Debug builds)
+      allocate (state%v, source=self%v)
    end function stepper_state
 
    !> The state that a checkpoint `record` holds (what `save_stepper_state` put there:

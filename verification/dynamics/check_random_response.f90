@@ -41,7 +41,7 @@ program check_random_response
    use vibrobeam_problem, only: run_problem
    use vibrobeam_model, only: node_row, point_load_vector
    use vibrobeam_random_signal, only: random_signal
-   use vibrobeam_hdf5_reader, only: read_real_2d, read_int_1d
+   use vibrobeam_hdf5_file_reads, only: read_real_2d, read_int_1d
    use vibrobeam_linear_response, only: dense_transfer, theta_frequency, simpson_load_vector
    use vibrobeam_test_support, only: test_counter, prepare_test_scene
    use vibrobeam_test_fftw

@@ -7,8 +7,11 @@ folder per layer, lowest first,
 and a module may use modules of its own folder (sub-folders included) and of earlier folders,
 never of a later one. This program reads every Fortran source under SRC, finds the folder of
 every module it defines and every `use` of a module of the library, and lists each use that
-goes to a later folder. It exits 1 when there is one (or a source file outside the folders,
-or a folder not in the list), 0 otherwise.
+goes to a later folder. Each layer folder has a README.md, its map, that names every source
+file of the folder (sub-folders included, as `path/in/folder.f90` in backquotes) and no file
+that is not there. It exits 1 when a use goes against the order, a source file is outside
+the folders, a folder is not in the list, or a map misses a file or names a missing one; 0
+otherwise.
 
 usage: check_layering.py SRC
 """
@@ -60,6 +63,7 @@ def main(argv):
             for match in USE.finditer(text):
                 line = text.count("\n", 0, match.start()) + 1
                 uses.append((relative, top, match.group(1).lower(), line))
+    problems += check_maps(src)
     for relative, top, used, line in uses:
         if used not in folder_of:
             continue    # an intrinsic or external module (iso_c_binding, hdf5, mpi_f08, omp_lib)
@@ -71,6 +75,35 @@ def main(argv):
         return 1
     print(f"layering: {len(uses)} uses of {len(folder_of)} modules checked, every one goes to its own or an earlier layer")
     return 0
+
+
+SOURCE = re.compile(r"\.(f90|F90|c)$")
+NAMED = re.compile(r"`([\w/]+\.(?:f90|F90|c))`")
+
+
+def check_maps(src):
+    """The README.md of each layer folder names exactly the folder's source files."""
+    problems = []
+    for top in ORDER:
+        folder = os.path.join(src, top)
+        if not os.path.isdir(folder):
+            continue
+        present = set()
+        for root, dirs, files in os.walk(folder):
+            for name in files:
+                if SOURCE.search(name):
+                    present.add(os.path.relpath(os.path.join(root, name), folder).replace(os.sep, "/"))
+        readme = os.path.join(folder, "README.md")
+        if not os.path.isfile(readme):
+            problems.append(f"{top}/README.md: missing (the map of the folder's sources)")
+            continue
+        with open(readme, encoding="utf-8") as handle:
+            named = set(NAMED.findall(handle.read()))
+        for name in sorted(present - named):
+            problems.append(f"{top}/README.md: does not name {name}")
+        for name in sorted(named - present):
+            problems.append(f"{top}/README.md: names {name}, which is not in {top}/")
+    return problems
 
 
 if __name__ == "__main__":

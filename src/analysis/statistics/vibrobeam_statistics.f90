@@ -210,7 +210,7 @@ contains
    subroutine observe_step(self, stepper, events, stat, errmsg)
       class(run_statistics), intent(inout) :: self
       class(time_stepper), intent(in) :: stepper
-      type(step_events), intent(in) :: events
+      type(step_events), intent(inout) :: events
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       logical :: touched(targets(self))

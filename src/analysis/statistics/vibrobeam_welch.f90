@@ -16,6 +16,7 @@
 !! state goes into a checkpoint (`save_state`), so a continued run gives the spectrum of
 !! the whole run.
 module vibrobeam_welch
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_spectrum, only: amplitude_spectrum, bin_width
    use vibrobeam_state_record, only: state_record
@@ -181,13 +182,13 @@ contains
       if (stat /= 0) return
       k = record%find(name//'.buffer')
       if (k == 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'the checkpoint has no '''//name//'.buffer'''
          return
       end if
       saved = size(record%items(k)%reals)
       if (counts(1) > saved .or. saved > welch_segment) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'the checkpoint''s spectrum state is inconsistent'
          return
       end if

@@ -15,6 +15,7 @@
 module vibrobeam_sweep
    !$ use omp_lib, only: omp_get_max_threads
    use vibrobeam_kinds, only: dp, error_unit
+   use vibrobeam_status, only: outcome_ok, outcome_interrupted, outcome_name, stat_failure, stat_invalid_input
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
    use vibrobeam_problem, only: run_problem, build_problem
@@ -39,7 +40,7 @@ module vibrobeam_sweep
 
    !> What a sweep reports back to the program.
    type :: sweep_outcome
-      character(len=16) :: status = 'ok'       !! 'ok' | 'interrupted' (/run status)
+      integer :: status = outcome_ok           !! outcome_ok | outcome_interrupted (/run status)
       integer :: points = 0, failed = 0, interrupted = 0, not_run = 0
       integer :: resumed = 0                   !! points a partial directory held as done at the start
       logical :: text_skipped = .false.
@@ -49,12 +50,14 @@ module vibrobeam_sweep
    end type sweep_outcome
 
    !> The journal as the runner's `point_sink`: points written one thread at a time
-   !! (HDF5 is not thread-safe), the progress reported.
+   !! (HDF5 is not thread-safe), the progress reported: the points of this process's
+   !! tasks done (`done`, those done before included) of `total`; under mpirun, rank 0
+   !! reports its own share of the `points` of the sweep.
    type, extends(point_sink) :: journal_sink
       type(sweep_journal) :: journal
       type(progress_meter) :: meter
       logical :: failed = .false.
-      integer :: done = 0, total = 0, rank = 0
+      integer :: done = 0, total = 0, rank = 0, ranks = 1, points = 0
    contains
       procedure :: take => sink_take
       procedure :: halted => sink_halted
@@ -137,8 +140,14 @@ contains
          call partial%close()
          return
       end if
-      sink%total = n
-      sink%done = outcome%resumed
+      sink%ranks = ranks
+      sink%points = n
+      do task = 1, tasks
+         if (.not. owns_task(task, rank, ranks)) cycle
+         sink%total = sink%total + first_of(task + 1) - first_of(task)
+         sink%done = sink%done + count(flag(first_of(task):first_of(task + 1) - 1) == done_ok .or. &
+                                       flag(first_of(task):first_of(task + 1) - 1) == done_failed)
+      end do
       !$omp parallel do schedule(dynamic, 1) default(shared) private(task, task_stat, task_message)
       do task = 1, tasks
          if (.not. owns_task(task, rank, ranks) .or. sink%failed) cycle
@@ -175,7 +184,7 @@ contains
          call partial%close()
          errmsg = trim(errmsg)//'; the points done are kept in '''//partial%directory//''': run the same input '// &
                   'again to go on from them'
-         stat = 1
+         stat = stat_failure
          return
       end if
       interrupted = transport_max(merge(1, 0, interrupt_requested())) > 0
@@ -183,7 +192,7 @@ contains
       call transport_barrier()   ! every journal is closed
       if (rank == 0) call publish()
       call share_failure(stat, errmsg)
-      if (transport_max(merge(1, 0, outcome%status == 'interrupted')) > 0) outcome%status = 'interrupted'
+      if (transport_max(merge(1, 0, outcome%status == outcome_interrupted)) > 0) outcome%status = outcome_interrupted
       outcome%failed = transport_max(counts%failed)
       outcome%interrupted = transport_max(counts%interrupted)
       outcome%not_run = transport_max(counts%not_run)
@@ -247,12 +256,12 @@ contains
          if (stat == 0) call partial%index(n, owner, flag, stat, errmsg)
          if (stat /= 0) then
             call partial%close()
-            stat = 1
+            stat = stat_failure
             return
          end if
          complete = all(flag == done_ok .or. flag == done_failed)
          ! a signal after the last point: the sweep is complete (the program still exits 4)
-         if (interrupted .and. .not. complete) outcome%status = 'interrupted'
+         if (interrupted .and. .not. complete) outcome%status = outcome_interrupted
          call write_sweep_file(scene, first%model, settings, points, partial, owner, layout, &
                                [first_scene%beam%length, first_scene%output%points], first%contacts%x, &
                                first%contacts%lower_obstacle, first%contacts%upper_obstacle, outcome%status, &
@@ -287,7 +296,7 @@ contains
 
    !> The first point's scene prepared (its model and contact points are the sweep file's)
    !! and the start state of &initial from_file: U, V (and U^{n-1}) of its checkpoint, at
-   !! t = 0, checked against that scene. stat = 2 (invalid input) when the first point
+   !! t = 0, checked against that scene. stat = stat_invalid_input when the first point
    !! cannot be prepared or the file cannot be continued; its own numerical failures are
    !! the point's (it is marked failed when it runs).
    subroutine sweep_start_state(scene, settings, first_scene, first, base, stat, errmsg)
@@ -309,7 +318,7 @@ contains
          ! the points' own failures are reported per point; this one's contact points are needed
          if (.not. allocated(first%contacts%x)) then
             errmsg = '&sweep point 1: '//trim(errmsg)
-            stat = 2
+            stat = stat_invalid_input
             return
          end if
          stat = 0
@@ -321,14 +330,14 @@ contains
       if (stat == 0) call read_checkpoint(file, record, time, stat, errmsg)
       if (stat /= 0) then
          if (index(errmsg, '&initial from_file') == 0) errmsg = '&initial from_file = '''//file//''': '//trim(errmsg)
-         stat = 2
+         stat = stat_invalid_input
          return
       end if
       ! the scheme is the file's (check_compatible): its state, at t = 0
       call state_from_record(first_scene%time%scheme, record, first%model%unknowns, base, stat, errmsg)
       if (stat /= 0) then
          errmsg = '&initial from_file = '''//file//''': '//trim(errmsg)
-         stat = 2
+         stat = stat_invalid_input
          if (allocated(base%u)) deallocate (base%u)
          return
       end if
@@ -345,8 +354,11 @@ contains
    end function first_point
 
    !> What a run of this sweep would find in its partial directory (`vibrobeam --check`):
-   !! a sentence saying so ('' when there is none), the points it holds as done. stat = 2
-   !! when it holds a sweep of another input (the run refuses it).
+   !! a sentence saying so ('' when there is none), the points it holds as done. stat = stat_invalid_input
+   !! when it holds a sweep of another input (the run refuses it). When a sweep is running
+   !! into it, the points its journals hold as done are those that sweep has committed so
+   !! far (docs/sweeps.md, "Checking a sweep"); the sentence leaves the count out when
+   !! they cannot be read at that moment.
    subroutine inspect_partial(scene, settings, done, text, stat, errmsg)
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
@@ -365,19 +377,22 @@ contains
       call sweep_start_state(scene, settings, first_scene, first, base, stat, errmsg)
       if (stat /= 0) return
       call partial%inspect(trim(scene%output%file), sweep_fingerprint(scene, settings, base), stat, errmsg)
-      if (stat /= 0) return
+      if (stat /= 0 .and. .not. partial%busy) return
       if (.not. partial%existed) return
       n = size(settings%axis(1)%values)*max(1, size(settings%axis(2)%values))*merge(2, 1, settings%mode == 'up-down')
-      call partial%index(n, owner, flag, stat, errmsg)
+      if (stat == 0) call partial%index(n, owner, flag, stat, errmsg)
       call partial%close()
-      if (stat /= 0) then
-         stat = 1
-         return
-      end if
-      done = count(flag == done_ok .or. flag == done_failed)
+      if (stat == 0) done = count(flag == done_ok .or. flag == done_failed)
       if (partial%busy) then
-         text = 'a sweep is running into '''//trim(scene%output%file)//''' now (it holds '''//partial%directory// &
-                '/lock''): a run started now would stop at once with status 1'
+         text = 'a sweep is running into '''//trim(scene%output%file)//''' now (it holds '''//partial%directory//'/lock'''
+         if (stat == 0) text = text//'; its journals hold '//integer_text(done)//' of '//integer_text(n)// &
+                               ' points of this sweep, done'
+         text = text//'): a run started now would stop at once with status 1'
+         stat = 0
+         errmsg = ''
+      else if (stat /= 0) then
+         stat = stat_failure
+         return
       else
          text = 'resume: '''//partial%directory//''' holds '//integer_text(done)//' of '//integer_text(n)// &
                 ' points of this sweep, done; a run goes on from them ('//integer_text(n - done)//' points to run)'
@@ -394,14 +409,19 @@ contains
       logical, intent(in) :: point_file
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      character(len=:), allocatable :: share
       stat = 0
       errmsg = ''
       !$omp critical (vibrobeam_hdf5)
       call self%journal%write_point(k, task, result, final, point_file, stat, errmsg)
       self%done = self%done + 1
-      if (self%meter%due()) call self%meter%report('sweep: '//integer_text(self%done)//' of '// &
-                                                   integer_text(self%total)//' points ('//integer_text(self%rank)// &
-                                                   '), wall '//real_text(nint(self%meter%elapsed()*10)/10.0_dp)//' s')
+      if (self%meter%due()) then
+         share = ''
+         if (self%ranks > 1) share = ' on rank '//integer_text(self%rank)//' ('//integer_text(self%points)//' on '// &
+                                     integer_text(self%ranks)//' ranks)'
+         call self%meter%report('sweep: '//integer_text(self%done)//' of '//integer_text(self%total)//' points'// &
+                                share//', wall '//real_text(nint(self%meter%elapsed()*10)/10.0_dp)//' s')
+      end if
       !$omp end critical (vibrobeam_hdf5)
    end subroutine sink_take
 

@@ -22,6 +22,7 @@
 !! statistics so far) and the points not started are not run. A point file that cannot be
 !! written is an I/O error: the task stops with stat /= 0 (the sweep fails, exit status 1).
 module vibrobeam_sweep_runner
+   use vibrobeam_status, only: stat_failure, outcome_ok, outcome_failed, outcome_interrupted, outcome_not_run
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
@@ -36,13 +37,17 @@ module vibrobeam_sweep_runner
    use vibrobeam_statistics, only: statistics_result
    use vibrobeam_statistics_layout, only: group_points, group_beam
    use vibrobeam_signals, only: interrupt_requested
+   use vibrobeam_run_loop, only: advance
+   use vibrobeam_filesystem, only: file_exists
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, point_scene, point_windows, max_settle_windows
    implicit none
    private
-   public :: point_result, task_start, point_sink, run_task, point_file_name, kept_point_file
+   public :: point_result, task_start, point_sink, run_task, point_file_name, kept_point_file, point_digits
    public :: status_ok, status_failed, status_interrupted, status_not_run, status_names
 
-   integer, parameter :: status_ok = 0, status_failed = 1, status_interrupted = 2, status_not_run = 3
+   ! a point's status: the run outcome of core/vibrobeam_status (the numbers in /sweep/status)
+   integer, parameter :: status_ok = outcome_ok, status_failed = outcome_failed, &
+                         status_interrupted = outcome_interrupted, status_not_run = outcome_not_run
    character(len=*), parameter :: status_names = '0 ok, 1 failed, 2 interrupted, 3 not run'
 
 
@@ -263,34 +268,27 @@ contains
          if (allocated(start%extra)) prepared%start%extra = start%extra
       end subroutine take_start
 
-      !> The statistics of the window from `first` over `measure_steps` steps, stepping
-      !! `stepper` (already at `first` or before it) without writing anything.
+      !> Step `stepper` (already at `first` or before it) to `last` without writing
+      !! anything (the one run loop, `advance`); a failure or an interruption marks the
+      !! point.
       subroutine step_to(stepper, recorder, last)
          class(time_stepper), intent(inout) :: stepper
          type(dynamics_recorder), intent(inout) :: recorder
          integer(int64), intent(in) :: last
-         integer(int64) :: n
-         character(len=512) :: step_message
-         integer :: step_stat
-         do n = stepper%steps + 1, last
-            call stepper%step(step_stat, step_message)
-            if (step_stat /= 0) then
-               write (errmsg, '(a,i0,a,es14.7,a)') 'numerical failure at step ', n, ' (t = ', n*local%time%dt, ' s): '// &
-                  trim(step_message)
-               call failed(errmsg)
-               return
-            end if
-            call recorder%after_step(stepper, stat, errmsg)
-            if (stat /= 0) then
-               call failed(errmsg)
-               return
-            end if
-            if (interrupt_requested()) then
-               result%status = status_interrupted
-               result%message = 'interrupted at t = '//real_text(n*local%time%dt)//' s'
-               return
-            end if
-         end do
+         integer :: status
+         character(len=512) :: failure
+         call advance(stepper, recorder, prepared%model, last, status, failure, stat, errmsg)
+         if (stat /= 0) then
+            call failed(errmsg)
+            return
+         end if
+         select case (status)
+         case (outcome_failed)
+            call failed('numerical failure at '//trim(failure))
+         case (outcome_interrupted)
+            result%status = status_interrupted
+            result%message = 'interrupted at t = '//real_text(stepper%steps*local%time%dt)//' s'
+         end select
       end subroutine step_to
 
       !> A stepper at the point's start and a recorder that writes nothing, for at most
@@ -372,17 +370,27 @@ contains
                            final_state=last_state)
          if (stat /= 0) then
             ! an I/O error, not a property of the point: the sweep stops (exit status 1)
-            io_stat = 1
+            io_stat = stat_failure
             io_message = '&sweep keep_runs: the result of point '//integer_text(k)//' ('''// &
                          point_file_name(scene%output%file, k)//''') cannot be written: '//trim(errmsg)
             result%status = status_not_run
             return
          end if
+         ! run_dynamics renamed the file onto its name; the journal must never name a file
+         ! that is not there (a sweep once found one missing when it published its set):
+         ! said now, the failure tells when the file went
+         if (.not. file_exists(trim(local%output%file))) then
+            io_stat = stat_failure
+            io_message = '&sweep keep_runs: the result of point '//integer_text(k)//' ('''//trim(local%output%file)// &
+                         ''') is not there right after it was published'
+            result%status = status_not_run
+            return
+         end if
          written = .true.
          select case (outcome%status)
-         case ('failed')
+         case (outcome_failed)
             call failed('numerical failure at '//trim(outcome%failure))
-         case ('interrupted')
+         case (outcome_interrupted)
             result%status = status_interrupted
             result%message = 'interrupted'
          case default

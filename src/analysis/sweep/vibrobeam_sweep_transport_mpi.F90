@@ -8,6 +8,7 @@
 !! (MPI_THREAD_FUNNELED). The same interface without MPI is
 !! src/analysis/sweep/vibrobeam_sweep_transport.f90.
 module vibrobeam_sweep_transport
+   use vibrobeam_status, only: stat_failure
    use mpi_f08
    implicit none
    private
@@ -37,7 +38,7 @@ contains
       if (initialized) return
       call MPI_Init_thread(MPI_THREAD_FUNNELED, provided, error)
       if (error /= MPI_SUCCESS .or. provided < MPI_THREAD_FUNNELED) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'MPI could not start with MPI_THREAD_FUNNELED'
       end if
    end subroutine transport_start

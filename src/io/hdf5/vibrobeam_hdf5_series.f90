@@ -12,6 +12,7 @@
 !! Every dataset gets its string attribute 'unit'. Create every dataset before the file
 !! enters SWMR mode (`h5_writer%start_swmr`).
 module vibrobeam_hdf5_series
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: integer_text
    use vibrobeam_hdf5, only: h5_writer
@@ -118,7 +119,7 @@ contains
       capacity = series_buffer_rows(columns)
       allocate (self%buffer(columns, capacity), stat=allocation_stat)
       if (allocation_stat /= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot allocate the output buffer of ' // describe(path, self%file)
          return
       end if

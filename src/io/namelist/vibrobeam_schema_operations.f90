@@ -13,6 +13,7 @@
 !! None knows a variable by name: adding a variable to a settings type's `visit` is all it
 !! takes for every one of them to handle it.
 module vibrobeam_schema_operations
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_namelist_tokens, only: lowercase
@@ -38,7 +39,7 @@ module vibrobeam_schema_operations
       procedure :: visit => add_row
    end type schema_table
 
-   !> Sets each variable that `scanned` gives. stat = 1 and errmsg naming the assignment
+   !> Sets each variable that `scanned` gives. stat = stat_failure and errmsg naming the assignment
    !! when the run-time library cannot convert a value the scanner accepted (a
    !! disagreement reported rather than trusted); the first failure stays.
    type, extends(schema_visitor) :: schema_reader
@@ -49,7 +50,7 @@ module vibrobeam_schema_operations
       procedure :: visit => read_variable
    end type schema_reader
 
-   !> Checks every value against its row (range, choices): stat = 1 and errmsg such as
+   !> Checks every value against its row (range, choices): stat = stat_failure and errmsg such as
    !! '&impact restitution = 1.5 is outside [0, 1]' at the first violation.
    type, extends(schema_visitor) :: schema_checker
       integer :: stat = 0
@@ -179,7 +180,7 @@ contains
             text_value = keyword_case(text)
          end if
          if (ios /= 0) then
-            self%stat = 1
+            self%stat = stat_failure
             self%errmsg = self%scanned%label(k)//': the Fortran run-time library cannot read this value ('// &
                           trim(iomsg)//'); write it as a plain number, quoted string or .true./.false.'
          end if
@@ -245,7 +246,7 @@ contains
       subroutine fail(message)
          character(len=*), intent(in) :: message
          if (self%stat /= 0) return
-         self%stat = 1
+         self%stat = stat_failure
          self%errmsg = message
       end subroutine fail
 
