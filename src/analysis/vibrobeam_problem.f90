@@ -14,7 +14,7 @@ module vibrobeam_problem
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_obstacles, only: build_contact_points
-   use vibrobeam_loads, only: load_set, build_loads, add_forces
+   use vibrobeam_loads, only: load_set, build_loads, add_forces, add_flow
    use vibrobeam_initial_state, only: mode_field, initial_velocity
    use vibrobeam_static, only: solve_static
    use vibrobeam_discrete_system, only: discrete_system
@@ -76,6 +76,11 @@ contains
       call build_loads(scene%load, prepared%model, scene%beam%rho_s(), prepared%loads)
       call add_forces(prepared%loads, scene%forces, prepared%model, scene%beam%rho_s(), scene%time%dt, stat, errmsg)
       if (stat /= 0) return
+      if (scene%analysis%kind == 'dynamics') then
+         call add_flow(prepared%loads, scene%flow, prepared%model, scene%beam%rayleigh_mass, &
+                       scene%beam%rayleigh_stiffness, stat, errmsg)
+         if (stat /= 0) return
+      end if
       if (scene%analysis%kind == 'dynamics' .and. len_trim(scene%initial%from_file) > 0) then
          call resume_from_file(scene, prepared, warnings, stat, errmsg)
          if (stat == 0) call full_system(prepared)

@@ -23,7 +23,7 @@
 !! cm^4 beside an area in m^2).
 module vibrobeam_check_report
    use vibrobeam_kinds, only: dp, pi
-   use vibrobeam_text, only: real_text, integer_text
+   use vibrobeam_text, only: real_text, integer_text, g => short_text
    use vibrobeam_scene, only: scene_type, is_unset
    use vibrobeam_model, only: beam_model
    use vibrobeam_highest_frequency, only: highest_frequency
@@ -306,39 +306,4 @@ contains
       type(scene_type), intent(in) :: scene
       k2_of = scene%beam%ei()/scene%beam%rho_s()
    end function k2_of
-
-   !> A number with 6 significant digits, without blanks: 210.347, 0.0213, 1.23457e7.
-   function g(value) result(text)
-      real(dp), intent(in) :: value
-      character(len=:), allocatable :: text
-      character(len=32) :: buffer
-      integer :: e, exponent, decimals
-      if (abs(value) >= 1e-3_dp .and. abs(value) < 1e6_dp) then
-         decimals = max(0, 5 - floor(log10(abs(value))))
-         write (buffer, '(f0.'//integer_text(decimals)//')') value
-         text = trim(adjustl(buffer))
-         if (index(text, '.') > 0) then
-            do while (text(len(text):) == '0')
-               text = text(1:len(text) - 1)
-            end do
-            if (text(len(text):) == '.') text = text(1:len(text) - 1)
-         end if
-         if (text(1:1) == '.') text = '0'//text
-         if (len(text) >= 2) then
-            if (text(1:2) == '-.') text = '-0'//text(2:)
-         end if
-      else if (abs(value) > 0) then
-         write (buffer, '(es16.5e3)') value
-         e = index(buffer, 'E')
-         read (buffer(e + 1:), *) exponent
-         text = trim(adjustl(buffer(1:e - 1)))
-         do while (text(len(text):) == '0')
-            text = text(1:len(text) - 1)
-         end do
-         if (text(len(text):) == '.') text = text(1:len(text) - 1)
-         text = text//'e'//integer_text(exponent)
-      else
-         text = '0'
-      end if
-   end function g
 end module vibrobeam_check_report

@@ -4,7 +4,7 @@ module vibrobeam_text
    use vibrobeam_kinds, only: dp, int64
    implicit none
    private
-   public :: real_text, integer_text
+   public :: real_text, integer_text, short_text
 
 contains
 
@@ -85,4 +85,39 @@ contains
          reads_back = ios == 0 .and. transfer(back, 1_int64) == transfer(value, 1_int64)   ! bitwise
       end function reads_back
    end function real_text
+
+   !> A number with 6 significant digits, without blanks: 210.347, 0.0213, 1.23457e7.
+   function short_text(value) result(text)
+      real(dp), intent(in) :: value
+      character(len=:), allocatable :: text
+      character(len=32) :: buffer
+      integer :: e, exponent, decimals
+      if (abs(value) >= 1e-3_dp .and. abs(value) < 1e6_dp) then
+         decimals = max(0, 5 - floor(log10(abs(value))))
+         write (buffer, '(f0.'//integer_text(decimals)//')') value
+         text = trim(adjustl(buffer))
+         if (index(text, '.') > 0) then
+            do while (text(len(text):) == '0')
+               text = text(1:len(text) - 1)
+            end do
+            if (text(len(text):) == '.') text = text(1:len(text) - 1)
+         end if
+         if (text(1:1) == '.') text = '0'//text
+         if (len(text) >= 2) then
+            if (text(1:2) == '-.') text = '-0'//text(2:)
+         end if
+      else if (abs(value) > 0) then
+         write (buffer, '(es16.5e3)') value
+         e = index(buffer, 'E')
+         read (buffer(e + 1:), *) exponent
+         text = trim(adjustl(buffer(1:e - 1)))
+         do while (text(len(text):) == '0')
+            text = text(1:len(text) - 1)
+         end do
+         if (text(len(text):) == '.') text = text(1:len(text) - 1)
+         text = text//'e'//integer_text(exponent)
+      else
+         text = '0'
+      end if
+   end function short_text
 end module vibrobeam_text

@@ -12,7 +12,7 @@
 module vibrobeam_forces
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_status, only: stat_failure, stat_invalid_input
-   use vibrobeam_text, only: real_text, integer_text
+   use vibrobeam_text, only: real_text, integer_text, short_text
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, text_row, unset, &
       is_unset, unset_integer, keyword_length, path_length
    use vibrobeam_model, only: beam_model, point_load_vector, load_vector, unit_profile
@@ -561,21 +561,12 @@ contains
          associate (term => self%term(i), signal => self%term(i)%random)
             if (term%signal /= signal_random) cycle
             text = text//'random load '//integer_text(i)//': filter of '//integer_text(signal%taps)// &
-                   ' taps (resolution 1/(L dt) = '//six_digits(1/(signal%taps*signal%step))//' Hz), signal RMS '// &
-                   six_digits(signal%rms)//', the density''s sqrt(integral of S) '//six_digits(signal%target_rms)
+                   ' taps (resolution 1/(L dt) = '//short_text(1/(signal%taps*signal%step))//' Hz), signal RMS '// &
+                   short_text(signal%rms)//', the density''s sqrt(integral of S) '//short_text(signal%target_rms)
             if (signal%channels > 1) text = text//', '//integer_text(signal%channels)//' coherent points'
             text = text//new_line('a')
          end associate
       end do
-   contains
-      !> 6 significant digits.
-      function six_digits(value) result(shown)
-         real(dp), intent(in) :: value
-         character(len=:), allocatable :: shown
-         character(len=32) :: buffer
-         write (buffer, '(g0.6)') value
-         shown = trim(adjustl(buffer))
-      end function six_digits
    end function forces_report
 
    !> The random signal of load i (a copy; none designed when load i is not random):

@@ -9,15 +9,18 @@
 !! obstacles move with the support (they are fixed in its frame).
 !!
 !! The loads of &forces (`vibrobeam_forces`: any number of point, distributed and base
-!! loads with harmonic, table or random signals) are added to these.
+!! loads with harmonic, table or random signals) are added to these, and so is the
+!! fluid-elastic force of &flow (`vibrobeam_flow`), which depends on the velocities: the
+!! velocity scheme adds it at V^n.
 module vibrobeam_loads
    use vibrobeam_kinds, only: dp
    use vibrobeam_model, only: beam_model, load_vector, point_load_vector, unit_profile
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, unset, is_unset
    use vibrobeam_forces, only: force_set, forces_settings, build_forces
+   use vibrobeam_flow, only: fluid_elastic, flow_settings, build_flow
    implicit none
    private
-   public :: load_set, build_loads, load_settings, visit_load, add_forces
+   public :: load_set, build_loads, load_settings, visit_load, add_forces, add_flow
 
    !> &load as the input gives it (docs/input.md, "&load"): a uniform load, a point force
    !! and a base excitation, each constant or harmonic.
@@ -39,6 +42,7 @@ module vibrobeam_loads
       real(dp) :: base_load = 0              !! rho S A Omega_b^2 (N/m)
       real(dp) :: base_frequency = 0
       type(force_set) :: forces              !! the loads of &forces
+      type(fluid_elastic) :: flow            !! the fluid-elastic force of &flow (flow%active: it acts)
    contains
       procedure :: at => load_at
       procedure :: evaluate => load_evaluate
@@ -123,6 +127,18 @@ contains
       call build_forces(settings, model, rho_s, dt, loads%forces, stat, errmsg)
       loads%present = loads%present .or. loads%forces%count > 0
    end subroutine add_forces
+
+   !> The fluid-elastic force of &flow (`build_flow`) beside the loads; stat and errmsg as
+   !! `build_flow` says.
+   subroutine add_flow(loads, settings, model, rayleigh_mass, rayleigh_stiffness, stat, errmsg)
+      type(load_set), intent(inout) :: loads
+      type(flow_settings), intent(in) :: settings
+      type(beam_model), intent(in) :: model
+      real(dp), intent(in) :: rayleigh_mass, rayleigh_stiffness   !! the beam's damping (1/s, s)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      call build_flow(settings, model, rayleigh_mass, rayleigh_stiffness, loads%flow, stat, errmsg)
+   end subroutine add_flow
 
    !> F(t) (N per unknown; per unit mass when the beam is given by k2), for a caller that
    !! keeps no state: the same values as `evaluate`, which the steppers use.

@@ -22,6 +22,7 @@ module vibrobeam_model
    private
    public :: beam_model, build_model, point_row, node_row, nodal_displacement
    public :: load_vector, point_load_vector, interpolate_field, space_profile, unit_profile, energy_integrals
+   public :: gauss_points, gauss_weights
 
    integer, parameter :: bandwidth = 3   !! sub-diagonals of M and K for both bases
 

@@ -32,6 +32,7 @@ module vibrobeam_scene
    use vibrobeam_initial_state, only: initial_settings, visit_initial
    use vibrobeam_loads, only: load_settings, visit_load
    use vibrobeam_forces, only: forces_settings, visit_forces, check_forces, max_forces
+   use vibrobeam_flow, only: flow_settings, visit_flow, check_flow
    use vibrobeam_time_settings, only: time_settings, impact_settings, visit_time, visit_impact
    use vibrobeam_contact_options, only: contact_options, visit_solver
    use vibrobeam_output_settings, only: output_settings, visit_output, max_points
@@ -63,6 +64,7 @@ module vibrobeam_scene
       type(initial_settings) :: initial
       type(load_settings) :: load
       type(forces_settings) :: forces
+      type(flow_settings) :: flow
       type(contact_options) :: solver
       type(output_settings) :: output
    end type scene_type
@@ -99,6 +101,7 @@ contains
          count = size(scene%forces%load)
          call visit_forces(scene%forces, count, visitor)
       end if
+      call visit_flow(scene%flow, visitor)
       call visit_solver(scene%solver, visitor)
       call visit_output(scene%output, visitor)
    end subroutine visit_scene
@@ -207,6 +210,8 @@ contains
       call load_rules(copy, stat, errmsg)
       if (stat == 0) call check_forces(copy%forces, copy%beam%length, copy%time%dt, copy%analysis%kind == 'dynamics', &
                                        stat, errmsg)
+      if (stat == 0) call check_flow(copy%flow, copy%beam%length, copy%time%scheme, copy%mesh%unknowns(), &
+                                     copy%analysis%kind == 'dynamics', stat, errmsg)
       call output_rules(copy, stat, errmsg)
    end subroutine validate_scene
 

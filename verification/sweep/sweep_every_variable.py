@@ -41,7 +41,7 @@ except ImportError:
 # compliant one above, both along [0.3, 0.45] m (ends between nodes: 0.95 x either end
 # covers the same node 0.375 m), harmonic loads of every kind with a frequency, and two
 # loads of &forces: a random distributed one with a spatial coherence (its band far enough
-# from 0 Hz for a short filter) and a harmonic point force.
+# from 0 Hz for a short filter) and a harmonic point force; a cross-flow over part of it.
 SCENE_A = """
 &beam      length = 0.5, youngs_modulus = 210e9, density = 7850, area = 2e-4,
            inertia = 1.6666666666666667e-9, rayleigh_mass = 3.0, rayleigh_stiffness = 1e-6 /
@@ -60,6 +60,7 @@ SCENE_A = """
            kind(1) = 'distributed', x_from(1) = 0.1, x_to(1) = 0.45, signal(1) = 'random', psd_level(1) = 0.5,
            band_from(1) = 50.0, band_to(1) = 5000.0, correlation_length(1) = 0.05,
            position(2) = 0.4, amplitude(2) = 3.0, frequency(2) = 250.0, phase(2) = 0.3 /
+&flow      velocity = 0.2, density = 1000, diameter = 0.02, x_to = 0.45, connors_constant = 3.0 /
 &output    file = 'scene.h5', points = 0.25, 0.4, text = .false., episode_gap = 1e-3 @OUTPUT@ /
 """
 # The second scene: the beam given by k2 (rho S = 1), a reduced model, both stops compliant.
