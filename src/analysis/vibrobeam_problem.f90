@@ -15,7 +15,7 @@ module vibrobeam_problem
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_obstacles, only: build_contact_points
-   use vibrobeam_loads, only: load_set, build_loads
+   use vibrobeam_loads, only: load_set, build_loads, add_forces, add_flow
    use vibrobeam_initial_state, only: mode_field, initial_velocity
    use vibrobeam_static, only: solve_static
    use vibrobeam_discrete_system, only: discrete_system
@@ -79,6 +79,13 @@ contains
       call build_contact_points(scene%obstacles, prepared%model, prepared%contacts, warnings, stat, errmsg)
       if (stat /= 0) return
       call build_loads(scene%load, prepared%model, scene%beam%rho_s(), prepared%loads)
+      call add_forces(prepared%loads, scene%forces, prepared%model, scene%beam%rho_s(), scene%time%dt, stat, errmsg)
+      if (stat /= 0) return
+      if (scene%analysis%kind == 'dynamics') then
+         call add_flow(prepared%loads, scene%flow, prepared%model, scene%beam%rayleigh_mass, &
+                       scene%beam%rayleigh_stiffness, stat, errmsg)
+         if (stat /= 0) return
+      end if
       if (scene%analysis%kind == 'dynamics' .and. len_trim(scene%initial%from_file) > 0) then
          call resume_from_file(scene, prepared, warnings, stat, errmsg)
          if (stat == 0) call full_system(prepared)
@@ -176,9 +183,12 @@ contains
    end subroutine new_stepper
 
    !> The cut-off of the fixed-interface modes (rad/s): &mesh reduction_frequency, or its
-   !! default from the forcing frequencies and dt (`default_reduction_frequency`).
-   pure function reduction_cutoff(scene) result(cutoff)
+   !! default from the forcing frequencies of the scene's &load and of its loads of
+   !! &forces built in `loads` (a random signal's highest frequency), and dt
+   !! (`default_reduction_frequency`).
+   pure function reduction_cutoff(scene, loads) result(cutoff)
       type(scene_type), intent(in) :: scene
+      type(load_set), intent(in) :: loads
       real(dp) :: cutoff
       real(dp) :: forcing(3)
       logical :: loaded(3)
@@ -188,7 +198,7 @@ contains
       end if
       forcing = [scene%load%distributed_frequency, scene%load%point_frequency, scene%load%base_frequency]
       loaded = [abs(scene%load%distributed) > 0, abs(scene%load%point_force) > 0, abs(scene%load%base_amplitude) > 0]
-      cutoff = default_reduction_frequency(scene%time%dt, pack(forcing, loaded))
+      cutoff = default_reduction_frequency(scene%time%dt, [pack(forcing, loaded), loads%forces%frequencies()])
    end function reduction_cutoff
 
    !> The Craig-Bampton reduced model of a prepared scene (`vibrobeam_reduction`).
@@ -205,8 +215,8 @@ contains
             prepared%contacts%count, ' contact points)'
          return
       end if
-      call build_reduction(prepared%model, prepared%contacts, reduction_cutoff(scene), scene%mesh%reduction_modes, &
-                           prepared%reduction, stat, errmsg)
+      call build_reduction(prepared%model, prepared%contacts, reduction_cutoff(scene, prepared%loads), &
+                           scene%mesh%reduction_modes, prepared%reduction, stat, errmsg)
       if (stat /= 0) then
          errmsg = '&mesh reduction = ''craig-bampton'': '//trim(errmsg)
          stat = stat_numerical_failure
@@ -215,7 +225,8 @@ contains
       if (prepared%reduction%boundary + prepared%reduction%modes == 0) then
          stat = stat_failure
          errmsg = '&mesh reduction = ''craig-bampton'' keeps nothing: no contact point and no mode below '// &
-                  'reduction_frequency = '//real_text(reduction_cutoff(scene))//' rad/s; raise it or give reduction_modes'
+                  'reduction_frequency = '//real_text(reduction_cutoff(scene, prepared%loads))// &
+                  ' rad/s; raise it or give reduction_modes'
          return
       end if
       call reduce_model(prepared%model, prepared%reduction, prepared%system%model)

@@ -25,7 +25,7 @@
 !! cm^4 beside an area in m^2).
 module vibrobeam_check_report
    use vibrobeam_kinds, only: dp, pi
-   use vibrobeam_text, only: real_text, integer_text, significant_text
+   use vibrobeam_text, only: real_text, integer_text, g => short_text
    use vibrobeam_scene, only: scene_type, is_unset, held_conditions
    use vibrobeam_scene_structure, only: scene_frequencies
    use vibrobeam_model, only: beam_model
@@ -365,11 +365,4 @@ contains
       type(scene_type), intent(in) :: scene
       k2_of = scene%beam%ei()/scene%beam%rho_s()
    end function k2_of
-
-   !> A number with 6 significant digits, without blanks: 210.347, 0.0213, 1.23457e7.
-   function g(value) result(text)
-      real(dp), intent(in) :: value
-      character(len=:), allocatable :: text
-      text = significant_text(value, 6)
-   end function g
 end module vibrobeam_check_report

@@ -229,6 +229,8 @@ contains
       write (output_unit, '(a,i0,a,i0,a)') 'discrete model: ', model%elements, ' '//trim(model%basis)// &
          ' elements, ', model%unknowns, ' unknowns'
       write (output_unit, '(a,i0)') 'contact points: ', contacts%count
+      write (output_unit, '(a)', advance='no') prepared%loads%forces%report()
+      write (output_unit, '(a)', advance='no') prepared%loads%flow%report()
       if (prepared%reduced) then
          associate (reduction => prepared%reduction)
             write (output_unit, '(a,i0,a,i0,a,i0,a)') 'reduced model (craig-bampton): ', &

@@ -11,7 +11,7 @@ module vibrobeam_lapack
    implicit none
    private
    public :: poison_failed_solve
-   public :: dpbtrf, dpbtrs, dpbcon, dpbrfs, dsbmv, dsbgvx, dpttrf, dpttrs
+   public :: dpbtrf, dpbtrs, dpbcon, dpbrfs, dsbmv, dgemv, dsbgvx, dpttrf, dpttrs
    public :: dpotrf, dpotrs, dpotri, dgbtrf, dgbtrs, dgbsv, dgesv, dlamch, dgeqrf, dormqr, dsygv
    public :: dgetrf, dorgqr, dsyev   ! the tests' dense references
 
@@ -64,6 +64,15 @@ module vibrobeam_lapack
          real(dp), intent(in) :: a(lda, *), x(*)
          real(dp), intent(inout) :: y(*)
       end subroutine dsbmv
+      !> y = alpha op(A) x + beta y, op(A) = A ('N') or A^T ('T'), A m x n.
+      subroutine dgemv(trans, m, n, alpha, a, lda, x, incx, beta, y, incy)
+         import :: dp
+         character, intent(in) :: trans
+         integer, intent(in) :: m, n, lda, incx, incy
+         real(dp), intent(in) :: alpha, beta
+         real(dp), intent(in) :: a(lda, *), x(*)
+         real(dp), intent(inout) :: y(*)
+      end subroutine dgemv
       !> Selected eigenvalues (and vectors) of the band pencil A x = lambda B x, B positive
       !! definite (it forms an n x n transformation when vectors are asked).
       subroutine dsbgvx(jobz, range, uplo, n, ka, kb, ab, ldab, bb, ldbb, q, ldq, vl, vu, &

@@ -4,7 +4,7 @@ module vibrobeam_text
    use vibrobeam_kinds, only: dp, int64
    implicit none
    private
-   public :: real_text, integer_text, significant_text
+   public :: real_text, integer_text, significant_text, short_text
 
 contains
 
@@ -126,4 +126,11 @@ contains
          text = '0'
       end if
    end function significant_text
+
+   !> `value` with 6 significant digits (`significant_text`): 210.347, 0.0213, 1.23457e7.
+   function short_text(value) result(text)
+      real(dp), intent(in) :: value
+      character(len=:), allocatable :: text
+      text = significant_text(value, 6)
+   end function short_text
 end module vibrobeam_text

@@ -8,15 +8,22 @@
 !! inertial load -rho S s''(t), and each point mass m_k (&masses) the point force
 !! -m_k s''(t) at x_k. Displacements are then relative to the support, and the obstacles
 !! move with the support (they are fixed in its frame).
+!!
+!! The loads of &forces (`vibrobeam_forces`: any number of point, distributed and base
+!! loads with harmonic, table or random signals) are added to these, and so is the
+!! fluid-elastic force of &flow (`vibrobeam_flow`), which depends on the velocities: the
+!! velocity scheme adds it at V^n.
 module vibrobeam_loads
    use vibrobeam_kinds, only: dp
    use vibrobeam_model, only: beam_model, load_vector, point_load_vector, unit_profile
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, unset, is_unset
    use vibrobeam_namelist_schema, only: namelist_variable
    use vibrobeam_frequency_twins, only: hertz_twin
+   use vibrobeam_forces, only: force_set, forces_settings, build_forces
+   use vibrobeam_flow, only: fluid_elastic, flow_settings, build_flow
    implicit none
    private
-   public :: load_set, build_loads, load_settings, visit_load
+   public :: load_set, build_loads, load_settings, visit_load, add_forces, add_flow
 
    !> &load as the input gives it (docs/input.md, "&load"): a uniform load, a point force
    !! and a base excitation, each constant or harmonic.
@@ -43,6 +50,8 @@ module vibrobeam_loads
       !! phi(x_k) (m; J), when the beam carries point masses (`masses`)
       logical :: masses = .false.
       real(dp), allocatable :: mass_points(:)
+      type(force_set) :: forces              !! the loads of &forces
+      type(fluid_elastic) :: flow            !! the fluid-elastic force of &flow (flow%active: it acts)
    contains
       procedure :: at => load_at
       procedure :: evaluate => load_evaluate
@@ -130,17 +139,55 @@ contains
       end if
    end subroutine build_loads
 
-   !> F(t) (N per unknown; per unit mass when the beam is given by k2).
-   pure function load_at(self, t) result(f)
+   !> The loads of &forces (`build_forces`), added to `loads`. stat and errmsg as
+   !! `build_forces` says (a table that cannot be read, ...).
+   subroutine add_forces(loads, settings, model, rho_s, dt, stat, errmsg)
+      type(load_set), intent(inout) :: loads
+      type(forces_settings), intent(in) :: settings
+      type(beam_model), intent(in) :: model
+      real(dp), intent(in) :: rho_s   !! kg/m
+      real(dp), intent(in) :: dt      !! the sample step of random signals (s)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      call build_forces(settings, model, rho_s, dt, loads%forces, stat, errmsg)
+      loads%present = loads%present .or. loads%forces%count > 0
+   end subroutine add_forces
+
+   !> The fluid-elastic force of &flow (`build_flow`) beside the loads; stat and errmsg as
+   !! `build_flow` says.
+   subroutine add_flow(loads, settings, model, rayleigh_mass, rayleigh_stiffness, stat, errmsg)
+      type(load_set), intent(inout) :: loads
+      type(flow_settings), intent(in) :: settings
+      type(beam_model), intent(in) :: model
+      real(dp), intent(in) :: rayleigh_mass, rayleigh_stiffness   !! the beam's damping (1/s, s)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      call build_flow(settings, model, rayleigh_mass, rayleigh_stiffness, loads%flow, stat, errmsg)
+   end subroutine add_flow
+
+   !> F(t) (N per unknown; per unit mass when the beam is given by k2), for a caller that
+   !! keeps no state: the same values as `evaluate`, which the steppers use.
+   function load_at(self, t) result(f)
       class(load_set), intent(in) :: self
       real(dp), intent(in) :: t   !! time (s)
       real(dp) :: f(size(self%uniform))
-      call load_evaluate(self, t, f)
+      call add_loads(self, t, f)
+      if (self%forces%count > 0) call self%forces%add_uncached(t, f)
    end function load_at
 
-   !> F(t) into f (the time steppers: no temporary array).
-   pure subroutine load_evaluate(self, t, f)
-      class(load_set), intent(in) :: self
+   !> F(t) into f (the time steppers: no temporary array; the tables keep their position
+   !! and the random signals their block of samples, so a step costs what the loads touch).
+   subroutine load_evaluate(self, t, f)
+      class(load_set), intent(inout) :: self
+      real(dp), intent(in) :: t   !! time (s)
+      real(dp), intent(out) :: f(:)   !! (J)
+      call add_loads(self, t, f)
+      if (self%forces%count > 0) call self%forces%add_to(t, f)
+   end subroutine load_evaluate
+
+   !> The loads of &load at t into f.
+   pure subroutine add_loads(self, t, f)
+      type(load_set), intent(in) :: self
       real(dp), intent(in) :: t   !! time (s)
       real(dp), intent(out) :: f(:)   !! (J)
       f = 0
@@ -149,5 +196,5 @@ contains
            self%base_load*sin(self%base_frequency*t))*self%uniform
       if (abs(self%point_force) > 0) f = f + self%point_force*cos(self%point_frequency*t)*self%point
       if (self%masses) f = f + self%base_load*sin(self%base_frequency*t)*self%mass_points
-   end subroutine load_evaluate
+   end subroutine add_loads
 end module vibrobeam_loads

@@ -29,7 +29,7 @@ module vibrobeam_model
    private
    public :: beam_model, build_model, point_row, node_row, nodal_displacement
    public :: load_vector, point_load_vector, interpolate_field, space_profile, unit_profile, energy_integrals
-   public :: rigid_motions, flexibility_applies
+   public :: rigid_motions, flexibility_applies, gauss_points, gauss_weights
 
    integer, parameter :: bandwidth = 3   !! sub-diagonals of M and K for both bases
 
@@ -505,20 +505,33 @@ contains
    end subroutine energy_integrals
 
    !> Consistent load vector F_j = integral over (0, L) of profile(x) phi_j(x) dx, by
-   !! 4-point Gauss quadrature per element (exact for profiles of degree <= 4).
-   function load_vector(model, profile) result(f)
+   !! 4-point Gauss quadrature per element (exact for profiles of degree <= 4); with
+   !! `x_from` and `x_to` (m) the integral over that segment only, the rule then applied to
+   !! the part of each element inside it (an element the segment covers whole takes the
+   !! same points as without a segment, so a segment [0, L] gives the same bits).
+   function load_vector(model, profile, x_from, x_to) result(f)
       type(beam_model), intent(in) :: model
       procedure(space_profile) :: profile
+      real(dp), intent(in), optional :: x_from, x_to
       real(dp) :: f(model%unknowns)
       integer :: e, g, dofs(4), a
-      real(dp) :: n(4), x
+      real(dp) :: n(4), x, start, width
       f = 0
       do e = 1, model%elements
+         start = model%x(e)
+         width = model%h
+         if (present(x_from) .and. present(x_to)) then
+            if (x_to <= model%x(e) .or. x_from >= model%x(e + 1)) cycle
+            if (x_from > model%x(e) .or. x_to < model%x(e + 1)) then   ! the element's part in the segment
+               start = max(x_from, model%x(e))
+               width = min(x_to, model%x(e + 1)) - start
+            end if
+         end if
          do g = 1, 4
-            x = model%x(e) + gauss_points(g)*model%h
+            x = start + gauss_points(g)*width
             call element_functions(model, e, x, 0, dofs, n)
             do a = 1, 4
-               if (dofs(a) /= 0) f(dofs(a)) = f(dofs(a)) + gauss_weights(g)*model%h*profile(x)*n(a)
+               if (dofs(a) /= 0) f(dofs(a)) = f(dofs(a)) + gauss_weights(g)*width*profile(x)*n(a)
             end do
          end do
       end do

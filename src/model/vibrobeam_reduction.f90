@@ -350,6 +350,8 @@ contains
       reduced%uniform = matmul(loads%uniform, basis%transform)
       reduced%point = matmul(loads%point, basis%transform)
       reduced%mass_points = matmul(loads%mass_points, basis%transform)
+      call reduced%forces%project(basis%transform)
+      call reduced%flow%project(basis%transform)
    end subroutine reduce_loads
 
    !> Reduced coordinates of a state U of the full model: y = H U exactly (so a state on its

@@ -15,6 +15,8 @@ module vibrobeam_ignored_values
    use vibrobeam_namelist_schema, only: namelist_variable, variable_index
    use vibrobeam_scene_values, only: real_input
    use vibrobeam_frequency_twins, only: twin_name
+   use vibrobeam_forces, only: ignored_forces
+   use vibrobeam_flow, only: ignored_flow
    implicit none
    private
    public :: ignored_values
@@ -33,6 +35,8 @@ contains
       if (scene%analysis%kind == 'modes') return
       call obstacle_warnings(scanned, scene, swept, warnings)
       call load_warnings(scanned, scene, swept, warnings)
+      call ignored_forces(scanned, scene%forces, scene%analysis%kind == 'static', warnings)
+      call ignored_flow(scanned, scene%flow, scene%analysis%kind == 'dynamics', any(swept == 'flow.velocity'), warnings)
       if (scene%analysis%kind /= 'dynamics') return
       call time_warnings(scanned, scene, swept, warnings)
       call initial_warnings(scanned, scene, warnings)
@@ -44,8 +48,8 @@ contains
       type(scanned_file), intent(in) :: scanned
       type(scene_type), intent(in) :: scene
       character(len=:), allocatable, intent(inout) :: warnings
-      character(len=*), parameter :: unused_by_modes(6) = [character(len=9) :: 'obstacles', 'impact', 'time', &
-                                                            'initial', 'load', 'solver']
+      character(len=*), parameter :: unused_by_modes(8) = [character(len=9) :: 'obstacles', 'impact', 'time', &
+                                                            'initial', 'load', 'forces', 'flow', 'solver']
       character(len=*), parameter :: unused_by_static(3) = [character(len=9) :: 'impact', 'time', 'initial']
       character(len=:), allocatable :: kind_reason, item
       integer :: k

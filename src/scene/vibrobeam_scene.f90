@@ -37,6 +37,8 @@ module vibrobeam_scene
       max_supports, max_masses, structure_from
    use vibrobeam_initial_state, only: initial_settings, visit_initial
    use vibrobeam_loads, only: load_settings, visit_load
+   use vibrobeam_forces, only: forces_settings, visit_forces, check_forces, max_forces
+   use vibrobeam_flow, only: flow_settings, visit_flow, check_flow
    use vibrobeam_time_settings, only: time_settings, impact_settings, visit_time, visit_impact
    use vibrobeam_contact_options, only: contact_options, visit_solver
    use vibrobeam_output_settings, only: output_settings, visit_output, max_points
@@ -46,7 +48,7 @@ module vibrobeam_scene
    public :: scene_type, analysis_settings, obstacle_type, scene_entry, max_obstacles, max_points, unset
    public :: visit_scene, validate_scene, scene_entries, format_scene, is_unset
    public :: scene_variables, path_length, keyword_length, max_steps, step_count
-   public :: forcing_of, max_sweep_values, parameter_length, sync_frequency_twins
+   public :: forcing_of, max_sweep_values, parameter_length, sync_frequency_twins, max_forces
    public :: support_settings, mass_settings, max_supports, max_masses, held_conditions, structure_of
 
    !> Most time steps of a run: nint(t_end/dt) must fit a 64-bit count with room to spare.
@@ -71,6 +73,8 @@ module vibrobeam_scene
       type(time_settings) :: time
       type(initial_settings) :: initial
       type(load_settings) :: load
+      type(forces_settings) :: forces
+      type(flow_settings) :: flow
       type(contact_options) :: solver
       type(output_settings) :: output
    end type scene_type
@@ -78,14 +82,14 @@ module vibrobeam_scene
 contains
 
    !> Every variable of the scene, group by group in the order of docs/input.md.
-   !! `obstacle_count`, `support_count`, `mass_count` (the reader's): the counts read, when
-   !! the scene's arrays hold room for the most a file may give; otherwise each count is the
-   !! size of its array (&supports and &masses: not listed when 0, so that a scene without
-   !! them keeps the listing of earlier versions).
-   subroutine visit_scene(scene, visitor, obstacle_count, support_count, mass_count)
+   !! `obstacle_count`, `support_count`, `mass_count`, `force_count` (the reader's): the
+   !! counts read, when the scene's arrays hold room for the most a file may give;
+   !! otherwise each count is the size of its array (&supports and &masses: not listed when
+   !! 0, so that a scene without them keeps the listing of earlier versions).
+   subroutine visit_scene(scene, visitor, obstacle_count, support_count, mass_count, force_count)
       type(scene_type), intent(inout) :: scene
       class(schema_visitor), intent(inout) :: visitor
-      integer, intent(inout), optional :: obstacle_count, support_count, mass_count
+      integer, intent(inout), optional :: obstacle_count, support_count, mass_count, force_count
       integer :: count
       if (.not. allocated(scene%obstacles)) allocate (scene%obstacles(0))
       if (.not. allocated(scene%supports)) allocate (scene%supports(0))
@@ -115,6 +119,14 @@ contains
       call visit_time(scene%time, visitor)
       call visit_initial(scene%initial, visitor)
       call visit_load(scene%load, visitor)
+      if (.not. allocated(scene%forces%load)) allocate (scene%forces%load(0))
+      if (present(force_count)) then
+         call visit_forces(scene%forces, force_count, visitor)
+      else
+         count = size(scene%forces%load)
+         call visit_forces(scene%forces, count, visitor)
+      end if
+      call visit_flow(scene%flow, visitor)
       call visit_solver(scene%solver, visitor)
       call visit_output(scene%output, visitor)
    end subroutine visit_scene
@@ -271,6 +283,10 @@ contains
       call obstacle_rules(copy, stat, errmsg)
       call time_rules(copy, stat, errmsg)
       call load_rules(copy, stat, errmsg)
+      if (stat == 0) call check_forces(copy%forces, copy%beam%length, copy%time%dt, copy%analysis%kind == 'dynamics', &
+                                       stat, errmsg)
+      if (stat == 0) call check_flow(copy%flow, copy%beam%length, copy%time%scheme, copy%mesh%unknowns(), &
+                                     copy%analysis%kind == 'dynamics', stat, errmsg)
       call output_rules(copy, stat, errmsg)
    end subroutine validate_scene
 
@@ -521,18 +537,24 @@ contains
       type(scene_entry), allocatable :: list(:)
       type(schema_lister) :: lister, derived
       type(scene_type) :: copy
-      integer :: k
+      integer :: k, n
       copy = scene
       call sync_frequency_twins(copy)
       call visit_scene(copy, lister)
       call derived%add_real('beam.mass_per_length', scene%beam%rho_s(), 'kg/m')
       call derived%add_real('beam.bending_stiffness', scene%beam%ei(), 'N m^2')
-      allocate (list(0))
-      do k = 1, size(lister%entries)
+      allocate (list(lister%count + derived%count))
+      n = 0
+      do k = 1, lister%count
          if (lister%entries(k)%name == 'beam.k2') lister%entries(k)%real_value = scene%beam%ei()/scene%beam%rho_s()
-         if (lister%entries(k)%name == 'beam.rayleigh_mass') list = [list, derived%entries]
-         list = [list, lister%entries(k)]
+         if (lister%entries(k)%name == 'beam.rayleigh_mass') then
+            list(n + 1:n + derived%count) = derived%entries(1:derived%count)
+            n = n + derived%count
+         end if
+         n = n + 1
+         list(n) = lister%entries(k)
       end do
+      list = list(1:n)
    end function scene_entries
 
    !> The resolved scene as text, one 'group.variable = value  ! unit' line per entry.

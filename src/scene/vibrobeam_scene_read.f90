@@ -15,8 +15,8 @@ module vibrobeam_scene_read
    use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: integer_text, real_text
-   use vibrobeam_scene, only: scene_type, max_obstacles, max_points, max_supports, max_masses, scene_variables, &
-      visit_scene, held_conditions, sync_frequency_twins
+   use vibrobeam_scene, only: scene_type, max_obstacles, max_points, max_supports, max_masses, max_forces, &
+      scene_variables, visit_scene, held_conditions, sync_frequency_twins
    use vibrobeam_scene_values, only: real_input, set_real_input
    use vibrobeam_frequency_twins, only: is_twin, frequency_name
    use vibrobeam_obstacles, only: obstacle_type
@@ -27,6 +27,7 @@ module vibrobeam_scene_read
    use vibrobeam_sweep_settings, only: sweep_settings
    use vibrobeam_ignored_values, only: ignored_values
    use vibrobeam_namelist_tokens, only: lowercase
+   use vibrobeam_filesystem, only: directory_of
    use vibrobeam_schema_operations, only: schema_checker
    use vibrobeam_sweep_input, only: parameter_length
    implicit none
@@ -52,19 +53,21 @@ contains
       !! sweep%present is false without one
       type(sweep_settings), intent(out), optional :: sweep
       type(schema_reader) :: reader
-      integer :: count, support_count, mass_count
+      integer :: count, support_count, mass_count, force_count
       call scan_namelist_file(filename, scene_variables(), reader%scanned, stat, errmsg)
       if (stat /= 0) return
-      ! room for every obstacle, support, mass and point the file may describe; cut to what
-      ! it gives below
+      ! room for every obstacle, support, mass, load and point the file may describe; cut to
+      ! what it gives below
       allocate (scene%obstacles(max_obstacles), scene%output%points(max_points), scene%supports(max_supports), &
-                scene%masses(max_masses))
+                scene%masses(max_masses), scene%forces%load(max_forces))
       scene%obstacles(:)%side = ''
       scene%output%points = 0
       count = 0
       support_count = 0
       mass_count = 0
-      call visit_scene(scene, reader, obstacle_count=count, support_count=support_count, mass_count=mass_count)
+      force_count = 0
+      call visit_scene(scene, reader, obstacle_count=count, support_count=support_count, mass_count=mass_count, &
+                       force_count=force_count)
       if (reader%stat /= 0) then
          stat = reader%stat
          errmsg = reader%errmsg
@@ -73,6 +76,7 @@ contains
       call resolve_obstacles(reader%scanned, count, scene, stat, errmsg)
       if (stat == 0) call resolve_supports(reader%scanned, support_count, scene, stat, errmsg)
       if (stat == 0) call resolve_masses(reader%scanned, mass_count, scene, stat, errmsg)
+      if (stat == 0) call resolve_forces(reader%scanned, force_count, filename, scene, stat, errmsg)
       if (stat == 0) call resolve_points(reader%scanned, scene, stat, errmsg)
       if (stat == 0) call resolve_frequency_twins(reader%scanned, scene, stat, errmsg)
       if (stat /= 0) return
@@ -166,43 +170,65 @@ contains
    !> The frequencies given in Hz (docs/input.md, "Frequencies in Hz"): a twin and its
    !! frequency are not both given; a twin given (checked against its own range first, so
    !! that a message names what the file says) sets its frequency to 2 pi times it; every
-   !! other twin is the frequency over 2 pi.
+   !! other twin is the frequency over 2 pi. An array's twin (&forces frequency_hz(i)) is
+   !! taken element by element.
    subroutine resolve_frequency_twins(scanned, scene, stat, errmsg)
       type(scanned_file), intent(in) :: scanned
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(namelist_variable), allocatable :: table(:)
-      character(len=:), allocatable :: group, twin, frequency, problem
+      character(len=:), allocatable :: group, twin, frequency, problem, item
       real(dp) :: value, given
       logical :: found
-      integer :: k
+      integer :: k, i
       stat = 0
       errmsg = ''
       allocate (table, source=scene_variables())
       do k = 1, size(table)
-         if (.not. is_twin(table(k)%name) .or. table(k)%extent > 0) cycle
+         if (.not. is_twin(table(k)%name)) cycle
          group = trim(table(k)%group)
          twin = trim(table(k)%name)
          frequency = frequency_name(twin)
-         if (.not. scanned%is_given(group, twin)) cycle
-         call real_input(scene, group, twin, 1, given, found)
-         if (scanned%is_given(group, frequency)) then
-            call real_input(scene, group, frequency, 1, value, found)
-            stat = stat_failure
-            errmsg = '&'//group//' '//frequency//' = '//real_text(value)//' rad/s and '//twin//' = '// &
-                     real_text(given)//' Hz are both given: give one of them ('//twin//' = '//frequency//'/(2 pi))'
-            return
-         end if
-         problem = real_range_problem(table(k), given)
-         if (len(problem) > 0) then
-            stat = stat_failure
-            errmsg = '&'//group//' '//twin//' = '//real_text(given)//' '//problem
-            return
-         end if
-         call set_real_input(scene, group, twin, 1, given, found)   ! and the frequency, 2 pi times it
+         do i = 1, max(table(k)%extent, 1)
+            if (table(k)%extent > 0) then
+               if (.not. scanned%is_given(group, twin, i)) cycle
+               item = '('//integer_text(i)//')'
+            else
+               if (.not. scanned%is_given(group, twin)) cycle
+               item = ''
+            end if
+            call real_input(scene, group, twin, i, given, found)
+            if (.not. found) cycle   ! an element beyond the count, which the count's check refused
+            if (given_too(frequency, i)) then
+               call real_input(scene, group, frequency, i, value, found)
+               stat = stat_failure
+               errmsg = '&'//group//' '//frequency//item//' = '//real_text(value)//' rad/s and '//twin//item// &
+                        ' = '//real_text(given)//' Hz are both given: give one of them ('//twin//' = '//frequency// &
+                        '/(2 pi))'
+               return
+            end if
+            problem = real_range_problem(table(k), given)
+            if (len(problem) > 0) then
+               stat = stat_failure
+               errmsg = '&'//group//' '//twin//item//' = '//real_text(given)//' '//problem
+               return
+            end if
+            call set_real_input(scene, group, twin, i, given, found)   ! and the frequency, 2 pi times it
+         end do
       end do
       call sync_frequency_twins(scene)
+   contains
+      !> The frequency of the twin is given too (element i of an array).
+      logical function given_too(name, i)
+         character(len=*), intent(in) :: name
+         integer, intent(in) :: i
+         if (table(k)%extent > 0) then
+            given_too = scanned%is_given(group, name, i)
+         else
+            given_too = scanned%is_given(group, name)
+         end if
+      end function given_too
    end subroutine resolve_frequency_twins
    !> The count of an array of settings (&obstacles, &supports, &masses) against what the
    !! file describes: in [0, most], and no element beyond it given (any of `names`).
@@ -281,6 +307,63 @@ contains
          end if
       end do
    end subroutine resolve_masses
+
+   !> &forces after reading: nothing may be described beyond `count` (any array variable
+   !! of &forces, as the table of variables declares them); the loads are cut to it; a
+   !! relative file name of a table is taken from the directory of the input file
+   !! `filename` (docs/input.md, "Tables"), so that a scene and its tables move together.
+   !! The defaults that follow other inputs are taken when the loads are built.
+   subroutine resolve_forces(scanned, count, filename, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
+      integer, intent(in) :: count
+      character(len=*), intent(in) :: filename
+      type(scene_type), intent(inout) :: scene
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(namelist_variable), allocatable :: table(:)
+      integer :: i, k
+      stat = stat_failure
+      if (count < 0 .or. count > max_forces) then
+         errmsg = '&forces count = '//integer_text(count)//' is outside [0, '//integer_text(max_forces)//']'
+         return
+      end if
+      allocate (table, source=scene_variables())
+      do i = count + 1, max_forces
+         do k = 1, size(table)
+            if (table(k)%group /= 'forces' .or. table(k)%extent == 0) cycle
+            if (scanned%is_given('forces', trim(table(k)%name), i)) then
+               errmsg = '&forces: load '//integer_text(i)//' is described ('//trim(table(k)%name)//'('// &
+                        integer_text(i)//')) but count = '//integer_text(count)//'; raise count or remove it'
+               return
+            end if
+         end do
+      end do
+      scene%forces%load = scene%forces%load(1:count)
+      stat = 0
+      errmsg = ''
+      do i = 1, count
+         call beside_input('table', scene%forces%load(i)%table, i)
+         call beside_input('psd_table', scene%forces%load(i)%psd_table, i)
+      end do
+   contains
+      !> A relative path taken from the input file's directory; an absolute one as it is.
+      subroutine beside_input(name, path, i)
+         character(len=*), intent(in) :: name
+         character(len=*), intent(inout) :: path
+         integer, intent(in) :: i
+         character(len=:), allocatable :: directory
+         if (stat /= 0 .or. len_trim(path) == 0 .or. path(1:1) == '/') return
+         directory = directory_of(filename)
+         if (directory == '.') return
+         if (len(directory) + 1 + len_trim(path) > len(path)) then
+            errmsg = '&forces '//name//'('//integer_text(i)//') = '''//trim(path)//''' taken from the directory '// &
+                     'of the input file is longer than '//integer_text(len(path))//' characters'
+            stat = stat_failure
+            return
+         end if
+         path = directory//'/'//trim(path)
+      end subroutine beside_input
+   end subroutine resolve_forces
 
    !> &output points: the leading elements given (points(1), points(2), ...), no gaps.
    subroutine resolve_points(scanned, scene, stat, errmsg)

@@ -101,7 +101,7 @@ contains
       integer :: c, m
       associate (dt => self%dt, theta => self%theta, u => self%u, u_old => self%u_previous)
          e = self%restitution
-         force = self%loads%at(self%t)
+         call self%loads%evaluate(self%t, force)
          call band_matvec(self%mass, 2*u - u_old, rhs)
          call band_matvec(self%stiffness, (1 - 2*theta)*u + theta*u_old, work_vector)
          rhs = rhs - dt**2*work_vector + dt**2*force

@@ -123,6 +123,10 @@ contains
             call self%loads%evaluate((self%steps + 1)*dt, force_new)   ! t_{n+1} from the global step number
             force_theta = theta*force_new + (1 - theta)*self%force
          end if                                                        ! (else both stay 0)
+         if (self%loads%flow%active) then   ! the fluid-elastic force at V^n (theory §10)
+            if (.not. self%loads%present) force_theta = 0
+            call self%loads%flow%add_force(self%v, force_theta)
+         end if
          rhs = self%u + theta*dt*self%v
          if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0 .or. self%modal) then
             call self%damping_into(self%v, damping_vector, work_vector)
@@ -229,7 +233,7 @@ contains
             ! theta > 1/2). The springs' impulses dt s_j f_j H_j^T do the work
             ! dt s_j f_j H_j V^{n+theta} = -f_j dp_j whole, booked by `compliant_energy`: they
             ! have no part in the theta-term (theory §8, "Energy").
-            if (self%loads%present) self%energy%work = self%energy%work + work
+            if (self%loads%present .or. self%loads%flow%active) self%energy%work = self%energy%work + work
             impulse_power = 0
             do k = 1, m
                self%report%velocity_after(k) = contact_value(self%contacts, self%report%active(k), v_next)

@@ -20,6 +20,16 @@ pseudo_random_bytes() {
 # a string of n characters 'a'
 letters() { head -c "$1" /dev/zero | tr '\0' 'a'; }
 
+# the scenes of the &forces cases: a table signal read from record.dat, a random signal
+# whose density is read from psd.dat (the case writes the file)
+table_scene() {
+  printf "&forces count = 1, signal(1) = 'table', table(1) = 'record.dat' /\n&output file = 'out/bad.h5' /\n" > "$name"
+}
+psd_table_scene() {
+  printf "&time t_end = 0.1, dt = 1e-3 /\n&forces count = 1, signal(1) = 'random', psd_table(1) = 'psd.dat' /\n" > "$name"
+  printf "&output file = 'out/bad.h5' /\n" >> "$name"
+}
+
 case "$case_name" in
   random_bytes) pseudo_random_bytes 2048 > "$name" ;;
   nul_byte) printf '&mesh elements = 4\0 /\n' > "$name" ;;
@@ -36,6 +46,21 @@ case "$case_name" in
   overlong_keyword) printf "&mesh basis = '%s' /\n" "hermite$(letters 100)" > "$name" ;;
   input_too_large) { echo '&mesh elements = 4 /'; for i in $(seq 1 40000); do echo '! padding padding padding padding padding'; done; } > "$name" ;;
   input_is_directory) mkdir "$name" ;;
+  forces_psd_table_negative)
+    psd_table_scene
+    printf '10 0\n50 -1\n100 0\n' > psd.dat ;;
+  forces_psd_table_above_nyquist)
+    psd_table_scene
+    printf '10 1\n800 1\n' > psd.dat ;;
+  forces_table_not_increasing)
+    table_scene
+    printf '# t (s), force (N)\n0.0 1.0\n0.5 2.0\n0.4 3.0\n' > record.dat ;;
+  forces_table_not_a_number)
+    table_scene
+    printf '0.0 1.0\n0.5 two\n' > record.dat ;;
+  forces_table_one_pair)
+    table_scene
+    printf '# only one pair\n0.0 1.0\n' > record.dat ;;
   output_is_link_to_input)
     printf "&mesh elements = 4 /\n&time t_end = 1e-3, dt = 1e-4 /\n&output file = 'link.h5' /\n" > "$name"
     ln -s "$name" link.h5 ;;

@@ -7,6 +7,10 @@
 #
 #   bash verification/bitwise/compare_builds.sh OLD/vibrobeam NEW/vibrobeam [SCENE.nml ...]
 #
+# A change that adds input variables lists their defaults in every result: name them in
+# VIBROBEAM_NEW_INPUTS (e.g. VIBROBEAM_NEW_INPUTS='forces.') to leave them out of the
+# comparison (compare_results.py).
+#
 # Scenes that need files the test harness writes first (from_file of an earlier run) run as
 # they are: both builds must then fail alike. Prints one line per scene and a summary;
 # exit 0 when every scene agrees, 1 otherwise. Needs python3 with h5py.
@@ -23,12 +27,14 @@ trap 'rm -rf "$work"' EXIT
 same=0 differ=0
 for scene in "${scenes[@]}"; do
   name=$(basename "$(dirname "$scene")")/$(basename "$scene" .nml)
+  scene_path=$(readlink -f "$scene")
   rm -rf "$work/old" "$work/new"
   mkdir -p "$work/old" "$work/new"
   for side in old new; do
-    cp "$scene" "$work/$side/scene.nml"
     binary=$old; [ $side = new ] && binary=$new
-    (cd "$work/$side" && timeout 300 "$binary" scene.nml > stdout.txt 2> stderr.txt; echo $? > status.txt)
+    # the scene where it lies (the files it names, a load's table, are beside it), its
+    # results in the work directory
+    (cd "$work/$side" && timeout 300 "$binary" "$scene_path" > stdout.txt 2> stderr.txt; echo $? > status.txt)
   done
   problems=()
   [ "$(cat "$work/old/status.txt")" = "$(cat "$work/new/status.txt")" ] ||

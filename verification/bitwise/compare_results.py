@@ -8,7 +8,14 @@ result is left out: /run run_id, wall_seconds and peak_memory_kb, the root attri
 usage: compare_results.py A.h5 B.h5     exit 0 identical, 1 different (each difference
                                         listed), 2 a file cannot be read
 Needs h5py (Debian python3-h5py).
+
+A change that adds input variables adds their defaults to what a result lists about its
+input (the root attributes 'group.variable' and the lines of /run resolved_input). With
+VIBROBEAM_NEW_INPUTS set to names or prefixes separated by blanks ('forces.' for a new
+group), those attributes and lines are left out on both sides, so that everything else
+can still be compared bit for bit.
 """
+import os
 import sys
 
 import h5py
@@ -16,6 +23,20 @@ import numpy
 
 VOLATILE = {("/run", "run_id"), ("/run", "wall_seconds"), ("/run", "peak_memory_kb"), ("/", "program")}
 VOLATILE_DATASETS = {"/sweep/wall_seconds"}
+NEW_INPUTS = tuple(os.environ.get("VIBROBEAM_NEW_INPUTS", "").split())
+
+
+def new_input(name):
+    """An input variable the change adds (VIBROBEAM_NEW_INPUTS)."""
+    return bool(NEW_INPUTS) and name.startswith(NEW_INPUTS)
+
+
+def without_new_inputs(value):
+    """resolved_input without the lines of the new input variables."""
+    if not NEW_INPUTS:
+        return value
+    text = value.decode() if isinstance(value, bytes) else str(value)
+    return "\n".join(line for line in text.split("\n") if not new_input(line.strip()))
 
 
 def items(handle):
@@ -49,10 +70,13 @@ def compare(path_a, path_b):
             if isinstance(a, h5py.Dataset) and path not in VOLATILE_DATASETS and not same_bytes(a[()], b[()]):
                 differences.append(f"{path}: the values differ (A {a.dtype}{a.shape}, B {b.dtype}{b.shape})")
             for name in sorted(set(a.attrs) | set(b.attrs)):
-                if (path, name) in VOLATILE:
+                if (path, name) in VOLATILE or new_input(name):
                     continue
                 if name not in a.attrs or name not in b.attrs:
                     differences.append(f"{path} attribute {name}: only in {'A' if name in a.attrs else 'B'}")
+                elif name == "resolved_input" and NEW_INPUTS:
+                    if without_new_inputs(a.attrs[name]) != without_new_inputs(b.attrs[name]):
+                        differences.append(f"{path} attribute {name}: differs beyond the new inputs")
                 elif not same_bytes(a.attrs[name], b.attrs[name]):
                     differences.append(f"{path} attribute {name}: {a.attrs[name]!r} in A, {b.attrs[name]!r} in B")
     return differences

@@ -307,7 +307,9 @@ contains
       associate (theta => s%theta, dt => s%dt, h => s%contacts)
          v_theta = theta*s%v + (1 - theta)*v_old
          a_theta = theta*abs(s%v) + (1 - theta)*abs(v_old)
-         force = theta*s%loads%at(s%t) + (1 - theta)*s%loads%at(s%t - dt)
+         ! F^{n+theta} as the step used it (the loads, and a fluid-elastic force at V^n): the
+         ! loads' `at` would recompute a random signal's block at every call
+         force = s%force_theta
          ! V_free as the stepper computed it (for its size only)
          call band_matvec(s%stiffness, u_old + theta*dt*v_old, ku)
          rhs = force - ku

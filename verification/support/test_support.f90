@@ -4,7 +4,7 @@
 !! ratio |value - reference| / allowed difference over the `check_close` calls (how much
 !! room each tolerance leaves; the CI prints it for every library it runs on).
 module vibrobeam_test_support
-   use vibrobeam_kinds, only: dp, error_unit, output_unit
+   use vibrobeam_kinds, only: dp, int64, error_unit, output_unit
    use vibrobeam_scene, only: scene_type, validate_scene
    use vibrobeam_scene_read, only: read_scene
    use vibrobeam_problem, only: run_problem, build_problem
@@ -18,7 +18,7 @@ module vibrobeam_test_support
    private
    public :: test_counter, read_test_scene, prepare_test_scene, use_program_blas_threads, fitted_order, band_abs_times
    public :: band_condition, abs_factor_times
-   public :: dense_lcp_reference
+   public :: dense_lcp_reference, same_bits
 
    type, public :: test_counter
       integer :: passed = 0
@@ -282,4 +282,10 @@ contains
       p_ref = s*z
       x_ref = columns(:, m + 1) + matmul(columns(:, 1:m), p_ref)
    end subroutine dense_lcp_reference
+
+   !> a and b are the same double, bit for bit (a NaN equals itself; +0 and -0 differ).
+   elemental logical function same_bits(a, b)
+      real(dp), intent(in) :: a, b
+      same_bits = transfer(a, 0_int64) == transfer(b, 0_int64)
+   end function same_bits
 end module vibrobeam_test_support

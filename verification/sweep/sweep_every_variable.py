@@ -43,7 +43,9 @@ except ImportError:
 
 # The first scene: a steel cantilever of 4 elements (h = 0.125 m), a rigid stop below and a
 # compliant one above, both along [0.3, 0.45] m (ends between nodes: 0.95 x either end
-# covers the same node 0.375 m), harmonic loads of every kind with a frequency.
+# covers the same node 0.375 m), harmonic loads of every kind with a frequency, and two
+# loads of &forces: a random distributed one with a spatial coherence (its band far enough
+# from 0 Hz for a short filter) and a harmonic point force; a cross-flow over part of it.
 SCENE_A = """
 &beam      length = 0.5, youngs_modulus = 210e9, density = 7850, area = 2e-4,
            inertia = 1.6666666666666667e-9, rayleigh_mass = 3.0, rayleigh_stiffness = 1e-6 /
@@ -58,6 +60,11 @@ SCENE_A = """
            velocity = 'mode', velocity_mode = 1, velocity_amplitude = 1e-3 /
 &load      point_force = 20.0, point_frequency = 300, base_acceleration = 2.0, base_frequency = 200,
            distributed = 1.0, distributed_frequency = 100, distributed_phase = 0.5 /
+&forces    count = 2,
+           kind(1) = 'distributed', x_from(1) = 0.1, x_to(1) = 0.45, signal(1) = 'random', psd_level(1) = 0.5,
+           band_from(1) = 50.0, band_to(1) = 5000.0, correlation_length(1) = 0.05,
+           position(2) = 0.4, amplitude(2) = 3.0, frequency(2) = 250.0, phase(2) = 0.3 /
+&flow      velocity = 0.2, density = 1000, diameter = 0.02, x_to = 0.45, connors_constant = 3.0 /
 &output    file = 'scene.h5', points = 0.25, 0.4, text = .false., episode_gap = 1e-3 @OUTPUT@ /
 """
 # The second scene: the beam given by k2 (rho S = 1), a reduced model, both stops compliant.
@@ -101,6 +108,8 @@ EXPECTED = {
     'obstacles.damping(1)': [('A', 'contact damping needs a compliant stop'), ('B', None)],
     'mesh.reduction_frequency': [('B', None)],
     'mesh.reduction_frequency_hz': [('B', None)],
+    # swept over whole numbers it is an ensemble (verification.random_point_force)
+    'forces.realisation': [('A', 'is not a whole number')],
 }
 SWEEP = ("&sweep parameter = '{name}', values = {v1!r}, {v2!r}, mode = 'independent', "
          "settle = 1e-4, measure = 1e-4, keep_runs = .true. /\n")

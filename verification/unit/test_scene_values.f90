@@ -4,9 +4,9 @@
 !! 1. The table of every variable is built from the settings' declarations; each row and
 !!    the variable handed over with it agree in kind and rank (`schema_table%mismatch`).
 !! 2. For every real variable of the table outside &sweep, and for elements 1 and 2 of an
-!!    array (a scene with two obstacles and two observation points), `set_real_input`
-!!    sets a value no variable holds (two supports and two masses too), `real_input`
-!!    reads it back, and the listing of the
+!!    array (a scene with two obstacles, two loads of &forces and two observation points),
+!!    `set_real_input` sets a value no variable holds (two supports and two masses too),
+!!    `real_input` reads it back, and the listing of the
 !!    resolved scene (`scene_entries`, a different walk of the declarations than the
 !!    accessor's) shows it under that variable's name and nowhere else: every other entry
 !!    is unchanged, but for the beam's derived k2, mass per length and bending stiffness,
@@ -51,6 +51,7 @@ program test_scene_values
    ! two intermediate supports and two point masses
    scene%supports = [support_settings(x=0.3_dp), support_settings(x=0.6_dp, kind='spring', stiffness=1e3_dp)]
    scene%masses = [mass_settings(x=1.0_dp, mass=0.2_dp), mass_settings(x=0.5_dp, mass=0.1_dp, rotary_inertia=1e-4_dp)]
+   allocate (scene%forces%load(2))   ! two loads of &forces (their defaults)
    physical_scene = scene
    physical_scene%beam%youngs_modulus = 2.1e11_dp
    physical_scene%beam%density = 7850
@@ -76,6 +77,8 @@ program test_scene_values
    call t%check_true('an integer input is not a real input', .not. found)
    call real_input(scene, 'obstacles', 'stiffness', 3, value, found)
    call t%check_true('obstacle 3 of a scene with 2 is not found', .not. found)
+   call real_input(scene, 'forces', 'amplitude', 3, value, found)
+   call t%check_true('load 3 of a scene with 2 is not found', .not. found)
    call real_input(scene, 'output', 'points', 3, value, found)
    call t%check_true('point 3 of a scene with 2 is not found', .not. found)
    call real_input(scene, 'beam', 'no_such_variable', 1, value, found)

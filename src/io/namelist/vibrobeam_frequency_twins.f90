@@ -43,11 +43,12 @@ module vibrobeam_frequency_twins
    end type pair_accessor
 
    !> Makes every twin agree with its frequency, in two walks of the same declarations:
-   !! the first (`collecting`) notes each frequency, the second sets each twin that does
-   !! not agree with its frequency (`agrees`) to frequency/(2 pi), or unset with it.
+   !! the first (`collecting`) notes each frequency (each element of an array's), the
+   !! second sets each twin that does not agree with its frequency (`agrees`) to
+   !! frequency/(2 pi), or unset with it.
    type, extends(schema_visitor) :: twin_sync
       logical :: collecting = .true.
-      character(len=49), allocatable :: names(:)           !! 'group.name' of each frequency
+      character(len=49), allocatable :: names(:)           !! 'group.name' or 'group.name(i)' of each frequency
       real(dp), allocatable :: values(:)                   !! its value (rad/s)
    contains
       procedure :: visit => visit_sync
@@ -137,7 +138,8 @@ contains
       logical, intent(inout), optional :: logical_value
       call self%named%visit(row, real_value, real_values, integer_value, text_value, text_values, logical_value)
       if (.not. self%named%set) return
-      ! (a twin and its frequency are real scalars: only such a row can be the partner)
+      ! (a twin and its frequency are real scalars, or elements of an array of settings visited
+      ! one by one: only such a row can be the partner)
       if (row%kind == kind_real .and. present(real_value) .and. &
           (row%unit == angular_unit .or. row%unit == twin_unit)) &
          call self%partner%visit(row, real_value=real_value)
@@ -157,16 +159,29 @@ contains
           present(integer_value) .or. present(text_value) .or. present(text_values) .or. present(logical_value)) return
       if (self%collecting) then
          if (row%unit /= angular_unit) return
-         self%names = [character(len=49) :: self%names, trim(row%group)//'.'//trim(row%name)]
+         self%names = [character(len=49) :: self%names, key(row, trim(row%name))]
          self%values = [self%values, real_value]
       else if (row%unit == twin_unit .and. is_twin(row%name)) then
          do k = 1, size(self%names)
-            if (self%names(k) /= trim(row%group)//'.'//frequency_name(row%name)) cycle
+            if (self%names(k) /= key(row, frequency_name(row%name))) cycle
             if (.not. agrees(real_value, self%values(k))) then
                real_value = unset
                if (.not. is_unset(self%values(k))) real_value = self%values(k)/two_pi
             end if
          end do
       end if
+   contains
+      !> 'group.name', or 'group.name(i)' for element i of an array of settings (&forces).
+      function key(row, name) result(text)
+         type(namelist_variable), intent(in) :: row
+         character(len=*), intent(in) :: name
+         character(len=:), allocatable :: text
+         character(len=12) :: number
+         text = trim(row%group)//'.'//name
+         if (row%element > 0) then
+            write (number, '(i0)') row%element
+            text = text//'('//trim(number)//')'
+         end if
+      end function key
    end subroutine visit_sync
 end module vibrobeam_frequency_twins

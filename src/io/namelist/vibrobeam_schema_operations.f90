@@ -71,9 +71,12 @@ module vibrobeam_schema_operations
       character(len=16) :: unit = ''              !! SI unit, '' when dimensionless
    end type schema_entry
 
-   !> Lists every value visited (an optional variable left unset is not listed).
+   !> Lists every value visited (an optional variable left unset is not listed):
+   !! entries(1:count); the array grows by doubling (a scene with 64 loads of &forces lists
+   !! about 850 entries of 4 kB: appending one at a time copied a gigabyte).
    type, extends(schema_visitor) :: schema_lister
       type(schema_entry), allocatable :: entries(:)
+      integer :: count = 0
    contains
       procedure :: visit => list_variable
       procedure :: add_real, add_integer, add_string, add_logical
@@ -345,8 +348,15 @@ contains
    subroutine append(self, item)
       class(schema_lister), intent(inout) :: self
       type(schema_entry), intent(in) :: item
-      if (.not. allocated(self%entries)) allocate (self%entries(0))
-      self%entries = [self%entries, item]
+      type(schema_entry), allocatable :: grown(:)
+      if (.not. allocated(self%entries)) allocate (self%entries(16))
+      if (self%count == size(self%entries)) then
+         allocate (grown(2*self%count))
+         grown(1:self%count) = self%entries
+         call move_alloc(grown, self%entries)
+      end if
+      self%count = self%count + 1
+      self%entries(self%count) = item
    end subroutine append
 
    subroutine access_variable(self, row, real_value, real_values, integer_value, text_value, text_values, &

@@ -137,15 +137,19 @@ contains
    end function real_row
 
    !> An integer variable with hard range [lowest, highest]; `optional`: `unset_integer`
-   !! stands for a default computed from other inputs.
-   pure function integer_row(group, name, lowest, highest, meaning, optional) result(row)
+   !! stands for a default computed from other inputs; `extent` and `element` as for
+   !! `real_row` (an integer of an array of settings, handed over one element at a time).
+   pure function integer_row(group, name, lowest, highest, meaning, optional, extent, element) result(row)
       character(len=*), intent(in) :: group, name, meaning
       integer, intent(in) :: lowest, highest
       logical, intent(in), optional :: optional
+      integer, intent(in), optional :: extent, element
       type(namelist_variable) :: row
       row = namelist_variable(group=group, name=name, kind=kind_integer, lowest_integer=lowest, &
                               highest_integer=highest, meaning=meaning)
       if (present(optional)) row%optional = optional
+      if (present(extent)) row%extent = extent
+      if (present(element)) row%element = element
    end function integer_row
 
    !> A keyword: one of `choices` ('a|b|c'), at most `max_length` characters, read in lower
@@ -164,12 +168,16 @@ contains
       if (present(optional)) row%optional = optional
    end function keyword_row
 
-   !> Free text (a file name, a parameter name) of at most `max_length` characters, read as written.
-   pure function text_row(group, name, max_length, meaning) result(row)
+   !> Free text (a file name, a parameter name) of at most `max_length` characters, read as
+   !! written; `extent` and `element` as for `real_row`.
+   pure function text_row(group, name, max_length, meaning, extent, element) result(row)
       character(len=*), intent(in) :: group, name, meaning
       integer, intent(in) :: max_length
+      integer, intent(in), optional :: extent, element
       type(namelist_variable) :: row
       row = namelist_variable(group=group, name=name, kind=kind_string, max_length=max_length, meaning=meaning)
+      if (present(extent)) row%extent = extent
+      if (present(element)) row%element = element
    end function text_row
 
    !> A logical (.true. or .false.); `optional`: .false. stands for "not asked for" and is
