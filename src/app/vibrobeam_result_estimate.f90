@@ -125,10 +125,13 @@ contains
       select case (scene%analysis%kind)
       case ('modes')
          ! /mesh/x, /modes/frequency and frequency_hz, /modes/shape; STEM_modes.dat (mode,
-         ! omega, f) and STEM_shapes.dat (x, then each shape)
-         associate (modes => real(scene%analysis%modes, dp))
-            estimate%hdf5_bytes = small_metadata_bytes + 8*(nodes + 2*modes + modes*nodes)
-            if (scene%output%text) estimate%text_bytes = modes*(6 + 2*wide + 1) + nodes*((1 + modes)*wide + 1)
+         ! omega, f) and STEM_shapes.dat (x, then each shape); with contact_modes the same
+         ! again under /contact_modes and in STEM_contact_modes.dat, STEM_contact_shapes.dat
+         ! (with their group's object headers, about a third of the small metadata)
+         associate (modes => real(scene%analysis%modes, dp), sets => merge(2, 1, scene%analysis%contact_modes))
+            estimate%hdf5_bytes = small_metadata_bytes + 8*nodes + sets*8*(2*modes + modes*nodes) + &
+                                  (sets - 1)*small_metadata_bytes/3
+            if (scene%output%text) estimate%text_bytes = sets*(modes*(6 + 2*wide + 1) + nodes*((1 + modes)*wide + 1))
          end associate
          estimate%total_bytes = estimate%hdf5_bytes + estimate%text_bytes
          return

@@ -23,10 +23,11 @@
 program check_bundled_damping
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: real_text
-   use vibrobeam_scene, only: scene_type, validate_scene
+   use vibrobeam_scene, only: scene_type, validate_scene, structure_of
    use vibrobeam_scene_read, only: read_scene
    use vibrobeam_sweep_settings, only: sweep_settings
    use vibrobeam_model, only: beam_model, build_model
+   use vibrobeam_scene_structure, only: scene_frequencies
    use vibrobeam_modes, only: compute_modes
    use vibrobeam_test_support, only: test_counter
    implicit none
@@ -52,8 +53,11 @@ contains
       character(len=:), allocatable :: warnings
       character(len=512) :: errmsg
       real(dp), allocatable :: omega(:), shapes(:, :), vectors(:, :)
-      real(dp) :: intended, a, b, k2
+      real(dp) :: intended, a, b
       logical :: stated
+      real(dp) :: reference(5)
+      integer :: first
+      logical :: closed_form
       integer :: stat, n
       warnings = ''
       call read_scene(path, scene, stat, errmsg, warnings, sweep)   ! a sweep's scene is its base scene
@@ -72,15 +76,15 @@ contains
       if (.not. stated) return
       write (*, '(a)') path//': a = '//real_text(a)//' 1/s, b = '//real_text(b)//' s, intended '// &
          real_text(100*intended)//' % in modes 1 and 2'
-      if (scene%beam%boundary%has_closed_form()) then
-         k2 = scene%beam%ei()/scene%beam%rho_s()
-         do n = 1, 2
-            call check_mode(path, 'closed-form', n, scene%beam%boundary%natural_frequency(n, scene%beam%length, k2), &
-                            a, b, intended)
-         end do
-      end if
+      ! the structure's reference frequencies: the continuum closed form of its end pair, or
+      ! a model of 64 Hermite elements (supports, springs, masses)
+      call scene_frequencies(scene, reference, first, closed_form)
+      do n = 1, 2
+         call check_mode(path, trim(merge('closed-form', 'reference  ', closed_form)), n, reference(first - 1 + n), &
+                         a, b, intended)
+      end do
       call build_model(scene%mesh%basis, scene%mesh%elements, scene%beam%length, scene%beam%rho_s(), scene%beam%ei(), &
-                       model, stat, errmsg, boundary=scene%beam%boundary)
+                       model, stat, errmsg, structure=structure_of(scene))
       if (stat == 0) call compute_modes(model, 2, omega, shapes, vectors, stat, errmsg)
       call t%check_true(path//': modes 1 and 2 of its mesh', stat == 0, errmsg)
       if (stat /= 0) return
