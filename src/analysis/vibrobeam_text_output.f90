@@ -24,9 +24,9 @@ module vibrobeam_text_output
    integer, parameter :: path_length = 1024
 
    !> Every suffix a result's .dat files can have.
-   character(len=*), parameter :: text_suffixes(16) = [character(len=16) :: 'modes', 'shapes', 'static', &
+   character(len=*), parameter :: text_suffixes(18) = [character(len=16) :: 'modes', 'shapes', 'static', &
       'reactions', 'tip', 'energy', 'impacts', 'episodes', 'points', 'field', 'spectrum', 'obstacles', 'contact', &
-      'force', 'sweep', 'poincare']
+      'force', 'sweep', 'poincare', 'orbit', 'multipliers']
 
    !> Most values read from the HDF5 file at once (8 MiB).
    integer, parameter :: block_values = 2**20
@@ -103,6 +103,10 @@ contains
          end if
          if (file%exists('/static/displacement')) then
             call static_files()
+            if (stat /= 0 .or. interrupted) exit derive
+         end if
+         if (file%exists('/periodic/orbit/time')) then
+            call periodic_files()
             if (stat /= 0 .or. interrupted) exit derive
          end if
          if (file%exists('/time')) call dynamics_files()
@@ -243,6 +247,31 @@ contains
          end do
          call close_sink(sink)
       end subroutine modes_files
+
+      !> A periodic orbit: its tip over one period, and its Floquet multipliers.
+      subroutine periodic_files()
+         type(text_sink) :: sink
+         real(dp), allocatable :: time(:), u(:), v(:), multipliers(:)
+         integer :: i
+         call file%read_reals('/periodic/orbit/time', time, stat, errmsg)
+         if (stat == 0) call file%read_reals('/periodic/orbit/tip_displacement', u, stat, errmsg)
+         if (stat == 0) call file%read_reals('/periodic/orbit/tip_velocity', v, stat, errmsg)
+         if (stat /= 0) return
+         call open_sink(sink, 'orbit', 't (s)  tip u (m)  tip v (m/s): one period of the orbit')
+         do i = 1, size(time)
+            call put_row(sink, 'wide', [time(i), u(i), v(i)])
+         end do
+         call close_sink(sink)
+         if (stat /= 0 .or. .not. file%exists('/periodic/floquet_multipliers')) return
+         call file%read_reals('/periodic/floquet_multipliers', multipliers, stat, errmsg)
+         if (stat /= 0) return
+         call open_sink(sink, 'multipliers', 'real  imaginary  modulus: the Floquet multipliers, largest modulus first')
+         do i = 1, size(multipliers)/2
+            call put_row(sink, 'wide', [multipliers(2*i - 1), multipliers(2*i), hypot(multipliers(2*i - 1), &
+                                                                                  multipliers(2*i))])
+         end do
+         call close_sink(sink)
+      end subroutine periodic_files
 
       subroutine static_files()
          type(text_sink) :: sink

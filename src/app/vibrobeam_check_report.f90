@@ -22,9 +22,9 @@
 !! in GPa or MPa, a density in g/cm^3, a section in mm^2 or cm^2, an inertia in mm^4 or
 !! cm^4 beside an area in m^2).
 module vibrobeam_check_report
-   use vibrobeam_kinds, only: dp, pi
+   use vibrobeam_kinds, only: dp, pi, int64
    use vibrobeam_text, only: real_text, integer_text
-   use vibrobeam_scene, only: scene_type, is_unset
+   use vibrobeam_scene, only: scene_type, is_unset, steps_in_time, forcing_period_steps
    use vibrobeam_model, only: beam_model
    use vibrobeam_highest_frequency, only: highest_frequency
    use vibrobeam_output_target, only: result_size, estimate_result_size
@@ -83,7 +83,7 @@ contains
       report%unknowns = model%unknowns
       call highest_frequency(model, report%omega_max, stat, errmsg)
       if (stat /= 0) return
-      report%stepped = scene%analysis%kind == 'dynamics'
+      report%stepped = steps_in_time(scene)
       if (.not. report%stepped) return
       report%omega1_dt = report%omega(1)*scene%time%dt
       report%omega_max_dt = report%omega_max*scene%time%dt
@@ -91,7 +91,7 @@ contains
       report%resolved_modes = resolved_modes(scene)
       call velocity_scale(scene, report%velocity, report%velocity_source)
       report%penetration = scene%time%dt*report%velocity
-      report%size = estimate_result_size(scene)
+      if (scene%analysis%kind == 'dynamics') report%size = estimate_result_size(scene)
    end subroutine make_check_report
 
    !> The report as lines of text (the program prints them). With `advice` (default true),
@@ -135,6 +135,10 @@ contains
                                                                    g(steps_per_contact_wanted)//')'
          text = text//new_line('a')
       end do
+      if (scene%analysis%kind == 'periodic') then
+         text = text//periodic_text(scene)
+         return
+      end if
       text = text//'estimated result size: '//g(report%size%total_bytes)//' bytes (HDF5 '// &
              g(report%size%hdf5_bytes)//', text '//g(report%size%text_bytes)//'): '//g(report%size%outputs)// &
              ' output times of '//g(report%size%values_per_output)//' values and '//g(report%size%snapshots)// &
@@ -143,6 +147,21 @@ contains
       if (present(advice)) with_advice = advice
       if (with_advice .and. scene%output%measure_from < scene%time%t_end) text = text//resolution_advice_text(scene, 'this run')
    end function check_report_text
+
+   !> What a periodic analysis steps (docs/method.md, "Periodic orbits by shooting"): the
+   !! forcing period, its steps, the orbit's steps and how its monodromy is taken.
+   function periodic_text(scene) result(text)
+      type(scene_type), intent(in) :: scene
+      character(len=:), allocatable :: text
+      integer(int64) :: steps
+      steps = forcing_period_steps(scene)
+      text = 'periodic orbit: forcing period T = '//g(steps*scene%time%dt)//' s = '//g(real(steps, dp))// &
+             ' steps of dt = '//g(scene%time%dt)//' s; the orbit spans '// &
+             integer_text(scene%periodic%period_multiple)//' period(s), '// &
+             g(real(steps*scene%periodic%period_multiple, dp))//' steps, stepped once per Newton iteration with '// &
+             'its monodromy ('''//trim(scene%periodic%monodromy)//'''), after a transient of '// &
+             integer_text(scene%periodic%transient_periods)//' period(s)'//new_line('a')
+   end function periodic_text
 
    !> Contact time scale of compliant obstacle i of the scene (s; module comment), with the
    !! beam's stiffness k_b at it (N/m) and the effective mass m_eff (kg; per unit rho S when
@@ -177,7 +196,7 @@ contains
       real(dp) :: omega1, steps, ratio, time_scale, beam_stiffness, mass
       integer :: i
       text = ''
-      if (scene%analysis%kind == 'dynamics') then
+      if (steps_in_time(scene)) then
          omega1 = scene%beam%boundary%natural_frequency(1, scene%beam%length, k2_of(scene))
          steps = 2*pi/(omega1*scene%time%dt)
          if (steps < steps_per_period_wanted) &

@@ -10,7 +10,7 @@
 module vibrobeam_ignored_values
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: integer_text, real_text
-   use vibrobeam_scene, only: scene_type, scene_variables
+   use vibrobeam_scene, only: scene_type, scene_variables, steps_in_time
    use vibrobeam_namelist_scanned, only: scanned_file
    use vibrobeam_namelist_schema, only: namelist_variable, variable_index
    implicit none
@@ -60,10 +60,24 @@ contains
          end do
       end select
 
-      ! &beam damping and &output histories: dynamics only
-      if (scene%analysis%kind /= 'dynamics') then
+      ! &periodic: kind = 'periodic' only; &time t_end, and dt when steps_per_period sets it
+      if (scene%analysis%kind /= 'periodic' .and. scanned%group_given('periodic')) &
+         call add('&periodic is ignored: '//kind_reason//' (it belongs to kind = ''periodic'')')
+      if (scene%analysis%kind == 'periodic') then
+         call given_real('time', 't_end', scene%time%t_end, kind_reason//' steps one orbit at a time (&periodic)')
+         ! (the value given is gone: the reader has set dt from steps_per_period)
+         if (scene%periodic%steps_per_period > 0 .and. scanned%is_given('time', 'dt')) &
+            call add('&time dt is ignored: &periodic steps_per_period = '// &
+                     integer_text(scene%periodic%steps_per_period)//' sets dt = '//real_text(scene%time%dt)// &
+                     ' s, the forcing period over that many steps')
+      end if
+
+      ! &beam damping: the analyses that step in time; &output histories: dynamics only
+      if (.not. steps_in_time(scene)) then
          call given_real('beam', 'rayleigh_mass', scene%beam%rayleigh_mass, kind_reason//' has no damping')
          call given_real('beam', 'rayleigh_stiffness', scene%beam%rayleigh_stiffness, kind_reason//' has no damping')
+      end if
+      if (scene%analysis%kind /= 'dynamics') then
          ! what shapes a dynamics run's histories, statistics and checkpoints
          item = ' is ignored: '//kind_reason//' writes no histories (they belong to kind = ''dynamics'')'
          if (scanned%is_given('output', 'every')) call add('&output every = '//integer_text(scene%output%every)//item)
@@ -77,12 +91,12 @@ contains
             call add('&output poincare_load = '''//trim(scene%output%poincare_load)//''''//item)
       end if
 
-      ! &mesh: the reduction steps a dynamics run only
-      if (scene%mesh%reduction /= 'none' .and. scene%analysis%kind /= 'dynamics') then
+      ! &mesh: the reduction steps a dynamics run or a periodic analysis only
+      if (scene%mesh%reduction /= 'none' .and. .not. steps_in_time(scene)) then
          call add('&mesh reduction = '''//trim(scene%mesh%reduction)//''' is ignored: '//kind_reason// &
-                  ' solves the full model (the reduction is for kind = ''dynamics'')')
+                  ' solves the full model (the reduction is for kind = ''dynamics'' and ''periodic'')')
       end if
-      if (scene%mesh%reduction == 'none' .or. scene%analysis%kind /= 'dynamics') then
+      if (scene%mesh%reduction == 'none' .or. .not. steps_in_time(scene)) then
          if (scanned%is_given('mesh', 'reduction_modes')) &
             call add('&mesh reduction_modes = '//integer_text(scene%mesh%reduction_modes)//' is ignored: '// &
                      reduction_reason())
@@ -138,7 +152,7 @@ contains
                             't = 0, where the base excitation''s load (sin 0) is 0')
       end if
 
-      if (scene%analysis%kind /= 'dynamics') return
+      if (.not. steps_in_time(scene)) return
 
       ! &time and &impact: what the scheme or the obstacles do not use
       if (scene%time%scheme == 'position') call given_real('time', 'gamma', scene%time%gamma, &
@@ -203,7 +217,7 @@ contains
 
       function reduction_reason() result(text)
          character(len=:), allocatable :: text
-         if (scene%analysis%kind /= 'dynamics') then
+         if (.not. steps_in_time(scene)) then
             text = kind_reason//' solves the full model'
          else
             text = 'reduction = ''none'''

@@ -12,6 +12,7 @@
 !!    E, rho, S and I are set on a beam given by them, the others on a beam given by k2
 !!    (its k2 is listed, not derived).
 !! 3. A name that is not a real input, and an element beyond the scene's, are not found.
+!! The scenes are of kind 'periodic', whose visit includes every group.
 !! The values are compared exactly: they are copied, never computed.
 program test_scene_values
    use vibrobeam_kinds, only: dp, int64
@@ -33,6 +34,8 @@ program test_scene_values
    integer :: k, element, elements, covered
    character(len=:), allocatable :: name
 
+   ! scenes of kind 'periodic': their visit holds every group (&periodic only in that kind)
+   defaults%analysis%kind = 'periodic'
    call visit_scene(defaults, table)
    call visit_sweep(sweep, table)
    call t%check_true('every declaration''s row agrees with its variable', len(table%mismatch) == 0, table%mismatch)
@@ -43,6 +46,7 @@ program test_scene_values
                       obstacle_type(side='above', x_from=1.0_dp, x_to=1.0_dp, level_from=0.01_dp, &
                                     level_to=0.01_dp, stiffness=1e5_dp, damping=0.1_dp)]
    scene%output%points = [0.25_dp, 0.75_dp]
+   scene%analysis%kind = 'periodic'
    physical_scene = scene
    physical_scene%beam%youngs_modulus = 2.1e11_dp
    physical_scene%beam%density = 7850
