@@ -18,10 +18,16 @@ set grid
 set key top left
 # which branches the sweep has (an empty title leaves a series out of the key)
 points(test) = int(system("awk '!/^#/ && NF && ".test." {n++} END {print n + 0}' '".file."'"))
-t_up = points('$3 > 0') > 0 ? 'up' : ''
-t_down = points('$3 < 0') > 0 ? 'down' : ''
-t_alone = points('$3 == 0') > 0 ? 'independent' : ''
-# columns: 1 parameter, 3 direction, 6 tip displacement (m)
-plot file using 1:($3 > 0 ? $6*1e3 : NaN) with points pt 7 ps 0.35 lc rgb '#d62728' title t_up, \
-     '' using 1:($3 < 0 ? $6*1e3 : NaN) with points pt 7 ps 0.35 lc rgb '#1f77b4' title t_down, \
-     '' using 1:($3 == 0 ? $6*1e3 : NaN) with points pt 7 ps 0.35 lc rgb '#2ca02c' title t_alone
+# a column by its name: the header lines '# 13: impact_rate (1/s)' (docs/output.md, "Text files")
+col(name) = int(system("sed -n 's/^# \\([0-9]*\\): ".name." .*/\\1/p' '".file."'"))
+direction = col('direction')
+c_x = col('parameter')
+c_u = col('tip_displacement')
+t_up = points(sprintf('$%d > 0', direction)) > 0 ? 'up' : ''
+t_down = points(sprintf('$%d < 0', direction)) > 0 ? 'down' : ''
+t_alone = points(sprintf('$%d == 0', direction)) > 0 ? 'independent' : ''
+plot file using (column(c_x)):(column(direction) > 0 ? column(c_u)*1e3 : NaN) with points pt 7 ps 0.35 lc rgb '#d62728' title t_up, \
+     '' using (column(c_x)):(column(direction) < 0 ? column(c_u)*1e3 : NaN) with points pt 7 ps 0.35 lc rgb '#1f77b4' \
+        title t_down, \
+     '' using (column(c_x)):(column(direction) == 0 ? column(c_u)*1e3 : NaN) with points pt 7 ps 0.35 lc rgb '#2ca02c' \
+        title t_alone

@@ -16,10 +16,18 @@ set xlabel first
 set ylabel second
 set palette rgbformulae 33,13,10
 set offsets graph 0.04, graph 0.04, graph 0.06, graph 0.06
-# columns: 3 direction (the down branch of 'up-down' left out), 4, 5 parameters, 6 status
-keep(c) = (column(6) == 0 && column(3) >= 0) ? column(c) : NaN
+# a column by its name: the header lines '# 13: impact_rate (1/s)' (docs/output.md, "Text files")
+col(name) = int(system("sed -n 's/^# \\([0-9]*\\): ".name." .*/\\1/p' '".file."'"))
+direction = col('direction')
+c_x = col('parameter')
+c_y = col('parameter2')
+status = col('status')
+impacts = col('impact_rate')
+dissipated = col('power_dissipated')
+# the points that succeeded (the down branch of 'up-down' left out)
+keep(c) = (column(status) == 0 && column(direction) >= 0) ? column(c) : NaN
 set title 'impacts per second (1/s)'
-plot file using 4:5:(keep(13)) with points pt 5 ps 4 palette notitle
+plot file using (column(c_x)):(column(c_y)):(keep(impacts)) with points pt 5 ps 4 palette notitle
 set title 'power dissipated, in all (W)'
-plot file using 4:5:(keep(29)) with points pt 5 ps 4 palette notitle
+plot file using (column(c_x)):(column(c_y)):(keep(dissipated)) with points pt 5 ps 4 palette notitle
 unset multiplot

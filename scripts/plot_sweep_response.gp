@@ -15,36 +15,51 @@ set multiplot layout 2,2 title 'Sweep: '.stem
 set grid
 set xlabel label
 set key top left
-# columns: 3 direction, 4 parameter, 6 status; value, error pairs from 9 (docs/output.md)
-series(value, wanted) = (column(6) == 0 && column(3) == wanted) ? column(value) : NaN
+# a column by its name: the header lines '# 13: impact_rate (1/s)' (docs/output.md, "Text files")
+col(name) = int(system("sed -n 's/^# \\([0-9]*\\): ".name." .*/\\1/p' '".file."'"))
+direction = col('direction')
+c_x = col('parameter')
+status = col('status')
+rms = col('tip_displacement_rms')
+impacts = col('impact_rate')
+episodes = col('episode_rate')
+impulse = col('episode_impulse_mean')
+dissipated = col('power_dissipated')
+# a value where the point succeeded and runs in the direction wanted (its error: the column after)
+series(value, wanted) = (column(status) == 0 && column(direction) == wanted) ? column(value) : NaN
 up = '#d62728'
 down = '#1f77b4'
 alone = '#2ca02c'
 # which branches the sweep has (an empty title leaves a series out of the key)
 points(test) = int(system("awk '!/^#/ && NF && ".test." {n++} END {print n + 0}' '".file."'"))
-n_up = points('$3 > 0')
-n_down = points('$3 < 0')
-n_alone = points('$3 == 0')
+n_up = points(sprintf('$%d > 0', direction))
+n_down = points(sprintf('$%d < 0', direction))
+n_alone = points(sprintf('$%d == 0', direction))
 t_up(s) = n_up > 0 ? s : ''
 t_down(s) = n_down > 0 ? s : ''
 t_alone(s) = n_alone > 0 ? s : ''
 set ylabel 'RMS tip displacement (mm)'
-plot file using 4:(series(9, 1)*1e3):($10*1e3) with yerrorlines lc rgb up pt 7 title t_up('up'), \
-     '' using 4:(series(9, -1)*1e3):($10*1e3) with yerrorlines lc rgb down pt 5 title t_down('down'), \
-     '' using 4:(series(9, 0)*1e3):($10*1e3) with yerrorlines lc rgb alone pt 9 title t_alone('independent')
+plot file using (column(c_x)):(series(rms, 1)*1e3):(column(rms + 1)*1e3) with yerrorlines lc rgb up pt 7 title t_up('up'), \
+     '' using (column(c_x)):(series(rms, -1)*1e3):(column(rms + 1)*1e3) with yerrorlines lc rgb down pt 5 title t_down('down'), \
+     '' using (column(c_x)):(series(rms, 0)*1e3):(column(rms + 1)*1e3) with yerrorlines lc rgb alone pt 9 \
+        title t_alone('independent')
 set ylabel 'impacts and episodes per second (1/s)'
-plot file using 4:(series(13, 1)):14 with yerrorlines lc rgb up pt 7 title t_up('impacts, up'), \
-     '' using 4:(series(13, -1)):14 with yerrorlines lc rgb down pt 5 title t_down('impacts, down'), \
-     '' using 4:(series(13, 0)):14 with yerrorlines lc rgb alone pt 9 title t_alone('impacts, independent'), \
-     '' using 4:(series(15, 1)):16 with yerrorlines lc rgb up dt 2 pt 6 title t_up('episodes, up'), \
-     '' using 4:(series(15, -1)):16 with yerrorlines lc rgb down dt 2 pt 4 title t_down('episodes, down'), \
-     '' using 4:(series(15, 0)):16 with yerrorlines lc rgb alone dt 2 pt 8 title t_alone('episodes, independent')
+plot file using (column(c_x)):(series(impacts, 1)):(column(impacts + 1)) with yerrorlines lc rgb up pt 7 title t_up('impacts, up'), \
+     '' using (column(c_x)):(series(impacts, -1)):(column(impacts + 1)) with yerrorlines lc rgb down pt 5 title t_down('impacts, down'), \
+     '' using (column(c_x)):(series(impacts, 0)):(column(impacts + 1)) with yerrorlines lc rgb alone pt 9 \
+        title t_alone('impacts, independent'), \
+     '' using (column(c_x)):(series(episodes, 1)):(column(episodes + 1)) with yerrorlines lc rgb up dt 2 pt 6 title t_up('episodes, up'), \
+     '' using (column(c_x)):(series(episodes, -1)):(column(episodes + 1)) with yerrorlines lc rgb down dt 2 pt 4 \
+        title t_down('episodes, down'), \
+     '' using (column(c_x)):(series(episodes, 0)):(column(episodes + 1)) with yerrorlines lc rgb alone dt 2 pt 8 \
+        title t_alone('episodes, independent')
 set ylabel 'mean impulse per contact episode (N s)'
-plot file using 4:(series(17, 1)):18 with yerrorlines lc rgb up pt 7 title t_up('up'), \
-     '' using 4:(series(17, -1)):18 with yerrorlines lc rgb down pt 5 title t_down('down'), \
-     '' using 4:(series(17, 0)):18 with yerrorlines lc rgb alone pt 9 title t_alone('independent')
+plot file using (column(c_x)):(series(impulse, 1)):(column(impulse + 1)) with yerrorlines lc rgb up pt 7 title t_up('up'), \
+     '' using (column(c_x)):(series(impulse, -1)):(column(impulse + 1)) with yerrorlines lc rgb down pt 5 title t_down('down'), \
+     '' using (column(c_x)):(series(impulse, 0)):(column(impulse + 1)) with yerrorlines lc rgb alone pt 9 title t_alone('independent')
 set ylabel 'power dissipated, in all (W)'
-plot file using 4:(series(29, 1)):30 with yerrorlines lc rgb up pt 7 title t_up('up'), \
-     '' using 4:(series(29, -1)):30 with yerrorlines lc rgb down pt 5 title t_down('down'), \
-     '' using 4:(series(29, 0)):30 with yerrorlines lc rgb alone pt 9 title t_alone('independent')
+plot file using (column(c_x)):(series(dissipated, 1)):(column(dissipated + 1)) with yerrorlines lc rgb up pt 7 title t_up('up'), \
+     '' using (column(c_x)):(series(dissipated, -1)):(column(dissipated + 1)) with yerrorlines lc rgb down pt 5 title t_down('down'), \
+     '' using (column(c_x)):(series(dissipated, 0)):(column(dissipated + 1)) with yerrorlines lc rgb alone pt 9 \
+        title t_alone('independent')
 unset multiplot

@@ -6,6 +6,7 @@
 !! obstacle levels, a stop's damping and outputs may change. Reading the checkpoint itself
 !! is `vibrobeam_checkpoint`'s.
 module vibrobeam_restart_check
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: integer_text, real_text
    use vibrobeam_scene, only: scene_type, scene_entry, scene_entries
@@ -21,6 +22,13 @@ module vibrobeam_restart_check
    character(len=*), parameter :: matching(12) = [character(len=32) :: 'mesh.basis', 'mesh.elements', &
       'mesh.reduction', 'beam.length', 'beam.mass_per_length', 'beam.bending_stiffness', 'beam.rayleigh_mass', &
       'beam.rayleigh_stiffness', 'time.scheme', 'time.dt', 'time.theta', 'time.gamma']
+   !> Why the model, the time scheme and the contact points must match (end of a message).
+   character(len=*), parameter :: model_why = '; the model (basis, elements, reduction, length, beam data), the '// &
+      'time scheme (scheme, dt, theta, gamma) and the contact points must match'
+   !> Why a compliant stop must match (end of a message).
+   character(len=*), parameter :: stops_why = '; a compliant stop''s force and stored energy are part of '// &
+      'the checkpoint: each obstacle keeps its kind (rigid or compliant), and a compliant one its side, '// &
+      'extent, levels, stiffness and exponent (its damping may change, rigid obstacles may move)'
 
 contains
 
@@ -42,14 +50,10 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       logical, intent(in), optional :: stops
-      character(len=*), parameter :: stops_why = '; a compliant stop''s force and stored energy are part of '// &
-         'the checkpoint: each obstacle keeps its kind (rigid or compliant), and a compliant one its side, '// &
-         'extent, levels, stiffness and exponent (its damping may change, rigid obstacles may move)'
       type(h5_reader) :: file
       type(scene_entry), allocatable :: list(:)
-      character(len=:), allocatable :: prefix, why
-      real(dp), allocatable :: x(:), file_lower(:), file_upper(:)
-      integer :: i, k
+      character(len=:), allocatable :: prefix
+      real(dp), allocatable :: file_lower(:), file_upper(:)
       same_bounds = .false.
       prefix = '&initial from_file = '''//trim(filename)//''': '
       call file%open(filename, stat, errmsg)
@@ -64,34 +68,12 @@ contains
             errmsg = prefix//trim(errmsg)
             exit compare
          end if
-         do k = 1, size(matching)
-            do i = size(list), 1, -1
-               if (list(i)%name == matching(k)) exit
-            end do
-            if (i == 0) cycle
-            why = '; the model (basis, elements, reduction, length, beam data), the time scheme (scheme, dt, '// &
-                  'theta, gamma) and the contact points must match'
-            if (matching(k) == 'mesh.reduction') why = ': a reduced run''s state holds reduced coordinates, '// &
-               'not the values of the mesh'
-            call compare_entry(file, list(i), prefix, why, stat, errmsg)
-            if (stat /= 0) exit compare
-         end do
-         call file%read_reals('/contact/x', x, stat, errmsg)
-         if (stat /= 0) then
-            errmsg = prefix//trim(errmsg)
-            exit compare
-         end if
-         if (size(x) /= size(contact_x)) then
-            call mismatch(prefix, 'contact points', integer_text(size(x)), integer_text(size(contact_x)), why, &
-                          stat, errmsg)
-         else if (.not. all(same_bits(x, contact_x))) then
-            k = findloc(same_bits(x, contact_x), .false., dim=1)
-            call mismatch(prefix, 'contact point '//integer_text(k)//' x', real_text(x(k)), real_text(contact_x(k)), &
-                          why, stat, errmsg)
-         end if
+         call compare_model(file, list, prefix, stat, errmsg)
+         if (stat /= 0) exit compare
+         call compare_contact_points(file, contact_x, prefix, stat, errmsg)
          if (stat /= 0) exit compare
          if (present(stops)) then
-            if (stops) call compare_stops()
+            if (stops) call compare_stops(file, scene, list, prefix, stat, errmsg)
             if (stat /= 0) exit compare
          end if
          call file%read_reals('/contact/lower', file_lower, stat, errmsg)
@@ -103,52 +85,107 @@ contains
          same_bounds = all(same_bits(file_lower, lower)) .and. all(same_bits(file_upper, upper))
       end block compare
       call file%close()
-   contains
-      !> The compliant stops of the file against the scene's (see above).
-      subroutine compare_stops()
-         character(len=*), parameter :: compared(7) = [character(len=10) :: 'side', 'x_from', 'x_to', &
-                                                        'level_from', 'level_to', 'stiffness', 'exponent']
-         character(len=:), allocatable :: item
-         integer(int64) :: file_count
-         real(dp) :: file_stiffness
-         logical :: file_compliant, scene_compliant
-         integer :: i, k, e
-         call file%attr_int64('/', 'obstacles.count', file_count, stat, errmsg)
-         if (stat /= 0) then
-            errmsg = prefix//trim(errmsg)
-            return
-         end if
-         do i = 1, max(int(file_count), size(scene%obstacles))
-            item = '('//integer_text(i)//')'
-            file_compliant = .false.
-            if (i <= file_count) then
-               call file%attr_real('/', 'obstacles.stiffness'//item, file_stiffness, stat, errmsg)
-               if (stat /= 0) then
-                  errmsg = prefix//trim(errmsg)
-                  return
-               end if
-               file_compliant = file_stiffness > 0
-            end if
-            scene_compliant = .false.
-            if (i <= size(scene%obstacles)) scene_compliant = scene%obstacles(i)%stiffness > 0
-            if (.not. (file_compliant .or. scene_compliant)) cycle
-            if (i > file_count .or. i > size(scene%obstacles)) then
-               call mismatch(prefix, 'obstacles.count', integer_text(int(file_count)), &
-                             integer_text(size(scene%obstacles)), '; obstacle '//integer_text(i)// &
-                             ' is a compliant stop in '//trim(merge('the file  ', 'this scene', i <= file_count))// &
-                             stops_why, stat, errmsg)
+   end subroutine check_compatible
+
+   !> The root attributes of `matching` in the file against the scene's entries `list`.
+   subroutine compare_model(file, list, prefix, stat, errmsg)
+      type(h5_reader), intent(in) :: file
+      type(scene_entry), intent(in) :: list(:)
+      character(len=*), intent(in) :: prefix
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=:), allocatable :: why
+      integer :: i, k
+      stat = 0
+      errmsg = ''
+      do k = 1, size(matching)
+         do i = size(list), 1, -1
+            if (list(i)%name == matching(k)) exit
+         end do
+         if (i == 0) cycle
+         why = model_why
+         if (matching(k) == 'mesh.reduction') why = ': a reduced run''s state holds reduced coordinates, '// &
+            'not the values of the mesh'
+         call compare_entry(file, list(i), prefix, why, stat, errmsg)
+         if (stat /= 0) return
+      end do
+   end subroutine compare_model
+
+   !> The file's contact points (/contact/x) against `contact_x`, count and positions
+   !! bitwise.
+   subroutine compare_contact_points(file, contact_x, prefix, stat, errmsg)
+      type(h5_reader), intent(in) :: file
+      real(dp), intent(in) :: contact_x(:)
+      character(len=*), intent(in) :: prefix
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp), allocatable :: x(:)
+      integer :: k
+      call file%read_reals('/contact/x', x, stat, errmsg)
+      if (stat /= 0) then
+         errmsg = prefix//trim(errmsg)
+         return
+      end if
+      if (size(x) /= size(contact_x)) then
+         call mismatch(prefix, 'contact points', integer_text(size(x)), integer_text(size(contact_x)), model_why, &
+                       stat, errmsg)
+      else if (.not. all(same_bits(x, contact_x))) then
+         k = findloc(same_bits(x, contact_x), .false., dim=1)
+         call mismatch(prefix, 'contact point '//integer_text(k)//' x', real_text(x(k)), real_text(contact_x(k)), &
+                       model_why, stat, errmsg)
+      end if
+   end subroutine compare_contact_points
+
+   !> The compliant stops of the file against the scene's (`check_compatible`).
+   subroutine compare_stops(file, scene, list, prefix, stat, errmsg)
+      type(h5_reader), intent(in) :: file
+      type(scene_type), intent(in) :: scene
+      type(scene_entry), intent(in) :: list(:)
+      character(len=*), intent(in) :: prefix
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=*), parameter :: compared(7) = [character(len=10) :: 'side', 'x_from', 'x_to', &
+                                                     'level_from', 'level_to', 'stiffness', 'exponent']
+      character(len=:), allocatable :: item
+      integer(int64) :: file_count
+      real(dp) :: file_stiffness
+      logical :: file_compliant, scene_compliant
+      integer :: i, k, e
+      call file%attr_int64('/', 'obstacles.count', file_count, stat, errmsg)
+      if (stat /= 0) then
+         errmsg = prefix//trim(errmsg)
+         return
+      end if
+      do i = 1, max(int(file_count), size(scene%obstacles))
+         item = '('//integer_text(i)//')'
+         file_compliant = .false.
+         if (i <= file_count) then
+            call file%attr_real('/', 'obstacles.stiffness'//item, file_stiffness, stat, errmsg)
+            if (stat /= 0) then
+               errmsg = prefix//trim(errmsg)
                return
             end if
-            do k = 1, size(compared)
-               do e = size(list), 1, -1
-                  if (list(e)%name == 'obstacles.'//trim(compared(k))//item) exit
-               end do
-               call compare_entry(file, list(e), prefix, stops_why, stat, errmsg)
-               if (stat /= 0) return
+            file_compliant = file_stiffness > 0
+         end if
+         scene_compliant = .false.
+         if (i <= size(scene%obstacles)) scene_compliant = scene%obstacles(i)%stiffness > 0
+         if (.not. (file_compliant .or. scene_compliant)) cycle
+         if (i > file_count .or. i > size(scene%obstacles)) then
+            call mismatch(prefix, 'obstacles.count', integer_text(int(file_count)), &
+                          integer_text(size(scene%obstacles)), '; obstacle '//integer_text(i)// &
+                          ' is a compliant stop in '//trim(merge('the file  ', 'this scene', i <= file_count))// &
+                          stops_why, stat, errmsg)
+            return
+         end if
+         do k = 1, size(compared)
+            do e = size(list), 1, -1
+               if (list(e)%name == 'obstacles.'//trim(compared(k))//item) exit
             end do
+            call compare_entry(file, list(e), prefix, stops_why, stat, errmsg)
+            if (stat /= 0) return
          end do
-      end subroutine compare_stops
-   end subroutine check_compatible
+      end do
+   end subroutine compare_stops
 
    !> Compare the root attribute of `item`'s name in `file` with `item` (reals bitwise).
    !! stat = 1 with the mismatch message (`mismatch`, ending with `why`), or with the
@@ -187,7 +224,7 @@ contains
       character(len=*), intent(in) :: prefix, name, in_file, in_scene, why
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      stat = 1
+      stat = stat_failure
       errmsg = prefix//name//' is '//in_file//' in the file and '//in_scene//' in this scene'//why
    end subroutine mismatch
 end module vibrobeam_restart_check

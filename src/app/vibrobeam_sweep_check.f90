@@ -265,21 +265,48 @@ contains
       integer, intent(in) :: threads, ranks
       character(len=*), intent(in) :: resume
       type(sweep_point), allocatable :: points(:)
-      type(scene_type) :: local
-      integer(int64) :: settle_steps, measure_steps, total_steps
-      integer :: k, stat, tasks, workers
-      real(dp) :: seconds_per_step
-      character(len=256) :: errmsg
-      character(len=32) :: direction, start
-      character(len=:), allocatable :: line, settle_text, measure_text
-      integer(int64) :: settle_shown, measure_shown   ! bits of the windows whose text is made
+      integer(int64) :: total_steps
+      character(len=:), allocatable :: line
       allocate (points, source=sweep_points(settings))
-      tasks = task_count(points)
       line = 'sweep of '//trim(settings%axis(1)%parameter)
       if (len_trim(settings%axis(2)%parameter) > 0) line = line//' x '//trim(settings%axis(2)%parameter)// &
                                                            ' ('//integer_text(size(settings%axis(2)%values))//' lines)'
       write (unit, '(a)') line//', mode '''//trim(settings%mode)//''': '//integer_text(size(points))//' points in '// &
-         integer_text(tasks)//' tasks'
+         integer_text(task_count(points))//' tasks'
+      call write_point_table(unit, scene, settings, points, total_steps)
+      if (settings%steady_tolerance > 0) then
+         write (unit, '(a)') 'steady state: after settle, windows of measure until the RMS tip displacement and the '// &
+            'impact rate of two consecutive windows agree within '//real_text(settings%steady_tolerance)// &
+            ', at most '//integer_text(max_settle_windows)//' windows'
+      end if
+      call write_cost(unit, scene, settings, points, total_steps, threads, ranks)
+      if (settings%keep_runs) write (unit, '(a)') 'keep_runs: every point''s result is also written, as '// &
+         'STEM_pointNNNN.h5 beside '//trim(scene%output%file)//', published with it as one set'
+      if (len(resume) > 0) then
+         write (unit, '(a)') resume
+      else
+         write (unit, '(a)') 'partial directory: none; a run streams its points into '''// &
+            partial_directory(trim(scene%output%file))//''' (rerunning this input after a kill goes on from there)'
+      end if
+      write (unit, '(a)', advance='no') resolution_advice(scene, settings)
+   end subroutine write_sweep_check
+
+   !> The points in the order they run, one line each: line, direction, start, values
+   !! and windows; `total_steps` the steps of them all (the longest steady-state search
+   !! with steady_tolerance > 0).
+   subroutine write_point_table(unit, scene, settings, points, total_steps)
+      integer, intent(in) :: unit
+      type(scene_type), intent(in) :: scene
+      type(sweep_settings), intent(in) :: settings
+      type(sweep_point), intent(in) :: points(:)
+      integer(int64), intent(out) :: total_steps
+      type(scene_type) :: local
+      integer(int64) :: settle_steps, measure_steps
+      integer :: k, stat
+      character(len=256) :: errmsg
+      character(len=32) :: direction, start
+      character(len=:), allocatable :: line, settle_text, measure_text
+      integer(int64) :: settle_shown, measure_shown   ! bits of the windows whose text is made
       line = '  point  line  direction  start      '//pad(settings%axis(1)%parameter, 22)
       if (len_trim(settings%axis(2)%parameter) > 0) line = line//pad(settings%axis(2)%parameter, 22)
       write (unit, '(a)') line//'  settle (s)    measure (s)'
@@ -315,11 +342,21 @@ contains
          end if
          write (unit, '(a)') line//settle_text//measure_text
       end do
-      if (settings%steady_tolerance > 0) then
-         write (unit, '(a)') 'steady state: after settle, windows of measure until the RMS tip displacement and the '// &
-            'impact rate of two consecutive windows agree within '//real_text(settings%steady_tolerance)// &
-            ', at most '//integer_text(max_settle_windows)//' windows'
-      end if
+   end subroutine write_point_table
+
+   !> The cost (steps in all, and the wall time from timing steps of the first point)
+   !! and what runs in parallel.
+   subroutine write_cost(unit, scene, settings, points, total_steps, threads, ranks)
+      integer, intent(in) :: unit
+      type(scene_type), intent(in) :: scene
+      type(sweep_settings), intent(in) :: settings
+      type(sweep_point), intent(in) :: points(:)
+      integer(int64), intent(in) :: total_steps
+      integer, intent(in) :: threads, ranks
+      character(len=:), allocatable :: line
+      real(dp) :: seconds_per_step
+      integer :: tasks, workers
+      tasks = task_count(points)
       seconds_per_step = time_per_step(scene, settings, points(1))
       workers = max(1, min(tasks, threads*ranks))
       line = 'cost: '//real_text(real(total_steps, dp))//' steps in all'
@@ -337,40 +374,32 @@ contains
          line = line//'one per line; the points of a continuation branch run in sequence'
       end if
       write (unit, '(a)') line//') on '//integer_text(threads)//' threads x '//integer_text(ranks)//' processes'
-      if (settings%keep_runs) write (unit, '(a)') 'keep_runs: every point''s result is also written, as '// &
-         'STEM_pointNNNN.h5 beside '//trim(scene%output%file)//', published with it as one set'
-      if (len(resume) > 0) then
-         write (unit, '(a)') resume
-      else
-         write (unit, '(a)') 'partial directory: none; a run streams its points into '''// &
-            partial_directory(trim(scene%output%file))//''' (rerunning this input after a kill goes on from there)'
-      end if
-      write (unit, '(a)', advance='no') resolution_advice(scene, settings)
-   contains
-      pure function pad(word, width) result(out)
-         character(len=*), intent(in) :: word
-         integer, intent(in) :: width
-         character(len=max(width, len_trim(word) + 1)) :: out
-         out = trim(word)
-      end function pad
+   end subroutine write_cost
 
-      !> Three significant digits: '0.0451', '8.54e-4', '1.2e5'.
-      function seconds(value) result(out)
-         real(dp), intent(in) :: value
-         character(len=:), allocatable :: out
-         character(len=32) :: buffer
-         integer :: decimals
-         if (value >= 1e-3_dp .and. value < 1e5_dp) then
-            decimals = max(0, 2 - floor(log10(value)))
-            write (buffer, '(f0.'//integer_text(decimals)//')') value
-            out = trim(adjustl(buffer))
-            if (out(1:1) == '.') out = '0'//out
-         else
-            write (buffer, '(es10.2e1)') value
-            out = trim(adjustl(buffer))
-         end if
-      end function seconds
-   end subroutine write_sweep_check
+   !> `word` left-aligned in `width` characters (at least one blank after it).
+   pure function pad(word, width) result(out)
+      character(len=*), intent(in) :: word
+      integer, intent(in) :: width
+      character(len=max(width, len_trim(word) + 1)) :: out
+      out = trim(word)
+   end function pad
+
+   !> Three significant digits: '0.0451', '8.54e-4', '1.2e5'.
+   function seconds(value) result(out)
+      real(dp), intent(in) :: value
+      character(len=:), allocatable :: out
+      character(len=32) :: buffer
+      integer :: decimals
+      if (value >= 1e-3_dp .and. value < 1e5_dp) then
+         decimals = max(0, 2 - floor(log10(value)))
+         write (buffer, '(f0.'//integer_text(decimals)//')') value
+         out = trim(adjustl(buffer))
+         if (out(1:1) == '.') out = '0'//out
+      else
+         write (buffer, '(es10.2e1)') value
+         out = trim(adjustl(buffer))
+      end if
+   end function seconds
 
    !> Wall time of one step of the point's scheme (s), timed over a few steps; 0 when the
    !! point cannot be prepared.

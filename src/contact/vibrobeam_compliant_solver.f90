@@ -29,11 +29,12 @@
 !! stops changing to its own round-off, |p_j(y) - p_j^k| <= tol (|q_j| + m |H_j| |y|) for
 !! every j (the size of the terms p_j is computed from: a spring engaged by 1e-16 m beside
 !! one 2 mm away is judged on its own scale). At most `max_newton` iterations; otherwise
-!! stat = 1 (the run stops with exit 3). The force the accepted step applied (`force`) and
+!! stat = stat_no_convergence (the run stops with exit 3). The force the accepted step applied (`force`) and
 !! the rule's force at the accepted penetrations (`law_force`) differ by the remaining
 !! residual: the steppers book its work and stop a run in which it is not negligible
 !! (docs/theory.md section 8, "Accuracy").
 module vibrobeam_compliant_solver
+   use vibrobeam_status, only: stat_linear_solver_failure, stat_no_convergence
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_factor, band_solve, band_matvec, band_add
    use vibrobeam_contact_set, only: contact_set, contact_value
@@ -63,7 +64,17 @@ module vibrobeam_compliant_solver
    contains
       procedure :: setup
       procedure :: solve
+      procedure, private :: linearized_free
    end type compliant_solver
+
+   !> The springs at an iterate x of Newton's method.
+   type :: spring_iterate
+      real(dp), allocatable :: penetration(:)   !! p_j(x) (m)
+      real(dp), allocatable :: force(:)         !! f_j the step force (N)
+      real(dp), allocatable :: slope(:)         !! d_j = df_j/dp1 (N/m)
+      real(dp), allocatable :: elastic(:)       !! the elastic part of f_j (N)
+      real(dp), allocatable :: floor(:)         !! |q_j| + m |H_j| |x|: the size of p_j's terms (m)
+   end type spring_iterate
 
 contains
 
@@ -104,40 +115,26 @@ contains
       real(dp), intent(out) :: x(:), impulse(:)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp), dimension(springs%count) :: p, f, slope, elastic, p_new, f_new, slope_new, elastic_new, floor
-      real(dp) :: y_free(size(x)), rhs(size(x)), residual, scale
-      integer :: it, j, iterations
-      logical :: engaged
+      type(spring_iterate) :: now, next
+      real(dp) :: y_free(size(x)), residual
+      integer :: it
       stat = 0
       errmsg = ''
       self%iterations = 0
       self%linear_solves = 0
       x = x_free
-      call evaluate(x, p, f, slope, elastic)
+      call evaluate_springs(self%rule, springs, contacts, q, p0, motion_scale, theta, dt, x, now)
       do it = 1, max_newton
          self%iterations = it
-         engaged = any(f > 0) .or. any(slope > 0)
-         if (engaged) then
-            self%jacobian = a
-            do j = 1, springs%count
-               if (slope(j) > 0) call add_row_product(self%jacobian, contacts, springs%point(j), &
-                                                      force_scale*motion_scale*slope(j))
-            end do
-            call band_factor(self%jacobian, self%jacobian_factor, stat, errmsg)
-            if (stat /= 0) then
-               stat = 2
-               return
-            end if
-            call band_matvec(a, x_free - x, rhs)
-            do j = 1, springs%count
-               if (f(j) > 0) call add_row(rhs, contacts, springs%point(j), force_scale*springs%sign(j)*f(j))
-            end do
-            call band_solve(self%jacobian_factor, rhs)
-            self%linear_solves = self%linear_solves + 1
-            y_free = x + rhs
+         if (any(now%force > 0) .or. any(now%slope > 0)) then
+            ! engaged: the linearized problem in the metric J
+            call self%linearized_free(springs, contacts, a, x_free, x, now, motion_scale, force_scale, y_free, stat, &
+                                      errmsg)
+            if (stat /= 0) return
             if (rigid_kind /= rigid_none) then
                call self%projector%setup(self%jacobian, self%jacobian_factor, contacts, self%regime, self%method)
-               call project(self%projector)
+               call project_rigid(self%projector, rigid_kind, y_free, active, s, b, x, impulse, self%linear_solves, &
+                                  stat, errmsg)
             else
                x = y_free
                impulse = 0
@@ -145,67 +142,127 @@ contains
          else
             y_free = x_free
             if (rigid_kind /= rigid_none) then
-               call project(base_projector)
+               call project_rigid(base_projector, rigid_kind, y_free, active, s, b, x, impulse, self%linear_solves, &
+                                  stat, errmsg)
             else
                x = y_free
                impulse = 0
             end if
          end if
          if (stat /= 0) return
-         call evaluate(x, p_new, f_new, slope_new, elastic_new)
-         scale = maxval(abs(f_new))
-         residual = 0
-         do j = 1, springs%count
-            residual = max(residual, abs(f_new(j) - f(j) - slope(j)*(p_new(j) - p(j))))
-         end do
+         call evaluate_springs(self%rule, springs, contacts, q, p0, motion_scale, theta, dt, x, next)
+         residual = linearization_residual(now, next)
          ! the forces the momentum equation used are f + slope (p_new - p); they agree with
          ! f(p_new) to the tolerance, or no spring's penetration moves beyond its round-off
-         if (residual <= tol*scale .or. all(abs(p_new - p) <= tol*floor)) then
-            self%p1 = p_new
-            self%force = f + slope*(p_new - p)   ! what the momentum equation applied
-            self%elastic = elastic_new
-            self%law_force = f_new
+         if (residual <= tol*maxval(abs(next%force)) .or. all(abs(next%penetration - now%penetration) <= tol*next%floor)) then
+            self%p1 = next%penetration
+            self%force = now%force + now%slope*(next%penetration - now%penetration)   ! what the momentum equation applied
+            self%elastic = next%elastic
+            self%law_force = next%force
             return
          end if
-         p = p_new
-         f = f_new
-         slope = slope_new
-         elastic = elastic_new
+         now = next
       end do
-      stat = 1
+      stat = stat_no_convergence
       write (errmsg, '(a,i0,a,es10.3,a)') 'the compliant stops did not converge in ', max_newton, &
          ' Newton iterations (force residual ', residual, ' N); reduce dt, or the stiffness of a stop '// &
          'whose contact time scale (vibrobeam --check) is far below dt'
-   contains
-      !> Penetrations, forces, slopes and elastic parts at xx; `floor` the size of the terms
-      !! of each penetration, |q_j| + m |H_j| |xx| (its round-off is eps times that).
-      subroutine evaluate(xx, pp, ff, ss, ee)
-         real(dp), intent(in) :: xx(:)
-         real(dp), intent(out) :: pp(:), ff(:), ss(:), ee(:)
-         integer :: i, a
-         do i = 1, springs%count
-            pp(i) = q(i) - springs%sign(i)*motion_scale*contact_value(contacts, springs%point(i), xx)
-            floor(i) = abs(q(i))
-            do a = 1, 4
-               if (contacts%dofs(a, springs%point(i)) /= 0) floor(i) = floor(i) + motion_scale* &
-                  abs(contacts%weights(a, springs%point(i))*xx(contacts%dofs(a, springs%point(i))))
-            end do
-            call step_force(self%rule, springs%stiffness(i), springs%exponent(i), springs%damping(i), theta, dt, &
-                            p0(i), pp(i), ff(i), ss(i), ee(i))
-         end do
-      end subroutine evaluate
-
-      subroutine project(projector)
-         type(contact_projector), intent(inout) :: projector
-         if (rigid_kind == rigid_active) then
-            call projector%project(y_free, active, s, b, x, impulse, iterations, stat, errmsg)
-         else
-            call projector%project_admissible(y_free, x, impulse, iterations, stat, errmsg)
-         end if
-         self%linear_solves = self%linear_solves + projector%linear_solves
-         if (stat /= 0) stat = stat + 1
-      end subroutine project
    end subroutine solve
+
+   !> The free solution y_free of the problem linearized at the iterate x (module
+   !! comment): J = A + f_scale m sum_j d_j H_j^T H_j factored into self%jacobian_factor,
+   !! y_free = x + J^-1 (A (x_free - x) + f_scale sum_j s_j f_j H_j^T). stat = 2 when J
+   !! cannot be factored.
+   subroutine linearized_free(self, springs, contacts, a, x_free, x, now, motion_scale, force_scale, y_free, stat, &
+                              errmsg)
+      class(compliant_solver), intent(inout) :: self
+      type(spring_set), intent(in) :: springs
+      type(contact_set), intent(in) :: contacts
+      type(symmetric_band), intent(in) :: a
+      real(dp), intent(in) :: x_free(:), x(:), motion_scale, force_scale
+      type(spring_iterate), intent(in) :: now
+      real(dp), intent(out) :: y_free(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp) :: rhs(size(x))
+      integer :: j
+      self%jacobian = a
+      do j = 1, springs%count
+         if (now%slope(j) > 0) call add_row_product(self%jacobian, contacts, springs%point(j), &
+                                                    force_scale*motion_scale*now%slope(j))
+      end do
+      call band_factor(self%jacobian, self%jacobian_factor, stat, errmsg)
+      if (stat /= 0) then
+         stat = stat_linear_solver_failure
+         return
+      end if
+      call band_matvec(a, x_free - x, rhs)
+      do j = 1, springs%count
+         if (now%force(j) > 0) call add_row(rhs, contacts, springs%point(j), force_scale*springs%sign(j)*now%force(j))
+      end do
+      call band_solve(self%jacobian_factor, rhs)
+      self%linear_solves = self%linear_solves + 1
+      y_free = x + rhs
+   end subroutine linearized_free
+
+   !> Penetrations, forces, slopes and elastic parts of the springs at x (`rule`'s step
+   !! force, p_j = q_j - s_j m H_j x); `floor` the size of the terms of each penetration,
+   !! |q_j| + m |H_j| |x| (its round-off is eps times that).
+   subroutine evaluate_springs(rule, springs, contacts, q, p0, motion_scale, theta, dt, x, at)
+      integer, intent(in) :: rule
+      type(spring_set), intent(in) :: springs
+      type(contact_set), intent(in) :: contacts
+      real(dp), intent(in) :: q(:), p0(:), motion_scale, theta, dt, x(:)
+      type(spring_iterate), intent(inout) :: at
+      integer :: i, a
+      if (.not. allocated(at%penetration)) allocate (at%penetration(springs%count), at%force(springs%count), &
+                                                     at%slope(springs%count), at%elastic(springs%count), &
+                                                     at%floor(springs%count))
+      do i = 1, springs%count
+         at%penetration(i) = q(i) - springs%sign(i)*motion_scale*contact_value(contacts, springs%point(i), x)
+         at%floor(i) = abs(q(i))
+         do a = 1, 4
+            if (contacts%dofs(a, springs%point(i)) /= 0) at%floor(i) = at%floor(i) + motion_scale* &
+               abs(contacts%weights(a, springs%point(i))*x(contacts%dofs(a, springs%point(i))))
+         end do
+         call step_force(rule, springs%stiffness(i), springs%exponent(i), springs%damping(i), theta, dt, &
+                         p0(i), at%penetration(i), at%force(i), at%slope(i), at%elastic(i))
+      end do
+   end subroutine evaluate_springs
+
+   !> max_j |f_j(p_j(y)) - f_j^k - d_j^k (p_j(y) - p_j^k)|: how far the forces at the new
+   !! iterate `next` are from the linearization at `now`.
+   pure real(dp) function linearization_residual(now, next) result(residual)
+      type(spring_iterate), intent(in) :: now, next
+      integer :: j
+      residual = 0
+      do j = 1, size(now%force)
+         residual = max(residual, abs(next%force(j) - now%force(j) - now%slope(j)*(next%penetration(j) - &
+                                                                                   now%penetration(j))))
+      end do
+   end function linearization_residual
+
+   !> The rigid constraints' projection of y_free by `projector` (rigid_active: the
+   !! active set `active`, `s`, `b` as `project`; rigid_admissible: every contact point's
+   !! bounds); its linear solves are added to `linear_solves`, its failure is stat + 1.
+   subroutine project_rigid(projector, rigid_kind, y_free, active, s, b, x, impulse, linear_solves, stat, errmsg)
+      type(contact_projector), intent(inout) :: projector
+      integer, intent(in) :: rigid_kind
+      real(dp), intent(in) :: y_free(:), s(:), b(:)
+      integer, intent(in) :: active(:)
+      real(dp), intent(out) :: x(:), impulse(:)
+      integer, intent(inout) :: linear_solves
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: iterations
+      if (rigid_kind == rigid_active) then
+         call projector%project(y_free, active, s, b, x, impulse, iterations, stat, errmsg)
+      else
+         call projector%project_admissible(y_free, x, impulse, iterations, stat, errmsg)
+      end if
+      linear_solves = linear_solves + projector%linear_solves
+      if (stat /= 0) stat = stat + 1
+   end subroutine project_rigid
 
    !> J <- J + w H_c^T H_c.
    subroutine add_row_product(jacobian, contacts, c, w)

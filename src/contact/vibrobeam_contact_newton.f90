@@ -63,6 +63,25 @@ module vibrobeam_contact_newton
    integer, parameter :: warm_minimum = 4, warm_limit = 40
    !> Active-set iterations of one crossover at least (at most warm_limit, while the changes shrink).
    integer, parameter :: polish_limit = 3
+   !> An iterate of the interior-point method (`interior_point`): x, its contact values
+   !! g = H x, the slacks s (lower side) and t (upper side) and their multipliers y, z.
+   type :: barrier_iterate
+      logical, allocatable :: has_lower(:), has_upper(:)   !! (points) the side has a bound
+      real(dp), allocatable :: x(:), g(:), s(:), t(:), y(:), z(:)
+   end type barrier_iterate
+
+   !> The residuals of an iterate and the right-hand sides of the complementarity.
+   type :: barrier_residuals
+      real(dp), allocatable :: r_dual(:)             !! W x - b - H^T (y - z)
+      real(dp), allocatable :: multiplier_rows(:)    !! H^T (y - z)
+      real(dp), allocatable :: r_lower(:), r_upper(:), r_sy(:), r_tz(:)
+   end type barrier_residuals
+
+   !> A Newton direction of the iterate.
+   type :: barrier_direction
+      real(dp), allocatable :: dx(:), dg(:), ds(:), dt(:), dy(:), dz(:)
+   end type barrier_direction
+
    !> Interior-point iterations before the fall-back.
    integer, parameter :: interior_limit = 100
    !> A free point may violate its bound by gap_factor eps scale + (largest |H x - bound|
@@ -267,105 +286,64 @@ contains
       type(solve_tally), intent(inout) :: tally
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      logical :: has_lower(size(points)), has_upper(size(points)), converged, round_off, round_off_tried
-      real(dp), dimension(size(points)) :: s, t, y, z, g, weight, r_lower, r_upper, r_sy, r_tz, &
-                                           ds, dt, dy, dz, dg, y_gain, z_gain
-      real(dp), dimension(size(x_free)) :: xi, r_dual, dx
-      real(dp) :: mu, mu0, mu_affine, sigma, alpha, slack_floor, metric_norm
-      integer :: indicated(size(points)), previous(size(points)), failed(size(points)), pairs, iteration, polish, &
-                 changes, previous_changes
+      type(barrier_iterate) :: it
+      type(barrier_residuals) :: res
+      type(barrier_direction) :: dir
+      logical :: converged, round_off, round_off_tried
+      real(dp), dimension(size(points)) :: y_gain, z_gain
+      real(dp) :: mu, mu0, mu_affine, sigma, alpha, metric_norm
+      integer :: indicated(size(points)), previous(size(points)), failed(size(points)), pairs, iteration
       stat = 0
       errmsg = ''
-      has_lower = lower > -no_bound
-      has_upper = upper < no_bound
-      pairs = count(has_lower) + count(has_upper)
-      ! centred start at x_free; an absent side carries s = 1, y = 0 (t = 1, z = 0), which
-      ! keeps it out of every product and sum
-      xi = x_free
-      call values_at(xi, g)
-      slack_floor = start_fraction*violation
-      mu0 = slack_floor*max(maxval(abs(multiplier)), tiny(1.0_dp))
-      s = merge(max(g - lower, slack_floor), 1.0_dp, has_lower)
-      t = merge(max(upper - g, slack_floor), 1.0_dp, has_upper)
-      y = merge(mu0/s, 0.0_dp, has_lower)
-      z = merge(mu0/t, 0.0_dp, has_upper)
+      call centred_start(system, x_free, points, lower, upper, violation, multiplier, it, mu0)
+      pairs = count(it%has_lower) + count(it%has_upper)
       mu = mu0
       previous = 2
       failed = 2
       metric_norm = maxval(sum(abs(system%metric%lower), dim=1))   ! |W|_inf, within a factor 2
       round_off_tried = .false.
       do iteration = 1, interior_limit
-         ! residuals of the iterate
-         call band_matvec(system%metric, xi, r_dual)
-         r_dual = r_dual - w_x_free
-         dx = 0
-         call scatter_rows(system%contacts, points, merge(y, 0.0_dp, has_lower) - merge(z, 0.0_dp, has_upper), dx)
-         r_dual = r_dual - dx
-         r_lower = merge(g - s - lower, 0.0_dp, has_lower)
-         r_upper = merge(g + t - upper, 0.0_dp, has_upper)
+         call evaluate_residuals(system, w_x_free, points, lower, upper, it, res)
          ! interior-point finish: every residual and product at round-off
-         if (round_off_tried .and. &
-             maxval(abs(r_dual)) <= round_factor*epsilon(1.0_dp)*(2*metric_norm*maxval(abs(xi)) + &
-                                     maxval(abs(w_x_free)) + maxval(abs(dx))) .and. &
-             max(maxval(abs(r_lower)), maxval(abs(r_upper))) <= gap_factor*epsilon(1.0_dp)*max(scale, maxval(abs(g)))) then
-            multiplier = merge(y, 0.0_dp, has_lower) - merge(z, 0.0_dp, has_upper)
-            ! the multipliers of the points indicated free are of round-off size: drop them
-            ! where the equilibrium residual stays at round-off without them
-            r_dual = 0
-            call scatter_rows(system%contacts, points, merge(multiplier, 0.0_dp, previous == 0), r_dual)
-            if (maxval(abs(r_dual)) <= round_factor*epsilon(1.0_dp)*(2*metric_norm*maxval(abs(xi)) + &
-                                        maxval(abs(w_x_free)) + maxval(abs(dx)))) &
-               where (previous == 0) multiplier = 0
-            x = xi
-            value = g
+         if (round_off_tried .and. at_round_off(it, res, w_x_free, scale, metric_norm)) then
+            call interior_finish(system, points, w_x_free, metric_norm, it, res, previous, x, multiplier, value)
             side = previous
             return
          end if
          report%interior_iterations = report%interior_iterations + 1
-         weight = y/s + z/t
-         call system%factor_barrier(points, weight, tally, stat, errmsg)
+         call system%factor_barrier(points, it%y/it%s + it%z/it%t, tally, stat, errmsg)
          if (stat /= 0) return
          ! predictor (affine scaling); its full step predicts the solution
-         r_sy = -s*y
-         r_tz = -t*z
-         call newton_direction()
-         y_gain = (y + dy)/merge(y, 1.0_dp, has_lower) - 0.5_dp
-         z_gain = (z + dz)/merge(z, 1.0_dp, has_upper) - 0.5_dp
-         alpha = min(1.0_dp, step_to_boundary())
-         mu_affine = (sum((s + alpha*ds)*(y + alpha*dy), has_lower) + sum((t + alpha*dt)*(z + alpha*dz), has_upper))/pairs
+         res%r_sy = -it%s*it%y
+         res%r_tz = -it%t*it%z
+         call newton_direction(system, points, it, res, dir, tally)
+         y_gain = (it%y + dir%dy)/merge(it%y, 1.0_dp, it%has_lower) - 0.5_dp
+         z_gain = (it%z + dir%dz)/merge(it%z, 1.0_dp, it%has_upper) - 0.5_dp
+         alpha = min(1.0_dp, step_to_boundary(it, dir))
+         mu_affine = (sum((it%s + alpha*dir%ds)*(it%y + alpha*dir%dy), it%has_lower) + &
+                      sum((it%t + alpha*dir%dt)*(it%z + alpha*dir%dz), it%has_upper))/pairs
          sigma = (max(mu_affine, 0.0_dp)/mu)**3
          ! corrector and centring
-         r_sy = merge(sigma*mu - s*y - ds*dy, 0.0_dp, has_lower)
-         r_tz = merge(sigma*mu - t*z - dt*dz, 0.0_dp, has_upper)
-         call newton_direction()
-         alpha = min(1.0_dp, boundary_fraction*step_to_boundary())
-         where (has_lower) s = s + alpha*ds
-         where (has_lower) y = y + alpha*dy
-         where (has_upper) t = t + alpha*dt
-         where (has_upper) z = z + alpha*dz
-         xi = xi + alpha*dx
-         call values_at(xi, g)
-         mu = (sum(s*y, has_lower) + sum(t*z, has_upper))/pairs
-         round_off = max(maxval(s*y, has_lower), maxval(t*z, has_upper)) <= &
-                     round_factor*epsilon(1.0_dp)*max(maxval(y), maxval(z))*max(scale, maxval(abs(g)))
+         res%r_sy = merge(sigma*mu - it%s*it%y - dir%ds*dir%dy, 0.0_dp, it%has_lower)
+         res%r_tz = merge(sigma*mu - it%t*it%z - dir%dt*dir%dz, 0.0_dp, it%has_upper)
+         call newton_direction(system, points, it, res, dir, tally)
+         alpha = min(1.0_dp, boundary_fraction*step_to_boundary(it, dir))
+         call take_step(system, points, alpha, dir, it)
+         mu = (sum(it%s*it%y, it%has_lower) + sum(it%t*it%z, it%has_upper))/pairs
+         round_off = max(maxval(it%s*it%y, it%has_lower), maxval(it%t*it%z, it%has_upper)) <= &
+                     round_factor*epsilon(1.0_dp)*max(maxval(it%y), maxval(it%z))*max(scale, maxval(abs(it%g)))
          ! crossover
          indicated = 0
-         where (has_lower .and. y_gain > 0) indicated = 1
-         where (has_upper .and. z_gain > 0 .and. (indicated == 0 .or. z_gain > y_gain)) indicated = -1
+         where (it%has_lower .and. y_gain > 0) indicated = 1
+         where (it%has_upper .and. z_gain > 0 .and. (indicated == 0 .or. z_gain > y_gain)) indicated = -1
          if (((mu <= crossover_reduction*mu0 .and. all(indicated == previous)) .or. &
               (round_off .and. .not. round_off_tried)) .and. any(indicated /= failed)) then
             round_off_tried = round_off_tried .or. round_off
             report%crossovers = report%crossovers + 1
             side = indicated
-            changes = huge(1)
-            do polish = 1, warm_limit
-               report%active_set_iterations = report%active_set_iterations + 1
-               previous_changes = changes
-               call active_set_step(system, x_free, w_x_free, points, lower, upper, scale, side, x, multiplier, value, &
-                                    converged, tally, stat, errmsg, changes)
-               if (stat /= 0 .or. converged) return
-               if (polish >= polish_limit .and. changes >= previous_changes) exit
-            end do
+            call crossover(system, x_free, w_x_free, points, lower, upper, scale, side, x, multiplier, value, &
+                           converged, report, tally, stat, errmsg)
+            if (stat /= 0 .or. converged) return
             failed = indicated   ! the iteration from a set is deterministic: do not retry it
          end if
          previous = indicated
@@ -374,45 +352,173 @@ contains
       stat = stat_no_convergence
       write (errmsg, '(a,i0,a,es9.2,a)') 'contact projection: no solution after ', report%interior_iterations, &
          ' interior-point iterations (mu/mu0 = ', mu/mu0, ')'
-   contains
-      !> Newton direction for the current right-hand sides (r_dual, r_lower, r_upper, r_sy,
-      !! r_tz).
-      subroutine newton_direction()
-         real(dp) :: rho(size(points))
-         rho = merge((r_sy - y*r_lower)/s, 0.0_dp, has_lower) - merge((r_tz + z*r_upper)/t, 0.0_dp, has_upper)
-         dx = -r_dual
-         call scatter_rows(system%contacts, points, rho, dx)
-         call system%solve_barrier(dx, tally)
-         call values_at(dx, dg)
-         ds = merge(dg + r_lower, 0.0_dp, has_lower)
-         dy = merge((r_sy - y*ds)/s, 0.0_dp, has_lower)
-         dt = merge(-dg - r_upper, 0.0_dp, has_upper)
-         dz = merge((r_tz - z*dt)/t, 0.0_dp, has_upper)
-      end subroutine newton_direction
-
-      !> H_k v for every point.
-      subroutine values_at(v, values)
-         real(dp), intent(in) :: v(:)
-         real(dp), intent(out) :: values(:)
-         integer :: i
-         do i = 1, size(points)
-            values(i) = contact_value(system%contacts, points(i), v)
-         end do
-      end subroutine values_at
-
-      !> Largest alpha keeping s, t, y, z >= 0 along the direction (huge if unbounded).
-      pure real(dp) function step_to_boundary() result(alpha_max)
-         alpha_max = min(ratio(s, ds, has_lower), ratio(y, dy, has_lower), ratio(t, dt, has_upper), ratio(z, dz, has_upper))
-      end function step_to_boundary
-
-      pure real(dp) function ratio(v, dv, mask)
-         real(dp), intent(in) :: v(:), dv(:)
-         logical, intent(in) :: mask(:)
-         integer :: i
-         ratio = huge(1.0_dp)
-         do i = 1, size(v)
-            if (mask(i) .and. dv(i) < 0) ratio = min(ratio, -v(i)/dv(i))
-         end do
-      end function ratio
    end subroutine interior_point
+
+   !> The centred start at x_free (`interior_point`); returns mu_0. An absent side
+   !! carries s = 1, y = 0 (t = 1, z = 0), which keeps it out of every product and sum.
+   subroutine centred_start(system, x_free, points, lower, upper, violation, multiplier, it, mu0)
+      type(contact_system), intent(in) :: system
+      real(dp), intent(in) :: x_free(:), lower(:), upper(:), violation, multiplier(:)
+      integer, intent(in) :: points(:)
+      type(barrier_iterate), intent(out) :: it
+      real(dp), intent(out) :: mu0
+      real(dp) :: slack_floor
+      it%has_lower = lower > -no_bound
+      it%has_upper = upper < no_bound
+      it%x = x_free
+      allocate (it%g(size(points)))
+      call row_values(system, points, it%x, it%g)
+      slack_floor = start_fraction*violation
+      mu0 = slack_floor*max(maxval(abs(multiplier)), tiny(1.0_dp))
+      it%s = merge(max(it%g - lower, slack_floor), 1.0_dp, it%has_lower)
+      it%t = merge(max(upper - it%g, slack_floor), 1.0_dp, it%has_upper)
+      it%y = merge(mu0/it%s, 0.0_dp, it%has_lower)
+      it%z = merge(mu0/it%t, 0.0_dp, it%has_upper)
+   end subroutine centred_start
+
+   !> The residuals of the iterate: r_dual = W x - b - H^T (y - z) (and H^T (y - z)
+   !! itself), r_lower = H x - s - lower, r_upper = H x + t - upper.
+   subroutine evaluate_residuals(system, w_x_free, points, lower, upper, it, res)
+      type(contact_system), intent(in) :: system
+      real(dp), intent(in) :: w_x_free(:), lower(:), upper(:)
+      integer, intent(in) :: points(:)
+      type(barrier_iterate), intent(in) :: it
+      type(barrier_residuals), intent(inout) :: res
+      if (.not. allocated(res%r_dual)) allocate (res%r_dual(size(it%x)), res%multiplier_rows(size(it%x)))
+      call band_matvec(system%metric, it%x, res%r_dual)
+      res%r_dual = res%r_dual - w_x_free
+      res%multiplier_rows = 0
+      call scatter_rows(system%contacts, points, merge(it%y, 0.0_dp, it%has_lower) - merge(it%z, 0.0_dp, it%has_upper), &
+                        res%multiplier_rows)
+      res%r_dual = res%r_dual - res%multiplier_rows
+      res%r_lower = merge(it%g - it%s - lower, 0.0_dp, it%has_lower)
+      res%r_upper = merge(it%g + it%t - upper, 0.0_dp, it%has_upper)
+   end subroutine evaluate_residuals
+
+   !> Whether every residual of the iterate is at round-off (`interior_point`, finish).
+   logical function at_round_off(it, res, w_x_free, scale, metric_norm)
+      type(barrier_iterate), intent(in) :: it
+      type(barrier_residuals), intent(in) :: res
+      real(dp), intent(in) :: w_x_free(:), scale, metric_norm
+      at_round_off = maxval(abs(res%r_dual)) <= round_factor*epsilon(1.0_dp)*(2*metric_norm*maxval(abs(it%x)) + &
+                                                  maxval(abs(w_x_free)) + maxval(abs(res%multiplier_rows))) .and. &
+                     max(maxval(abs(res%r_lower)), maxval(abs(res%r_upper))) <= &
+                     gap_factor*epsilon(1.0_dp)*max(scale, maxval(abs(it%g)))
+   end function at_round_off
+
+   !> The interior-point finish: the iterate is the answer, P = y - z, the multipliers
+   !! of the points indicated free (`indicated` = 0) dropped where the equilibrium
+   !! residual stays at round-off without them.
+   subroutine interior_finish(system, points, w_x_free, metric_norm, it, res, indicated, x, multiplier, value)
+      type(contact_system), intent(in) :: system
+      integer, intent(in) :: points(:), indicated(:)
+      real(dp), intent(in) :: w_x_free(:), metric_norm
+      type(barrier_iterate), intent(in) :: it
+      type(barrier_residuals), intent(in) :: res
+      real(dp), intent(out) :: x(:), multiplier(:), value(:)
+      real(dp) :: free_rows(size(it%x))
+      multiplier = merge(it%y, 0.0_dp, it%has_lower) - merge(it%z, 0.0_dp, it%has_upper)
+      free_rows = 0
+      call scatter_rows(system%contacts, points, merge(multiplier, 0.0_dp, indicated == 0), free_rows)
+      if (maxval(abs(free_rows)) <= round_factor*epsilon(1.0_dp)*(2*metric_norm*maxval(abs(it%x)) + &
+                                    maxval(abs(w_x_free)) + maxval(abs(res%multiplier_rows)))) &
+         where (indicated == 0) multiplier = 0
+      x = it%x
+      value = it%g
+   end subroutine interior_finish
+
+   !> Newton direction for the current right-hand sides (r_dual, r_lower, r_upper, r_sy,
+   !! r_tz) with the factored barrier system.
+   subroutine newton_direction(system, points, it, res, dir, tally)
+      type(contact_system), intent(inout) :: system
+      integer, intent(in) :: points(:)
+      type(barrier_iterate), intent(in) :: it
+      type(barrier_residuals), intent(in) :: res
+      type(barrier_direction), intent(inout) :: dir
+      type(solve_tally), intent(inout) :: tally
+      real(dp) :: rho(size(points))
+      rho = merge((res%r_sy - it%y*res%r_lower)/it%s, 0.0_dp, it%has_lower) - &
+            merge((res%r_tz + it%z*res%r_upper)/it%t, 0.0_dp, it%has_upper)
+      dir%dx = -res%r_dual
+      call scatter_rows(system%contacts, points, rho, dir%dx)
+      call system%solve_barrier(dir%dx, tally)
+      if (.not. allocated(dir%dg)) allocate (dir%dg(size(points)))
+      call row_values(system, points, dir%dx, dir%dg)
+      dir%ds = merge(dir%dg + res%r_lower, 0.0_dp, it%has_lower)
+      dir%dy = merge((res%r_sy - it%y*dir%ds)/it%s, 0.0_dp, it%has_lower)
+      dir%dt = merge(-dir%dg - res%r_upper, 0.0_dp, it%has_upper)
+      dir%dz = merge((res%r_tz - it%z*dir%dt)/it%t, 0.0_dp, it%has_upper)
+   end subroutine newton_direction
+
+   !> Move the iterate by alpha times the direction (on the sides that exist).
+   subroutine take_step(system, points, alpha, dir, it)
+      type(contact_system), intent(in) :: system
+      integer, intent(in) :: points(:)
+      real(dp), intent(in) :: alpha
+      type(barrier_direction), intent(in) :: dir
+      type(barrier_iterate), intent(inout) :: it
+      where (it%has_lower) it%s = it%s + alpha*dir%ds
+      where (it%has_lower) it%y = it%y + alpha*dir%dy
+      where (it%has_upper) it%t = it%t + alpha*dir%dt
+      where (it%has_upper) it%z = it%z + alpha*dir%dz
+      it%x = it%x + alpha*dir%dx
+      call row_values(system, points, it%x, it%g)
+   end subroutine take_step
+
+   !> The active-set iteration restarted from the set `side` the interior point
+   !! indicates: at least polish_limit iterations, at most warm_limit, on while the number
+   !! of points that change side decreases.
+   subroutine crossover(system, x_free, w_x_free, points, lower, upper, scale, side, x, multiplier, value, converged, &
+                        report, tally, stat, errmsg)
+      type(contact_system), intent(inout) :: system
+      real(dp), intent(in) :: x_free(:), w_x_free(:), lower(:), upper(:), scale
+      integer, intent(in) :: points(:)
+      integer, intent(inout) :: side(:)
+      real(dp), intent(inout) :: x(:), multiplier(:), value(:)
+      logical, intent(out) :: converged
+      type(newton_report), intent(inout) :: report
+      type(solve_tally), intent(inout) :: tally
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: polish, changes, previous_changes
+      changes = huge(1)
+      do polish = 1, warm_limit
+         report%active_set_iterations = report%active_set_iterations + 1
+         previous_changes = changes
+         call active_set_step(system, x_free, w_x_free, points, lower, upper, scale, side, x, multiplier, value, &
+                              converged, tally, stat, errmsg, changes)
+         if (stat /= 0 .or. converged) return
+         if (polish >= polish_limit .and. changes >= previous_changes) exit
+      end do
+   end subroutine crossover
+
+   !> H_k v for every point.
+   subroutine row_values(system, points, v, values)
+      type(contact_system), intent(in) :: system
+      integer, intent(in) :: points(:)
+      real(dp), intent(in) :: v(:)
+      real(dp), intent(out) :: values(:)
+      integer :: i
+      do i = 1, size(points)
+         values(i) = contact_value(system%contacts, points(i), v)
+      end do
+   end subroutine row_values
+
+   !> Largest alpha keeping s, t, y, z >= 0 along the direction (huge if unbounded).
+   pure real(dp) function step_to_boundary(it, dir) result(alpha_max)
+      type(barrier_iterate), intent(in) :: it
+      type(barrier_direction), intent(in) :: dir
+      alpha_max = min(ratio(it%s, dir%ds, it%has_lower), ratio(it%y, dir%dy, it%has_lower), &
+                      ratio(it%t, dir%dt, it%has_upper), ratio(it%z, dir%dz, it%has_upper))
+   end function step_to_boundary
+
+   pure real(dp) function ratio(v, dv, mask)
+      real(dp), intent(in) :: v(:), dv(:)
+      logical, intent(in) :: mask(:)
+      integer :: i
+      ratio = huge(1.0_dp)
+      do i = 1, size(v)
+         if (mask(i) .and. dv(i) < 0) ratio = min(ratio, -v(i)/dv(i))
+      end do
+   end function ratio
 end module vibrobeam_contact_newton

@@ -97,27 +97,43 @@ contains
       real(dp), intent(in), optional :: tolerance
 
       logical, allocatable :: in_set(:)       ! .true. for i in I (z_i basic, w_i = 0)
-      logical, allocatable :: infeasible(:)   ! indices violating z_I >= 0 or w_J >= 0
-      integer :: n, iteration_limit, n_infeasible, fewest_infeasible, block_tries_left, pivot
-      real(dp) :: residual_tolerance, feasibility_tolerance, a_norm, w_scale, residual
-      character(len=buffer_length) :: message
+      integer :: iteration_limit
+      real(dp) :: residual_tolerance
 
-      n = size(q)
       z = 0.0_dp
       w = 0.0_dp
       iterations = 0
-      stat = 0
       errmsg = ''
-      message = ''
+      call check_arguments(a, q, z, w, iteration_limit, residual_tolerance, stat, errmsg, max_iterations, tolerance)
+      if (stat /= 0 .or. size(q) == 0) return
+      call pivot(a, q, iteration_limit, residual_tolerance, in_set, z, w, iterations, stat, errmsg)
+      if (stat /= 0) return
+      call accept_solution(a, q, in_set, residual_tolerance, z, w, stat, errmsg)
+   end subroutine solve_lcp
 
-      ! Argument checks (stat_invalid_argument).
+   !> The argument checks of `solve_lcp` (stat_invalid_argument) and the limits it uses:
+   !! `iteration_limit` (max_iterations, default max(100, n^2)) and `residual_tolerance`
+   !! (tolerance, default 1e-10).
+   subroutine check_arguments(a, q, z, w, iteration_limit, residual_tolerance, stat, errmsg, max_iterations, tolerance)
+      real(dp), intent(in) :: a(:, :), q(:), z(:), w(:)
+      integer, intent(out) :: iteration_limit
+      real(dp), intent(out) :: residual_tolerance
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer, intent(in), optional :: max_iterations
+      real(dp), intent(in), optional :: tolerance
+      character(len=buffer_length) :: message
+      integer :: n
+      n = size(q)
+      stat = 0
+      iteration_limit = max(100, n*n)
+      residual_tolerance = default_tolerance
       if (size(a, 1) /= n .or. size(a, 2) /= n .or. size(z) /= n .or. size(w) /= n) then
          write (message, '(a, 5(i0, a))') 'solve_lcp: inconsistent sizes: a is ', size(a, 1), &
             ' x ', size(a, 2), ', q has ', n, ', z has ', size(z), ', w has ', size(w), ' entries.'
          call fail(stat_invalid_argument, message, stat, errmsg)
          return
       end if
-      iteration_limit = max(100, n*n)
       if (present(max_iterations)) then
          if (max_iterations < 0) then
             write (message, '(a, i0, a)') 'solve_lcp: max_iterations = ', max_iterations, &
@@ -127,7 +143,6 @@ contains
          end if
          iteration_limit = max_iterations
       end if
-      residual_tolerance = default_tolerance
       if (present(tolerance)) then
          if (.not. ieee_is_finite(tolerance)) then
             call fail(stat_invalid_argument, 'solve_lcp: tolerance is not a finite number.', stat, errmsg)
@@ -145,12 +160,28 @@ contains
          call fail(stat_invalid_argument, 'solve_lcp: a or q has a NaN or infinite entry.', stat, errmsg)
          return
       end if
+   end subroutine check_arguments
 
-      if (n == 0) return
-
+   !> The pivoting of `solve_lcp` (module documentation) from I = {i : q_i < 0} until the
+   !! trial solution (z, w) of the set `in_set` is feasible; stat_no_convergence after
+   !! `iteration_limit` pivots, stat_linear_solver_failure (z = w = 0) when a trial set
+   !! cannot be solved.
+   subroutine pivot(a, q, iteration_limit, residual_tolerance, in_set, z, w, iterations, stat, errmsg)
+      real(dp), intent(in) :: a(:, :), q(:)
+      integer, intent(in) :: iteration_limit
+      real(dp), intent(in) :: residual_tolerance
+      logical, allocatable, intent(out) :: in_set(:)
+      real(dp), intent(out) :: z(:), w(:)
+      integer, intent(inout) :: iterations
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      logical :: infeasible(size(q))   ! indices violating z_I >= 0 or w_J >= 0
+      integer :: n, n_infeasible, fewest_infeasible, block_tries_left, index
+      real(dp) :: feasibility_tolerance, a_norm, w_scale
+      character(len=buffer_length) :: message
+      n = size(q)
       feasibility_tolerance = max(0.01_dp*residual_tolerance, 16.0_dp*real(n, dp)*epsilon(1.0_dp))
       a_norm = maxval(sum(abs(a), dim=2))   ! |A|_inf, converts z into the units of w
-      allocate (infeasible(n))
 
       ! Júdice & Pires: start from I = {i : q_i < 0}. If q >= 0 this set is empty and
       ! z = 0, w = q is the solution after zero pivots.
@@ -192,14 +223,25 @@ contains
             in_set = in_set .neqv. infeasible
          else
             ! Safeguard: Murty's least-index principal pivot (finite for P-matrices).
-            pivot = findloc(infeasible, .true., dim=1)
-            in_set(pivot) = .not. in_set(pivot)
+            index = findloc(infeasible, .true., dim=1)
+            in_set(index) = .not. in_set(index)
          end if
          iterations = iterations + 1
       end do
+   end subroutine pivot
 
-      ! Accepted set: clip the round-off negatives allowed by the feasibility test, then
-      ! make w consistent with the clipped z (w_I = 0 exactly, w_J = A_J z + q_J >= 0).
+   !> The accepted set: clip the round-off negatives allowed by the feasibility test, then
+   !! make w consistent with the clipped z (w_I = 0 exactly, w_J = A_J z + q_J >= 0), and
+   !! check the residual (stat_residual_check_failed).
+   subroutine accept_solution(a, q, in_set, residual_tolerance, z, w, stat, errmsg)
+      real(dp), intent(in) :: a(:, :), q(:), residual_tolerance
+      logical, intent(in) :: in_set(:)
+      real(dp), intent(inout) :: z(:), w(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      real(dp) :: residual
+      character(len=buffer_length) :: message
+      stat = 0
       z = max(z, 0.0_dp)
       w = matmul(a, z) + q
       where (in_set) w = 0.0_dp
@@ -209,10 +251,10 @@ contains
       if (residual > residual_tolerance) then
          write (message, '(a, es10.3, a, es10.3, a, i0, a)') 'solve_lcp: residual ', residual, &
             ' of the computed solution exceeds the tolerance ', residual_tolerance, &
-            ' (n = ', n, '; A may be too ill-conditioned).'
+            ' (n = ', size(q), '; A may be too ill-conditioned).'
          call fail(stat_residual_check_failed, message, stat, errmsg)
       end if
-   end subroutine solve_lcp
+   end subroutine accept_solution
 
    !> Normalized violation of the LCP conditions by z, with w = A z + q recomputed:
    !!

@@ -83,7 +83,6 @@ contains
       type(cantilever_flexibility) :: flexibility
       real(dp), allocatable :: lanczos_vectors(:,:), workd(:), workl(:), resid(:)
       logical, allocatable :: select(:)
-      real(dp), allocatable :: held(:)
       integer :: n, ncv, ido, info, iparam(11), ipntr(11), i
       real(dp) :: tolerance
       n = model%unknowns
@@ -96,7 +95,6 @@ contains
       end if
       call flexibility%setup(model, stat, errmsg)
       if (stat /= 0) return
-      if (present(constraint_modes)) allocate (held(size(constraint_modes, 2)))
       ncv = lanczos_basis_size(n, count)
       ! ARPACK's work length ncv (ncv + 8) is a default integer
       if (int(ncv, int64)*(ncv + 8) > huge(ncv)) then
@@ -122,61 +120,96 @@ contains
       ido = 0
       ! 0: ARPACK's default, machine precision on each Ritz value (dsaupd writes it back)
       tolerance = 0
-      do
-         call dsaupd(ido, 'G', n, 'LM', count, tolerance, resid, ncv, lanczos_vectors, n, iparam, ipntr, &
-                     workd, workl, size(workl), info)
-         ! the operand starts at workd(ipntr(1)), the result goes to workd(ipntr(2)), and
-         ! in mode 3 M times the operand is at workd(ipntr(3)) when ido = 1
-         select case (ido)
-         case (-1)   ! y = K^-1 M x (the start: M x not yet known)
-            call band_matvec(model%mass, workd(ipntr(1):ipntr(1) + n - 1), workd(ipntr(2):ipntr(2) + n - 1))
-            call flexibility%solve(workd(ipntr(2):ipntr(2) + n - 1))
-            if (present(constraint_modes)) call hold(workd(ipntr(2):ipntr(2) + n - 1))
-         case (1)    ! y = K^-1 M x, with M x given
-            workd(ipntr(2):ipntr(2) + n - 1) = workd(ipntr(3):ipntr(3) + n - 1)
-            call flexibility%solve(workd(ipntr(2):ipntr(2) + n - 1))
-            if (present(constraint_modes)) call hold(workd(ipntr(2):ipntr(2) + n - 1))
-         case (2)    ! y = M x
-            call band_matvec(model%mass, workd(ipntr(1):ipntr(1) + n - 1), workd(ipntr(2):ipntr(2) + n - 1))
-         case (99)
-            exit
-         case default
-            stat = stat_failure
-            write (errmsg, '(a,i0)') 'Lanczos: ARPACK dsaupd made an unexpected request, ido = ', ido
-            return
-         end select
-      end do
-      if (info /= 0 .or. iparam(5) < count) then
-         stat = stat_failure
-         errmsg = 'Lanczos: '//arpack_message('dsaupd', info, iparam(5), count, ncv)
-         return
-      end if
-      call dseupd(.true., 'A', select, eigenvalues, vectors, n, 0.0_dp, 'G', n, 'LM', count, tolerance, resid, &
-                  ncv, lanczos_vectors, n, iparam, ipntr, workd, workl, size(workl), info)
-      if (info /= 0) then
-         stat = stat_failure
-         errmsg = 'Lanczos: '//arpack_message('dseupd', info, iparam(5), count, ncv)
-      end if
+      ! ARPACK keeps the state of an iteration in SAVEd variables: one iteration at a time
+      ! in the process (a sweep's points prepare their reduced models on several threads)
+      !$omp critical (vibrobeam_arpack)
+      call iterate()
+      !$omp end critical (vibrobeam_arpack)
 
    contains
 
-      !> y := y - Psi (H y): the static response with the held displacements put back to 0.
-      subroutine hold(y)
-         real(dp), intent(inout) :: y(:)
-         integer :: c, a
-         real(dp) :: value
-         do c = 1, size(constraint_modes, 2)
-            value = 0
-            do a = 1, 4
-               if (held_dofs(a, c) /= 0) value = value + held_weights(a, c)*y(held_dofs(a, c))
-            end do
-            held(c) = value
+      !> dsaupd's reverse-communication loop, then dseupd for the eigenpairs.
+      subroutine iterate()
+         do
+            call dsaupd(ido, 'G', n, 'LM', count, tolerance, resid, ncv, lanczos_vectors, n, iparam, ipntr, &
+                        workd, workl, size(workl), info)
+            if (ido == 99) exit
+            call apply_operator(model, flexibility, ido, ipntr, workd, stat, errmsg, held_dofs, held_weights, &
+                                constraint_modes)
+            if (stat /= 0) return
          end do
-         do c = 1, size(constraint_modes, 2)
-            y = y - held(c)*constraint_modes(:, c)
-         end do
-      end subroutine hold
+         if (info /= 0 .or. iparam(5) < count) then
+            stat = stat_failure
+            errmsg = 'Lanczos: '//arpack_message('dsaupd', info, iparam(5), count, ncv)
+            return
+         end if
+         call dseupd(.true., 'A', select, eigenvalues, vectors, n, 0.0_dp, 'G', n, 'LM', count, tolerance, resid, &
+                     ncv, lanczos_vectors, n, iparam, ipntr, workd, workl, size(workl), info)
+         if (info /= 0) then
+            stat = stat_failure
+            errmsg = 'Lanczos: '//arpack_message('dseupd', info, iparam(5), count, ncv)
+         end if
+      end subroutine iterate
    end subroutine lanczos_modes
+
+   !> One request of ARPACK's reverse communication (`ido`, mode 3): the operand starts
+   !! at workd(ipntr(1)), the result goes to workd(ipntr(2)), and M times the operand is at
+   !! workd(ipntr(3)) when ido = 1. OP = K^-1 M, held displacements put back to 0 with
+   !! `constraint_modes` (`hold`); B = M. stat = stat_failure on an unexpected request.
+   subroutine apply_operator(model, flexibility, ido, ipntr, workd, stat, errmsg, held_dofs, held_weights, &
+                             constraint_modes)
+      type(beam_model), intent(in) :: model
+      type(cantilever_flexibility), intent(inout) :: flexibility
+      integer, intent(in) :: ido, ipntr(11)
+      real(dp), intent(inout) :: workd(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer, intent(in), optional :: held_dofs(:,:)
+      real(dp), intent(in), optional :: held_weights(:,:), constraint_modes(:,:)
+      integer :: n
+      n = model%unknowns
+      stat = 0
+      errmsg = ''
+      ! (ipntr(3) is set for ido = 1 only: its section is formed there)
+      associate (x => workd(ipntr(1):ipntr(1) + n - 1), y => workd(ipntr(2):ipntr(2) + n - 1))
+         select case (ido)
+         case (-1)   ! y = K^-1 M x (the start: M x not yet known)
+            call band_matvec(model%mass, x, y)
+            call flexibility%solve(y)
+            if (present(constraint_modes)) call hold(y, held_dofs, held_weights, constraint_modes)
+         case (1)    ! y = K^-1 M x, with M x given
+            y = workd(ipntr(3):ipntr(3) + n - 1)
+            call flexibility%solve(y)
+            if (present(constraint_modes)) call hold(y, held_dofs, held_weights, constraint_modes)
+         case (2)    ! y = M x
+            call band_matvec(model%mass, x, y)
+         case default
+            stat = stat_failure
+            write (errmsg, '(a,i0)') 'Lanczos: ARPACK dsaupd made an unexpected request, ido = ', ido
+         end select
+      end associate
+   end subroutine apply_operator
+
+   !> y := y - Psi (H y): the static response with the held displacements (rows of 4
+   !! unknowns `held_dofs` and weights `held_weights`) put back to 0.
+   subroutine hold(y, held_dofs, held_weights, constraint_modes)
+      real(dp), intent(inout) :: y(:)
+      integer, intent(in) :: held_dofs(:,:)
+      real(dp), intent(in) :: held_weights(:,:), constraint_modes(:,:)
+      real(dp) :: held(size(constraint_modes, 2))
+      integer :: c, a
+      real(dp) :: value
+      do c = 1, size(constraint_modes, 2)
+         value = 0
+         do a = 1, 4
+            if (held_dofs(a, c) /= 0) value = value + held_weights(a, c)*y(held_dofs(a, c))
+         end do
+         held(c) = value
+      end do
+      do c = 1, size(constraint_modes, 2)
+         y = y - held(c)*constraint_modes(:, c)
+      end do
+   end subroutine hold
 
    !> What an ARPACK info (dsaupd / dseupd, ARPACK-NG 3.8 documentation) means.
    function arpack_message(routine, info, converged, count, ncv) result(message)

@@ -21,10 +21,10 @@
 !!   and side act in parallel, each from its own level, and a rigid bound on the same node
 !!   and side acts beside them (whichever is reached first holds).
 module vibrobeam_obstacles
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, keyword_length
    use vibrobeam_model, only: beam_model, node_row
-   use vibrobeam_compliant_law, only: spring_set
    use vibrobeam_contact_set, only: contact_set, no_bound
    implicit none
    private
@@ -44,6 +44,20 @@ module vibrobeam_obstacles
       real(dp) :: exponent = 1                   !! 1 linear, 1.5 Hertz-like
       real(dp) :: damping = 0                    !! Hunt-Crossley alpha (s/m), compliant stops only
    end type obstacle_type
+
+   !> What the obstacles make of the nodes 0..N (0 the clamp) while the contact points
+   !! are built: the most restrictive bound of each side and its obstacle, the nodes a
+   !! compliant obstacle covers, and the springs (node, obstacle, level, tributary length).
+   type :: nodal_bounds
+      real(dp), allocatable :: lower(:), upper(:)                    !! (0:N) bounds (m), +-no_bound: none
+      integer, allocatable :: lower_source(:), upper_source(:)       !! (0:N) their obstacle, 0: none
+      logical, allocatable :: covered(:)                             !! (0:N) a spring acts there
+      integer :: springs = 0
+      integer, allocatable :: spring_node(:), spring_obstacle(:)
+      real(dp), allocatable :: spring_level(:), spring_length(:)     !! (m), (m; 1 for a punctual stop)
+   contains
+      procedure :: init => nodal_bounds_init
+   end type nodal_bounds
 
 contains
 
@@ -99,135 +113,201 @@ contains
       character(len=:), allocatable, intent(inout) :: warnings
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp) :: lower(0:model%elements), upper(0:model%elements), level, tolerance, xi
-      integer :: lower_source(0:model%elements), upper_source(0:model%elements)
-      integer :: i, k, first, last, c, j
-      logical :: covered(0:model%elements)
-      integer :: spring_node(size(obstacles)*(model%elements + 1)), spring_obstacle(size(spring_node))
-      real(dp) :: spring_level(size(spring_node)), spring_length(size(spring_node))
+      type(nodal_bounds) :: nodes
+      integer :: k, first, last
+      call nodes%init(model%elements, size(obstacles))
+      do k = 1, size(obstacles)
+         call covered_nodes(obstacles(k), k, model, first, last, warnings)
+         call add_obstacle(obstacles(k), k, model, first, last, nodes)
+      end do
+      call check_bounds(nodes, model, stat, errmsg)
+      if (stat /= 0) return
+      call collect_points(nodes, model, contacts)
+      call collect_springs(nodes, obstacles, contacts)
+   end subroutine build_contact_points
+
+   !> The nodes first..last (0 the clamp) that obstacle k covers: the nearest node of a
+   !! punctual one, every node in [x_from, x_to] of a longitudinal one (1e-9 h
+   !! tolerance), the node nearest its middle when it covers none; a warning when a
+   !! punctual one is not on a node or a longitudinal one covers no node.
+   subroutine covered_nodes(o, k, model, first, last, warnings)
+      type(obstacle_type), intent(in) :: o
+      integer, intent(in) :: k
+      type(beam_model), intent(in) :: model
+      integer, intent(out) :: first, last
+      character(len=:), allocatable, intent(inout) :: warnings
       character(len=160) :: line
+      real(dp) :: tolerance
+      tolerance = 1e-9_dp*model%h
+      if (o%x_to - o%x_from <= tolerance) then
+         first = nint(o%x_from/model%h)
+         last = first
+         if (abs(model%x(first + 1) - o%x_from) > tolerance) then
+            write (line, '(a,i0,a,g0.6,a,g0.6,a)') 'obstacle ', k, ' at x = ', o%x_from, &
+               ' m is not on a node; it acts at the nearest node x = ', model%x(first + 1), ' m'
+            warnings = warnings//trim(line)//new_line('a')
+         end if
+      else
+         first = ceiling((o%x_from - tolerance)/model%h)
+         last = floor((o%x_to + tolerance)/model%h)
+         if (last < first) then
+            first = nint(0.5_dp*(o%x_from + o%x_to)/model%h)
+            last = first
+            write (line, '(a,i0,a,g0.6,a)') 'obstacle ', k, ' covers no node; it acts at the node x = ', &
+               model%x(first + 1), ' m nearest its middle'
+            warnings = warnings//trim(line)//new_line('a')
+         end if
+      end if
+   end subroutine covered_nodes
+
+   !> Obstacle k at the nodes first..last: its level interpolated linearly along it; a
+   !! rigid one tightens the bound of its side where it is more restrictive, a compliant
+   !! one gives each node (but the clamp) a spring of its tributary length inside
+   !! [x_from, x_to] (h inside, h/2 at an end node; a punctual one its whole stiffness).
+   subroutine add_obstacle(o, k, model, first, last, nodes)
+      type(obstacle_type), intent(in) :: o
+      integer, intent(in) :: k, first, last
+      type(beam_model), intent(in) :: model
+      type(nodal_bounds), intent(inout) :: nodes
+      real(dp) :: level, xi, tolerance
+      integer :: i, j
+      tolerance = 1e-9_dp*model%h
+      do i = first, last
+         if (o%x_to - o%x_from <= tolerance) then
+            level = o%level_from
+         else
+            xi = min(1.0_dp, max(0.0_dp, (model%x(i + 1) - o%x_from)/(o%x_to - o%x_from)))
+            level = (1 - xi)*o%level_from + xi*o%level_to
+         end if
+         if (o%stiffness > 0) then
+            ! a spring, never a bound; the clamped node never moves and gets none
+            if (i == 0) cycle
+            nodes%covered(i) = .true.
+            nodes%springs = nodes%springs + 1
+            j = nodes%springs
+            nodes%spring_node(j) = i
+            nodes%spring_obstacle(j) = k
+            nodes%spring_level(j) = level
+            if (first == last) then
+               nodes%spring_length(j) = max(o%x_to - o%x_from, 0.0_dp)
+               if (nodes%spring_length(j) <= tolerance) nodes%spring_length(j) = 1   ! punctual: the stiffness itself
+            else
+               ! tributary length of node i inside [x_from, x_to]
+               nodes%spring_length(j) = max(0.0_dp, min(o%x_to, model%x(i + 1) + 0.5_dp*model%h, model%length) - &
+                                            max(o%x_from, model%x(i + 1) - 0.5_dp*model%h))
+            end if
+            cycle
+         end if
+         if (o%side == 'below') then
+            if (level > nodes%lower(i)) then
+               nodes%lower(i) = level
+               nodes%lower_source(i) = k
+            end if
+         else
+            if (level < nodes%upper(i)) then
+               nodes%upper(i) = level
+               nodes%upper_source(i) = k
+            end if
+         end if
+      end do
+   end subroutine add_obstacle
+
+   !> stat = 1 when a bound cuts the clamp (u = 0 must be admissible) or a 'below' level
+   !! is not under an 'above' level at a node.
+   subroutine check_bounds(nodes, model, stat, errmsg)
+      type(nodal_bounds), intent(in) :: nodes
+      type(beam_model), intent(in) :: model
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: i
       stat = 0
       errmsg = ''
-      lower = -no_bound
-      upper = no_bound
-      lower_source = 0
-      upper_source = 0
-      covered = .false.
-      j = 0
-      tolerance = 1e-9_dp*model%h
-      do k = 1, size(obstacles)
-         associate (o => obstacles(k))
-            if (o%x_to - o%x_from <= tolerance) then
-               first = nint(o%x_from/model%h)
-               last = first
-               if (abs(model%x(first + 1) - o%x_from) > tolerance) then
-                  write (line, '(a,i0,a,g0.6,a,g0.6,a)') 'obstacle ', k, ' at x = ', o%x_from, &
-                     ' m is not on a node; it acts at the nearest node x = ', model%x(first + 1), ' m'
-                  warnings = warnings//trim(line)//new_line('a')
-               end if
-            else
-               first = ceiling((o%x_from - tolerance)/model%h)
-               last = floor((o%x_to + tolerance)/model%h)
-               if (last < first) then
-                  first = nint(0.5_dp*(o%x_from + o%x_to)/model%h)
-                  last = first
-                  write (line, '(a,i0,a,g0.6,a)') 'obstacle ', k, ' covers no node; it acts at the node x = ', &
-                     model%x(first + 1), ' m nearest its middle'
-                  warnings = warnings//trim(line)//new_line('a')
-               end if
-            end if
-            do i = first, last
-               if (o%x_to - o%x_from <= tolerance) then
-                  level = o%level_from
-               else
-                  xi = min(1.0_dp, max(0.0_dp, (model%x(i + 1) - o%x_from)/(o%x_to - o%x_from)))
-                  level = (1 - xi)*o%level_from + xi*o%level_to
-               end if
-               if (o%stiffness > 0) then
-                  ! a spring, never a bound; the clamped node never moves and gets none
-                  if (i == 0) cycle
-                  covered(i) = .true.
-                  j = j + 1
-                  spring_node(j) = i
-                  spring_obstacle(j) = k
-                  spring_level(j) = level
-                  if (first == last) then
-                     spring_length(j) = max(o%x_to - o%x_from, 0.0_dp)
-                     if (spring_length(j) <= tolerance) spring_length(j) = 1   ! punctual: the stiffness itself
-                  else
-                     ! tributary length of node i inside [x_from, x_to]
-                     spring_length(j) = max(0.0_dp, min(o%x_to, model%x(i + 1) + 0.5_dp*model%h, model%length) - &
-                                        max(o%x_from, model%x(i + 1) - 0.5_dp*model%h))
-                  end if
-                  cycle
-               end if
-               if (o%side == 'below') then
-                  if (level > lower(i)) then
-                     lower(i) = level
-                     lower_source(i) = k
-                  end if
-               else
-                  if (level < upper(i)) then
-                     upper(i) = level
-                     upper_source(i) = k
-                  end if
-               end if
-            end do
-         end associate
-      end do
-      if (lower(0) > 0 .or. upper(0) < 0) then
-         write (errmsg, '(a,i0,a)') '&obstacles: obstacle ', max(lower_source(0), upper_source(0)), &
+      if (nodes%lower(0) > 0 .or. nodes%upper(0) < 0) then
+         write (errmsg, '(a,i0,a)') '&obstacles: obstacle ', max(nodes%lower_source(0), nodes%upper_source(0)), &
             ' cuts the clamped end x = 0, where u = 0 always; move x_from away from 0 or its level past 0'
-         stat = 1
+         stat = stat_failure
          return
       end if
       do i = 1, model%elements
-         if (lower(i) >= upper(i)) then
+         if (nodes%lower(i) >= nodes%upper(i)) then
             write (errmsg, '(a,i0,a,g0.6,a,i0,a,g0.6,a,g0.6,a)') '&obstacles: the ''below'' obstacle ', &
-               lower_source(i), ' (level ', lower(i), ' m) is not under the ''above'' obstacle ', &
-               upper_source(i), ' (level ', upper(i), ' m) at x = ', model%x(i + 1), &
+               nodes%lower_source(i), ' (level ', nodes%lower(i), ' m) is not under the ''above'' obstacle ', &
+               nodes%upper_source(i), ' (level ', nodes%upper(i), ' m) at x = ', model%x(i + 1), &
                ' m; a below level must be smaller than an above level'
-            stat = 1
+            stat = stat_failure
             return
          end if
       end do
-      contacts%count = count(lower(1:) > -no_bound .or. upper(1:) < no_bound .or. covered(1:))
-      allocate (contacts%node(contacts%count), contacts%x(contacts%count), contacts%lower(contacts%count), &
-                contacts%upper(contacts%count), contacts%dofs(4, contacts%count), &
-                contacts%weights(4, contacts%count), contacts%lower_obstacle(contacts%count), &
-                contacts%upper_obstacle(contacts%count))
-      c = 0
-      do i = 1, model%elements
-         if (lower(i) <= -no_bound .and. upper(i) >= no_bound .and. .not. covered(i)) cycle
-         c = c + 1
-         contacts%node(c) = i
-         contacts%x(c) = model%x(i + 1)
-         contacts%lower(c) = lower(i)
-         contacts%upper(c) = upper(i)
-         contacts%lower_obstacle(c) = lower_source(i)
-         contacts%upper_obstacle(c) = upper_source(i)
-         call node_row(model, i, contacts%dofs(:, c), contacts%weights(:, c))
-      end do
+   end subroutine check_bounds
+
+   !> A contact point at every node (but the clamp) with a bound or a spring, in the
+   !! order of the nodes.
+   subroutine collect_points(nodes, model, contacts)
+      type(nodal_bounds), intent(in) :: nodes
+      type(beam_model), intent(in) :: model
+      type(contact_set), intent(inout) :: contacts
+      integer :: i, c
+      associate (lower => nodes%lower, upper => nodes%upper)
+         contacts%count = count(lower(1:) > -no_bound .or. upper(1:) < no_bound .or. nodes%covered(1:))
+         allocate (contacts%node(contacts%count), contacts%x(contacts%count), contacts%lower(contacts%count), &
+                   contacts%upper(contacts%count), contacts%dofs(4, contacts%count), &
+                   contacts%weights(4, contacts%count), contacts%lower_obstacle(contacts%count), &
+                   contacts%upper_obstacle(contacts%count))
+         c = 0
+         do i = 1, model%elements
+            if (lower(i) <= -no_bound .and. upper(i) >= no_bound .and. .not. nodes%covered(i)) cycle
+            c = c + 1
+            contacts%node(c) = i
+            contacts%x(c) = model%x(i + 1)
+            contacts%lower(c) = lower(i)
+            contacts%upper(c) = upper(i)
+            contacts%lower_obstacle(c) = nodes%lower_source(i)
+            contacts%upper_obstacle(c) = nodes%upper_source(i)
+            call node_row(model, i, contacts%dofs(:, c), contacts%weights(:, c))
+         end do
+      end associate
+   end subroutine collect_points
+
+   !> The springs of the compliant obstacles at their contact points; a side held by
+   !! springs only takes its first spring's obstacle (the run statistics attribute
+   !! contact episodes by side).
+   subroutine collect_springs(nodes, obstacles, contacts)
+      type(nodal_bounds), intent(in) :: nodes
+      type(obstacle_type), intent(in) :: obstacles(:)
+      type(contact_set), intent(inout) :: contacts
+      integer :: j, k
+      j = nodes%springs
       associate (springs => contacts%springs)
          springs%count = j
          allocate (springs%point(j), springs%sign(j), springs%level(j), springs%stiffness(j), &
                    springs%exponent(j), springs%damping(j))
          do k = 1, j
-            springs%point(k) = findloc(contacts%node, spring_node(k), 1)
-            associate (o => obstacles(spring_obstacle(k)))
+            springs%point(k) = findloc(contacts%node, nodes%spring_node(k), 1)
+            associate (o => obstacles(nodes%spring_obstacle(k)))
                springs%sign(k) = merge(1.0_dp, -1.0_dp, o%side == 'below')
-               springs%level(k) = spring_level(k)
-               springs%stiffness(k) = o%stiffness*spring_length(k)
+               springs%level(k) = nodes%spring_level(k)
+               springs%stiffness(k) = o%stiffness*nodes%spring_length(k)
                springs%exponent(k) = o%exponent
                springs%damping(k) = o%damping
-               ! a side held by springs only: its first spring's obstacle gives the impulses
-               ! there (the run statistics attribute contact episodes by side)
                if (o%side == 'below' .and. contacts%lower_obstacle(springs%point(k)) == 0) &
-                  contacts%lower_obstacle(springs%point(k)) = spring_obstacle(k)
+                  contacts%lower_obstacle(springs%point(k)) = nodes%spring_obstacle(k)
                if (o%side == 'above' .and. contacts%upper_obstacle(springs%point(k)) == 0) &
-                  contacts%upper_obstacle(springs%point(k)) = spring_obstacle(k)
+                  contacts%upper_obstacle(springs%point(k)) = nodes%spring_obstacle(k)
             end associate
          end do
       end associate
-   end subroutine build_contact_points
+   end subroutine collect_springs
+
+   !> Empty bounds at nodes 0..elements, room for a spring of each obstacle at each node.
+   subroutine nodal_bounds_init(self, elements, obstacles)
+      class(nodal_bounds), intent(out) :: self
+      integer, intent(in) :: elements, obstacles
+      allocate (self%lower(0:elements), source=-no_bound)
+      allocate (self%upper(0:elements), source=no_bound)
+      allocate (self%lower_source(0:elements), self%upper_source(0:elements), source=0)
+      allocate (self%covered(0:elements), source=.false.)
+      allocate (self%spring_node(obstacles*(elements + 1)), self%spring_obstacle(obstacles*(elements + 1)))
+      allocate (self%spring_level(obstacles*(elements + 1)), self%spring_length(obstacles*(elements + 1)))
+      self%springs = 0
+   end subroutine nodal_bounds_init
 end module vibrobeam_obstacles

@@ -92,13 +92,8 @@ contains
       real(dp), intent(out) :: reaction_error(:) !! (m) bound of the error of P_j (N)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp), allocatable :: span(:), diagonal(:), off_diagonal(:), rhs(:), band(:, :), rhs_error(:), magnitude_int(:), &
-                               error_int(:), bound_diagonal(:), bound_off(:), work(:), absolute(:)
-      integer, allocatable :: elements_under(:), iwork(:)
-      real(dp) :: start, finish, left, right, rise(2), fall(2), kappa(2), kappa_abs(2), kappa_err(2), length, &
-                  column(3), norm_a, rcond
-      integer :: m, j, e, info, r, k
-      logical :: elastic
+      real(dp), allocatable :: span(:), diagonal(:), off_diagonal(:), rhs(:), rhs_error(:)
+      integer :: m
       stat = 0
       errmsg = ''
       m = size(nodes)
@@ -109,9 +104,37 @@ contains
          call flexibility%displacement_of_curvature(z, u)
          return
       end if
-      allocate (span(m), diagonal(m), off_diagonal(max(m - 1, 1)), rhs(m), rhs_error(m), magnitude_int(m), error_int(m), &
-                source=0.0_dp)
-      allocate (elements_under(m), source=0)
+      allocate (span(m), diagonal(m), off_diagonal(max(m - 1, 1)), rhs(m), rhs_error(m), source=0.0_dp)
+      call moment_equations(flexibility, nodes, targets, free_curvature, curvature_error, span, diagonal, &
+                            off_diagonal, rhs, rhs_error)
+      if (any(compliance > 0)) then
+         call solve_elastic(flexibility%ei, span, compliance, diagonal, off_diagonal, rhs, rhs_error, &
+                            moment(0:m - 1), moment_error(0:m - 1), stat, errmsg)
+      else
+         call solve_rigid(span, diagonal, off_diagonal, rhs, rhs_error, moment(0:m - 1), moment_error(0:m - 1), &
+                          stat, errmsg)
+      end if
+      if (stat /= 0) return
+      moment(m) = 0
+      ! z = kappa_free + (moment line)/EI on [0, X_m]; 0 beyond
+      call add_moment_line(flexibility, nodes, moment(0:m - 1)/flexibility%ei, z)
+      call flexibility%displacement_of_curvature(z, u)
+      call moment_reactions(span, moment, moment_error, reaction, reaction_rounding, reaction_error)
+   end subroutine held_equilibrium
+
+   !> The moment equations S lambda = EI (c - int B kappa_free) of the held nodes (module
+   !! documentation): the spans L_j, S (its diagonal and off-diagonal), the right-hand side
+   !! (row j = 0..m-1 at rhs(j + 1)) and the bound of its error (`held_equilibrium`).
+   subroutine moment_equations(flexibility, nodes, targets, free_curvature, curvature_error, span, diagonal, &
+                               off_diagonal, rhs, rhs_error)
+      type(cantilever_flexibility), intent(in) :: flexibility
+      integer, intent(in) :: nodes(:)
+      real(dp), intent(in) :: targets(:), free_curvature(:), curvature_error(:)
+      real(dp), intent(out) :: span(:), diagonal(:), off_diagonal(:), rhs(:), rhs_error(:)
+      real(dp) :: magnitude_int(size(nodes)), error_int(size(nodes))
+      integer :: elements_under(size(nodes))
+      integer :: m, j
+      m = size(nodes)
       ! spans, S and c (rhs(j + 1) holds row j = 0..m-1), with the rounding of c
       span(1) = flexibility%position(nodes(1)) - flexibility%position(0)
       do j = 2, m
@@ -126,10 +149,41 @@ contains
          rhs(j) = (targets(j) - targets(j - 1))/span(j) - (targets(j - 1) - previous_target(j - 1))/span(j - 1)
          ! each difference of targets is rounded relative to itself (IEEE subtraction)
          rhs_error(j) = rounding_gamma(3)*(abs(targets(j) - targets(j - 1))/span(j) + &
-                                  abs(targets(j - 1) - previous_target(j - 1))/span(j - 1))
+                                           abs(targets(j - 1) - previous_target(j - 1))/span(j - 1))
       end do
-      ! int B_j kappa_free, element by element: span j (from X_(j-1) to X_j) carries the
-      ! falling part of B_(j-1) (row j) and the rising part of B_j (row j + 1, if j < m)
+      call integrate_free_curvature(flexibility, nodes, span, free_curvature, curvature_error, rhs, magnitude_int, &
+                                    error_int, elements_under)
+      do j = 1, m
+         rhs_error(j) = flexibility%ei*(rhs_error(j) + error_int(j) + rounding_gamma(elements_under(j) + 8)*magnitude_int(j)) + &
+                        rounding_gamma(2)*flexibility%ei*abs(rhs(j))
+      end do
+      rhs = flexibility%ei*rhs
+   contains
+      real(dp) function previous_target(j)
+         integer, intent(in) :: j
+         previous_target = 0
+         if (j > 1) previous_target = targets(j - 1)
+      end function previous_target
+   end subroutine moment_equations
+
+   !> rhs(j) -= int B_(j-1) kappa_free, element by element: span j (from X_(j-1) to X_j)
+   !! carries the falling part of B_(j-1) (row j) and the rising part of B_j (row j + 1,
+   !! if j < m); with the same integrals of |kappa_free| (`magnitude_int`) and of its
+   !! error bound (`error_int`), and the elements under each B (`elements_under`).
+   subroutine integrate_free_curvature(flexibility, nodes, span, free_curvature, curvature_error, rhs, magnitude_int, &
+                                       error_int, elements_under)
+      type(cantilever_flexibility), intent(in) :: flexibility
+      integer, intent(in) :: nodes(:)
+      real(dp), intent(in) :: span(:), free_curvature(:), curvature_error(:)
+      real(dp), intent(inout) :: rhs(:)
+      real(dp), intent(out) :: magnitude_int(:), error_int(:)
+      integer, intent(out) :: elements_under(:)
+      real(dp) :: start, finish, left, right, rise(2), fall(2), kappa(2), kappa_abs(2), kappa_err(2), length
+      integer :: m, j, e
+      m = size(nodes)
+      magnitude_int = 0
+      error_int = 0
+      elements_under = 0
       do j = 1, m
          start = flexibility%position(merge(0, nodes(max(j - 1, 1)), j == 1))
          finish = flexibility%position(nodes(j))
@@ -154,68 +208,103 @@ contains
             end if
          end do
       end do
+   end subroutine integrate_free_curvature
+
+   !> Rigid supports: lambda = S^-1 rhs (tridiagonal, LAPACK dpttrf/dpttrs) and the
+   !! bound of its error, |d lambda| <= (D_S - O_S)^-1 (|d rhs| + gamma_4 S |lambda|).
+   subroutine solve_rigid(span, diagonal, off_diagonal, rhs, rhs_error, moment, moment_error, stat, errmsg)
+      real(dp), intent(in) :: span(:), rhs(:), rhs_error(:)
+      real(dp), intent(inout), contiguous :: diagonal(:), off_diagonal(:)   !! S; overwritten by its factor
+      real(dp), intent(out), contiguous :: moment(:)          !! (m) lambda_0 .. lambda_(m-1)
+      real(dp), intent(out) :: moment_error(:)                 !! (m) bound of their errors
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp) :: bound_diagonal(size(diagonal)), bound_off(size(off_diagonal)), absolute(size(rhs))
+      integer :: m, info
+      m = size(rhs)
+      bound_diagonal = diagonal
+      bound_off = -off_diagonal
+      moment = rhs
+      call dpttrf(m, diagonal, off_diagonal, info)
+      if (info == 0) call dpttrs(m, 1, diagonal, off_diagonal, moment, m, info)
+      call check_info(info, stat, errmsg)
+      if (stat /= 0) return
+      absolute = rhs_error + rounding_gamma(4)*tridiagonal_abs_times(span, abs(moment))
+      call dpttrf(m, bound_diagonal, bound_off, info)
+      if (info == 0) call dpttrs(m, 1, bound_diagonal, bound_off, absolute, m, info)
+      moment_error = abs(absolute)
+   end subroutine solve_rigid
+
+   !> Elastic supports: lambda = (S + EI D_c diag(c) D_c^T)^-1 rhs (pentadiagonal, LAPACK
+   !! dpbtrf/dpbtrs) and the bound of its error, normwise with dpbcon's estimate of
+   !! ||A^-1||_1: (max |d rhs| + gamma_5 |A| max |lambda|) ||A^-1||.
+   subroutine solve_elastic(ei, span, compliance, diagonal, off_diagonal, rhs, rhs_error, moment, moment_error, stat, &
+                            errmsg)
+      real(dp), intent(in) :: ei, span(:), compliance(:), diagonal(:), off_diagonal(:), rhs(:), rhs_error(:)
+      real(dp), intent(out), contiguous :: moment(:)          !! (m) lambda_0 .. lambda_(m-1)
+      real(dp), intent(out) :: moment_error(:)                 !! (m) bound of their errors
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp), allocatable :: band(:, :), work(:)
+      integer, allocatable :: iwork(:)
+      real(dp) :: column(3), norm_a, rcond
+      integer :: m, j, k, r, info
+      m = size(rhs)
+      ! S + EI D_c diag(c) D_c^T in lower band storage (2 sub-diagonals): column i of D_c
+      ! (held node i) has 1/L_i in row i-1, -(1/L_i + 1/L_(i+1)) in row i, 1/L_(i+1) in
+      ! row i+1 (rows 0..m-1 stored at 1..m)
+      allocate (band(3, m), source=0.0_dp)
+      band(1, :) = diagonal
+      band(2, 1:m - 1) = off_diagonal(1:m - 1)
       do j = 1, m
-         rhs_error(j) = flexibility%ei*(rhs_error(j) + error_int(j) + rounding_gamma(elements_under(j) + 8)*magnitude_int(j)) + &
-                        rounding_gamma(2)*flexibility%ei*abs(rhs(j))
-      end do
-      rhs = flexibility%ei*rhs
-      elastic = any(compliance > 0)
-      if (elastic) then
-         ! S + EI D_c diag(c) D_c^T in lower band storage (2 sub-diagonals): column i of D_c
-         ! (held node i) has 1/L_i in row i-1, -(1/L_i + 1/L_(i+1)) in row i, 1/L_(i+1) in
-         ! row i+1 (rows 0..m-1 stored at 1..m)
-         allocate (band(3, m), source=0.0_dp)
-         band(1, :) = diagonal
-         band(2, 1:m - 1) = off_diagonal(1:m - 1)
-         do j = 1, m
-            if (.not. compliance(j) > 0) cycle
-            column = [1/span(j), -(1/span(j) + 1/span(min(j + 1, m))), 1/span(min(j + 1, m))]
-            if (j == m) column(2:3) = 0
-            if (j == m - 1) column(3) = 0
-            ! rows j-1, j, j+1 of D_c are stored at j, j+1, j+2
-            do k = 1, 3
-               do r = k, 3
-                  if (j + r - 1 > m) cycle
-                  band(r - k + 1, j + k - 1) = band(r - k + 1, j + k - 1) + flexibility%ei*compliance(j)*column(r)*column(k)
-               end do
+         if (.not. compliance(j) > 0) cycle
+         column = [1/span(j), -(1/span(j) + 1/span(min(j + 1, m))), 1/span(min(j + 1, m))]
+         if (j == m) column(2:3) = 0
+         if (j == m - 1) column(3) = 0
+         ! rows j-1, j, j+1 of D_c are stored at j, j+1, j+2
+         do k = 1, 3
+            do r = k, 3
+               if (j + r - 1 > m) cycle
+               band(r - k + 1, j + k - 1) = band(r - k + 1, j + k - 1) + ei*compliance(j)*column(r)*column(k)
             end do
          end do
-         norm_a = 0
-         do j = 1, m
-            norm_a = max(norm_a, sum(abs(band(:, j))) + sum([(abs(band(k + 1, j - k)), k=1, min(2, j - 1))]))
-         end do
-         call dpbtrf('L', m, 2, band, 3, info)
-         if (info == 0) then
-            allocate (work(3*m), iwork(m))
-            call dpbcon('L', m, 2, band, 3, norm_a, rcond, work, iwork, info)
-         end if
-         if (info == 0) call dpbtrs('L', m, 2, 1, band, 3, rhs, m, info)
-      else
-         bound_diagonal = diagonal
-         bound_off = -off_diagonal
-         call dpttrf(m, diagonal, off_diagonal, info)
-         if (info == 0) call dpttrs(m, 1, diagonal, off_diagonal, rhs, m, info)
+      end do
+      norm_a = 0
+      do j = 1, m
+         norm_a = max(norm_a, sum(abs(band(:, j))) + sum([(abs(band(k + 1, j - k)), k=1, min(2, j - 1))]))
+      end do
+      moment = rhs
+      call dpbtrf('L', m, 2, band, 3, info)
+      if (info == 0) then
+         allocate (work(3*m), iwork(m))
+         call dpbcon('L', m, 2, band, 3, norm_a, rcond, work, iwork, info)
       end if
-      if (info /= 0) then
-         stat = stat_linear_solver_failure
-         write (errmsg, '(a,i0,a)') 'held equilibrium: the moment equations (LAPACK) failed, info = ', info, &
-            ' (held nodes must increase)'
-         return
-      end if
-      moment(0:m - 1) = rhs
-      moment(m) = 0
-      ! the error of lambda: |d lambda| <= |A^-1| (|d rhs| + gamma_5 |A| |lambda|)
-      if (elastic) then
-         moment_error(0:m - 1) = (maxval(rhs_error) + rounding_gamma(5)*norm_a*maxval(abs(rhs)))/max(rcond*norm_a, tiny(1.0_dp))
-      else
-         absolute = rhs_error + rounding_gamma(4)*tridiagonal_abs_times(span, abs(rhs))
-         call dpttrf(m, bound_diagonal, bound_off, info)
-         if (info == 0) call dpttrs(m, 1, bound_diagonal, bound_off, absolute, m, info)
-         moment_error(0:m - 1) = abs(absolute)
-      end if
-      ! z = kappa_free + (moment line)/EI on [0, X_m]; 0 beyond
-      call add_moment_line(flexibility, nodes, moment(0:m - 1)/flexibility%ei, z)
-      call flexibility%displacement_of_curvature(z, u)
+      if (info == 0) call dpbtrs('L', m, 2, 1, band, 3, moment, m, info)
+      call check_info(info, stat, errmsg)
+      if (stat /= 0) return
+      moment_error = (maxval(rhs_error) + rounding_gamma(5)*norm_a*maxval(abs(moment)))/max(rcond*norm_a, tiny(1.0_dp))
+   end subroutine solve_elastic
+
+   !> stat_linear_solver_failure with a message when LAPACK's `info` is not 0.
+   subroutine check_info(info, stat, errmsg)
+      integer, intent(in) :: info
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      stat = 0
+      errmsg = ''
+      if (info == 0) return
+      stat = stat_linear_solver_failure
+      write (errmsg, '(a,i0,a)') 'held equilibrium: the moment equations (LAPACK) failed, info = ', info, &
+         ' (held nodes must increase)'
+   end subroutine check_info
+
+   !> The reactions, the changes of slope of the moment line at the held nodes (module
+   !! documentation), with the bounds of their rounding and of their error.
+   pure subroutine moment_reactions(span, moment, moment_error, reaction, reaction_rounding, reaction_error)
+      real(dp), intent(in) :: span(:), moment(0:), moment_error(0:)
+      real(dp), intent(out) :: reaction(:), reaction_rounding(:), reaction_error(:)
+      integer :: m, j
+      m = size(span)
       do j = 1, m
          reaction(j) = (moment(j - 1) - moment(j))/span(j)
          reaction_rounding(j) = (abs(moment(j - 1)) + abs(moment(j)))/span(j)
@@ -228,13 +317,7 @@ contains
       end do
       reaction_rounding = rounding_gamma(6)*reaction_rounding
       reaction_error = reaction_error + reaction_rounding
-   contains
-      real(dp) function previous_target(j)
-         integer, intent(in) :: j
-         previous_target = 0
-         if (j > 1) previous_target = targets(j - 1)
-      end function previous_target
-   end subroutine held_equilibrium
+   end subroutine moment_reactions
 
    !> z = z + the piecewise linear function with values(j) at X_j (j = 0..m-1, X_0 = 0),
    !! 0 at X_m = node(m) and beyond, in the curvature space of `flexibility`.

@@ -1,6 +1,7 @@
 !> Small POSIX file-system helpers (mkdir -p, rename, remove, existence, fsync, a lock on
-!! a directory or file, unique temporary names) and atomic text output, through `bind(C)`
-!! interfaces to the C library and to src/os/vibrobeam_posix_files.c.
+!! a directory or file, unique temporary names), through `bind(C)` interfaces to the C
+!! library and to src/os/vibrobeam_posix_files.c. Text files written atomically are
+!! `vibrobeam_text_file`'s (src/io).
 !!
 !! Every procedure returns `stat` (0 = success) and `errmsg` (blank on success, otherwise a
 !! message naming the path(s) and the C library's reason) and never stops. Trailing blanks
@@ -20,26 +21,19 @@
 !! function behind the `errno` macro on Linux); `mode_t` is taken to be a C `int`-sized
 !! unsigned integer, as on Linux.
 module vibrobeam_filesystem
+   use vibrobeam_status, only: stat_failure
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_long, c_int64_t, c_null_char, c_ptr, &
-      c_null_ptr, c_size_t, c_double, c_associated, c_f_pointer
+      c_size_t, c_associated, c_f_pointer
    implicit none
    private
    public :: make_parent_directories, rename_file, remove_file, file_exists
    public :: unique_temporary_name, temporary_suffix, directory_of
    public :: sync_file, sync_directory_of, directory_lock, error_text, last_error_text
-   public :: text_file, open_text_for_atomic_write, write_text_line, write_text_row, finish_text_file, &
-      discard_text_file
    public :: process_id, utc_stamp, random_hex
    public :: c_string
 
    !> Suffix of every temporary file name (`unique_temporary_name`).
    character(len=*), parameter :: temporary_suffix = '.tmp'
-
-   !> A text file written through src/os/vibrobeam_posix_files.c (every write checked: libgfortran
-   !! does not report a failed write of its buffer to a formatted WRITE with iostat).
-   type :: text_file
-      type(c_ptr) :: handle = c_null_ptr
-   end type text_file
 
    !> An exclusive flock(2) on a directory, held from `acquire` to `release` (or until the
    !! process ends: the kernel releases it with the descriptor).
@@ -156,47 +150,6 @@ module vibrobeam_filesystem
          integer(c_int) :: error
       end function c_utc_stamp
 
-      !> void *vb_text_open(const char *path, int *error);
-      function c_text_open(path, error) result(handle) bind(C, name='vb_text_open')
-         import :: c_char, c_int, c_ptr
-         character(kind=c_char), intent(in) :: path(*)
-         integer(c_int), intent(out) :: error
-         type(c_ptr) :: handle
-      end function c_text_open
-
-      !> int vb_text_write(void *handle, const char *data, size_t length);
-      function c_text_write(handle, data, length) result(error) bind(C, name='vb_text_write')
-         import :: c_char, c_int, c_ptr, c_size_t
-         type(c_ptr), value, intent(in) :: handle
-         character(kind=c_char), intent(in) :: data(*)
-         integer(c_size_t), value, intent(in) :: length
-         integer(c_int) :: error
-      end function c_text_write
-
-      !> int vb_text_write_row(void *handle, const double *values, int count, int width, int digits,
-      !!                       int integers);
-      function c_text_write_row(handle, values, count, width, digits, integers) result(error) &
-         bind(C, name='vb_text_write_row')
-         import :: c_int, c_ptr, c_double
-         type(c_ptr), value, intent(in) :: handle
-         real(c_double), intent(in) :: values(*)
-         integer(c_int), value, intent(in) :: count, width, digits, integers
-         integer(c_int) :: error
-      end function c_text_write_row
-
-      !> int vb_text_close(void *handle);
-      function c_text_close(handle) result(error) bind(C, name='vb_text_close')
-         import :: c_int, c_ptr
-         type(c_ptr), value, intent(in) :: handle
-         integer(c_int) :: error
-      end function c_text_close
-
-      !> void vb_text_abandon(void *handle);
-      subroutine c_text_abandon(handle) bind(C, name='vb_text_abandon')
-         import :: c_ptr
-         type(c_ptr), value, intent(in) :: handle
-      end subroutine c_text_abandon
-
       !> size_t strlen(const char *s);
       function c_strlen(s) result(length) bind(C, name='strlen')
          import :: c_ptr, c_size_t
@@ -232,7 +185,7 @@ contains
          ! Already there (or made concurrently): fine if it is a directory. Appending '/'
          ! makes access() fail with ENOTDIR when the prefix is a regular file.
          if (c_access(c_string(path(1:slash)), f_ok) == 0) cycle
-         stat = 1
+         stat = stat_failure
          if (c_access(c_string(path(1:slash - 1)), f_ok) == 0) then
             errmsg = 'cannot create directory ''' // path(1:slash - 1) // ''' for ''' // &
                path(1:last) // ''': it exists and is not a directory'
@@ -257,7 +210,7 @@ contains
       errmsg = ''
       if (c_rename(c_string(from), c_string(to)) /= 0) then
          error_number = c_errno()
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot rename ''' // trim(from) // ''' to ''' // trim(to) // ''': ' // &
             c_error_message(error_number)
       end if
@@ -275,7 +228,7 @@ contains
       if (c_unlink(c_string(path)) /= 0) then
          error_number = c_errno()
          if (error_number == enoent) return
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot remove ''' // trim(path) // ''': ' // c_error_message(error_number)
       end if
    end subroutine remove_file
@@ -358,7 +311,7 @@ contains
       errmsg = ''
       error_number = c_fsync_path(c_string(path))
       if (error_number /= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot sync ''' // trim(path) // ''' to disk: ' // error_text(error_number)
       end if
    end subroutine sync_file
@@ -384,7 +337,7 @@ contains
       errmsg = ''
       error_number = c_lock(c_string(directory), self%descriptor)
       if (error_number /= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot lock directory ''' // trim(directory) // ''': ' // error_text(error_number)
       end if
    end subroutine lock_acquire
@@ -403,7 +356,7 @@ contains
       error_number = c_try_lock(c_string(path), self%descriptor)
       busy = error_number == -1
       if (error_number /= 0 .and. .not. busy) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot lock ''' // trim(path) // ''': ' // error_text(error_number)
       end if
    end subroutine lock_try_acquire
@@ -415,96 +368,6 @@ contains
       error_number = c_unlock(self%descriptor)
       self%descriptor = -1
    end subroutine lock_release
-
-   !> Create a fresh temporary file for `final_name` (`unique_temporary_name`), after
-   !! creating the parent directories of `final_name`. Write lines with `write_text_line`;
-   !! finish with `finish_text_file` (then rename `temporary` onto `final_name`) or
-   !! `discard_text_file`.
-   subroutine open_text_for_atomic_write(final_name, file, temporary, stat, errmsg)
-      character(len=*), intent(in) :: final_name  !! name of the complete text file
-      type(text_file), intent(out) :: file        !! the open temporary file
-      character(len=:), allocatable, intent(out) :: temporary   !! its name
-      integer, intent(out) :: stat                !! 0 on success
-      character(len=*), intent(out) :: errmsg     !! reason of the failure, blank on success
-      integer(c_int) :: error_number
-
-      temporary = unique_temporary_name(final_name)
-      call make_parent_directories(final_name, stat, errmsg)
-      if (stat /= 0) return
-      file%handle = c_text_open(c_string(temporary), error_number)
-      if (.not. c_associated(file%handle)) then
-         stat = 1
-         errmsg = 'cannot create ''' // temporary // ''': ' // error_text(error_number)
-      end if
-   end subroutine open_text_for_atomic_write
-
-   !> Append `line` and a newline to `file` (named `temporary` in messages).
-   subroutine write_text_line(file, line, temporary, stat, errmsg)
-      type(text_file), intent(inout) :: file
-      character(len=*), intent(in) :: line, temporary
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      integer(c_int) :: error_number
-      stat = 0
-      errmsg = ''
-      error_number = c_text_write(file%handle, line // new_line('a'), int(len(line) + 1, c_size_t))
-      if (error_number /= 0) then
-         stat = 1
-         errmsg = 'cannot write ''' // trim(temporary) // ''': ' // error_text(error_number)
-      end if
-   end subroutine write_text_line
-
-   !> Append one line of numbers to `file`: each right-aligned in `width` characters, in
-   !! scientific notation with `digits` digits after the point (C's %E), the last
-   !! `integers` of them as integers.
-   subroutine write_text_row(file, values, width, digits, integers, temporary, stat, errmsg)
-      type(text_file), intent(inout) :: file
-      real(c_double), intent(in) :: values(:)
-      integer, intent(in) :: width, digits, integers
-      character(len=*), intent(in) :: temporary
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      integer(c_int) :: error_number
-      stat = 0
-      errmsg = ''
-      error_number = c_text_write_row(file%handle, values, int(size(values), c_int), int(width, c_int), &
-                                      int(digits, c_int), int(integers, c_int))
-      if (error_number /= 0) then
-         stat = 1
-         errmsg = 'cannot write ''' // trim(temporary) // ''': ' // error_text(error_number)
-      end if
-   end subroutine write_text_row
-
-   !> Write out what is buffered, sync the file `temporary` to disk and close it.
-   subroutine finish_text_file(file, temporary, stat, errmsg)
-      type(text_file), intent(inout) :: file      !! the temporary file
-      character(len=*), intent(in) :: temporary   !! its name
-      integer, intent(out) :: stat                !! 0 on success
-      character(len=*), intent(out) :: errmsg     !! reason of the failure, blank on success
-      integer(c_int) :: error_number
-
-      stat = 0
-      errmsg = ''
-      error_number = c_text_close(file%handle)
-      file%handle = c_null_ptr
-      if (error_number /= 0) then
-         stat = 1
-         errmsg = 'cannot write ''' // trim(temporary) // ''': ' // error_text(error_number)
-      end if
-   end subroutine finish_text_file
-
-   !> Close `file` (if open) and delete the temporary file `temporary`. Never fails:
-   !! errors are ignored (there is nothing left to do about them).
-   subroutine discard_text_file(file, temporary)
-      type(text_file), intent(inout) :: file      !! the temporary file (may be closed)
-      character(len=*), intent(in) :: temporary  !! its name
-      integer :: remove_status
-      character(len=256) :: remove_message
-
-      if (c_associated(file%handle)) call c_text_abandon(file%handle)
-      file%handle = c_null_ptr
-      call remove_file(temporary, remove_status, remove_message)
-   end subroutine discard_text_file
 
    !> strerror(error_number) as a Fortran string.
    function error_text(error_number) result(message)

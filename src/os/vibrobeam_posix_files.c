@@ -1,5 +1,5 @@
-/* Files and the process's identity, for src/os/vibrobeam_filesystem.f90 and the text
- * output: fsync, flock, links, directory listings, a random token and a UTC stamp for temporary names, the peak
+/* Files and the process's identity, for src/os/vibrobeam_filesystem.f90 and
+ * src/io/vibrobeam_text_file.f90: fsync, flock, links, directory listings, a random token and a UTC stamp for temporary names, the peak
  * resident set size, and text files whose every write(2) is checked. Every function
  * returns 0 or an errno value and never prints; the Fortran side turns that into a
  * message. */

@@ -27,194 +27,97 @@ contains
       type(scene_type), intent(in) :: scene
       character(len=*), intent(in) :: swept(:)
       character(len=:), allocatable, intent(inout) :: warnings
+      call analysis_warnings(scanned, scene, warnings)
+      if (scene%analysis%kind == 'modes') return
+      call obstacle_warnings(scanned, scene, swept, warnings)
+      call load_warnings(scanned, scene, swept, warnings)
+      if (.not. steps_in_time(scene)) return
+      call time_warnings(scanned, scene, swept, warnings)
+      call initial_warnings(scanned, scene, warnings)
+   end subroutine ignored_values
+
+   !> What the kind of analysis does not use: the modes' count, whole groups, &periodic
+   !! outside kind = 'periodic' and t_end (and a dt that steps_per_period sets) inside it,
+   !! damping outside the analyses that step in time, histories outside dynamics, the
+   !! reduction; and k2 beside the beam's data.
+   subroutine analysis_warnings(scanned, scene, warnings)
+      type(scanned_file), intent(in) :: scanned
+      type(scene_type), intent(in) :: scene
+      character(len=:), allocatable, intent(inout) :: warnings
       character(len=*), parameter :: unused_by_modes(6) = [character(len=9) :: 'obstacles', 'impact', 'time', &
                                                             'initial', 'load', 'solver']
       character(len=*), parameter :: unused_by_static(3) = [character(len=9) :: 'impact', 'time', 'initial']
-      !> &initial variables that describe the initial state
-      character(len=*), parameter :: initial_state(6) = [character(len=22) :: 'displacement', 'displacement_mode', &
-                                                          'displacement_amplitude', 'velocity', 'velocity_mode', &
-                                                          'velocity_amplitude']
       character(len=:), allocatable :: kind_reason, item
-      logical :: any_compliant, any_rigid
-      integer :: k, i
+      integer :: k
       kind_reason = 'kind = '''//trim(scene%analysis%kind)//''''
       if (scene%analysis%kind /= 'modes' .and. scanned%is_given('analysis', 'modes')) &
-         call add('&analysis modes = '//integer_text(scene%analysis%modes)//' is ignored: '//kind_reason// &
+         call add(warnings, '&analysis modes = '//integer_text(scene%analysis%modes)//' is ignored: '//kind_reason// &
                   ' computes no natural modes')
       if (scanned%is_given('beam', 'k2') .and. (scanned%is_given('beam', 'youngs_modulus') .or. &
           scanned%is_given('beam', 'density') .or. scanned%is_given('beam', 'area') .or. &
           scanned%is_given('beam', 'inertia'))) &
-         call add('&beam k2 is ignored: youngs_modulus, density, area and inertia are given (k2 = EI/(rho S))')
+         call add(warnings, '&beam k2 is ignored: youngs_modulus, density, area and inertia are given (k2 = EI/(rho S))')
       select case (scene%analysis%kind)
       case ('modes')
          do k = 1, size(unused_by_modes)
             if (scanned%group_given(trim(unused_by_modes(k)))) &
-               call add('&'//trim(unused_by_modes(k))//' is ignored: kind = ''modes'' computes the modes of the '// &
-                        'free cantilever')
+               call add(warnings, '&'//trim(unused_by_modes(k))//' is ignored: kind = ''modes'' computes the modes '// &
+                        'of the free cantilever')
          end do
       case ('static')
          do k = 1, size(unused_by_static)
             if (scanned%group_given(trim(unused_by_static(k)))) &
-               call add('&'//trim(unused_by_static(k))//' is ignored: kind = ''static'' solves for the '// &
+               call add(warnings, '&'//trim(unused_by_static(k))//' is ignored: kind = ''static'' solves for the '// &
                         'equilibrium under the loads at t = 0')
          end do
       end select
 
-      ! &periodic: kind = 'periodic' only; &time t_end, and dt when steps_per_period sets it
+      ! &beam damping and &output histories: dynamics only
       if (scene%analysis%kind /= 'periodic' .and. scanned%group_given('periodic')) &
-         call add('&periodic is ignored: '//kind_reason//' (it belongs to kind = ''periodic'')')
+         call add(warnings, '&periodic is ignored: '//kind_reason//' (it belongs to kind = ''periodic'')')
       if (scene%analysis%kind == 'periodic') then
-         call given_real('time', 't_end', scene%time%t_end, kind_reason//' steps one orbit at a time (&periodic)')
+         call given_real(scanned, warnings, 'time', 't_end', scene%time%t_end, kind_reason// &
+                         ' steps one orbit at a time (&periodic)')
          ! (the value given is gone: the reader has set dt from steps_per_period)
          if (scene%periodic%steps_per_period > 0 .and. scanned%is_given('time', 'dt')) &
-            call add('&time dt is ignored: &periodic steps_per_period = '// &
+            call add(warnings, '&time dt is ignored: &periodic steps_per_period = '// &
                      integer_text(scene%periodic%steps_per_period)//' sets dt = '//real_text(scene%time%dt)// &
                      ' s, the forcing period over that many steps')
       end if
-
-      ! &beam damping: the analyses that step in time; &output histories: dynamics only
       if (.not. steps_in_time(scene)) then
-         call given_real('beam', 'rayleigh_mass', scene%beam%rayleigh_mass, kind_reason//' has no damping')
-         call given_real('beam', 'rayleigh_stiffness', scene%beam%rayleigh_stiffness, kind_reason//' has no damping')
+         call given_real(scanned, warnings, 'beam', 'rayleigh_mass', scene%beam%rayleigh_mass, &
+                         kind_reason//' has no damping')
+         call given_real(scanned, warnings, 'beam', 'rayleigh_stiffness', scene%beam%rayleigh_stiffness, &
+                         kind_reason//' has no damping')
       end if
       if (scene%analysis%kind /= 'dynamics') then
          ! what shapes a dynamics run's histories, statistics and checkpoints
          item = ' is ignored: '//kind_reason//' writes no histories (they belong to kind = ''dynamics'')'
-         if (scanned%is_given('output', 'every')) call add('&output every = '//integer_text(scene%output%every)//item)
+         if (scanned%is_given('output', 'every')) &
+            call add(warnings, '&output every = '//integer_text(scene%output%every)//item)
          if (scanned%is_given('output', 'field_every')) &
-            call add('&output field_every = '//integer_text(scene%output%field_every)//item)
-         if (scanned%is_given('output', 'points', 1)) call add('&output points'//item)
-         call given_real('output', 'measure_from', scene%output%measure_from, item(14:))
-         call given_real('output', 'checkpoint_seconds', scene%output%checkpoint_seconds, item(14:))
-         call given_real('output', 'episode_gap', scene%output%episode_gap, item(14:))
+            call add(warnings, '&output field_every = '//integer_text(scene%output%field_every)//item)
+         if (scanned%is_given('output', 'points', 1)) call add(warnings, '&output points'//item)
+         call given_real(scanned, warnings, 'output', 'measure_from', scene%output%measure_from, item(14:))
+         call given_real(scanned, warnings, 'output', 'checkpoint_seconds', scene%output%checkpoint_seconds, item(14:))
+         call given_real(scanned, warnings, 'output', 'episode_gap', scene%output%episode_gap, item(14:))
          if (scanned%is_given('output', 'poincare_load')) &
-            call add('&output poincare_load = '''//trim(scene%output%poincare_load)//''''//item)
+            call add(warnings, '&output poincare_load = '''//trim(scene%output%poincare_load)//''''//item)
       end if
 
-      ! &mesh: the reduction steps a dynamics run or a periodic analysis only
+      ! &mesh: the reduction steps a dynamics run only
       if (scene%mesh%reduction /= 'none' .and. .not. steps_in_time(scene)) then
-         call add('&mesh reduction = '''//trim(scene%mesh%reduction)//''' is ignored: '//kind_reason// &
+         call add(warnings, '&mesh reduction = '''//trim(scene%mesh%reduction)//''' is ignored: '//kind_reason// &
                   ' solves the full model (the reduction is for kind = ''dynamics'' and ''periodic'')')
       end if
       if (scene%mesh%reduction == 'none' .or. .not. steps_in_time(scene)) then
          if (scanned%is_given('mesh', 'reduction_modes')) &
-            call add('&mesh reduction_modes = '//integer_text(scene%mesh%reduction_modes)//' is ignored: '// &
+            call add(warnings, '&mesh reduction_modes = '//integer_text(scene%mesh%reduction_modes)//' is ignored: '// &
                      reduction_reason())
-         call given_real('mesh', 'reduction_frequency', scene%mesh%reduction_frequency, reduction_reason())
+         call given_real(scanned, warnings, 'mesh', 'reduction_frequency', scene%mesh%reduction_frequency, &
+                         reduction_reason())
       end if
-
-      if (scene%analysis%kind == 'modes') return
-
-      ! &obstacles: what a rigid or a punctual obstacle does not use
-      any_compliant = any(scene%obstacles%stiffness > 0) .or. is_swept('obstacles.stiffness')
-      any_rigid = any(scene%obstacles%stiffness <= 0) .or. is_swept('obstacles.stiffness')
-      do i = 1, size(scene%obstacles)
-         item = '('//integer_text(i)//')'
-         associate (o => scene%obstacles(i))
-            if (o%stiffness <= 0 .and. scanned%is_given('obstacles', 'exponent', i) .and. &
-                .not. is_swept('obstacles.stiffness')) &
-               call add('&obstacles exponent'//item//' = '//real_text(o%exponent)//' is ignored: obstacle '// &
-                        integer_text(i)//' is rigid (stiffness'//item//' = 0); the exponent shapes the force of a '// &
-                        'compliant stop')
-            if (o%x_to <= o%x_from .and. scanned%is_given('obstacles', 'level_to', i) .and. &
-                .not. (is_swept('obstacles.x_from') .or. is_swept('obstacles.x_to'))) &
-               call add('&obstacles level_to'//item//' = '//real_text(o%level_to)//' m is ignored: obstacle '// &
-                        integer_text(i)//' is punctual (x_to = x_from = '//real_text(o%x_from)// &
-                        ' m): its level is level_from'//item)
-         end associate
-      end do
-
-      ! &load: a frequency, phase or position of a load whose amplitude is zero
-      if (abs(scene%load%distributed) <= 0 .and. .not. is_swept('load.distributed')) then
-         call given_real('load', 'distributed_frequency', scene%load%distributed_frequency, 'distributed = 0')
-         call given_real('load', 'distributed_phase', scene%load%distributed_phase, 'distributed = 0')
-      end if
-      if (abs(scene%load%point_force) <= 0 .and. .not. is_swept('load.point_force')) then
-         call given_real('load', 'point_frequency', scene%load%point_frequency, 'point_force = 0')
-         call given_real('load', 'point_position', scene%load%point_position, 'point_force = 0')
-      end if
-      if (abs(scene%load%base_amplitude) <= 0 .and. abs(scene%load%base_acceleration) <= 0 .and. &
-          .not. (is_swept('load.base_amplitude') .or. is_swept('load.base_acceleration'))) &
-         call given_real('load', 'base_frequency', scene%load%base_frequency, 'base_amplitude = 0 and base_acceleration = 0')
-      if (scene%analysis%kind == 'static') then
-         ! the loads at t = 0: cos(0) = 1 for the harmonic ones, sin(0) = 0 for the base's
-         ! (a frequency beside a zero amplitude has had its warning above)
-         if (abs(scene%load%distributed) > 0) call given_real('load', 'distributed_frequency', &
-                                                         scene%load%distributed_frequency, kind_reason//' takes the loads at t = 0')
-         if (abs(scene%load%point_force) > 0) call given_real('load', 'point_frequency', scene%load%point_frequency, &
-                                                         kind_reason//' takes the loads at t = 0')
-         call given_real('load', 'base_amplitude', scene%load%base_amplitude, kind_reason//' takes the loads at t = 0, '// &
-                         'where the base excitation''s load (sin 0) is 0')
-         call given_real('load', 'base_acceleration', scene%load%base_acceleration, kind_reason//' takes the loads at '// &
-                         't = 0, where the base excitation''s load (sin 0) is 0')
-         if (abs(scene%load%base_amplitude) > 0 .or. abs(scene%load%base_acceleration) > 0) &
-            call given_real('load', 'base_frequency', scene%load%base_frequency, kind_reason//' takes the loads at '// &
-                            't = 0, where the base excitation''s load (sin 0) is 0')
-      end if
-
-      if (.not. steps_in_time(scene)) return
-
-      ! &time and &impact: what the scheme or the obstacles do not use
-      if (scene%time%scheme == 'position') call given_real('time', 'gamma', scene%time%gamma, &
-                                                      'scheme = ''position'' activates contacts by position')
-      if (.not. any_compliant .and. scanned%is_given('time', 'compliant_rule')) &
-         call add('&time compliant_rule = '''//trim(scene%time%compliant_rule)//''' is ignored: no obstacle is compliant '// &
-                  '(stiffness > 0)')
-      if (.not. any_rigid) then
-         call given_real('impact', 'restitution', scene%impact%restitution, 'no obstacle is rigid (impacts happen at '// &
-                         'rigid obstacles only)')
-         if (scanned%is_given('impact', 'separating_points')) &
-            call add('&impact separating_points = '''//trim(scene%impact%separating_points)//''' is ignored: no obstacle '// &
-                     'is rigid (impacts happen at rigid obstacles only)')
-      end if
-
-      ! &initial: the checkpoint's state, or the shape a keyword does not use
-      if (len_trim(scene%initial%from_file) > 0) then
-         do k = 1, size(initial_state)
-            if (scanned%is_given('initial', trim(initial_state(k)))) &
-               call add('&initial '//trim(initial_state(k))//' is ignored: from_file continues the state of its '// &
-                        'checkpoint')
-         end do
-         return
-      end if
-      if (scene%initial%displacement /= 'mode') then
-         if (scanned%is_given('initial', 'displacement_mode')) &
-            call add('&initial displacement_mode = '//integer_text(scene%initial%displacement_mode)//' is ignored: '// &
-                     'displacement = '''//trim(scene%initial%displacement)//'''')
-         call given_real('initial', 'displacement_amplitude', scene%initial%displacement_amplitude, &
-                         'displacement = '''//trim(scene%initial%displacement)//'''')
-      end if
-      if (scene%initial%velocity /= 'mode' .and. scanned%is_given('initial', 'velocity_mode')) &
-         call add('&initial velocity_mode = '//integer_text(scene%initial%velocity_mode)//' is ignored: velocity = '''// &
-                  trim(scene%initial%velocity)//'''')
-      if (scene%initial%velocity == 'zero') &
-         call given_real('initial', 'velocity_amplitude', scene%initial%velocity_amplitude, 'velocity = ''zero''')
    contains
-      subroutine add(line)
-         character(len=*), intent(in) :: line
-         warnings = warnings//line//new_line('a')
-      end subroutine add
-
-      !> The warning for the real group.name, when given: 'value unit is ignored: reason'.
-      subroutine given_real(group, name, value, reason)
-         character(len=*), intent(in) :: group, name, reason
-         real(dp), intent(in) :: value
-         type(namelist_variable), allocatable :: table(:)
-         type(namelist_variable) :: variable
-         character(len=:), allocatable :: unit
-         if (.not. scanned%is_given(group, name)) return
-         allocate (table, source=scene_variables())
-         variable = table(variable_index(table, group, name))
-         unit = trim(variable%unit)
-         if (len(unit) > 0) unit = ' '//unit
-         call add('&'//group//' '//name//' = '//real_text(value)//unit//' is ignored: '//reason)
-      end subroutine given_real
-
-      logical function is_swept(name)
-         character(len=*), intent(in) :: name
-         is_swept = any(swept == name)
-      end function is_swept
-
       function reduction_reason() result(text)
          character(len=:), allocatable :: text
          if (.not. steps_in_time(scene)) then
@@ -223,5 +126,152 @@ contains
             text = 'reduction = ''none'''
          end if
       end function reduction_reason
-   end subroutine ignored_values
+   end subroutine analysis_warnings
+
+   !> &obstacles: what a rigid or a punctual obstacle does not use.
+   subroutine obstacle_warnings(scanned, scene, swept, warnings)
+      type(scanned_file), intent(in) :: scanned
+      type(scene_type), intent(in) :: scene
+      character(len=*), intent(in) :: swept(:)
+      character(len=:), allocatable, intent(inout) :: warnings
+      character(len=:), allocatable :: item
+      integer :: i
+      do i = 1, size(scene%obstacles)
+         item = '('//integer_text(i)//')'
+         associate (o => scene%obstacles(i))
+            if (o%stiffness <= 0 .and. scanned%is_given('obstacles', 'exponent', i) .and. &
+                .not. any(swept == 'obstacles.stiffness')) &
+               call add(warnings, '&obstacles exponent'//item//' = '//real_text(o%exponent)//' is ignored: obstacle '// &
+                        integer_text(i)//' is rigid (stiffness'//item//' = 0); the exponent shapes the force of a '// &
+                        'compliant stop')
+            if (o%x_to <= o%x_from .and. scanned%is_given('obstacles', 'level_to', i) .and. &
+                .not. (any(swept == 'obstacles.x_from') .or. any(swept == 'obstacles.x_to'))) &
+               call add(warnings, '&obstacles level_to'//item//' = '//real_text(o%level_to)//' m is ignored: obstacle '// &
+                        integer_text(i)//' is punctual (x_to = x_from = '//real_text(o%x_from)// &
+                        ' m): its level is level_from'//item)
+         end associate
+      end do
+   end subroutine obstacle_warnings
+
+   !> &load: a frequency, phase or position of a load whose amplitude is zero; and in
+   !! statics, what the loads at t = 0 do not use.
+   subroutine load_warnings(scanned, scene, swept, warnings)
+      type(scanned_file), intent(in) :: scanned
+      type(scene_type), intent(in) :: scene
+      character(len=*), intent(in) :: swept(:)
+      character(len=:), allocatable, intent(inout) :: warnings
+      character(len=:), allocatable :: kind_reason
+      kind_reason = 'kind = '''//trim(scene%analysis%kind)//''''
+      associate (load => scene%load)
+         if (abs(load%distributed) <= 0 .and. .not. any(swept == 'load.distributed')) then
+            call given_real(scanned, warnings, 'load', 'distributed_frequency', load%distributed_frequency, &
+                            'distributed = 0')
+            call given_real(scanned, warnings, 'load', 'distributed_phase', load%distributed_phase, 'distributed = 0')
+         end if
+         if (abs(load%point_force) <= 0 .and. .not. any(swept == 'load.point_force')) then
+            call given_real(scanned, warnings, 'load', 'point_frequency', load%point_frequency, 'point_force = 0')
+            call given_real(scanned, warnings, 'load', 'point_position', load%point_position, 'point_force = 0')
+         end if
+         if (abs(load%base_amplitude) <= 0 .and. abs(load%base_acceleration) <= 0 .and. &
+             .not. (any(swept == 'load.base_amplitude') .or. any(swept == 'load.base_acceleration'))) &
+            call given_real(scanned, warnings, 'load', 'base_frequency', load%base_frequency, &
+                            'base_amplitude = 0 and base_acceleration = 0')
+         if (scene%analysis%kind /= 'static') return
+         ! the loads at t = 0: cos(0) = 1 for the harmonic ones, sin(0) = 0 for the base's
+         ! (a frequency beside a zero amplitude has had its warning above)
+         if (abs(load%distributed) > 0) call given_real(scanned, warnings, 'load', 'distributed_frequency', &
+                                                        load%distributed_frequency, kind_reason//' takes the loads at t = 0')
+         if (abs(load%point_force) > 0) call given_real(scanned, warnings, 'load', 'point_frequency', &
+                                                        load%point_frequency, kind_reason//' takes the loads at t = 0')
+         call given_real(scanned, warnings, 'load', 'base_amplitude', load%base_amplitude, kind_reason// &
+                         ' takes the loads at t = 0, where the base excitation''s load (sin 0) is 0')
+         call given_real(scanned, warnings, 'load', 'base_acceleration', load%base_acceleration, kind_reason// &
+                         ' takes the loads at t = 0, where the base excitation''s load (sin 0) is 0')
+         if (abs(load%base_amplitude) > 0 .or. abs(load%base_acceleration) > 0) &
+            call given_real(scanned, warnings, 'load', 'base_frequency', load%base_frequency, kind_reason// &
+                            ' takes the loads at t = 0, where the base excitation''s load (sin 0) is 0')
+      end associate
+   end subroutine load_warnings
+
+   !> &time and &impact: what the scheme or the obstacles do not use.
+   subroutine time_warnings(scanned, scene, swept, warnings)
+      type(scanned_file), intent(in) :: scanned
+      type(scene_type), intent(in) :: scene
+      character(len=*), intent(in) :: swept(:)
+      character(len=:), allocatable, intent(inout) :: warnings
+      logical :: any_compliant, any_rigid
+      any_compliant = any(scene%obstacles%stiffness > 0) .or. any(swept == 'obstacles.stiffness')
+      any_rigid = any(scene%obstacles%stiffness <= 0) .or. any(swept == 'obstacles.stiffness')
+      if (scene%time%scheme == 'position') call given_real(scanned, warnings, 'time', 'gamma', scene%time%gamma, &
+                                                           'scheme = ''position'' activates contacts by position')
+      if (.not. any_compliant .and. scanned%is_given('time', 'compliant_rule')) &
+         call add(warnings, '&time compliant_rule = '''//trim(scene%time%compliant_rule)//''' is ignored: no obstacle '// &
+                  'is compliant (stiffness > 0)')
+      if (.not. any_rigid) then
+         call given_real(scanned, warnings, 'impact', 'restitution', scene%impact%restitution, 'no obstacle is rigid '// &
+                         '(impacts happen at rigid obstacles only)')
+         if (scanned%is_given('impact', 'separating_points')) &
+            call add(warnings, '&impact separating_points = '''//trim(scene%impact%separating_points)//''' is '// &
+                     'ignored: no obstacle is rigid (impacts happen at rigid obstacles only)')
+      end if
+   end subroutine time_warnings
+
+   !> &initial: the checkpoint's state, or the shape a keyword does not use.
+   subroutine initial_warnings(scanned, scene, warnings)
+      type(scanned_file), intent(in) :: scanned
+      type(scene_type), intent(in) :: scene
+      character(len=:), allocatable, intent(inout) :: warnings
+      !> &initial variables that describe the initial state
+      character(len=*), parameter :: initial_state(6) = [character(len=22) :: 'displacement', 'displacement_mode', &
+                                                          'displacement_amplitude', 'velocity', 'velocity_mode', &
+                                                          'velocity_amplitude']
+      integer :: k
+      associate (initial => scene%initial)
+         if (len_trim(initial%from_file) > 0) then
+            do k = 1, size(initial_state)
+               if (scanned%is_given('initial', trim(initial_state(k)))) &
+                  call add(warnings, '&initial '//trim(initial_state(k))//' is ignored: from_file continues the '// &
+                           'state of its checkpoint')
+            end do
+            return
+         end if
+         if (initial%displacement /= 'mode') then
+            if (scanned%is_given('initial', 'displacement_mode')) &
+               call add(warnings, '&initial displacement_mode = '//integer_text(initial%displacement_mode)// &
+                        ' is ignored: displacement = '''//trim(initial%displacement)//'''')
+            call given_real(scanned, warnings, 'initial', 'displacement_amplitude', initial%displacement_amplitude, &
+                            'displacement = '''//trim(initial%displacement)//'''')
+         end if
+         if (initial%velocity /= 'mode' .and. scanned%is_given('initial', 'velocity_mode')) &
+            call add(warnings, '&initial velocity_mode = '//integer_text(initial%velocity_mode)//' is ignored: '// &
+                     'velocity = '''//trim(initial%velocity)//'''')
+         if (initial%velocity == 'zero') &
+            call given_real(scanned, warnings, 'initial', 'velocity_amplitude', initial%velocity_amplitude, &
+                            'velocity = ''zero''')
+      end associate
+   end subroutine initial_warnings
+
+   !> Append one warning line.
+   subroutine add(warnings, line)
+      character(len=:), allocatable, intent(inout) :: warnings
+      character(len=*), intent(in) :: line
+      warnings = warnings//line//new_line('a')
+   end subroutine add
+
+   !> The warning for the real group.name, when given: 'value unit is ignored: reason'.
+   subroutine given_real(scanned, warnings, group, name, value, reason)
+      type(scanned_file), intent(in) :: scanned
+      character(len=:), allocatable, intent(inout) :: warnings
+      character(len=*), intent(in) :: group, name, reason
+      real(dp), intent(in) :: value
+      type(namelist_variable), allocatable :: table(:)
+      type(namelist_variable) :: variable
+      character(len=:), allocatable :: unit
+      if (.not. scanned%is_given(group, name)) return
+      allocate (table, source=scene_variables())
+      variable = table(variable_index(table, group, name))
+      unit = trim(variable%unit)
+      if (len(unit) > 0) unit = ' '//unit
+      call add(warnings, '&'//group//' '//name//' = '//real_text(value)//unit//' is ignored: '//reason)
+   end subroutine given_real
 end module vibrobeam_ignored_values

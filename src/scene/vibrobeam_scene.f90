@@ -189,197 +189,249 @@ contains
 
    !> Check every value against what is allowed: first each against its hard range and
    !! keywords (the rows of `visit_scene`), then the relations that matter for the
-   !! analysis asked for. On the first violation stat = 1 and errmsg reads like
-   !! '&impact restitution = 1.5 is outside [0, 1]'.
+   !! analysis asked for, group by group. On the first violation stat = 1 and errmsg reads
+   !! like '&impact restitution = 1.5 is outside [0, 1]'.
    subroutine validate_scene(scene, stat, errmsg)
       type(scene_type), intent(in) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(schema_checker) :: checker
       type(scene_type) :: copy
-      integer :: i
-      character(len=:), allocatable :: item
       stat = 0
       errmsg = ''
       if (allocated(scene%obstacles)) then
          if (size(scene%obstacles) > max_obstacles) &
-            call fail('&obstacles count = '//integer_text(size(scene%obstacles))//' is outside [0, '// &
+            call fail(stat, errmsg, '&obstacles count = '//integer_text(size(scene%obstacles))//' is outside [0, '// &
                       integer_text(max_obstacles)//']')
       end if
       if (allocated(scene%output%points)) then
          if (size(scene%output%points) > max_points) &
-            call fail('&output points: '//integer_text(size(scene%output%points))//' points; at most '// &
-                      integer_text(max_points))
+            call fail(stat, errmsg, '&output points: '//integer_text(size(scene%output%points))// &
+                      ' points; at most '//integer_text(max_points))
       end if
       if (stat /= 0) return
       copy = scene
       call visit_scene(copy, checker)
       if (checker%stat /= 0) then
-         call fail(trim(checker%errmsg))
+         call fail(stat, errmsg, trim(checker%errmsg))
          return
       end if
-      associate (beam => copy%beam, mesh => copy%mesh, time => copy%time, load => copy%load, &
-                 output => copy%output, analysis => copy%analysis)
-         ! &beam: the four physical data go together
+      call model_rules(copy, stat, errmsg)
+      call obstacle_rules(copy, stat, errmsg)
+      call time_rules(copy, stat, errmsg)
+      call load_rules(copy, stat, errmsg)
+      call output_rules(copy, stat, errmsg)
+      if (copy%analysis%kind == 'periodic') call periodic_rules(copy, stat, errmsg)
+   end subroutine validate_scene
+
+   !> &beam: the four physical data go together; &mesh: a reduced model cannot continue a
+   !! checkpoint, and its cut-off is given one way; &analysis: `modes` is bounded by the
+   !! mesh only when modes are computed.
+   subroutine model_rules(scene, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      associate (beam => scene%beam, mesh => scene%mesh, analysis => scene%analysis)
          if (beam%physical()) then
             call check_given('youngs_modulus', beam%youngs_modulus)
             call check_given('density', beam%density)
             call check_given('area', beam%area)
             call check_given('inertia', beam%inertia)
          end if
-         ! &mesh
-         if (mesh%reduction /= 'none' .and. steps_in_time(copy) .and. len_trim(copy%initial%from_file) > 0) &
-            call fail('&mesh reduction = '''//trim(mesh%reduction)//''' cannot continue a checkpoint '// &
+         if (mesh%reduction /= 'none' .and. steps_in_time(scene) .and. len_trim(scene%initial%from_file) > 0) &
+            call fail(stat, errmsg, '&mesh reduction = '''//trim(mesh%reduction)//''' cannot continue a checkpoint '// &
                       '(&initial from_file): its state is in reduced coordinates; use reduction = ''none''')
          if (mesh%reduction_modes /= -1 .and. .not. is_unset(mesh%reduction_frequency)) &
-            call fail('&mesh reduction_modes = '//integer_text(mesh%reduction_modes)//' and reduction_frequency = '// &
-                      real_text(mesh%reduction_frequency)//' rad/s are both given: give one of them')
-         ! &analysis: `modes` is bounded by the mesh only when modes are computed
-         if (analysis%kind == 'modes') call integer_in_range('analysis', 'modes', analysis%modes, 1, mesh%unknowns(), &
-                                                             ', the unknowns J of the mesh')
-         ! &obstacles
-         do i = 1, size(copy%obstacles)
-            item = '('//integer_text(i)//')'
-            associate (o => copy%obstacles(i))
-               if (o%stiffness <= 0 .and. o%damping > 0) &
-                  call fail('&obstacles damping'//item//' = '//real_text(o%damping)// &
-                            ' is given for a rigid obstacle (stiffness'//item// &
-                            ' = 0): contact damping needs a compliant stop; give stiffness'//item//' > 0 or damping 0')
-               call in_range('obstacles', 'x_from'//item, o%x_from, 0.0_dp, beam%length, ' m, [0, length]')
-               call in_range('obstacles', 'x_to'//item, o%x_to, o%x_from, beam%length, &
-                             ' m, [x_from'//item//', length]')
-            end associate
-         end do
-         ! &time: the step count matters only when time is stepped
-         if (analysis%kind == 'dynamics') then
-            call in_range('time', 'dt', time%dt, 0.0_dp, time%t_end, ' s, (0, t_end]')
-            ! t_end/dt <= 1e30 by the hard ranges: finite, compared before any integer conversion
-            if (stat == 0 .and. time%t_end/time%dt > real(max_steps, dp)) &
-               call fail('&time dt = '//real_text(time%dt)//' with t_end = '//real_text(time%t_end)//' makes '// &
-                         rounded(time%t_end/time%dt)//' steps: at most '//rounded(real(max_steps, dp))// &
-                         ' steps; raise dt or lower t_end')
-         end if
-         if (analysis%kind == 'periodic') call check_periodic()
-         ! &load
-         if (.not. is_unset(load%point_position)) &
-            call in_range('load', 'point_position', load%point_position, 0.0_dp, beam%length, ' m, [0, length]')
-         if (abs(load%base_acceleration) > 0 .and. abs(load%base_amplitude) > 0) &
-            call fail('&load base_acceleration = '//real_text(load%base_acceleration)//' and base_amplitude = '// &
-                      real_text(load%base_amplitude)//' are both given: give one of them (a = A Omega^2)')
-         if (abs(load%base_acceleration) > 0 .and. load%base_frequency <= 0) &
-            call fail('&load base_acceleration = '//real_text(load%base_acceleration)// &
-                      ' needs base_frequency > 0 (the support moves as (a/Omega^2) sin(Omega t))')
-         ! &output
-         if (len_trim(output%file) == 0) &
-            call fail('&output file = '''' is empty: give a file name such as ''results/run.h5''')
-         do i = 1, size(output%points)
-            call in_range('output', 'points('//integer_text(i)//')', output%points(i), 0.0_dp, beam%length, &
-                          ' m, [0, length]')
-         end do
-         if (stat == 0 .and. output%poincare_load /= 'auto') then
-            if (forcing_of(copy) /= output%poincare_load) &
-               call fail('&output poincare_load = '''//trim(output%poincare_load)//''' names no harmonic load: '// &
-                         'give that load a non-zero amplitude and frequency, or write ''auto''')
+            call fail(stat, errmsg, '&mesh reduction_modes = '//integer_text(mesh%reduction_modes)// &
+                      ' and reduction_frequency = '//real_text(mesh%reduction_frequency)// &
+                      ' rad/s are both given: give one of them')
+         if (analysis%kind == 'modes') then
+            if (analysis%modes < 1 .or. analysis%modes > mesh%unknowns()) &
+               call fail(stat, errmsg, '&analysis modes = '//integer_text(analysis%modes)//' is outside [1, '// &
+                         integer_text(mesh%unknowns())//'], the unknowns J of the mesh')
          end if
       end associate
-
    contains
-
-      !> &analysis kind = 'periodic' (docs/input.md, "&periodic"): one forcing frequency,
-      !! the velocity scheme, a whole number of steps per forcing period, a step count
-      !! within max_steps, and a linearised monodromy only with rigid obstacles.
-      subroutine check_periodic()
-         real(dp) :: omega, ratio
-         character(len=:), allocatable :: problem
-         associate (time => copy%time, periodic => copy%periodic)
-            call forcing_frequency(copy%load, omega, problem)
-            if (len(problem) > 0) then
-               call fail('&analysis kind = ''periodic'' '//problem)
-               return
-            end if
-            if (time%scheme /= 'velocity') &
-               call fail('&time scheme = '''//trim(time%scheme)//''' is not available with &analysis kind = '// &
-                         '''periodic'': the period map steps the velocity scheme only, for now')
-            ! omega dt may underflow (no trap); the quotient is computed only when it is at most max_steps
-            if (omega*time%dt < 2*pi/real(max_steps, dp)) then
-               call fail('&time dt = '//real_text(time%dt)//' s makes more than '//rounded(real(max_steps, dp))// &
-                         ' steps per forcing period 2 pi/Omega (Omega = '//real_text(omega)//' rad/s)')
-               return
-            end if
-            ratio = 2*pi/(omega*time%dt)
-            if (nint(ratio, int64) < 1) &
-               call fail('&time dt = '//real_text(time%dt)//' s is longer than the forcing period 2 pi/Omega = '// &
-                         real_text(2*pi/omega)//' s: give &periodic steps_per_period instead')
-            if (stat == 0 .and. abs(ratio - nint(ratio, int64)) > whole_step_tolerance*ratio) &
-               call fail('&time dt = '//real_text(time%dt)//' s makes '//real_text(ratio)//' steps per forcing '// &
-                         'period 2 pi/Omega = '//real_text(2*pi/omega)//' s: a periodic orbit needs a whole number '// &
-                         '(to a relative 1e-9); give &periodic steps_per_period = '//count_text(anint(ratio))// &
-                         ' (dt = T/steps_per_period) instead of dt, or dt = T/n')
-            if (stat == 0 .and. ratio*(real(periodic%transient_periods, dp) + periodic%period_multiple) > &
-                real(max_steps, dp)) &
-               call fail('&periodic transient_periods = '//integer_text(periodic%transient_periods)//' with '// &
-                         rounded(ratio)//' steps per period makes more than '//rounded(real(max_steps, dp))//' steps')
-            if (periodic%monodromy == 'linearised' .and. any(copy%obstacles%stiffness > 0)) &
-               call fail('&periodic monodromy = ''linearised'' is for rigid obstacles: the compliant stops '// &
-                         '(&obstacles stiffness > 0) need ''differences'' (or ''auto'', which chooses it)')
-         end associate
-      end subroutine check_periodic
-
-      !> A count as an integer when it is one of default kind, else as `rounded`.
-      function count_text(value) result(text)
-         real(dp), intent(in) :: value
-         character(len=:), allocatable :: text
-         if (value < 1e9_dp) then
-            text = integer_text(nint(value))
-         else
-            text = rounded(value)
-         end if
-      end function count_text
-
-      !> A large count to 3 digits: '1.00e30'.
-      function rounded(value) result(text)
-         real(dp), intent(in) :: value
-         character(len=:), allocatable :: text
-         character(len=16) :: buffer
-         integer :: e, exponent
-         write (buffer, '(es10.2e3)') value
-         e = index(buffer, 'E')
-         read (buffer(e + 1:), *) exponent
-         text = trim(adjustl(buffer(1:e - 1)))//'e'//integer_text(exponent)
-      end function rounded
-
-      subroutine fail(message)
-         character(len=*), intent(in) :: message
-         if (stat /= 0) return   ! keep the first violation
-         stat = stat_failure
-         errmsg = message
-      end subroutine fail
-
       !> One of the four physical data, which go together.
       subroutine check_given(name, value)
          character(len=*), intent(in) :: name
          real(dp), intent(in) :: value
-         if (is_unset(value)) call fail('&beam '//name//' is missing: youngs_modulus, density, area and inertia '// &
-                                        'go together (or give k2 alone)')
+         if (is_unset(value)) call fail(stat, errmsg, '&beam '//name//' is missing: youngs_modulus, density, '// &
+                                        'area and inertia go together (or give k2 alone)')
       end subroutine check_given
+   end subroutine model_rules
 
-      !> A range that depends on other values; `why` names it (', the unknowns J of the mesh').
-      subroutine in_range(group, name, value, low, high, why)
-         character(len=*), intent(in) :: group, name, why
-         real(dp), intent(in) :: value, low, high
-         if (stat /= 0) return
-         if (value < low .or. value > high) call fail('&'//group//' '//name//' = '//real_text(value)// &
-                                                      ' is outside ['//real_text(low)//', '//real_text(high)//']'//why)
-      end subroutine in_range
+   !> &obstacles: damping only on a compliant stop; each obstacle on the beam, x_to not
+   !! before x_from.
+   subroutine obstacle_rules(scene, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      character(len=:), allocatable :: item
+      integer :: i
+      do i = 1, size(scene%obstacles)
+         item = '('//integer_text(i)//')'
+         associate (o => scene%obstacles(i))
+            if (o%stiffness <= 0 .and. o%damping > 0) &
+               call fail(stat, errmsg, '&obstacles damping'//item//' = '//real_text(o%damping)// &
+                         ' is given for a rigid obstacle (stiffness'//item// &
+                         ' = 0): contact damping needs a compliant stop; give stiffness'//item//' > 0 or damping 0')
+            call in_range(stat, errmsg, 'obstacles', 'x_from'//item, o%x_from, 0.0_dp, scene%beam%length, &
+                          ' m, [0, length]')
+            call in_range(stat, errmsg, 'obstacles', 'x_to'//item, o%x_to, o%x_from, scene%beam%length, &
+                          ' m, [x_from'//item//', length]')
+         end associate
+      end do
+   end subroutine obstacle_rules
 
-      subroutine integer_in_range(group, name, value, low, high, why)
-         character(len=*), intent(in) :: group, name, why
-         integer, intent(in) :: value, low, high
-         if (value < low .or. value > high) &
-            call fail('&'//group//' '//name//' = '//integer_text(value)//' is outside ['//integer_text(low)// &
-                      ', '//integer_text(high)//']'//why)
-      end subroutine integer_in_range
-   end subroutine validate_scene
+   !> &time, when time is stepped: dt in (0, t_end], at most max_steps steps.
+   subroutine time_rules(scene, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      if (scene%analysis%kind /= 'dynamics') return
+      associate (time => scene%time)
+         call in_range(stat, errmsg, 'time', 'dt', time%dt, 0.0_dp, time%t_end, ' s, (0, t_end]')
+         ! t_end/dt <= 1e30 by the hard ranges: finite, compared before any integer conversion
+         if (stat == 0 .and. time%t_end/time%dt > real(max_steps, dp)) &
+            call fail(stat, errmsg, '&time dt = '//real_text(time%dt)//' with t_end = '//real_text(time%t_end)// &
+                      ' makes '//rounded(time%t_end/time%dt)//' steps: at most '//rounded(real(max_steps, dp))// &
+                      ' steps; raise dt or lower t_end')
+      end associate
+   end subroutine time_rules
+
+   !> A large count to 3 digits: '1.00e30'.
+   function rounded(value) result(text)
+      real(dp), intent(in) :: value
+      character(len=:), allocatable :: text
+      character(len=16) :: buffer
+      integer :: e, exponent
+      write (buffer, '(es10.2e3)') value
+      e = index(buffer, 'E')
+      read (buffer(e + 1:), *) exponent
+      text = trim(adjustl(buffer(1:e - 1)))//'e'//integer_text(exponent)
+   end function rounded
+
+   !> A count as an integer when it is one of default kind, else as `rounded`.
+   function count_text(value) result(text)
+      real(dp), intent(in) :: value
+      character(len=:), allocatable :: text
+      if (value < 1e9_dp) then
+         text = integer_text(nint(value))
+      else
+         text = rounded(value)
+      end if
+   end function count_text
+
+   !> &analysis kind = 'periodic' (docs/input.md, "&periodic"): one forcing frequency,
+   !! the velocity scheme, a whole number of steps per forcing period, a step count
+   !! within max_steps, and a linearised monodromy only with rigid obstacles.
+   subroutine periodic_rules(scene, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      real(dp) :: omega, ratio
+      character(len=:), allocatable :: problem
+      associate (time => scene%time, periodic => scene%periodic)
+         call forcing_frequency(scene%load, omega, problem)
+         if (len(problem) > 0) then
+            call fail(stat, errmsg, '&analysis kind = ''periodic'' '//problem)
+            return
+         end if
+         if (time%scheme /= 'velocity') &
+            call fail(stat, errmsg, '&time scheme = '''//trim(time%scheme)//''' is not available with &analysis '// &
+                      'kind = ''periodic'': the period map steps the velocity scheme only, for now')
+         ! omega dt may underflow (no trap); the quotient is computed only when it is at most max_steps
+         if (omega*time%dt < 2*pi/real(max_steps, dp)) then
+            call fail(stat, errmsg, '&time dt = '//real_text(time%dt)//' s makes more than '// &
+                      rounded(real(max_steps, dp))//' steps per forcing period 2 pi/Omega (Omega = '// &
+                      real_text(omega)//' rad/s)')
+            return
+         end if
+         ratio = 2*pi/(omega*time%dt)
+         if (nint(ratio, int64) < 1) &
+            call fail(stat, errmsg, '&time dt = '//real_text(time%dt)//' s is longer than the forcing period '// &
+                      '2 pi/Omega = '//real_text(2*pi/omega)//' s: give &periodic steps_per_period instead')
+         if (stat == 0 .and. abs(ratio - nint(ratio, int64)) > whole_step_tolerance*ratio) &
+            call fail(stat, errmsg, '&time dt = '//real_text(time%dt)//' s makes '//real_text(ratio)// &
+                      ' steps per forcing period 2 pi/Omega = '//real_text(2*pi/omega)//' s: a periodic orbit '// &
+                      'needs a whole number (to a relative 1e-9); give &periodic steps_per_period = '// &
+                      count_text(anint(ratio))//' (dt = T/steps_per_period) instead of dt, or dt = T/n')
+         if (stat == 0 .and. ratio*(real(periodic%transient_periods, dp) + periodic%period_multiple) > &
+             real(max_steps, dp)) &
+            call fail(stat, errmsg, '&periodic transient_periods = '//integer_text(periodic%transient_periods)// &
+                      ' with '//rounded(ratio)//' steps per period makes more than '//rounded(real(max_steps, dp))// &
+                      ' steps')
+         if (periodic%monodromy == 'linearised' .and. any(scene%obstacles%stiffness > 0)) &
+            call fail(stat, errmsg, '&periodic monodromy = ''linearised'' is for rigid obstacles: the compliant '// &
+                      'stops (&obstacles stiffness > 0) need ''differences'' (or ''auto'', which chooses it)')
+      end associate
+   end subroutine periodic_rules
+
+   !> &load: the point force on the beam; a base excitation by its acceleration or its
+   !! amplitude, not both, and by its acceleration only with a frequency.
+   subroutine load_rules(scene, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      associate (load => scene%load)
+         if (.not. is_unset(load%point_position)) &
+            call in_range(stat, errmsg, 'load', 'point_position', load%point_position, 0.0_dp, scene%beam%length, &
+                          ' m, [0, length]')
+         if (abs(load%base_acceleration) > 0 .and. abs(load%base_amplitude) > 0) &
+            call fail(stat, errmsg, '&load base_acceleration = '//real_text(load%base_acceleration)// &
+                      ' and base_amplitude = '//real_text(load%base_amplitude)// &
+                      ' are both given: give one of them (a = A Omega^2)')
+         if (abs(load%base_acceleration) > 0 .and. load%base_frequency <= 0) &
+            call fail(stat, errmsg, '&load base_acceleration = '//real_text(load%base_acceleration)// &
+                      ' needs base_frequency > 0 (the support moves as (a/Omega^2) sin(Omega t))')
+      end associate
+   end subroutine load_rules
+
+   !> &output: a file name, the observation points on the beam, the Poincare load one of
+   !! the harmonic loads.
+   subroutine output_rules(scene, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer :: i
+      associate (output => scene%output)
+         if (len_trim(output%file) == 0) &
+            call fail(stat, errmsg, '&output file = '''' is empty: give a file name such as ''results/run.h5''')
+         do i = 1, size(output%points)
+            call in_range(stat, errmsg, 'output', 'points('//integer_text(i)//')', output%points(i), 0.0_dp, &
+                          scene%beam%length, ' m, [0, length]')
+         end do
+         if (stat == 0 .and. output%poincare_load /= 'auto') then
+            if (forcing_of(scene) /= output%poincare_load) &
+               call fail(stat, errmsg, '&output poincare_load = '''//trim(output%poincare_load)// &
+                         ''' names no harmonic load: give that load a non-zero amplitude and frequency, or write '// &
+                         '''auto''')
+         end if
+      end associate
+   end subroutine output_rules
+
+   !> stat = stat_failure and errmsg = message, unless an earlier violation is kept
+   !! (stat /= 0).
+   subroutine fail(stat, errmsg, message)
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      character(len=*), intent(in) :: message
+      if (stat /= 0) return
+      stat = stat_failure
+      errmsg = message
+   end subroutine fail
+
+   !> A range that depends on other values; `why` names it (' m, [0, length]').
+   subroutine in_range(stat, errmsg, group, name, value, low, high, why)
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      character(len=*), intent(in) :: group, name, why
+      real(dp), intent(in) :: value, low, high
+      if (stat /= 0) return
+      if (value < low .or. value > high) call fail(stat, errmsg, '&'//group//' '//name//' = '//real_text(value)// &
+                                                   ' is outside ['//real_text(low)//', '//real_text(high)//']'//why)
+   end subroutine in_range
 
    !> Every resolved input value as a list of entries (name 'group.variable', value, unit):
    !! the variables of `visit_scene` (an optional one only when given), with the beam's

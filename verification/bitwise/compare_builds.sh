@@ -15,11 +15,8 @@ old=$(readlink -f "$1") new=$(readlink -f "$2")
 shift 2
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
-python=''
-for candidate in python3 /usr/bin/python3; do
-  if command -v "$candidate" > /dev/null && "$candidate" -c 'import h5py' 2> /dev/null; then python=$candidate; break; fi
-done
-[ -n "$python" ] || { echo "compare_builds: no python3 with h5py (Debian python3-h5py)"; exit 2; }
+python=$("$here/../support/python_h5py.sh" 2> /dev/null) ||
+  { echo "compare_builds: no python3 with h5py (Debian python3-h5py)"; exit 2; }
 if [ $# -gt 0 ]; then scenes=("$@"); else scenes=("$top"/inputs/*.nml "$top"/verification/*/*.nml); fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

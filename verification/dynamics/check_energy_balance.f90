@@ -11,7 +11,7 @@
 !! is printed.
 program check_energy_balance
    use vibrobeam_kinds, only: dp, output_unit
-   use vibrobeam_hdf5_reader, only: read_real_1d, read_attr_string
+   use vibrobeam_hdf5_file_reads, only: read_real_1d, read_attr_string
    use vibrobeam_roundoff_bounds, only: balance_bounds_at
    use vibrobeam_test_support, only: test_counter
    implicit none

@@ -27,7 +27,7 @@ program check_rigid_impacts
    use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_contact_set, only: contact_value
-   use vibrobeam_hdf5_reader, only: read_real_1d, read_attr_int
+   use vibrobeam_hdf5_file_reads, only: read_real_1d, read_attr_int
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
    implicit none
    real(dp), parameter :: eps = epsilon(1.0_dp)

@@ -23,7 +23,7 @@
 program check_stiff_stop
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_hdf5_reader, only: read_real_1d, read_real_2d, read_attr_string
+   use vibrobeam_hdf5_file_reads, only: read_real_1d, read_real_2d, read_attr_string
    use vibrobeam_time_stepper, only: unresolved_fraction
    use vibrobeam_test_support, only: test_counter, read_test_scene
    use vibrobeam_roundoff_bounds, only: gamma_n

@@ -14,17 +14,7 @@ case_name=$1
 vibrobeam=$(cd "$(dirname "$2")" && pwd)/$(basename "$2")
 here=$(cd "$(dirname "$0")" && pwd)
 
-python=''
-for candidate in python3 /usr/bin/python3; do
-  if command -v "$candidate" > /dev/null && "$candidate" -c 'import h5py' 2> /dev/null; then
-    python=$candidate
-    break
-  fi
-done
-if [ -z "$python" ]; then
-  echo "SKIP: no python3 with h5py (Debian package python3-h5py)"
-  exit 77
-fi
+python=$("$here/../support/python_h5py.sh") || exit 77   # (it says why)
 
 work=$(mktemp -d)
 mounted=''

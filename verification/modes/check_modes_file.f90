@@ -5,7 +5,7 @@
 !! scripts/cantilever_roots.py); shapes at the nodes (tip value 1) with the closed form.
 program check_modes_file
    use vibrobeam_kinds, only: dp, output_unit, pi
-   use vibrobeam_hdf5_reader, only: read_real_1d, read_real_2d
+   use vibrobeam_hdf5_file_reads, only: read_real_1d, read_real_2d
    use vibrobeam_cantilever_exact, only: cantilever_mode_shape
    use vibrobeam_test_support, only: test_counter
    implicit none

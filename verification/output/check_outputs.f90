@@ -26,7 +26,7 @@
 program check_outputs
    use vibrobeam_kinds, only: dp, int64, pi, output_unit
    use vibrobeam_text, only: real_text, integer_text
-   use vibrobeam_hdf5_reader, only: read_real_1d, read_real_2d, read_attr_real, read_attr_string
+   use vibrobeam_hdf5_file_reads, only: read_real_1d, read_real_2d, read_attr_real, read_attr_string
    use vibrobeam_hdf5_reader, only: h5_reader
    use vibrobeam_test_support, only: test_counter
    implicit none

@@ -14,7 +14,7 @@
 !!    here), plus the rounding of the closed form (gamma_8 (|F| + 3 EI g/L^3)).
 program check_sdnl104
    use vibrobeam_kinds, only: dp, output_unit, pi
-   use vibrobeam_hdf5_reader, only: read_real_1d
+   use vibrobeam_hdf5_file_reads, only: read_real_1d
    use vibrobeam_cantilever_exact, only: cantilever_root
    use vibrobeam_scene, only: scene_type
    use vibrobeam_problem, only: run_problem

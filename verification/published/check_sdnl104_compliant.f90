@@ -10,7 +10,7 @@
 !! displacement: the check can fail.
 program check_sdnl104_compliant
    use vibrobeam_kinds, only: dp, output_unit
-   use vibrobeam_hdf5_reader, only: read_real_1d
+   use vibrobeam_hdf5_file_reads, only: read_real_1d
    use vibrobeam_test_support, only: test_counter
    implicit none
    real(dp), parameter :: dt = 1e-4_dp

@@ -12,7 +12,7 @@
 program compare_sweep
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: integer_text
-   use vibrobeam_hdf5_reader, only: read_real_1d, read_real_2d, read_int_1d, read_attr_int
+   use vibrobeam_hdf5_file_reads, only: read_real_1d, read_real_2d, read_int_1d, read_attr_int
    use vibrobeam_statistics_layout, only: statistics_layout, group_beam, group_energy
    use vibrobeam_test_support, only: test_counter
    implicit none

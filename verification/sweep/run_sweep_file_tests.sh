@@ -7,9 +7,11 @@
 # usage: run_sweep_file_tests.sh MODE VIBROBEAM COMPARE_SWEEP
 #   protect   a from_file or an input named like a point file (STEM_pointNNNN.h5) is refused
 #             (exit status 2, by --check too), and it is left as it was
-#   io_error  point files that cannot be written (ulimit -f): exit status 1, the earlier
-#             set untouched, the points done kept for a rerun; a directory in the way of a
-#             point file: exit status 2
+#   io_error  point files that cannot be written (ulimit -f, a directory in the partial
+#             directory): exit status 1, the earlier set untouched, the points done kept for
+#             a rerun; a point file lost from the partial directory: exit status 1, the
+#             message says what the journal and the directory hold; a directory in the way
+#             of a point file: exit status 2
 #   set       a smaller sweep replaces a larger one's set (its extra point files removed);
 #             two sweeps started together on one file: one runs, the other stops at once
 #             (exit status 1) or runs after it, and the set is always one sweep's
@@ -105,6 +107,27 @@ io_error)
   run limited
   expect 'the new set is consistent' consistent out/s.h5 3
   expect 'the partial directory is removed' test ! -e out/s.h5.partial
+  # a point file lost from the partial directory: a directory in the way of point 2's
+  # stops the sweep (one thread: point 1 done) with an I/O error; without it, and without
+  # point 1's file, the rerun runs points 2 and 3 but cannot publish the set: its message
+  # says which file is missing, what the directory holds and which journal names the file
+  keep lost out/s.h5 3 0.9
+  mkdir -p out/s.h5.partial/point0002.h5
+  OMP_NUM_THREADS=1 "$vibrobeam" lost.nml > lost.out 2> lost.err
+  expect 'a directory in the way in the partial directory: exit status 1' exit_is $? 1
+  expect 'a directory in the way in the partial directory: message' says lost.err \
+    "the result of point 2 ('out/s_point0002.h5') cannot be written: cannot rename"
+  rmdir out/s.h5.partial/point0002.h5 && rm out/s.h5.partial/point0001.h5
+  snapshot out
+  "$vibrobeam" lost.nml > lost.out 2> lost.err
+  expect 'a lost point file: exit status 1' exit_is $? 1
+  expect 'a lost point file: message' says lost.err "cannot publish the result of point 1: \
+'out/s.h5.partial/point0001.h5' is missing (the directory holds 2 of the 3 point files of the set (missing: 1), \
+no temporary file of point 1); the journal 'journal.h5."
+  expect 'a lost point file: the journal that names it' says lost.err \
+    "(generation 1) holds point 1 (ok) with its file written; the points done are kept in 'out/s.h5.partial'"
+  expect 'a lost point file: nothing published' intact out
+  rm -rf out/s.h5.partial
   # a directory in the way of point 2
   rm out/s_point0002.h5 && mkdir out/s_point0002.h5
   snapshot out

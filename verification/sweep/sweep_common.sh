@@ -28,8 +28,8 @@ says() { grep -q -F -- "$2" "$1" || { echo "  $1 does not say '$2':"; cat "$1"; 
 # exit_is STATUS EXPECTED
 exit_is() { [ "$1" -eq "$2" ] || { echo "  exit status $1, expected $2"; return 1; }; }
 
-# statuses FILE: /sweep/status of a sweep file, comma separated
-statuses() { h5dump -A 0 -d /sweep/status "$1" | sed -n "s/.*(0): *\\(.*\\)/\\1/p" | tr -d " "; }
+# statuses FILE: /sweep/status of a sweep file, every point's, comma separated
+statuses() { h5dump -A 0 -d /sweep/status -y -w 0 "$1" | sed -n '/DATA {/,/}/{/DATA {/d;/}/d;p;}' | tr -d ' \n'; }
 
 # run_status FILE: /run status of a result file
 run_status() { h5dump -a /run/status "$1" 2> /dev/null | sed -n 's/.*(0): *"\(.*\)".*/\1/p'; }

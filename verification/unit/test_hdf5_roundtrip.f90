@@ -15,10 +15,11 @@
 program test_hdf5_roundtrip
    use vibrobeam_kinds, only: dp, int64, error_unit
    use vibrobeam_text, only: integer_text, real_text
-   use vibrobeam_filesystem, only: file_exists, remove_file, rename_file, text_file_handle => text_file, &
-      open_text_for_atomic_write, write_text_line, finish_text_file, discard_text_file
+   use vibrobeam_filesystem, only: file_exists, remove_file, rename_file
+   use vibrobeam_text_file, only: text_file_handle => text_file, open_text_for_atomic_write, write_text_line, &
+      finish_text_file, discard_text_file
    use vibrobeam_hdf5, only: h5_writer
-   use vibrobeam_hdf5_reader, only: read_real_1d, read_real_2d, read_int_1d, read_real_scalar, read_attr_real, &
+   use vibrobeam_hdf5_file_reads, only: read_real_1d, read_real_2d, read_int_1d, read_real_scalar, read_attr_real, &
       read_attr_int, read_attr_string, h5_path_exists
    implicit none
 

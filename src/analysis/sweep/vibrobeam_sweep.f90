@@ -50,12 +50,14 @@ module vibrobeam_sweep
    end type sweep_outcome
 
    !> The journal as the runner's `point_sink`: points written one thread at a time
-   !! (HDF5 is not thread-safe), the progress reported.
+   !! (HDF5 is not thread-safe), the progress reported: the points of this process's
+   !! tasks done (`done`, those done before included) of `total`; under mpirun, rank 0
+   !! reports its own share of the `points` of the sweep.
    type, extends(point_sink) :: journal_sink
       type(sweep_journal) :: journal
       type(progress_meter) :: meter
       logical :: failed = .false.
-      integer :: done = 0, total = 0, rank = 0
+      integer :: done = 0, total = 0, rank = 0, ranks = 1, points = 0
    contains
       procedure :: take => sink_take
       procedure :: halted => sink_halted
@@ -138,8 +140,14 @@ contains
          call partial%close()
          return
       end if
-      sink%total = n
-      sink%done = outcome%resumed
+      sink%ranks = ranks
+      sink%points = n
+      do task = 1, tasks
+         if (.not. owns_task(task, rank, ranks)) cycle
+         sink%total = sink%total + first_of(task + 1) - first_of(task)
+         sink%done = sink%done + count(flag(first_of(task):first_of(task + 1) - 1) == done_ok .or. &
+                                       flag(first_of(task):first_of(task + 1) - 1) == done_failed)
+      end do
       !$omp parallel do schedule(dynamic, 1) default(shared) private(task, task_stat, task_message)
       do task = 1, tasks
          if (.not. owns_task(task, rank, ranks) .or. sink%failed) cycle
@@ -347,7 +355,10 @@ contains
 
    !> What a run of this sweep would find in its partial directory (`vibrobeam --check`):
    !! a sentence saying so ('' when there is none), the points it holds as done. stat = stat_invalid_input
-   !! when it holds a sweep of another input (the run refuses it).
+   !! when it holds a sweep of another input (the run refuses it). When a sweep is running
+   !! into it, the points its journals hold as done are those that sweep has committed so
+   !! far (docs/sweeps.md, "Checking a sweep"); the sentence leaves the count out when
+   !! they cannot be read at that moment.
    subroutine inspect_partial(scene, settings, done, text, stat, errmsg)
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
@@ -366,19 +377,22 @@ contains
       call sweep_start_state(scene, settings, first_scene, first, base, stat, errmsg)
       if (stat /= 0) return
       call partial%inspect(trim(scene%output%file), sweep_fingerprint(scene, settings, base), stat, errmsg)
-      if (stat /= 0) return
+      if (stat /= 0 .and. .not. partial%busy) return
       if (.not. partial%existed) return
       n = size(settings%axis(1)%values)*max(1, size(settings%axis(2)%values))*merge(2, 1, settings%mode == 'up-down')
-      call partial%index(n, owner, flag, stat, errmsg)
+      if (stat == 0) call partial%index(n, owner, flag, stat, errmsg)
       call partial%close()
-      if (stat /= 0) then
+      if (stat == 0) done = count(flag == done_ok .or. flag == done_failed)
+      if (partial%busy) then
+         text = 'a sweep is running into '''//trim(scene%output%file)//''' now (it holds '''//partial%directory//'/lock'''
+         if (stat == 0) text = text//'; its journals hold '//integer_text(done)//' of '//integer_text(n)// &
+                               ' points of this sweep, done'
+         text = text//'): a run started now would stop at once with status 1'
+         stat = 0
+         errmsg = ''
+      else if (stat /= 0) then
          stat = stat_failure
          return
-      end if
-      done = count(flag == done_ok .or. flag == done_failed)
-      if (partial%busy) then
-         text = 'a sweep is running into '''//trim(scene%output%file)//''' now (it holds '''//partial%directory// &
-                '/lock''): a run started now would stop at once with status 1'
       else
          text = 'resume: '''//partial%directory//''' holds '//integer_text(done)//' of '//integer_text(n)// &
                 ' points of this sweep, done; a run goes on from them ('//integer_text(n - done)//' points to run)'
@@ -395,14 +409,19 @@ contains
       logical, intent(in) :: point_file
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      character(len=:), allocatable :: share
       stat = 0
       errmsg = ''
       !$omp critical (vibrobeam_hdf5)
       call self%journal%write_point(k, task, result, final, point_file, stat, errmsg)
       self%done = self%done + 1
-      if (self%meter%due()) call self%meter%report('sweep: '//integer_text(self%done)//' of '// &
-                                                   integer_text(self%total)//' points ('//integer_text(self%rank)// &
-                                                   '), wall '//real_text(nint(self%meter%elapsed()*10)/10.0_dp)//' s')
+      if (self%meter%due()) then
+         share = ''
+         if (self%ranks > 1) share = ' on rank '//integer_text(self%rank)//' ('//integer_text(self%points)//' on '// &
+                                     integer_text(self%ranks)//' ranks)'
+         call self%meter%report('sweep: '//integer_text(self%done)//' of '//integer_text(self%total)//' points'// &
+                                share//', wall '//real_text(nint(self%meter%elapsed()*10)/10.0_dp)//' s')
+      end if
       !$omp end critical (vibrobeam_hdf5)
    end subroutine sink_take
 

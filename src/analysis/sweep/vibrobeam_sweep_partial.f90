@@ -60,6 +60,7 @@ module vibrobeam_sweep_partial
       procedure :: read_message => partial_read_message
       procedure :: read_poincare => partial_read_poincare
       procedure :: read_state => partial_read_state
+      procedure :: journal_label => partial_journal_label
       procedure :: reload => partial_reload
       procedure :: close => partial_close
       procedure :: remove => partial_remove
@@ -111,10 +112,13 @@ contains
    end subroutine partial_open
 
    !> Read the partial directory of `file` without changing anything (`vibrobeam --check`):
-   !! `existed` false when there is none; `busy` when a running sweep holds it (its journals
-   !! are then not read: they are that sweep's); stat = stat_invalid_input when it holds a journal of
-   !! another input. With `locked_here` the lock is held by this sweep (rank 0 of an MPI
-   !! run): the journals are read without looking at it.
+   !! `existed` false when there is none; `busy` when a running sweep holds it: its
+   !! journals are then read as they are now, as a SWMR reader that takes no lock (the
+   !! points they hold as done are those the sweep has committed so far; a journal it is
+   !! still creating, or one of another input, is left out), and stat /= 0 only when the
+   !! directory cannot be listed; otherwise stat = stat_invalid_input when it holds a journal of another
+   !! input. With `locked_here` the lock is held by this sweep (rank 0 of an MPI run): the
+   !! journals are read without looking at it.
    subroutine partial_inspect(self, file, fingerprint, stat, errmsg, locked_here)
       class(sweep_partial), intent(inout) :: self
       character(len=*), intent(in) :: file, fingerprint
@@ -143,27 +147,28 @@ contains
          call probe%release()
          if (stat /= 0) return
       end if
-      if (self%busy) then
-         allocate (self%journals(0))
-         return
-      end if
-      call read_journals(self, fingerprint, .false., stat, errmsg)
+      call read_journals(self, fingerprint, .false., stat, errmsg, live=self%busy)
    end subroutine partial_inspect
 
-   !> The journals of the directory (see `partial_open`; with `tidy` false nothing is removed).
-   subroutine read_journals(self, fingerprint, tidy, stat, errmsg)
+   !> The journals of the directory (see `partial_open`; with `tidy` false nothing is
+   !! removed; with `live` those of a running sweep, see `partial_inspect`).
+   subroutine read_journals(self, fingerprint, tidy, stat, errmsg, live)
       class(sweep_partial), intent(inout) :: self
       character(len=*), intent(in) :: fingerprint
       logical, intent(in) :: tidy
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      logical, intent(in), optional :: live
       type(directory_listing) :: listing
+      logical :: running
       character(len=:), allocatable :: name, their
       character(len=512) :: message
       integer(int64) :: generation
       integer :: ignored
       stat = 0
       errmsg = ''
+      running = .false.
+      if (present(live)) running = live
       self%notes = ''
       self%generation = 0
       if (allocated(self%journals)) deallocate (self%journals)
@@ -180,9 +185,20 @@ contains
          found_one: block
             type(journal_found) :: found   ! a new one each time: the array keeps the open readers
             found%name = self%directory//'/'//name
-            call found%reader%open(found%name, stat, message)
+            call found%reader%open(found%name, stat, message, running)
             if (stat == 0) call found%reader%attr_string('/journal', 'fingerprint', their, stat, message)
             if (stat == 0) call found%reader%attr_int64('/journal', 'generation', generation, stat, message)
+            if (running) then
+               if (stat == 0) then
+                  if (their /= fingerprint) stat = stat_invalid_input
+               end if
+               if (stat /= 0) then
+                  ! a journal the running sweep is still creating, or one of another input
+                  call found%reader%close()
+                  stat = 0
+                  exit found_one
+               end if
+            end if
             if (stat /= 0) then
                call found%reader%close()
                self%notes = self%notes//'the journal '''//found%name//''' cannot be read ('//trim(message)//')'
@@ -321,6 +337,16 @@ contains
          return
       end do
    end subroutine partial_read_state
+
+   !> Journal j for messages: its name in the directory and its generation
+   !! ('journal.h5.1234-0a1b2c3d.tmp' (generation 2)).
+   function partial_journal_label(self, j) result(label)
+      class(sweep_partial), intent(in) :: self
+      integer, intent(in) :: j
+      character(len=:), allocatable :: label
+      label = ''''//self%journals(j)%name(len(self%directory) + 2:)//''' (generation '// &
+              integer_text(self%journals(j)%generation)//')'
+   end function partial_journal_label
 
    !> Read the journals again (those written since `open` included), keeping the lock.
    subroutine partial_reload(self, fingerprint, stat, errmsg)

@@ -38,10 +38,11 @@ module vibrobeam_sweep_runner
    use vibrobeam_statistics_layout, only: group_points, group_beam
    use vibrobeam_signals, only: interrupt_requested
    use vibrobeam_run_loop, only: advance
+   use vibrobeam_filesystem, only: file_exists
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, point_scene, point_windows, max_settle_windows
    implicit none
    private
-   public :: point_result, task_start, point_sink, run_task, point_file_name, kept_point_file
+   public :: point_result, task_start, point_sink, run_task, point_file_name, kept_point_file, point_digits
    public :: status_ok, status_failed, status_interrupted, status_not_run, status_names
 
    ! a point's status: the run outcome of core/vibrobeam_status (the numbers in /sweep/status)
@@ -372,6 +373,16 @@ contains
             io_stat = stat_failure
             io_message = '&sweep keep_runs: the result of point '//integer_text(k)//' ('''// &
                          point_file_name(scene%output%file, k)//''') cannot be written: '//trim(errmsg)
+            result%status = status_not_run
+            return
+         end if
+         ! run_dynamics renamed the file onto its name; the journal must never name a file
+         ! that is not there (a sweep once found one missing when it published its set):
+         ! said now, the failure tells when the file went
+         if (.not. file_exists(trim(local%output%file))) then
+            io_stat = stat_failure
+            io_message = '&sweep keep_runs: the result of point '//integer_text(k)//' ('''//trim(local%output%file)// &
+                         ''') is not there right after it was published'
             result%status = status_not_run
             return
          end if

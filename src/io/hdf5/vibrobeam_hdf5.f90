@@ -1,7 +1,8 @@
 !> A thin object layer over the HDF5 Fortran API: crash-safe, atomic writing of vibrobeam
 !! result files (docs/output.md, "How a result is published"). Readers are in
-!! `vibrobeam_hdf5_reader` and re-exported here; extendible datasets that grow during a
-!! run are in `vibrobeam_hdf5_series`.
+!! `vibrobeam_hdf5_reader` and `vibrobeam_hdf5_file_reads`; extendible datasets that grow
+!! during a run in `vibrobeam_hdf5_series`; the checks and steps of creating one object
+!! in `vibrobeam_hdf5_objects`.
 !!
 !! `h5_writer` writes into a temporary file `<final>.<pid>-<token>.tmp` in the final
 !! file's directory (`vibrobeam_filesystem: unique_temporary_name`); only `commit` (or a
@@ -41,21 +42,17 @@
 !! text for a failed write: 'No space left on device'); nothing stops or prints.
 module vibrobeam_hdf5
    use, intrinsic :: iso_c_binding, only: c_int, c_int64_t
+   use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_filesystem, only: make_parent_directories, rename_file, remove_file, &
       unique_temporary_name, sync_file, sync_directory_of
-   use vibrobeam_hdf5_base, only: no_id, buffer_length, initialize_library, fail, describe, &
-      valid_path, link_exists, h5_reason, attribute_outcome, put_scalar_attribute, &
-      put_string_attribute, rewrite_attribute, close_dataspace, close_property_list
-   use hdf5, only: hid_t, hsize_t, h5kind_to_type, H5_REAL_KIND, H5_INTEGER_KIND, &
-      h5fcreate_f, h5fclose_f, h5fflush_f, H5F_ACC_TRUNC_F, H5F_SCOPE_GLOBAL_F, &
-      H5F_CLOSE_STRONG_F, H5F_LIBVER_LATEST_F, &
-      h5pcreate_f, h5pset_fclose_degree_f, h5pset_create_inter_group_f, h5pset_libver_bounds_f, &
-      h5pset_cache_f, h5pset_sieve_buf_size_f, size_t, &
-      H5P_FILE_ACCESS_F, H5P_LINK_CREATE_F, &
-      h5gcreate_f, h5gclose_f, h5oopen_f, h5oclose_f, &
-      h5screate_f, h5screate_simple_f, H5S_SCALAR_F, &
-      h5dcreate_f, h5dclose_f, h5dwrite_f
+   use vibrobeam_hdf5_base, only: no_id, buffer_length, initialize_library, fail, attribute_outcome, &
+      put_scalar_attribute, put_string_attribute, rewrite_attribute, close_property_list
+   use vibrobeam_hdf5_objects, only: create_dataset, finish_dataset, open_or_create_object, open_existing_object
+   use hdf5, only: hid_t, hsize_t, size_t, h5kind_to_type, H5_REAL_KIND, H5_INTEGER_KIND, h5fcreate_f, h5fclose_f, &
+      h5fflush_f, H5F_ACC_TRUNC_F, H5F_SCOPE_GLOBAL_F, H5F_CLOSE_STRONG_F, H5F_LIBVER_LATEST_F, h5pcreate_f, &
+      h5pset_fclose_degree_f, h5pset_create_inter_group_f, h5pset_libver_bounds_f, h5pset_cache_f, &
+      h5pset_sieve_buf_size_f, H5P_FILE_ACCESS_F, H5P_LINK_CREATE_F, h5oclose_f, h5dwrite_f
    implicit none
    private
    public :: h5_writer
@@ -145,7 +142,7 @@ contains
       if (stat /= 0) return
       call make_parent_directories(final_name, stat, fs_message)
       if (stat /= 0) then
-         stat = 1
+         stat = stat_failure
          errmsg = 'cannot create HDF5 file ''' // trim(final_name) // ''': ' // trim(fs_message)
          return
       end if
@@ -279,8 +276,8 @@ contains
       real(dp), allocatable :: contiguous_values(:)
 
       dims = int(shape(values), hsize_t)
-      call create_dataset(self, path, h5kind_to_type(dp, H5_REAL_KIND), 1, dims, &
-         dataset_id, stat, errmsg)
+      call create_dataset(self%is_open, self%file_id, self%link_creation_list, self%temporary_name, path, &
+         h5kind_to_type(dp, H5_REAL_KIND), 1, dims, dataset_id, stat, errmsg)
       if (stat /= 0) return
       hdferr = 0
       if (size(values) > 0) then
@@ -295,7 +292,7 @@ contains
                dims, hdferr)
          end if
       end if
-      call finish_dataset(self, path, dataset_id, hdferr, unit, stat, errmsg)
+      call finish_dataset(self%temporary_name, path, dataset_id, hdferr, unit, stat, errmsg)
    end subroutine writer_write_real_1d
 
    !> Write the 2-d real dataset `path`. The Fortran array `values(n1, n2)` becomes a
@@ -315,8 +312,8 @@ contains
       real(dp), allocatable :: contiguous_values(:, :)
 
       dims = int(shape(values), hsize_t)
-      call create_dataset(self, path, h5kind_to_type(dp, H5_REAL_KIND), 2, dims, &
-         dataset_id, stat, errmsg)
+      call create_dataset(self%is_open, self%file_id, self%link_creation_list, self%temporary_name, path, &
+         h5kind_to_type(dp, H5_REAL_KIND), 2, dims, dataset_id, stat, errmsg)
       if (stat /= 0) return
       hdferr = 0
       if (size(values) > 0) then
@@ -331,7 +328,7 @@ contains
                dims, hdferr)
          end if
       end if
-      call finish_dataset(self, path, dataset_id, hdferr, unit, stat, errmsg)
+      call finish_dataset(self%temporary_name, path, dataset_id, hdferr, unit, stat, errmsg)
    end subroutine writer_write_real_2d
 
    !> Write the 1-d integer dataset `path` (default integer kind).
@@ -347,8 +344,8 @@ contains
       integer, allocatable :: contiguous_values(:)
 
       dims = int(shape(values), hsize_t)
-      call create_dataset(self, path, h5kind_to_type(kind(values), H5_INTEGER_KIND), 1, &
-         dims, dataset_id, stat, errmsg)
+      call create_dataset(self%is_open, self%file_id, self%link_creation_list, self%temporary_name, path, &
+         h5kind_to_type(kind(values), H5_INTEGER_KIND), 1, dims, dataset_id, stat, errmsg)
       if (stat /= 0) return
       hdferr = 0
       if (size(values) > 0) then
@@ -362,7 +359,7 @@ contains
                contiguous_values, dims, hdferr)
          end if
       end if
-      call finish_dataset(self, path, dataset_id, hdferr, stat=stat, errmsg=errmsg)
+      call finish_dataset(self%temporary_name, path, dataset_id, hdferr, stat=stat, errmsg=errmsg)
    end subroutine writer_write_int_1d
 
    !> Write the scalar (rank-0) real dataset `path`, with an optional string attribute
@@ -378,11 +375,11 @@ contains
       integer(hsize_t) :: dims(0)
       integer :: hdferr
 
-      call create_dataset(self, path, h5kind_to_type(dp, H5_REAL_KIND), 0, dims, &
-         dataset_id, stat, errmsg)
+      call create_dataset(self%is_open, self%file_id, self%link_creation_list, self%temporary_name, path, &
+         h5kind_to_type(dp, H5_REAL_KIND), 0, dims, dataset_id, stat, errmsg)
       if (stat /= 0) return
       call h5dwrite_f(dataset_id, h5kind_to_type(dp, H5_REAL_KIND), value, [1_hsize_t], hdferr)
-      call finish_dataset(self, path, dataset_id, hdferr, unit, stat, errmsg)
+      call finish_dataset(self%temporary_name, path, dataset_id, hdferr, unit, stat, errmsg)
    end subroutine writer_write_real_scalar
 
    !> Set the real attribute `name` of the object `object_path` ('/' for the file's root
@@ -431,7 +428,8 @@ contains
       character(len=:), allocatable :: failed_step
       integer :: close_error
 
-      call open_or_create_object(self, object_path, object_id, stat, errmsg)
+      call open_or_create_object(self%is_open, self%file_id, self%link_creation_list, self%temporary_name, &
+         object_path, object_id, stat, errmsg)
       if (stat /= 0) return
       call put_scalar_attribute(object_id, name, value, failed_step)
       call h5oclose_f(object_id, close_error)
@@ -454,7 +452,8 @@ contains
       character(len=:), allocatable :: failed_step
       integer :: close_error
 
-      call open_or_create_object(self, object_path, object_id, stat, errmsg)
+      call open_or_create_object(self%is_open, self%file_id, self%link_creation_list, self%temporary_name, &
+         object_path, object_id, stat, errmsg)
       if (stat /= 0) return
       call put_string_attribute(object_id, name, value, failed_step, capacity)
       call h5oclose_f(object_id, close_error)
@@ -475,7 +474,7 @@ contains
       integer(hid_t) :: object_id
       character(len=:), allocatable :: failed_step
       integer :: close_error
-      call open_existing_object(self, object_path, object_id, stat, errmsg)
+      call open_existing_object(self%is_open, self%file_id, self%temporary_name, object_path, object_id, stat, errmsg)
       if (stat /= 0) return
       call rewrite_attribute(object_id, name, value, failed_step, capacity)
       call h5oclose_f(object_id, close_error)
@@ -555,156 +554,4 @@ contains
       if (allocated(self%final_name)) deallocate (self%final_name)
       if (allocated(self%temporary_name)) deallocate (self%temporary_name)
    end subroutine writer_discard
-
-
-
-
-   !> Check that the writer is open and `path` is a new dataset path, then create the
-   !! dataset (rank 0: scalar) of type `type_id`. On success `dataset_id` is open.
-   subroutine create_dataset(self, path, type_id, rank, dims, dataset_id, stat, errmsg)
-      class(h5_writer), intent(in) :: self
-      character(len=*), intent(in) :: path
-      integer(hid_t), intent(in) :: type_id
-      integer, intent(in) :: rank
-      integer(hsize_t), intent(in) :: dims(:)
-      integer(hid_t), intent(out) :: dataset_id
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      integer(hid_t) :: space_id
-      integer :: hdferr
-
-      stat = 0
-      errmsg = ''
-      dataset_id = no_id
-      if (.not. self%is_open) then
-         call fail(stat, errmsg, 'cannot write dataset ''' // trim(path) // &
-            ''': HDF5 writer has no open file')
-         return
-      end if
-      if (.not. valid_path(path, root_allowed=.false.)) then
-         call fail(stat, errmsg, 'invalid dataset path ''' // trim(path) // ''' for HDF5 file ''' &
-            // self%temporary_name // '''')
-         return
-      end if
-      if (link_exists(self%file_id, path)) then
-         call fail(stat, errmsg, 'cannot write dataset ' // describe(path, self%temporary_name) &
-            // ': the path already exists')
-         return
-      end if
-      if (rank == 0) then
-         call h5screate_f(H5S_SCALAR_F, space_id, hdferr)
-      else
-         call h5screate_simple_f(rank, dims, space_id, hdferr)
-      end if
-      if (hdferr < 0) then
-         call fail(stat, errmsg, 'cannot create the dataspace of dataset ' // &
-            describe(path, self%temporary_name))
-         return
-      end if
-      call h5dcreate_f(self%file_id, trim(path), type_id, space_id, dataset_id, hdferr, &
-         lcpl_id=self%link_creation_list)
-      if (hdferr < 0) then
-         dataset_id = no_id
-         call fail(stat, errmsg, 'cannot create dataset ' // describe(path, self%temporary_name))
-      end if
-      call close_dataspace(space_id)
-   end subroutine create_dataset
-
-   !> After the h5dwrite_f of a new dataset (its error code `write_error`): add the
-   !! optional 'unit' attribute, close the dataset and set stat/errmsg.
-   subroutine finish_dataset(self, path, dataset_id, write_error, unit, stat, errmsg)
-      class(h5_writer), intent(in) :: self
-      character(len=*), intent(in) :: path
-      integer(hid_t), intent(in) :: dataset_id
-      integer, intent(in) :: write_error
-      character(len=*), intent(in), optional :: unit
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      character(len=:), allocatable :: failed_step, reason
-      integer :: close_error
-
-      stat = 0
-      errmsg = ''
-      failed_step = ''
-      reason = ''
-      if (write_error < 0) reason = h5_reason()
-      if (present(unit) .and. write_error >= 0) then
-         call put_string_attribute(dataset_id, 'unit', unit, failed_step)
-      end if
-      call h5dclose_f(dataset_id, close_error)
-      if (write_error < 0) then
-         call fail(stat, errmsg, 'cannot write the values of dataset ' // &
-            describe(path, self%temporary_name), reason)
-      else if (len(failed_step) > 0) then
-         call fail(stat, errmsg, 'cannot write attribute ''unit'' of dataset ' // &
-            describe(path, self%temporary_name) // ' (' // failed_step // ')')
-      else if (close_error < 0) then
-         call fail(stat, errmsg, 'cannot close dataset ' // describe(path, self%temporary_name))
-      end if
-   end subroutine finish_dataset
-
-   !> Open the object `object_path` of the writer's file, creating it (and its parents)
-   !! as a group when missing.
-   subroutine open_or_create_object(self, object_path, object_id, stat, errmsg)
-      class(h5_writer), intent(in) :: self
-      character(len=*), intent(in) :: object_path
-      integer(hid_t), intent(out) :: object_id
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      integer(hid_t) :: group_id
-      integer :: hdferr
-
-      stat = 0
-      errmsg = ''
-      object_id = no_id
-      if (.not. self%is_open) then
-         call fail(stat, errmsg, 'cannot write an attribute of ''' // trim(object_path) // &
-            ''': HDF5 writer has no open file')
-         return
-      end if
-      if (.not. valid_path(object_path, root_allowed=.true.)) then
-         call fail(stat, errmsg, 'invalid object path ''' // trim(object_path) // &
-            ''' for HDF5 file ''' // self%temporary_name // '''')
-         return
-      end if
-      if (.not. link_exists(self%file_id, object_path)) then
-         call h5gcreate_f(self%file_id, trim(object_path), group_id, hdferr, &
-            lcpl_id=self%link_creation_list)
-         if (hdferr < 0) then
-            call fail(stat, errmsg, 'cannot create group ' // &
-               describe(object_path, self%temporary_name) // ' (is a parent a dataset?)')
-            return
-         end if
-         call h5gclose_f(group_id, hdferr)
-      end if
-      call h5oopen_f(self%file_id, trim(object_path), object_id, hdferr)
-      if (hdferr < 0) then
-         object_id = no_id
-         call fail(stat, errmsg, 'cannot open object ' // describe(object_path, self%temporary_name))
-      end if
-   end subroutine open_or_create_object
-
-
-   !> Open the existing object `object_path` of the writer's file.
-   subroutine open_existing_object(self, object_path, object_id, stat, errmsg)
-      class(h5_writer), intent(in) :: self
-      character(len=*), intent(in) :: object_path
-      integer(hid_t), intent(out) :: object_id
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      integer :: hdferr
-      stat = 0
-      errmsg = ''
-      object_id = no_id
-      if (.not. self%is_open) then
-         call fail(stat, errmsg, 'cannot change an attribute of ''' // trim(object_path) // &
-            ''': HDF5 writer has no open file')
-         return
-      end if
-      call h5oopen_f(self%file_id, trim(object_path), object_id, hdferr)
-      if (hdferr < 0) then
-         object_id = no_id
-         call fail(stat, errmsg, 'cannot open object ' // describe(object_path, self%temporary_name))
-      end if
-   end subroutine open_existing_object
 end module vibrobeam_hdf5

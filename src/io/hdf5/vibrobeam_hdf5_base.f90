@@ -53,11 +53,11 @@ module vibrobeam_hdf5_base
          integer(c_int) :: error
       end function c_h5_error_text
 
-      !> hid_t vb_h5_open_read(const char *name, int swmr);
-      function c_h5_open_read(name, swmr) result(file_id) bind(C, name='vb_h5_open_read')
+      !> hid_t vb_h5_open_read(const char *name, int swmr, int locking);
+      function c_h5_open_read(name, swmr, locking) result(file_id) bind(C, name='vb_h5_open_read')
          import :: c_char, c_int, c_int64_t
          character(kind=c_char), intent(in) :: name(*)
-         integer(c_int), value, intent(in) :: swmr
+         integer(c_int), value, intent(in) :: swmr, locking
          integer(c_int64_t) :: file_id   ! hid_t of HDF5 1.10
       end function c_h5_open_read
    end interface
@@ -384,13 +384,18 @@ contains
 
    !> Open `filename` read-only (initialising HDF5 if needed). A file whose writer was
    !! killed still says "open for SWMR write" in its superblock; it is then opened as a
-   !! SWMR reader, which HDF5 allows (docs/output.md, "After a kill").
-   subroutine open_file_for_reading(filename, file_id, stat, errmsg)
+   !! SWMR reader, which HDF5 allows (docs/output.md, "After a kill"). With `live`, the
+   !! file's writer may be running (the journal of a running sweep, read by `--check`):
+   !! it is opened as a SWMR reader at once and without HDF5's file lock, so that the
+   !! reader never stands in the writer's way.
+   subroutine open_file_for_reading(filename, file_id, stat, errmsg, live)
       character(len=*), intent(in) :: filename
       integer(hid_t), intent(out) :: file_id
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      logical, intent(in), optional :: live
       integer :: hdferr
+      logical :: running
 
       file_id = no_id
       call initialize_library(stat, errmsg)
@@ -399,8 +404,14 @@ contains
          call fail(stat, errmsg, 'HDF5 file ''' // trim(filename) // ''' does not exist')
          return
       end if
-      call h5fopen_f(trim(filename), H5F_ACC_RDONLY_F, file_id, hdferr)
-      if (hdferr < 0) file_id = int(c_h5_open_read(trim(filename) // c_null_char, 1_c_int), hid_t)
+      running = .false.
+      if (present(live)) running = live
+      if (running) then
+         file_id = int(c_h5_open_read(trim(filename) // c_null_char, 1_c_int, 0_c_int), hid_t)
+      else
+         call h5fopen_f(trim(filename), H5F_ACC_RDONLY_F, file_id, hdferr)
+         if (hdferr < 0) file_id = int(c_h5_open_read(trim(filename) // c_null_char, 1_c_int, 1_c_int), hid_t)
+      end if
       if (file_id < 0) then
          file_id = no_id
          call fail(stat, errmsg, 'cannot open ''' // trim(filename) // ''' as an HDF5 file')

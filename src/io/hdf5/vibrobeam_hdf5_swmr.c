@@ -34,12 +34,25 @@ int vb_h5_start_swmr_write(hid_t file)
 }
 
 /* Open `name` read-only; with `swmr` /= 0 as a SWMR reader, which also opens the file
- * of a writer that was killed (its superblock still says "open for SWMR write"). */
-hid_t vb_h5_open_read(const char *name, int swmr)
+ * of a writer that was killed (its superblock still says "open for SWMR write"). With
+ * `locking` = 0 the reader takes no file lock: it then never stands in the way of a
+ * writer that is running (the lock a reader holds, even for an instant, would make the
+ * writer's create of a new file fail). */
+hid_t vb_h5_open_read(const char *name, int swmr, int locking)
 {
     unsigned flags = H5F_ACC_RDONLY;
+    hid_t access, file;
     if (swmr) flags |= H5F_ACC_SWMR_READ;
-    return H5Fopen(name, flags, H5P_DEFAULT);
+    if (locking) return H5Fopen(name, flags, H5P_DEFAULT);
+    access = H5Pcreate(H5P_FILE_ACCESS);
+    if (access < 0) return -1;
+    if (H5Pset_file_locking(access, 0, 1) < 0) {
+        H5Pclose(access);
+        return -1;
+    }
+    file = H5Fopen(name, flags, access);
+    H5Pclose(access);
+    return file;
 }
 
 /* Walk callback: keep the innermost entry's description, and the C library's reason

@@ -23,6 +23,16 @@ module vibrobeam_namelist_tokens
       character(len=:), allocatable :: problem   !! t_bad: what is wrong
    end type token
 
+   !> The tokens found so far, and the line the tokenizer is on.
+   type :: token_list
+      type(token), allocatable :: list(:)
+      integer :: count = 0
+      integer :: line = 1
+   contains
+      procedure :: add => list_add
+      procedure :: add_bad => list_add_bad
+   end type token_list
+
 contains
 
    !> Split the text into tokens; bytes that are not allowed become t_bad tokens, so the
@@ -30,20 +40,17 @@ contains
    subroutine tokenize(source, list)
       character(len=*), intent(in) :: source
       type(token), allocatable, intent(out) :: list(:)
-      integer :: i, n, line, count, code, finish
-      character(len=1) :: c
-      character(len=*), parameter :: delimiters = ' ,/!''"=()&$'//achar(9)//achar(10)//achar(13)
+      type(token_list) :: found
+      integer :: i, n, code, finish, bad
+      character(len=:), allocatable :: problem
       n = len(source)
-      allocate (list(64))
-      count = 0
-      line = 1
+      allocate (found%list(64))
       i = 1
       do while (i <= n)
-         c = source(i:i)
-         code = iachar(c)
+         code = iachar(source(i:i))
          select case (code)
          case (10)
-            line = line + 1
+            found%line = found%line + 1
             i = i + 1
          case (13)
             if (i < n) then
@@ -52,176 +59,244 @@ contains
                   cycle
                end if
             end if
-            call add_bad(i, i, 'a carriage return (byte 0x0D) not followed by a line feed: '// &
-                         'lines end with LF or CR LF')
+            call found%add_bad(i, i, 'a carriage return (byte 0x0D) not followed by a line feed: '// &
+                               'lines end with LF or CR LF')
             exit
          case (9, 32)
             i = i + 1
          case (33)   ! '!': a comment to the end of the line
-            finish = i
-            do while (finish < n)
-               if (source(finish + 1:finish + 1) == achar(10)) exit
-               finish = finish + 1
-            end do
-            if (.not. text_bytes_ok(i + 1, finish, 'in a comment')) exit
+            finish = line_end(source, i)
+            call text_bytes_problem(source, i + 1, finish, 'in a comment', bad, problem)
+            if (bad > 0) then
+               call found%add_bad(bad, bad, problem)
+               exit
+            end if
             i = finish + 1
          case (34, 39)   ! a quoted string; a doubled quote stands for one
-            finish = i + 1
-            do
-               if (finish > n) exit
-               if (source(finish:finish) == achar(10)) exit
-               if (source(finish:finish) == c) then
-                  if (finish < n) then
-                     if (source(finish + 1:finish + 1) == c) then
-                        finish = finish + 2
-                        cycle
-                     end if
-                  end if
-                  exit
-               end if
-               finish = finish + 1
-            end do
-            if (finish > n) then
-               call add_bad(i, n, 'the string starting '//abbreviated(source(i:n), 24)//' has no closing '//c// &
-                            ': close it on the same line')
-               exit
-            else if (source(finish:finish) /= c) then
-               call add_bad(i, finish, 'the string starting '//abbreviated(source(i:finish - 1), 24)// &
-                            ' has no closing '//c//': close it on the same line')
-               exit
-            end if
-            if (.not. text_bytes_ok(i + 1, finish - 1, 'in a string')) exit
-            call add(t_string, i, finish)
+            call string_token(source, i, found, finish)
+            if (finish == 0) exit
             i = finish + 1
          case (38, 36)   ! '&name' or '$name'
-            finish = i
-            do while (finish < n)
-               if (scan(source(finish + 1:finish + 1), &
-                        'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_') == 0) exit
-               finish = finish + 1
-            end do
-            if (code == 36) then
-               call add(t_dollar, i, finish)
-            else if (finish == i) then
-               call add_bad(i, i, '''&'' without a group name: a group starts with &name')
-               exit
-            else
-               call add(t_group, i, finish)
-               if (finish < n) then
-                  if (scan(source(finish + 1:finish + 1), ' /!'//achar(9)//achar(10)//achar(13)) == 0) then
-                     call add_bad(finish + 1, finish + 1, 'the group name '//source(i:finish)// &
-                                  ' must be followed by a blank or the end of the line, not '''// &
-                                  shown_byte(source(finish + 1:finish + 1))//'''')
-                     exit
-                  end if
-               end if
-            end if
+            call name_token(source, i, found, finish)
+            if (finish == 0) exit
             i = finish + 1
          case (47)
-            call add(t_slash, i, i)
+            call found%add(t_slash, i, i)
             i = i + 1
          case (61)
-            call add(t_equals, i, i)
+            call found%add(t_equals, i, i)
             i = i + 1
          case (40)
-            call add(t_open, i, i)
+            call found%add(t_open, i, i)
             i = i + 1
          case (41)
-            call add(t_close, i, i)
+            call found%add(t_close, i, i)
             i = i + 1
          case (44)
-            call add(t_comma, i, i)
+            call found%add(t_comma, i, i)
             i = i + 1
          case (0:8, 11, 12, 14:31, 127)
-            call add_bad(i, i, 'byte '//hex_byte(code)//' (a control character) is not allowed: '// &
-                         'an input file is text')
+            call found%add_bad(i, i, 'byte '//hex_byte(code)//' (a control character) is not allowed: '// &
+                               'an input file is text')
             exit
          case (128:)
-            call add_bad(i, i, 'byte '//hex_byte(code)//' (not ASCII) is not allowed outside a comment '// &
-                         'or a quoted string: an input file is namelist text')
+            call found%add_bad(i, i, 'byte '//hex_byte(code)//' (not ASCII) is not allowed outside a comment '// &
+                               'or a quoted string: an input file is namelist text')
             exit
          case default   ! a word: a name, a number, a logical, a repeat count
-            finish = i
-            do while (finish < n)
-               code = iachar(source(finish + 1:finish + 1))
-               if (code < 33 .or. code > 126) exit
-               if (index(delimiters, source(finish + 1:finish + 1)) > 0) exit
-               finish = finish + 1
-            end do
-            call add(t_word, i, finish)
+            finish = word_end(source, i)
+            call found%add(t_word, i, finish)
             i = finish + 1
          end select
       end do
-      call add(t_end, n + 1, n)
-      call add(t_end, n + 1, n)   ! two: the parser looks up to two tokens ahead
-      call add(t_end, n + 1, n)
-      list = list(1:count)
-   contains
-      subroutine add(type, first, last)
-         integer, intent(in) :: type, first, last
-         type(token), allocatable :: bigger(:)
-         if (count == size(list)) then
-            allocate (bigger(2*count))
-            bigger(1:count) = list
-            call move_alloc(bigger, list)
-         end if
-         count = count + 1
-         list(count)%type = type
-         list(count)%first = first
-         list(count)%last = last
-         list(count)%line = line
-      end subroutine add
-
-      subroutine add_bad(first, last, problem)
-         integer, intent(in) :: first, last
-         character(len=*), intent(in) :: problem
-         call add(t_bad, first, last)
-         list(count)%problem = problem
-      end subroutine add_bad
-
-      !> Bytes first..last of a comment or a string: no control characters, and UTF-8
-      !! sequences only where they are well formed.
-      logical function text_bytes_ok(first, last, where) result(ok)
-         integer, intent(in) :: first, last
-         character(len=*), intent(in) :: where
-         integer :: j, b, following, k
-         ok = .true.
-         j = first
-         do while (j <= last)
-            b = iachar(source(j:j))
-            following = 0
-            select case (b)
-            case (0:8, 10:31, 127)
-               if (b == 13 .and. j == last) exit   ! CR of a CR LF line end
-               call add_bad(j, j, 'byte '//hex_byte(b)//' (a control character) '//where//' is not allowed')
-               ok = .false.
-               return
-            case (194:223)
-               following = 1
-            case (224:239)
-               following = 2
-            case (240:244)
-               following = 3
-            case (128:193, 245:255)
-               call add_bad(j, j, 'byte '//hex_byte(b)//' '//where//' is not part of a UTF-8 character')
-               ok = .false.
-               return
-            end select
-            do k = 1, following
-               if (j + k > last) then
-                  ok = .false.
-               else
-                  ok = iachar(source(j + k:j + k)) >= 128 .and. iachar(source(j + k:j + k)) <= 191
-               end if
-               if (.not. ok) then
-                  call add_bad(j, j, 'byte '//hex_byte(b)//' '//where//' starts a malformed UTF-8 character')
-                  return
-               end if
-            end do
-            j = j + 1 + following
-         end do
-      end function text_bytes_ok
+      call found%add(t_end, n + 1, n)
+      call found%add(t_end, n + 1, n)   ! two: the parser looks up to two tokens ahead
+      call found%add(t_end, n + 1, n)
+      list = found%list(1:found%count)
    end subroutine tokenize
+
+   !> The quoted string starting at byte i (its quote): a t_string token, `finish` its
+   !! closing quote; or, when it is not closed on its line or holds a byte that is not
+   !! allowed, a t_bad token and finish = 0.
+   subroutine string_token(source, i, found, finish)
+      character(len=*), intent(in) :: source
+      integer, intent(in) :: i
+      type(token_list), intent(inout) :: found
+      integer, intent(out) :: finish
+      character(len=1) :: c
+      character(len=:), allocatable :: problem
+      integer :: n, bad
+      n = len(source)
+      c = source(i:i)
+      finish = i + 1
+      do
+         if (finish > n) exit
+         if (source(finish:finish) == achar(10)) exit
+         if (source(finish:finish) == c) then
+            if (finish < n) then
+               if (source(finish + 1:finish + 1) == c) then
+                  finish = finish + 2
+                  cycle
+               end if
+            end if
+            exit
+         end if
+         finish = finish + 1
+      end do
+      if (finish > n) then
+         call found%add_bad(i, n, 'the string starting '//abbreviated(source(i:n), 24)//' has no closing '//c// &
+                            ': close it on the same line')
+         finish = 0
+         return
+      else if (source(finish:finish) /= c) then
+         call found%add_bad(i, finish, 'the string starting '//abbreviated(source(i:finish - 1), 24)// &
+                            ' has no closing '//c//': close it on the same line')
+         finish = 0
+         return
+      end if
+      call text_bytes_problem(source, i + 1, finish - 1, 'in a string', bad, problem)
+      if (bad > 0) then
+         call found%add_bad(bad, bad, problem)
+         finish = 0
+         return
+      end if
+      call found%add(t_string, i, finish)
+   end subroutine string_token
+
+   !> '&name' (t_group, followed by a blank, '/', '!' or a line end) or '$name' (t_dollar)
+   !! starting at byte i: `finish` its last byte; finish = 0 after a t_bad token.
+   subroutine name_token(source, i, found, finish)
+      character(len=*), intent(in) :: source
+      integer, intent(in) :: i
+      type(token_list), intent(inout) :: found
+      integer, intent(out) :: finish
+      integer :: n
+      n = len(source)
+      finish = i
+      do while (finish < n)
+         if (scan(source(finish + 1:finish + 1), &
+                  'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_') == 0) exit
+         finish = finish + 1
+      end do
+      if (source(i:i) == '$') then
+         call found%add(t_dollar, i, finish)
+      else if (finish == i) then
+         call found%add_bad(i, i, '''&'' without a group name: a group starts with &name')
+         finish = 0
+      else
+         call found%add(t_group, i, finish)
+         if (finish < n) then
+            if (scan(source(finish + 1:finish + 1), ' /!'//achar(9)//achar(10)//achar(13)) == 0) then
+               call found%add_bad(finish + 1, finish + 1, 'the group name '//source(i:finish)// &
+                                  ' must be followed by a blank or the end of the line, not '''// &
+                                  shown_byte(source(finish + 1:finish + 1))//'''')
+               finish = 0
+            end if
+         end if
+      end if
+   end subroutine name_token
+
+   !> The last byte before the line feed that ends the line of byte i (or the end of the text).
+   pure integer function line_end(source, i) result(finish)
+      character(len=*), intent(in) :: source
+      integer, intent(in) :: i
+      finish = i
+      do while (finish < len(source))
+         if (source(finish + 1:finish + 1) == achar(10)) exit
+         finish = finish + 1
+      end do
+   end function line_end
+
+   !> The last byte of the word starting at byte i: printable ASCII up to a delimiter.
+   pure integer function word_end(source, i) result(finish)
+      character(len=*), intent(in) :: source
+      integer, intent(in) :: i
+      character(len=*), parameter :: delimiters = ' ,/!''"=()&$'//achar(9)//achar(10)//achar(13)
+      integer :: code
+      finish = i
+      do while (finish < len(source))
+         code = iachar(source(finish + 1:finish + 1))
+         if (code < 33 .or. code > 126) exit
+         if (index(delimiters, source(finish + 1:finish + 1)) > 0) exit
+         finish = finish + 1
+      end do
+   end function word_end
+
+   !> Bytes first..last of a comment or a string: no control characters, and UTF-8
+   !! sequences only where they are well formed. `bad`: the first byte that is not
+   !! allowed (0: none) and `problem` what is wrong with it.
+   subroutine text_bytes_problem(source, first, last, where, bad, problem)
+      character(len=*), intent(in) :: source
+      integer, intent(in) :: first, last
+      character(len=*), intent(in) :: where
+      integer, intent(out) :: bad
+      character(len=:), allocatable, intent(out) :: problem
+      integer :: j, b, following, k
+      logical :: ok
+      bad = 0
+      problem = ''
+      j = first
+      do while (j <= last)
+         b = iachar(source(j:j))
+         following = 0
+         select case (b)
+         case (0:8, 10:31, 127)
+            if (b == 13 .and. j == last) exit   ! CR of a CR LF line end
+            bad = j
+            problem = 'byte '//hex_byte(b)//' (a control character) '//where//' is not allowed'
+            return
+         case (194:223)
+            following = 1
+         case (224:239)
+            following = 2
+         case (240:244)
+            following = 3
+         case (128:193, 245:255)
+            bad = j
+            problem = 'byte '//hex_byte(b)//' '//where//' is not part of a UTF-8 character'
+            return
+         end select
+         do k = 1, following
+            if (j + k > last) then
+               ok = .false.
+            else
+               ok = iachar(source(j + k:j + k)) >= 128 .and. iachar(source(j + k:j + k)) <= 191
+            end if
+            if (.not. ok) then
+               bad = j
+               problem = 'byte '//hex_byte(b)//' '//where//' starts a malformed UTF-8 character'
+               return
+            end if
+         end do
+         j = j + 1 + following
+      end do
+   end subroutine text_bytes_problem
+
+   !> Append a token of `type` (bytes first..last, on the current line).
+   subroutine list_add(self, type, first, last)
+      class(token_list), intent(inout) :: self
+      integer, intent(in) :: type, first, last
+      type(token), allocatable :: bigger(:)
+      if (self%count == size(self%list)) then
+         allocate (bigger(2*self%count))
+         bigger(1:self%count) = self%list
+         call move_alloc(bigger, self%list)
+      end if
+      self%count = self%count + 1
+      self%list(self%count)%type = type
+      self%list(self%count)%first = first
+      self%list(self%count)%last = last
+      self%list(self%count)%line = self%line
+   end subroutine list_add
+
+   !> Append a t_bad token saying what is wrong.
+   subroutine list_add_bad(self, first, last, problem)
+      class(token_list), intent(inout) :: self
+      integer, intent(in) :: first, last
+      character(len=*), intent(in) :: problem
+      call self%add(t_bad, first, last)
+      self%list(self%count)%problem = problem
+   end subroutine list_add_bad
 
    function hex_byte(code) result(text)
       integer, intent(in) :: code
