@@ -58,6 +58,7 @@ program test_periodic_linear
    ! ---- the scheme's matrices, dense, from the stepped system's M and K ----
    n = prepared%system%model%unknowns
    m = 2*n
+   allocate (mass(n, n), stiffness(n, n), damping(n, n), w(n, n), eye(n, n), x_ref(m), gram(m, m))
    mass = band_to_dense(prepared%system%model%mass)
    stiffness = band_to_dense(prepared%system%model%stiffness)
    dt = scene%time%dt
@@ -200,7 +201,7 @@ contains
       first = j
       if (wi(j) < 0) first = j - 1
       cancellation_complex = cancellation(gram, vectors(:, first))
-      if (wi(j) /= 0) cancellation_complex = max(cancellation_complex, cancellation(gram, vectors(:, first + 1)))
+      if (abs(wi(j)) > 0) cancellation_complex = max(cancellation_complex, cancellation(gram, vectors(:, first + 1)))
    end function cancellation_complex
 
    !> The row t of u at the tip on the stepped system's unknowns (through the reduced
