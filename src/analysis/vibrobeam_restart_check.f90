@@ -39,7 +39,7 @@ contains
    !! continues (the running sums of the energy balance include them), so every obstacle
    !! that is compliant in the file or in the scene keeps its kind, side, extent, levels,
    !! stiffness and exponent; its damping may change, and so may rigid obstacles (their
-   !! levels are checked against the state by the caller). stat = 1 with a message naming
+   !! levels are checked against the state by the caller). stat = stat_failure with a message naming
    !! the first mismatch. `same_bounds`: the obstacle bounds at the contact points are
    !! those of the file.
    subroutine check_compatible(filename, scene, contact_x, lower, upper, same_bounds, stat, errmsg, stops)
@@ -188,7 +188,7 @@ contains
    end subroutine compare_stops
 
    !> Compare the root attribute of `item`'s name in `file` with `item` (reals bitwise).
-   !! stat = 1 with the mismatch message (`mismatch`, ending with `why`), or with the
+   !! stat = stat_failure with the mismatch message (`mismatch`, ending with `why`), or with the
    !! reader's message prefixed by `prefix`.
    subroutine compare_entry(file, item, prefix, why, stat, errmsg)
       type(h5_reader), intent(in) :: file
@@ -218,7 +218,7 @@ contains
       if (stat /= 0 .and. index(errmsg, prefix) /= 1) errmsg = prefix//trim(errmsg)
    end subroutine compare_entry
 
-   !> stat = 1 and the message 'PREFIX NAME is IN_FILE in the file and IN_SCENE in this
+   !> stat = stat_failure and the message 'PREFIX NAME is IN_FILE in the file and IN_SCENE in this
    !! scene WHY'.
    subroutine mismatch(prefix, name, in_file, in_scene, why, stat, errmsg)
       character(len=*), intent(in) :: prefix, name, in_file, in_scene, why

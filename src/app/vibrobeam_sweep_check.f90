@@ -16,6 +16,7 @@
 !! directory; and the resolution advice for the statistics. Written line by line, so the
 !! time is linear in the number of points.
 module vibrobeam_sweep_check
+   use vibrobeam_status, only: stat_invalid_input
    use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type, forcing_of
@@ -50,7 +51,7 @@ contains
 
    !> The checks of the files of a resolved sweep (module documentation); `input_file` as
    !! given on the command line, `contact_points` those of the first point. `resume`: what
-   !! a run finds in the partial directory ('' when there is none). stat = 2 on a failure.
+   !! a run finds in the partial directory ('' when there is none). stat = stat_invalid_input on a failure.
    subroutine check_sweep_files(scene, settings, input_file, contact_points, resume, stat, errmsg)
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
@@ -67,7 +68,7 @@ contains
       if (stat /= 0) return
       call inspect_partial(scene, settings, done, resume, stat, errmsg)
       if (stat /= 0) then
-         stat = 2
+         stat = stat_invalid_input
          return
       end if
       call check_size(scene, settings, points, contact_points, stat, errmsg)
@@ -90,7 +91,7 @@ contains
       call resolve_directory(directory, resolved, existing, stat, errmsg)
       if (stat /= 0) then
          errmsg = shown//': '//trim(errmsg)
-         stat = 2
+         stat = stat_invalid_input
          return
       end if
       stem = name
@@ -102,7 +103,7 @@ contains
       if (stat /= 0 .or. .not. settings%keep_runs) return
       do k = 1, n
          if (.not. file_exists(point_file_name(trim(scene%output%file), k)//'/')) cycle
-         stat = 2
+         stat = stat_invalid_input
          errmsg = '&sweep keep_runs = .true.: the result file of point '//integer_text(k)//', '''// &
                   abbreviated(point_file_name(trim(scene%output%file), k), 80)//''', is a directory: remove it or give '// &
                   '&output file another name'
@@ -122,7 +123,7 @@ contains
             if (base(1:len(stem) + 6) == stem//'_point') then
                k = point_number(base)
                if (k > 0) then
-                  stat = 2
+                  stat = stat_invalid_input
                   if (settings%keep_runs .and. k <= n) then
                      errmsg = '&sweep keep_runs = .true. would write the result of point '//integer_text(k)// &
                               ' over '//what//' '''//abbreviated(path, 60)//''''
@@ -142,7 +143,7 @@ contains
          partial = join(resolved, name)//'.partial/'
          if (len(full) > len(partial)) then
             if (full(1:len(partial)) == partial) then
-               stat = 2
+               stat = stat_invalid_input
                errmsg = shown//': '//what//' '''//abbreviated(path, 60)//''' is inside the sweep''s partial '// &
                         'directory '''//partial_directory(trim(scene%output%file))//''', which the sweep removes when '// &
                         'it is complete: move the file'
@@ -152,7 +153,7 @@ contains
          ! the sweep's text files (the input file is checked by check_output_target)
          if (scene%output%text .and. what /= 'the input file') then
             if (full == join(resolved, stem//'_sweep.dat') .or. full == join(resolved, stem//'_poincare.dat')) then
-               stat = 2
+               stat = stat_invalid_input
                errmsg = shown//' would write the text file '''//base//''', which is '//what//': give &output '// &
                         'file another name'
             end if
@@ -228,11 +229,11 @@ contains
          return
       end if
       if (total > max_result_bytes) then
-         stat = 2
+         stat = stat_invalid_input
          errmsg = size_message()//', more than the limit of '//bytes_text(max_result_bytes)//size_advice()
       else if (free_bytes(existing, free)) then
          if (total > free) then
-            stat = 2
+            stat = stat_invalid_input
             errmsg = size_message()//', more than the '//bytes_text(free)//' free on the file system of '''// &
                      abbreviated(existing, 60)//''''//size_advice()
          end if

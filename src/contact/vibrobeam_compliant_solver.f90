@@ -171,7 +171,7 @@ contains
 
    !> The free solution y_free of the problem linearized at the iterate x (module
    !! comment): J = A + f_scale m sum_j d_j H_j^T H_j factored into self%jacobian_factor,
-   !! y_free = x + J^-1 (A (x_free - x) + f_scale sum_j s_j f_j H_j^T). stat = 2 when J
+   !! y_free = x + J^-1 (A (x_free - x) + f_scale sum_j s_j f_j H_j^T). stat = stat_linear_solver_failure when J
    !! cannot be factored.
    subroutine linearized_free(self, springs, contacts, a, x_free, x, now, motion_scale, force_scale, y_free, stat, &
                               errmsg)

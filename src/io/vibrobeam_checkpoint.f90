@@ -169,7 +169,7 @@ contains
    end function item_size
 
    !> Read the latest complete checkpoint of `filename` into `record`; `time` is its time.
-   !! The state must match the checksum of its slot (stat = 1 otherwise: the file is
+   !! The state must match the checksum of its slot (stat = stat_failure otherwise: the file is
    !! damaged); `verified` (optional) is false when the slot carries no checksum (a file of
    !! vibrobeam 0.2.0), which is read unverified.
    subroutine read_checkpoint(filename, record, time, stat, errmsg, verified)
@@ -242,7 +242,7 @@ contains
       end subroutine read_item
    end subroutine read_checkpoint
 
-   !> stat = 1: `filename` is no result of a dynamics run.
+   !> stat = stat_failure: `filename` is no result of a dynamics run.
    subroutine no_checkpoint(filename, stat, errmsg)
       character(len=*), intent(in) :: filename
       integer, intent(out) :: stat

@@ -104,7 +104,7 @@ contains
    end subroutine visit_obstacles
 
    !> Build the contact points of the obstacles on `model`'s mesh. Warnings (one line each) are
-   !! appended to `warnings`; stat = 1 with a message when the obstacles contradict each
+   !! appended to `warnings`; stat = stat_failure with a message when the obstacles contradict each
    !! other (a 'below' level at or above an 'above' level) or the clamp.
    subroutine build_contact_points(obstacles, model, contacts, warnings, stat, errmsg)
       type(obstacle_type), intent(in) :: obstacles(:)
@@ -212,7 +212,7 @@ contains
       end do
    end subroutine add_obstacle
 
-   !> stat = 1 when a bound cuts the clamp (u = 0 must be admissible) or a 'below' level
+   !> stat = stat_failure when a bound cuts the clamp (u = 0 must be admissible) or a 'below' level
    !! is not under an 'above' level at a node.
    subroutine check_bounds(nodes, model, stat, errmsg)
       type(nodal_bounds), intent(in) :: nodes

@@ -189,7 +189,7 @@ contains
 
    !> Check every value against what is allowed: first each against its hard range and
    !! keywords (the rows of `visit_scene`), then the relations that matter for the
-   !! analysis asked for, group by group. On the first violation stat = 1 and errmsg reads
+   !! analysis asked for, group by group. On the first violation stat = stat_failure and errmsg reads
    !! like '&impact restitution = 1.5 is outside [0, 1]'.
    subroutine validate_scene(scene, stat, errmsg)
       type(scene_type), intent(in) :: scene

@@ -36,7 +36,7 @@ module vibrobeam_sweep_axis
 contains
 
    !> Name, index and values of axis `a` (1: parameter, 2: parameter2) of a sweep of
-   !! `scene`. stat = 1 with a message naming &sweep, the parameter and what is allowed.
+   !! `scene`. stat = stat_failure with a message naming &sweep, the parameter and what is allowed.
    subroutine resolve_axis(axis, a, scene, stat, errmsg)
       type(sweep_axis), intent(inout) :: axis
       integer, intent(in) :: a
@@ -171,7 +171,7 @@ contains
       errmsg = ''
    end subroutine sweepable_variable
 
-   !> stat = 1 when the scene's rules replace the value the sweep would set, so that every
+   !> stat = stat_failure when the scene's rules replace the value the sweep would set, so that every
    !! point would run the same scene: k2 of a beam given by E, rho, S and I (k2 is then
    !! EI/(rho S); docs/input.md, "&beam").
    subroutine used_by_scene(axis, label, scene, stat, errmsg)

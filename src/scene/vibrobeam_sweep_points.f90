@@ -207,7 +207,7 @@ contains
       end function swept
    end function point_scene
 
-   !> The transient and the measurement window of a point's scene, in steps. stat = 1
+   !> The transient and the measurement window of a point's scene, in steps. stat = stat_failure
    !! when a window in periods has no forcing frequency, or the measurement window is
    !! shorter than a step.
    subroutine point_windows(settings, scene, settle_steps, measure_steps, stat, errmsg)

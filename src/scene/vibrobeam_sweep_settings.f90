@@ -27,7 +27,7 @@ contains
 
    !> Resolve the parameters against the scene's inputs (`scene_variables`), build the
    !! values, and check every point: its scene must be valid, hold as many contact points
-   !! as the first, and its windows at least one step. stat = 1 with a message naming
+   !! as the first, and its windows at least one step. stat = stat_failure with a message naming
    !! &sweep and the value otherwise.
    subroutine resolve_sweep(settings, scene, stat, errmsg)
       type(sweep_settings), intent(inout) :: settings

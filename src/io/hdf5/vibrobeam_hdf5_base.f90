@@ -112,7 +112,7 @@ contains
       if (hdferr < 0) call fail(stat, errmsg, 'cannot switch off HDF5 automatic error printing')
    end subroutine initialize_library
 
-   !> Set stat = 1 and errmsg = message, followed by the reason HDF5 recorded for its last
+   !> Set stat = stat_failure and errmsg = message, followed by the reason HDF5 recorded for its last
    !! failure (`h5_reason`), or by `reason` when given: every HDF5 call clears the error
    !! stack, so a caller that closes identifiers after a failed call takes the reason
    !! (`h5_reason()`) right after that call.

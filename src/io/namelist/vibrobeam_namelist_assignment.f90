@@ -20,7 +20,7 @@ contains
 
    !> name [(i)] = values, starting at the cursor's token (the name) in &group; leaves
    !! the cursor after the values and appends the assignment to scanned%items(1:count).
-   !! stat = 1 with the message on the first problem.
+   !! stat = stat_failure with the message on the first problem.
    subroutine parse_assignment(cursor, group, scanned, count, stat, errmsg)
       type(token_cursor), intent(inout) :: cursor
       character(len=*), intent(in) :: group

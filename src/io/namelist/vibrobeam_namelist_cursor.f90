@@ -96,7 +96,7 @@ contains
       end associate
    end function string_at
 
-   !> A problem of the file's structure: stat = 1, 'line L: message'.
+   !> A problem of the file's structure: stat = stat_failure, 'line L: message'.
    subroutine fail_at(line, message, stat, errmsg)
       integer, intent(in) :: line
       character(len=*), intent(in) :: message
@@ -106,7 +106,7 @@ contains
       errmsg = 'line '//integer_text(line)//': '//message
    end subroutine fail_at
 
-   !> A problem of one variable: stat = 1, '&group name = value ...: allowed ... (line L)'.
+   !> A problem of one variable: stat = stat_failure, '&group name = value ...: allowed ... (line L)'.
    subroutine fail_variable(line, message, stat, errmsg)
       integer, intent(in) :: line
       character(len=*), intent(in) :: message

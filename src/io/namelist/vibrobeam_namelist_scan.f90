@@ -47,7 +47,7 @@ module vibrobeam_namelist_scan
 
 contains
 
-   !> Read `filename` whole and scan it (see `scan_namelist_text`). stat = 1 with a message
+   !> Read `filename` whole and scan it (see `scan_namelist_text`). stat = stat_failure with a message
    !! when the file cannot be read, is empty of groups or is not accepted.
    subroutine scan_namelist_file(filename, schema, scanned, stat, errmsg)
       character(len=*), intent(in) :: filename
@@ -96,7 +96,7 @@ contains
    end subroutine scan_namelist_file
 
    !> Tokenize `text` (a whole namelist file) and check it against `schema`. stat = 0 and
-   !! `scanned` filled on success; stat = 1 and a message naming the line, the group, the
+   !! `scanned` filled on success; stat = stat_failure and a message naming the line, the group, the
    !! variable, the value and what is allowed on the first problem in file order.
    subroutine scan_namelist_text(text, schema, scanned, stat, errmsg)
       character(len=*), intent(in) :: text

@@ -39,7 +39,7 @@ module vibrobeam_schema_operations
       procedure :: visit => add_row
    end type schema_table
 
-   !> Sets each variable that `scanned` gives. stat = 1 and errmsg naming the assignment
+   !> Sets each variable that `scanned` gives. stat = stat_failure and errmsg naming the assignment
    !! when the run-time library cannot convert a value the scanner accepted (a
    !! disagreement reported rather than trusted); the first failure stays.
    type, extends(schema_visitor) :: schema_reader
@@ -50,7 +50,7 @@ module vibrobeam_schema_operations
       procedure :: visit => read_variable
    end type schema_reader
 
-   !> Checks every value against its row (range, choices): stat = 1 and errmsg such as
+   !> Checks every value against its row (range, choices): stat = stat_failure and errmsg such as
    !! '&impact restitution = 1.5 is outside [0, 1]' at the first violation.
    type, extends(schema_visitor) :: schema_checker
       integer :: stat = 0
