@@ -40,6 +40,7 @@ if [ -n "$run_id" ]; then
   h5dump -n "$result" 2> /dev/null | grep -q ' /time$' && [ ! -f "${stem}_tip.dat" ] && stale=2
   h5dump -n "$result" 2> /dev/null | grep -q ' /modes/shape$' && [ ! -f "${stem}_shapes.dat" ] && stale=2
   h5dump -n "$result" 2> /dev/null | grep -q ' /static/displacement$' && [ ! -f "${stem}_static.dat" ] && stale=2
+  h5dump -n "$result" 2> /dev/null | grep -q ' /periodic/orbit/time$' && [ ! -f "${stem}_orbit.dat" ] && stale=2
 fi
 if [ "$stale" = 2 ]; then
   # installed, this script is PREFIX/share/vibrobeam/plot/plot_results.sh
@@ -72,6 +73,7 @@ plot() {  # plot SCRIPT REQUIRED_DAT
 }
 plot plot_modes.gp shapes
 plot plot_static.gp static
+plot plot_periodic.gp orbit
 for gp in "$here"/plot_dynamics_*.gp; do
   [ -e "$gp" ] || continue
   name=$(basename "$gp" .gp)

@@ -10,7 +10,7 @@ module vibrobeam_problem
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_status, only: stat_failure, stat_numerical_failure
    use vibrobeam_text, only: real_text
-   use vibrobeam_scene, only: scene_type, step_count, is_unset, structure_of
+   use vibrobeam_scene, only: scene_type, step_count, is_unset, structure_of, steps_in_time
    use vibrobeam_scene_structure, only: support_warnings
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_contact_set, only: contact_set, contact_value
@@ -39,10 +39,10 @@ module vibrobeam_problem
       type(beam_model) :: model        !! the beam on its mesh
       type(contact_set) :: contacts    !! the contact points on the mesh
       type(load_set) :: loads          !! the loads on the mesh
-      real(dp), allocatable :: u0(:)   !! initial displacement unknowns of the mesh (dynamics)
-      real(dp), allocatable :: v0(:)   !! initial velocity unknowns of the mesh (dynamics)
+      real(dp), allocatable :: u0(:)   !! initial displacement unknowns of the mesh (dynamics, periodic)
+      real(dp), allocatable :: v0(:)   !! initial velocity unknowns of the mesh (dynamics, periodic)
       !> what the stepper steps: model, contacts and loads of the mesh, or with &mesh
-      !! reduction = 'craig-bampton' (dynamics) those of the reduced model, whose
+      !! reduction = 'craig-bampton' (dynamics, periodic) those of the reduced model, whose
       !! coordinates `reduction` maps back to the mesh (the recorder does)
       type(discrete_system) :: system
       logical :: reduced = .false.
@@ -86,7 +86,7 @@ contains
                        scene%beam%rayleigh_stiffness, stat, errmsg)
          if (stat /= 0) return
       end if
-      if (scene%analysis%kind == 'dynamics' .and. len_trim(scene%initial%from_file) > 0) then
+      if (steps_in_time(scene) .and. len_trim(scene%initial%from_file) > 0) then
          call resume_from_file(scene, prepared, warnings, stat, errmsg)
          if (stat == 0) call full_system(prepared)
          if (stat == 0) call modal_damping_of(scene, prepared, stat, errmsg)
@@ -101,7 +101,7 @@ contains
          errmsg = '&initial: the initial displacement or velocity is not finite (interpolation on the mesh failed)'
          return
       end if
-      if (scene%analysis%kind == 'dynamics' .and. scene%mesh%reduction == 'craig-bampton') then
+      if (steps_in_time(scene) .and. scene%mesh%reduction == 'craig-bampton') then
          call reduce_scene(scene, prepared, stat, errmsg)
       else
          call full_system(prepared)
@@ -272,7 +272,8 @@ contains
             errmsg = '&initial from_file = '''//file//''': '//trim(errmsg)
             return
          end if
-         if (step_count(scene) <= resumed%step) then
+         ! (a periodic analysis starts from the checkpoint's state and ignores t_end)
+         if (scene%analysis%kind == 'dynamics' .and. step_count(scene) <= resumed%step) then
             stat = stat_failure
             errmsg = '&time t_end = '//real_text(scene%time%t_end)//' s is not after the checkpoint of '''//file// &
                      ''' at t = '//real_text(resumed%step*scene%time%dt)//' s (t_end is the end time of the continued run)'
@@ -310,7 +311,7 @@ contains
       stat = 0
       errmsg = ''
       allocate (prepared%u0(prepared%model%unknowns), source=0.0_dp)
-      if (scene%analysis%kind /= 'dynamics') return
+      if (.not. steps_in_time(scene)) return
       associate (model => prepared%model, contacts => prepared%contacts)
          select case (scene%initial%displacement)
          case ('mode')

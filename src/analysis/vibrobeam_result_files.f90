@@ -91,7 +91,7 @@ module vibrobeam_result_files
       end function c_peak_rss_kb
    end interface
 
-   !> What a run (modes, static or dynamics) reports back to the program.
+   !> What a run (modes, static, dynamics or periodic) reports back to the program.
    type :: run_outcome
       integer :: status = outcome_ok           !! outcome_ok | outcome_failed | outcome_interrupted (/run status)
       logical :: text_skipped = .false.        !! a signal stopped the text derivation
@@ -107,6 +107,10 @@ module vibrobeam_result_files
       real(dp), allocatable :: omega(:)        !! kind = 'modes': the natural frequencies written (rad/s)
       integer :: in_contact = 0                !! kind = 'static': contact points in contact
       real(dp) :: position_bound = 0           !! kind = 'static': bound of the displacements' round-off (m)
+      integer :: newton_iterations = 0         !! kind = 'periodic': Newton iterations taken
+      real(dp) :: residual = 0                 !! kind = 'periodic': relative residual of the last iterate
+      real(dp) :: period = 0                   !! kind = 'periodic': the orbit's period (s)
+      real(dp) :: largest_multiplier = 0       !! kind = 'periodic': largest modulus of its Floquet multipliers
    end type run_outcome
 
 contains

@@ -4,7 +4,8 @@
 !! long run's text files need no more memory than a short run's.
 !!
 !! One deriver per kind of result: the modes (`modes_files`), the static equilibrium
-!! (`static_files`), the histories of a dynamics run (`dynamics_files`) and a sweep
+!! (`static_files`), a periodic orbit (`periodic_files`), the histories of a dynamics run
+!! (`dynamics_files`) and a sweep
 !! (`vibrobeam_sweep_text`); what they share, the open file, the names and the checked
 !! writes, is `vibrobeam_text_derivation`'s.
 module vibrobeam_text_output
@@ -18,9 +19,9 @@ module vibrobeam_text_output
    public :: derived_file, derive_text_files, discard_derived, text_file_name, text_suffixes, path_length
 
    !> Every suffix a result's .dat files can have.
-   character(len=*), parameter :: text_suffixes(18) = [character(len=16) :: 'modes', 'shapes', 'static', &
+   character(len=*), parameter :: text_suffixes(20) = [character(len=16) :: 'modes', 'shapes', 'static', &
       'reactions', 'tip', 'energy', 'impacts', 'episodes', 'points', 'field', 'spectrum', 'obstacles', 'contact', &
-      'force', 'sweep', 'poincare', 'contact_modes', 'contact_shapes']
+      'force', 'sweep', 'poincare', 'contact_modes', 'contact_shapes', 'orbit', 'multipliers']
 
 contains
 
@@ -68,6 +69,10 @@ contains
          end if
          if (run%file%exists('/static/displacement')) then
             call static_files(run, stat, errmsg)
+            if (stat /= 0 .or. run%interrupted) exit derive
+         end if
+         if (run%file%exists('/periodic/orbit/time')) then
+            call periodic_files(run, stat, errmsg)
             if (stat /= 0 .or. run%interrupted) exit derive
          end if
          if (run%file%exists('/time')) call dynamics_files(run, stat, errmsg)
@@ -118,6 +123,40 @@ contains
       end do
       call run%close_sink(sink, stat, errmsg)
    end subroutine modes_files
+
+   !> STEM_orbit.dat (the tip over one period of a periodic orbit) and
+   !! STEM_multipliers.dat (its Floquet multipliers, when they were written).
+   subroutine periodic_files(run, stat, errmsg)
+      type(derivation), intent(inout) :: run
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(text_sink) :: sink
+      real(dp), allocatable :: time(:), u(:), v(:), multipliers(:)
+      integer :: i
+      call run%file%read_reals('/periodic/orbit/time', time, stat, errmsg)
+      if (stat == 0) call run%file%read_reals('/periodic/orbit/tip_displacement', u, stat, errmsg)
+      if (stat == 0) call run%file%read_reals('/periodic/orbit/tip_velocity', v, stat, errmsg)
+      if (stat /= 0) return
+      call run%open_sink(sink, 'orbit', 't (s)  tip u (m)  tip v (m/s): one period of the orbit', stat, errmsg)
+      if (stat /= 0) return
+      do i = 1, size(time)
+         call sink%put_row('wide', [time(i), u(i), v(i)], stat, errmsg)
+         if (stat /= 0) exit
+      end do
+      call run%close_sink(sink, stat, errmsg)
+      if (stat /= 0 .or. .not. run%file%exists('/periodic/floquet_multipliers')) return
+      call run%file%read_reals('/periodic/floquet_multipliers', multipliers, stat, errmsg)
+      if (stat /= 0) return
+      call run%open_sink(sink, 'multipliers', 'real  imaginary  modulus: the Floquet multipliers, largest modulus '// &
+                         'first', stat, errmsg)
+      if (stat /= 0) return
+      do i = 1, size(multipliers)/2
+         call sink%put_row('wide', [multipliers(2*i - 1), multipliers(2*i), &
+                                    hypot(multipliers(2*i - 1), multipliers(2*i))], stat, errmsg)
+         if (stat /= 0) exit
+      end do
+      call run%close_sink(sink, stat, errmsg)
+   end subroutine periodic_files
 
    !> STEM_static.dat (the deflection) and STEM_reactions.dat (the reactions).
    subroutine static_files(run, stat, errmsg)

@@ -24,9 +24,9 @@
 !! in GPa or MPa, a density in g/cm^3, a section in mm^2 or cm^2, an inertia in mm^4 or
 !! cm^4 beside an area in m^2).
 module vibrobeam_check_report
-   use vibrobeam_kinds, only: dp, pi
+   use vibrobeam_kinds, only: dp, pi, int64
    use vibrobeam_text, only: real_text, integer_text, g => short_text
-   use vibrobeam_scene, only: scene_type, is_unset, held_conditions
+   use vibrobeam_scene, only: scene_type, is_unset, held_conditions, steps_in_time, forcing_period_steps
    use vibrobeam_scene_structure, only: scene_frequencies
    use vibrobeam_model, only: beam_model
    use vibrobeam_boundary, only: boundary_conditions
@@ -88,8 +88,8 @@ contains
       report%unknowns = model%unknowns
       call highest_frequency(model, report%omega_max, stat, errmsg)
       if (stat /= 0) return
-      report%size = estimate_result_size(scene, contact_points)
-      report%stepped = scene%analysis%kind == 'dynamics'
+      if (scene%analysis%kind /= 'periodic') report%size = estimate_result_size(scene, contact_points)
+      report%stepped = steps_in_time(scene)
       if (.not. report%stepped) return
       if (report%first > 0) report%omega1_dt = report%omega(report%first)*scene%time%dt
       report%omega_max_dt = report%omega_max*scene%time%dt
@@ -166,6 +166,10 @@ contains
                                                                    g(steps_per_contact_wanted)//')'
          text = text//new_line('a')
       end do
+      if (scene%analysis%kind == 'periodic') then
+         text = text//periodic_text(scene)
+         return
+      end if
       if (.not. single_run) return
       text = text//size_line()
       if (scene%output%measure_from < scene%time%t_end) text = text//resolution_advice_text(scene, 'this run')
@@ -183,6 +187,21 @@ contains
          line = line//new_line('a')
       end function size_line
    end function check_report_text
+
+   !> What a periodic analysis steps (docs/method.md, "Periodic orbits by shooting"): the
+   !! forcing period, its steps, the orbit's steps and how its monodromy is taken.
+   function periodic_text(scene) result(text)
+      type(scene_type), intent(in) :: scene
+      character(len=:), allocatable :: text
+      integer(int64) :: steps
+      steps = forcing_period_steps(scene)
+      text = 'periodic orbit: forcing period T = '//g(steps*scene%time%dt)//' s = '//g(real(steps, dp))// &
+             ' steps of dt = '//g(scene%time%dt)//' s; the orbit spans '// &
+             integer_text(scene%periodic%period_multiple)//' period(s), '// &
+             g(real(steps*scene%periodic%period_multiple, dp))//' steps, stepped once per Newton iteration with '// &
+             'its monodromy ('''//trim(scene%periodic%monodromy)//'''), after a transient of '// &
+             integer_text(scene%periodic%transient_periods)//' period(s)'//new_line('a')
+   end function periodic_text
 
    !> Contact time scale of compliant obstacle i of the scene (s; module comment), with the
    !! beam's stiffness k_b at it (N/m) and the effective mass m_eff (kg; per unit rho S when
@@ -220,7 +239,7 @@ contains
       real(dp) :: omega1, steps, ratio, time_scale, beam_stiffness, mass, omega(listed_modes)
       integer :: i, first
       text = ''
-      if (scene%analysis%kind == 'dynamics') then
+      if (steps_in_time(scene)) then
          call scene_frequencies(scene, omega, first)
          if (first > 0) then
             omega1 = omega(first)

@@ -17,6 +17,7 @@ program vibrobeam_main
    use vibrobeam_check_report, only: check_report, make_check_report, check_report_text, scene_warnings
    use vibrobeam_modal_analysis, only: run_modal, frequencies_text
    use vibrobeam_static_analysis, only: run_equilibrium
+   use vibrobeam_periodic_analysis, only: run_periodic
    use vibrobeam_problem, only: run_problem, build_problem
    use vibrobeam_dynamics, only: run_dynamics
    use vibrobeam_result_files, only: run_outcome, publish_files
@@ -101,6 +102,8 @@ program vibrobeam_main
       call run_modes()
    case ('static')
       call run_static()
+   case ('periodic')
+      call run_periodic_scene()
    case default
       call run_dynamics_scene()
    end select
@@ -282,6 +285,35 @@ contains
       call stop_if_interrupted(outcome%text_skipped)
       call finish(exit_ok)
    end subroutine run_static
+
+   !> A periodic-orbit analysis (docs/method.md, "Periodic orbits by shooting"). An orbit
+   !! that Newton's method does not reach, or a step that fails, publishes the last
+   !! iterate marked 'failed' with the reason in /periodic failure and exits with status 3.
+   subroutine run_periodic_scene()
+      type(run_outcome) :: outcome
+      call run_periodic(scene, prepared, outcome, stat, errmsg)
+      if (stat /= 0) call fail(exit_other_error, errmsg)
+      select case (outcome%status)
+      case (outcome_failed)
+         write (error_unit, '(a)') 'vibrobeam: periodic orbit not found: '//trim(outcome%failure)
+         write (error_unit, '(a)') 'vibrobeam: the last iterate, not an orbit, written to '//trim(scene%output%file)// &
+            ' (/run status = ''failed'', the reason in /periodic failure)'
+         call stop_if_interrupted(outcome%text_skipped)
+         call finish(outcome_exit_status(outcome%status))
+      case (outcome_interrupted)
+         write (error_unit, '(a,i0,a)') 'vibrobeam: interrupted by '//interrupt_name()//' after ', &
+            outcome%newton_iterations, ' Newton iterations; the last iterate written to '//trim(scene%output%file)// &
+            ' (/run status = ''interrupted'')'
+         call stop_if_interrupted(outcome%text_skipped)
+         call finish(outcome_exit_status(outcome%status))
+      end select
+      write (output_unit, '(a,es12.5,a,i0,a,es9.2,a,f0.6,a,f0.2,a)') 'vibrobeam: periodic orbit of period ', &
+         outcome%period, ' s after ', outcome%newton_iterations, ' Newton iterations (residual ', outcome%residual, &
+         '), largest Floquet multiplier modulus ', outcome%largest_multiplier, ', ', outcome%wall_seconds, &
+         ' s; written to '//trim(scene%output%file)
+      call stop_if_interrupted(outcome%text_skipped)
+      call finish(exit_ok)
+   end subroutine run_periodic_scene
 
    subroutine run_dynamics_scene()
       type(run_outcome) :: outcome

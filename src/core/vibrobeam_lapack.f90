@@ -3,7 +3,8 @@
 !! `vibrobeam_band` for bandwidths other than 3 and the oracle its kernels are tested
 !! against), the generalized band eigensolver of the dense modes path, the tridiagonal
 !! routines of `vibrobeam_flexibility`, the dense and general band routines of the contact
-!! projection and of the B-spline interpolation, and those the tests use as references.
+!! projection and of the B-spline interpolation, the general eigensolver of the Floquet
+!! multipliers, and those the tests use as references.
 !! Every caller checks `info`.
 module vibrobeam_lapack
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
@@ -12,8 +13,8 @@ module vibrobeam_lapack
    private
    public :: poison_failed_solve
    public :: dpbtrf, dpbtrs, dpbcon, dpbrfs, dsbmv, dgemv, dsbgvx, dpttrf, dpttrs
-   public :: dpotrf, dpotrs, dpotri, dgbtrf, dgbtrs, dgbsv, dgesv, dlamch, dgeqrf, dormqr, dsygv
-   public :: dgetrf, dorgqr, dsyev   ! the tests' dense references
+   public :: dpotrf, dpotrs, dpotri, dgbtrf, dgbtrs, dgbsv, dgesv, dlamch, dgeqrf, dormqr, dsygv, dgeev
+   public :: dgetrf, dorgqr, dsyev, dgeevx, zgesv   ! the tests' dense references
 
    interface
       !> Cholesky factorization A = L L^T (UPLO = 'L'); info = k > 0: the leading minor of
@@ -150,6 +151,35 @@ module vibrobeam_lapack
          real(dp), intent(inout) :: a(lda, *), b(ldb, *)
          integer, intent(out) :: ipiv(*), info
       end subroutine dgesv
+      !> Eigenvalues (and optionally eigenvectors) of a general real matrix: the Floquet
+      !! multipliers of a periodic orbit (its monodromy) and the tests' references.
+      subroutine dgeev(jobvl, jobvr, n, a, lda, wr, wi, vl, ldvl, vr, ldvr, work, lwork, info)
+         import :: dp
+         character, intent(in) :: jobvl, jobvr
+         integer, intent(in) :: n, lda, ldvl, ldvr, lwork
+         real(dp), intent(inout) :: a(lda, *)
+         real(dp), intent(out) :: wr(*), wi(*), vl(ldvl, *), vr(ldvr, *), work(*)
+         integer, intent(out) :: info
+      end subroutine dgeev
+      !> Eigenvalues of a general real matrix with the reciprocal condition number of each
+      !! (tests: the round-off bound of an eigenvalue).
+      subroutine dgeevx(balanc, jobvl, jobvr, sense, n, a, lda, wr, wi, vl, ldvl, vr, ldvr, ilo, ihi, scale, abnrm, &
+                        rconde, rcondv, work, lwork, iwork, info)
+         import :: dp
+         character, intent(in) :: balanc, jobvl, jobvr, sense
+         integer, intent(in) :: n, lda, ldvl, ldvr, lwork
+         real(dp), intent(inout) :: a(lda, *)
+         real(dp), intent(out) :: wr(*), wi(*), vl(ldvl, *), vr(ldvr, *), scale(*), abnrm, rconde(*), rcondv(*), &
+                                  work(*)
+         integer, intent(out) :: ilo, ihi, iwork(*), info
+      end subroutine dgeevx
+      !> Dense complex LU solve (tests: a harmonic steady state).
+      subroutine zgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
+         import :: dp
+         integer, intent(in) :: n, nrhs, lda, ldb
+         complex(dp), intent(inout) :: a(lda, *), b(ldb, *)
+         integer, intent(out) :: ipiv(*), info
+      end subroutine zgesv
       !> LU factorization of a general matrix with partial pivoting (tests).
       subroutine dgetrf(m, n, a, lda, ipiv, info)
          import :: dp

@@ -10,7 +10,7 @@
 module vibrobeam_ignored_values
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: integer_text, real_text
-   use vibrobeam_scene, only: scene_type, scene_variables
+   use vibrobeam_scene, only: scene_type, scene_variables, steps_in_time
    use vibrobeam_namelist_scanned, only: scanned_file
    use vibrobeam_namelist_schema, only: namelist_variable, variable_index
    use vibrobeam_scene_values, only: real_input
@@ -37,13 +37,15 @@ contains
       call load_warnings(scanned, scene, swept, warnings)
       call ignored_forces(scanned, scene%forces, scene%analysis%kind == 'static', warnings)
       call ignored_flow(scanned, scene%flow, scene%analysis%kind == 'dynamics', any(swept == 'flow.velocity'), warnings)
-      if (scene%analysis%kind /= 'dynamics') return
+      if (.not. steps_in_time(scene)) return
       call time_warnings(scanned, scene, swept, warnings)
       call initial_warnings(scanned, scene, warnings)
    end subroutine ignored_values
 
-   !> What the kind of analysis does not use: the modes' count, whole groups, damping and
-   !! histories outside dynamics, the reduction; and k2 beside the beam's data.
+   !> What the kind of analysis does not use: the modes' count, whole groups, &periodic
+   !! outside kind = 'periodic' and t_end (and a dt that steps_per_period sets) inside it,
+   !! damping outside the analyses that step in time, histories outside dynamics, the
+   !! reduction; and k2 beside the beam's data.
    subroutine analysis_warnings(scanned, scene, warnings)
       type(scanned_file), intent(in) :: scanned
       type(scene_type), intent(in) :: scene
@@ -81,13 +83,26 @@ contains
       end select
 
       ! &beam damping and &output histories: dynamics only
-      if (scene%analysis%kind /= 'dynamics') then
+      if (scene%analysis%kind /= 'periodic' .and. scanned%group_given('periodic')) &
+         call add(warnings, '&periodic is ignored: '//kind_reason//' (it belongs to kind = ''periodic'')')
+      if (scene%analysis%kind == 'periodic') then
+         call given_real(scanned, scene, warnings, 'time', 't_end', scene%time%t_end, kind_reason// &
+                         ' steps one orbit at a time (&periodic)')
+         ! (the value given is gone: the reader has set dt from steps_per_period)
+         if (scene%periodic%steps_per_period > 0 .and. scanned%is_given('time', 'dt')) &
+            call add(warnings, '&time dt is ignored: &periodic steps_per_period = '// &
+                     integer_text(scene%periodic%steps_per_period)//' sets dt = '//real_text(scene%time%dt)// &
+                     ' s, the forcing period over that many steps')
+      end if
+      if (.not. steps_in_time(scene)) then
          call given_real(scanned, scene, warnings, 'beam', 'rayleigh_mass', scene%beam%rayleigh_mass, &
                          kind_reason//' has no damping')
          call given_real(scanned, scene, warnings, 'beam', 'rayleigh_stiffness', scene%beam%rayleigh_stiffness, &
                          kind_reason//' has no damping')
          if (scene%beam%modal()) call add(warnings, '&beam modal_damping and modal_damping_ratios are ignored: '// &
                                           kind_reason//' has no damping')
+      end if
+      if (scene%analysis%kind /= 'dynamics') then
          ! what shapes a dynamics run's histories, statistics and checkpoints
          item = ' is ignored: '//kind_reason//' writes no histories (they belong to kind = ''dynamics'')'
          if (scanned%is_given('output', 'every')) &
@@ -104,11 +119,11 @@ contains
       end if
 
       ! &mesh: the reduction steps a dynamics run only
-      if (scene%mesh%reduction /= 'none' .and. scene%analysis%kind /= 'dynamics') then
+      if (scene%mesh%reduction /= 'none' .and. .not. steps_in_time(scene)) then
          call add(warnings, '&mesh reduction = '''//trim(scene%mesh%reduction)//''' is ignored: '//kind_reason// &
-                  ' solves the full model (the reduction is for kind = ''dynamics'')')
+                  ' solves the full model (the reduction is for kind = ''dynamics'' and ''periodic'')')
       end if
-      if (scene%mesh%reduction == 'none' .or. scene%analysis%kind /= 'dynamics') then
+      if (scene%mesh%reduction == 'none' .or. .not. steps_in_time(scene)) then
          if (scanned%is_given('mesh', 'reduction_modes')) &
             call add(warnings, '&mesh reduction_modes = '//integer_text(scene%mesh%reduction_modes)//' is ignored: '// &
                      reduction_reason())
@@ -118,7 +133,7 @@ contains
    contains
       function reduction_reason() result(text)
          character(len=:), allocatable :: text
-         if (scene%analysis%kind /= 'dynamics') then
+         if (.not. steps_in_time(scene)) then
             text = kind_reason//' solves the full model'
          else
             text = 'reduction = ''none'''

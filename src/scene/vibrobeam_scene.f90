@@ -21,7 +21,7 @@
 !! evaluates them at the corners).
 module vibrobeam_scene
    use vibrobeam_status, only: stat_failure
-   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_namelist_schema, only: namelist_variable
    use vibrobeam_schema_visitor, only: schema_visitor, integer_row, keyword_row, logical_row, unset, is_unset, &
@@ -43,6 +43,7 @@ module vibrobeam_scene
    use vibrobeam_contact_options, only: contact_options, visit_solver
    use vibrobeam_output_settings, only: output_settings, visit_output, max_points
    use vibrobeam_sweep_input, only: sweep_input, visit_sweep, max_sweep_values, parameter_length
+   use vibrobeam_periodic_settings, only: periodic_settings, visit_periodic, forcing_frequency, whole_step_tolerance
    implicit none
    private
    public :: scene_type, analysis_settings, obstacle_type, scene_entry, max_obstacles, max_points, unset
@@ -50,13 +51,14 @@ module vibrobeam_scene
    public :: scene_variables, path_length, keyword_length, max_steps, step_count
    public :: forcing_of, max_sweep_values, parameter_length, sync_frequency_twins, max_forces
    public :: support_settings, mass_settings, max_supports, max_masses, held_conditions, structure_of
+   public :: steps_in_time, forcing_period_steps
 
    !> Most time steps of a run: nint(t_end/dt) must fit a 64-bit count with room to spare.
    integer(int64), parameter :: max_steps = 1000000000000000000_int64
 
    !> &analysis.
    type :: analysis_settings
-      character(len=keyword_length) :: kind = 'dynamics'   !! 'modes' | 'static' | 'dynamics'
+      character(len=keyword_length) :: kind = 'dynamics'   !! 'modes' | 'static' | 'dynamics' | 'periodic'
       integer :: modes = 6                                 !! natural modes computed (kind = 'modes')
       logical :: contact_modes = .false.                   !! also the modes with every contact point held
    end type analysis_settings
@@ -68,6 +70,7 @@ module vibrobeam_scene
       type(support_settings), allocatable :: supports(:)   !! &supports (docs/input.md)
       type(mass_settings), allocatable :: masses(:)         !! &masses
       type(analysis_settings) :: analysis
+      type(periodic_settings) :: periodic     !! &periodic (kind = 'periodic' only)
       type(obstacle_type), allocatable :: obstacles(:)
       type(impact_settings) :: impact
       type(time_settings) :: time
@@ -85,7 +88,10 @@ contains
    !! `obstacle_count`, `support_count`, `mass_count`, `force_count` (the reader's): the
    !! counts read, when the scene's arrays hold room for the most a file may give;
    !! otherwise each count is the size of its array (&supports and &masses: not listed when
-   !! 0, so that a scene without them keeps the listing of earlier versions).
+   !! 0, so that a scene without them keeps the listing of earlier versions). &periodic
+   !! belongs to kind = 'periodic' and is visited only in a scene of that kind (after
+   !! &analysis, so a reader has read the kind by then): the results of the other kinds do
+   !! not list it, and `scene_variables` takes its rows from a scene of that kind.
    subroutine visit_scene(scene, visitor, obstacle_count, support_count, mass_count, force_count)
       type(scene_type), intent(inout) :: scene
       class(schema_visitor), intent(inout) :: visitor
@@ -109,6 +115,7 @@ contains
          call visit_masses(scene%masses, count, visitor)
       end if
       call visit_analysis(scene%analysis, visitor)
+      if (scene%analysis%kind == 'periodic') call visit_periodic(scene%periodic, visitor)
       if (present(obstacle_count)) then
          call visit_obstacles(scene%obstacles, obstacle_count, visitor)
       else
@@ -135,8 +142,9 @@ contains
    subroutine visit_analysis(analysis, visitor)
       type(analysis_settings), intent(inout) :: analysis
       class(schema_visitor), intent(inout) :: visitor
-      call visitor%variable(keyword_row('analysis', 'kind', 'modes|static|dynamics', keyword_length, &
-                                        'natural modes, static equilibrium, or time integration'), analysis%kind)
+      call visitor%variable(keyword_row('analysis', 'kind', 'modes|static|dynamics|periodic', keyword_length, &
+                                        'natural modes, static equilibrium, time integration, or periodic orbits'), &
+                            analysis%kind)
       call visitor%variable(integer_row('analysis', 'modes', 1, 2000000, 'number of natural modes computed'), &
                             analysis%modes)
       call visitor%variable(logical_row('analysis', 'contact_modes', 'also the natural modes with every contact '// &
@@ -153,6 +161,7 @@ contains
       type(schema_table) :: collector
       type(scene_type) :: defaults
       type(sweep_input) :: sweep
+      defaults%analysis%kind = 'periodic'   ! a scene whose visit includes every group
       call visit_scene(defaults, collector)
       call visit_sweep(sweep, collector)
       call move_alloc(collector%rows, table)
@@ -230,6 +239,22 @@ contains
       structure = structure_of(scene)
       held_conditions = structure%held_count()
    end function held_conditions
+   !> The analysis steps the scene in time: kind = 'dynamics' or 'periodic' (the initial
+   !! state, the reduction, damping and &time are theirs).
+   pure logical function steps_in_time(scene)
+      type(scene_type), intent(in) :: scene
+      steps_in_time = scene%analysis%kind == 'dynamics' .or. scene%analysis%kind == 'periodic'
+   end function steps_in_time
+
+   !> Steps of one forcing period 2 pi/Omega of a periodic analysis, nint(2 pi/(Omega dt)),
+   !! as a 64-bit count; the scene must be valid (`validate_scene` bounds it by max_steps).
+   integer(int64) function forcing_period_steps(scene)
+      type(scene_type), intent(in) :: scene
+      real(dp) :: omega
+      character(len=:), allocatable :: problem
+      call forcing_frequency(scene%load, omega, problem)
+      forcing_period_steps = max(1_int64, nint(2*pi/(omega*scene%time%dt), int64))
+   end function forcing_period_steps
 
    !> Time steps of a dynamics run, nint(t_end/dt) (at least 1), as a 64-bit count; the
    !! scene must be valid (validate_scene bounds t_end/dt by max_steps).
@@ -288,6 +313,7 @@ contains
       if (stat == 0) call check_flow(copy%flow, copy%beam%length, copy%time%scheme, copy%mesh%unknowns(), &
                                      copy%analysis%kind == 'dynamics', stat, errmsg)
       call output_rules(copy, stat, errmsg)
+      if (copy%analysis%kind == 'periodic') call periodic_rules(copy, stat, errmsg)
    end subroutine validate_scene
 
    !> &beam: the four physical data go together; &mesh: a reduced model cannot continue a
@@ -304,7 +330,7 @@ contains
             call check_given('area', beam%area)
             call check_given('inertia', beam%inertia)
          end if
-         if (mesh%reduction /= 'none' .and. analysis%kind == 'dynamics' .and. len_trim(scene%initial%from_file) > 0) &
+         if (mesh%reduction /= 'none' .and. steps_in_time(scene) .and. len_trim(scene%initial%from_file) > 0) &
             call fail(stat, errmsg, '&mesh reduction = '''//trim(mesh%reduction)//''' cannot continue a checkpoint '// &
                       '(&initial from_file): its state is in reduced coordinates; use reduction = ''none''')
          if (mesh%reduction_modes /= -1 .and. .not. is_unset(mesh%reduction_frequency)) &
@@ -449,19 +475,91 @@ contains
                       ' makes '//rounded(time%t_end/time%dt)//' steps: at most '//rounded(real(max_steps, dp))// &
                       ' steps; raise dt or lower t_end')
       end associate
-   contains
-      !> A large count to 3 digits: '1.00e30'.
-      function rounded(value) result(text)
-         real(dp), intent(in) :: value
-         character(len=:), allocatable :: text
-         character(len=16) :: buffer
-         integer :: e, exponent
-         write (buffer, '(es10.2e3)') value
-         e = index(buffer, 'E')
-         read (buffer(e + 1:), *) exponent
-         text = trim(adjustl(buffer(1:e - 1)))//'e'//integer_text(exponent)
-      end function rounded
    end subroutine time_rules
+
+   !> A large count to 3 digits: '1.00e30'.
+   function rounded(value) result(text)
+      real(dp), intent(in) :: value
+      character(len=:), allocatable :: text
+      character(len=16) :: buffer
+      integer :: e, exponent
+      write (buffer, '(es10.2e3)') value
+      e = index(buffer, 'E')
+      read (buffer(e + 1:), *) exponent
+      text = trim(adjustl(buffer(1:e - 1)))//'e'//integer_text(exponent)
+   end function rounded
+
+   !> A count as an integer when it is one of default kind, else as `rounded`.
+   function count_text(value) result(text)
+      real(dp), intent(in) :: value
+      character(len=:), allocatable :: text
+      if (value < 1e9_dp) then
+         text = integer_text(nint(value))
+      else
+         text = rounded(value)
+      end if
+   end function count_text
+
+   !> &analysis kind = 'periodic' (docs/input.md, "&periodic"): one forcing frequency,
+   !! the velocity scheme, a whole number of steps per forcing period, a step count
+   !! within max_steps, and a linearised monodromy only with rigid obstacles.
+   subroutine periodic_rules(scene, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      real(dp) :: omega, ratio
+      character(len=:), allocatable :: problem
+      associate (time => scene%time, periodic => scene%periodic)
+         call forcing_frequency(scene%load, omega, problem)
+         if (len(problem) > 0) then
+            call fail(stat, errmsg, '&analysis kind = ''periodic'' '//problem)
+            return
+         end if
+         if (time%scheme /= 'velocity') &
+            call fail(stat, errmsg, '&time scheme = '''//trim(time%scheme)//''' is not available with &analysis '// &
+                      'kind = ''periodic'': the period map steps the velocity scheme only, for now')
+         ! what the period map does not take yet (docs/input.md, "&periodic"): the loads of
+         ! &forces (their common period is not known), the fluid-elastic force and damping per
+         ! mode (the linearised steps hold Rayleigh damping only)
+         if (allocated(scene%forces%load)) then
+            if (size(scene%forces%load) > 0) &
+               call fail(stat, errmsg, '&forces count = '//integer_text(size(scene%forces%load))//' is not '// &
+                         'available with &analysis kind = ''periodic'': the period map takes the harmonic loads of '// &
+                         '&load only, for now (give the load in &load)')
+         end if
+         if (scene%flow%velocity > 0) &
+            call fail(stat, errmsg, '&flow velocity = '//real_text(scene%flow%velocity)//' m/s is not available '// &
+                      'with &analysis kind = ''periodic'': the period map has no fluid-elastic force, for now')
+         if (scene%beam%modal()) &
+            call fail(stat, errmsg, '&beam modal_damping (or modal_damping_ratios) is not available with &analysis '// &
+                      'kind = ''periodic'': the period map''s linearised steps hold Rayleigh damping only, for now '// &
+                      '(scripts/rayleigh_damping.py fits it on two modes)')
+         ! omega dt may underflow (no trap); the quotient is computed only when it is at most max_steps
+         if (omega*time%dt < 2*pi/real(max_steps, dp)) then
+            call fail(stat, errmsg, '&time dt = '//real_text(time%dt)//' s makes more than '// &
+                      rounded(real(max_steps, dp))//' steps per forcing period 2 pi/Omega (Omega = '// &
+                      real_text(omega)//' rad/s)')
+            return
+         end if
+         ratio = 2*pi/(omega*time%dt)
+         if (nint(ratio, int64) < 1) &
+            call fail(stat, errmsg, '&time dt = '//real_text(time%dt)//' s is longer than the forcing period '// &
+                      '2 pi/Omega = '//real_text(2*pi/omega)//' s: give &periodic steps_per_period instead')
+         if (stat == 0 .and. abs(ratio - nint(ratio, int64)) > whole_step_tolerance*ratio) &
+            call fail(stat, errmsg, '&time dt = '//real_text(time%dt)//' s makes '//real_text(ratio)// &
+                      ' steps per forcing period 2 pi/Omega = '//real_text(2*pi/omega)//' s: a periodic orbit '// &
+                      'needs a whole number (to a relative 1e-9); give &periodic steps_per_period = '// &
+                      count_text(anint(ratio))//' (dt = T/steps_per_period) instead of dt, or dt = T/n')
+         if (stat == 0 .and. ratio*(real(periodic%transient_periods, dp) + periodic%period_multiple) > &
+             real(max_steps, dp)) &
+            call fail(stat, errmsg, '&periodic transient_periods = '//integer_text(periodic%transient_periods)// &
+                      ' with '//rounded(ratio)//' steps per period makes more than '//rounded(real(max_steps, dp))// &
+                      ' steps')
+         if (periodic%monodromy == 'linearised' .and. any(scene%obstacles%stiffness > 0)) &
+            call fail(stat, errmsg, '&periodic monodromy = ''linearised'' is for rigid obstacles: the compliant '// &
+                      'stops (&obstacles stiffness > 0) need ''differences'' (or ''auto'', which chooses it)')
+      end associate
+   end subroutine periodic_rules
 
    !> &load: the point force on the beam; a base excitation by its acceleration or its
    !! amplitude, not both, and by its acceleration only with a frequency.

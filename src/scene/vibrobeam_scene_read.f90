@@ -13,8 +13,9 @@
 !! listed without gaps, and the warnings for values the analysis ignores.
 module vibrobeam_scene_read
    use vibrobeam_status, only: stat_failure
-   use vibrobeam_kinds, only: dp
+   use vibrobeam_kinds, only: dp, pi
    use vibrobeam_text, only: integer_text, real_text
+   use vibrobeam_periodic_settings, only: forcing_frequency, period_step
    use vibrobeam_scene, only: scene_type, max_obstacles, max_points, max_supports, max_masses, max_forces, &
       scene_variables, visit_scene, held_conditions, sync_frequency_twins
    use vibrobeam_scene_values, only: real_input, set_real_input
@@ -81,6 +82,7 @@ contains
       if (stat == 0) call resolve_frequency_twins(reader%scanned, scene, stat, errmsg)
       if (stat /= 0) return
       if (.not. reader%scanned%is_given('load', 'point_position')) scene%load%point_position = scene%beam%length
+      if (scene%analysis%kind == 'periodic') call resolve_periodic_step(scene)
       if (present(sweep)) then
          call read_sweep(reader, sweep, stat, errmsg)
          if (stat /= 0) return
@@ -114,6 +116,21 @@ contains
          end do
       end function swept_inputs
    end subroutine read_scene
+
+   !> &periodic steps_per_period > 0 sets &time dt = T/steps_per_period, T = 2 pi/Omega the
+   !! period of the harmonic loads (`forcing_frequency`); with none, or several of
+   !! different frequencies, dt stays as given and `validate_scene` says why.
+   subroutine resolve_periodic_step(scene)
+      type(scene_type), intent(inout) :: scene
+      real(dp) :: omega
+      character(len=:), allocatable :: problem
+      if (scene%periodic%steps_per_period <= 0) return
+      call forcing_frequency(scene%load, omega, problem)
+      if (len(problem) > 0) return
+      ! (2 pi/(Omega steps) finite: the hard ranges leave Omega > 0 as small as a normal double)
+      if (omega*scene%periodic%steps_per_period <= 2*pi/huge(1.0_dp)) return
+      scene%time%dt = period_step(omega, scene%periodic%steps_per_period)
+   end subroutine resolve_periodic_step
 
    !> '&beam &mesh ... &output': every group a file may hold.
    function namelist_groups_text() result(text)

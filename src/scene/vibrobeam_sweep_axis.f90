@@ -155,6 +155,11 @@ contains
          errmsg = label//' is wall-clock time, not a property of the scene'
          return
       end select
+      if (axis%group == 'periodic') then
+         errmsg = label//' belongs to &analysis kind = ''periodic'', which a sweep does not run (its points are '// &
+                  'dynamics runs)'
+         return
+      end if
       if (variable%extent > 0 .and. .not. element_given) then
          errmsg = label//' is an array: name one element, '''//trim(axis%group)//'.'//trim(axis%name)//'(1)'''
          return

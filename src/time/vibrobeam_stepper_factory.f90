@@ -4,6 +4,7 @@
 !! and freeing a stepper (`release_stepper`). A new scheme is a module of time/ and a case
 !! in each `select case` here.
 module vibrobeam_stepper_factory
+   use vibrobeam_kinds, only: dp
    use vibrobeam_status, only: stat_invalid_argument
    use vibrobeam_state_record, only: state_record
    use vibrobeam_discrete_system, only: discrete_system
@@ -12,7 +13,7 @@ module vibrobeam_stepper_factory
    use vibrobeam_position_stepper, only: position_stepper, position_state_of_record
    implicit none
    private
-   public :: scheme_names, new_time_stepper, state_from_record, release_stepper
+   public :: scheme_names, new_time_stepper, state_from_record, release_stepper, can_linearise, linearise_step
 
    !> The schemes, as `&time scheme` names them: the velocity-based scheme (theory §3) and
    !! the position-based Paoli-Schatzman scheme (theory §4).
@@ -66,6 +67,35 @@ contains
          call checkpoint_state(record, unknowns, state, stat, errmsg)
       end select
    end subroutine state_from_record
+
+   !> Whether `linearise_step` can linearise the steps of `stepper` (docs/method.md,
+   !! "Periodic orbits by shooting"): the velocity scheme with rigid stops only.
+   logical function can_linearise(stepper)
+      class(time_stepper), intent(in) :: stepper
+      select type (stepper)
+      type is (velocity_stepper)
+         can_linearise = stepper%contacts%springs%count == 0
+      class default
+         can_linearise = .false.
+      end select
+   end function can_linearise
+
+   !> Apply the derivative of the last step of `stepper` to the columns of (du, dv) (the
+   !! scheme's `tangent`); stat_invalid_argument for a scheme that has none.
+   subroutine linearise_step(stepper, du, dv, stat, errmsg)
+      class(time_stepper), intent(in) :: stepper
+      real(dp), intent(inout) :: du(:, :), dv(:, :)   !! (unknowns, columns)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      select type (stepper)
+      type is (velocity_stepper)
+         call stepper%tangent(du, dv, stat, errmsg)
+      class default
+         stat = stat_invalid_argument
+         write (errmsg, '(a,i0,a)') 'this time scheme does not linearise its steps (', size(du, 2), &
+            ' perturbations asked for)'
+      end select
+   end subroutine linearise_step
 
    !> Free a stepper and all it holds. gfortran 12 frees only the first of the band-matrix
    !! components of one type when a polymorphic stepper is deallocated (two blocks were lost

@@ -24,8 +24,9 @@
 module vibrobeam_velocity_stepper
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
-   use vibrobeam_status, only: stat_not_finite
-   use vibrobeam_band, only: band_matvec, band_residual_solve
+   use vibrobeam_status, only: stat_not_finite, stat_invalid_argument, stat_linear_solver_failure
+   use vibrobeam_band, only: band_matvec, band_residual_solve, band_solve
+   use vibrobeam_lapack, only: dpotrf, dpotrs
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
    use vibrobeam_time_stepper, only: time_stepper, stepper_settings, dynamic_state, save_stepper_state, &
@@ -58,6 +59,7 @@ module vibrobeam_velocity_stepper
       procedure :: init
       procedure :: step
       procedure :: restore_state
+      procedure :: tangent
       procedure, private :: compliant_step
    end type velocity_stepper
 
@@ -264,6 +266,86 @@ contains
          end associate
       end subroutine complete
    end subroutine step
+
+   !> The derivative of the last step, (U^n, V^n) -> (U^{n+1}, V^{n+1}), applied to the
+   !! columns of (du, dv) in place: each column a perturbation of U^n and V^n in, the
+   !! perturbation of U^{n+1} and V^{n+1} it makes out (docs/method.md, "Periodic orbits by
+   !! shooting"). With the points h the step held (an impulse P_c /= 0) and their
+   !! restitution e_c,
+   !!   dV_free = dV + dt W^-1 (-C dV - K (dU + theta dt dV)),
+   !!   dV' = dV_free - W^-1 H_h^T D^-1 (H_h dV_free + E_h H_h dV),  D = H_h W^-1 H_h^T,
+   !!   dU' = dU + dt (theta dV' + (1 - theta) dV):
+   !! the step is affine in (U^n, V^n) as long as the same points are active, the same
+   !! of them held and each approaches or separates as it did (the period map is
+   !! piecewise affine; a piece ends where an activation test, an impulse's sign or an
+   !! approach changes). Rigid stops only: with compliant stops (whose forces this does not
+   !! linearise) stat_invalid_argument; stat_linear_solver_failure when D is singular.
+   subroutine tangent(self, du, dv, stat, errmsg)
+      class(velocity_stepper), intent(in) :: self
+      real(dp), intent(inout) :: du(:, :), dv(:, :)   !! (unknowns, columns)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp), allocatable :: columns(:, :), delassus(:, :)
+      real(dp), dimension(size(self%u)) :: v_free, y, x, b, z
+      real(dp) :: e(self%report%active_count), q(self%report%active_count)
+      integer :: held(self%report%active_count), h, k, j, a, info
+      stat = 0
+      errmsg = ''
+      if (self%contacts%springs%count > 0) then
+         stat = stat_invalid_argument
+         errmsg = 'the steps with compliant stops are not linearised (their forces depend on the state)'
+         return
+      end if
+      h = 0
+      do k = 1, self%report%active_count
+         if (abs(self%report%impulse(k)) <= 0) cycle
+         h = h + 1
+         held(h) = self%report%active(k)
+         e(h) = merge(self%restitution, self%separating_restitution, self%report%approaching(k))
+      end do
+      if (h > 0) then
+         ! W^-1 H_c^T for each held point and the Delassus matrix D = H W^-1 H^T (h x h, SPD)
+         allocate (columns(size(self%u), h), delassus(h, h))
+         do k = 1, h
+            columns(:, k) = 0
+            do a = 1, 4
+               if (self%contacts%dofs(a, held(k)) /= 0) columns(self%contacts%dofs(a, held(k)), k) = &
+                  columns(self%contacts%dofs(a, held(k)), k) + self%contacts%weights(a, held(k))
+            end do
+            call band_solve(self%iteration_factor, columns(:, k))
+         end do
+         do k = 1, h
+            do j = 1, h
+               delassus(j, k) = contact_value(self%contacts, held(j), columns(:, k))
+            end do
+         end do
+         call dpotrf('L', h, delassus, h, info)
+         if (info /= 0) then
+            stat = stat_linear_solver_failure
+            write (errmsg, '(a,i0,a)') 'the Delassus matrix of the ', h, ' held contact points is singular'
+            return
+         end if
+      end if
+      b = 0
+      do j = 1, size(du, 2)
+         x = du(:, j) + self%theta*self%dt*dv(:, j)
+         if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) then
+            call self%damping_into(dv(:, j), b, z)
+            b = -b
+         end if
+         call band_residual_solve(self%iteration_factor, self%stiffness, x, b, y)
+         v_free = dv(:, j) + self%dt*y
+         if (h > 0) then
+            do k = 1, h
+               q(k) = contact_value(self%contacts, held(k), v_free) + e(k)*contact_value(self%contacts, held(k), dv(:, j))
+            end do
+            call dpotrs('L', h, 1, delassus, h, q, h, info)
+            v_free = v_free - matmul(columns, q(1:h))
+         end if
+         du(:, j) = du(:, j) + self%dt*(self%theta*v_free + (1 - self%theta)*dv(:, j))
+         dv(:, j) = v_free
+      end do
+   end subroutine tangent
 
    !> Step 3 with compliant stops: V^{n+1} from Newton's method on
    !! W (V - V_free) = dt sum_j s_j f_j(p_j) H_j^T + H^T P, p_j = s_j (g_j - H_j U^{n+1}),

@@ -14,17 +14,7 @@ load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 source scripts/build_release.sh
 build_release "$build" static_cost
 program=$build/studies/static_cost/static_cost
-fortran=$(sed -n 's/^CMAKE_Fortran_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")
 start=$(date +%s)
 "$program" verification/statics "$table" 3
-{
-  echo "#"
-  echo "# machine: $(nproc) processors, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')," \
-    "load average before the run: $load_before, after: $(cut -d' ' -f1-3 /proc/loadavg);" \
-    "the run took $(( $(date +%s) - start )) s"
-  echo "# compiler: $("${fortran:-gfortran}" --version | head -1), Release (-O2)"
-  echo "# BLAS/LAPACK: $(ldd "$program" | awk '/blas|lapack/ { print $3 }' | xargs -r readlink -f | tr '\n' ' ')"
-  edits=$([ -z "$(git status --porcelain -- src)" ] || echo ' with uncommitted changes in src/')
-  echo "# source: git $(git rev-parse --short HEAD)$edits, $(date -u +%Y-%m-%dT%H:%MZ)"
-} >> "$table"
+describe_study_run "$table" "$build" "$program" "$start" "$load_before"
 echo "static_cost: wrote $table" >&2

@@ -16,6 +16,7 @@
 !!    E, rho, S and I are set on a beam given by them, the others on a beam given by k2
 !!    (its k2 is listed, not derived).
 !! 3. A name that is not a real input, and an element beyond the scene's, are not found.
+!! The scenes are of kind 'periodic', whose visit includes every group.
 !! The values are compared exactly: they are copied, never computed (but for the twins).
 program test_scene_values
    use vibrobeam_kinds, only: dp, int64
@@ -38,6 +39,8 @@ program test_scene_values
    integer :: k, element, elements, covered
    character(len=:), allocatable :: name
 
+   ! scenes of kind 'periodic': their visit holds every group (&periodic only in that kind)
+   defaults%analysis%kind = 'periodic'
    call visit_scene(defaults, table)
    call visit_sweep(sweep, table)
    call t%check_true('every declaration''s row agrees with its variable', len(table%mismatch) == 0, table%mismatch)
@@ -52,6 +55,7 @@ program test_scene_values
    scene%supports = [support_settings(x=0.3_dp), support_settings(x=0.6_dp, kind='spring', stiffness=1e3_dp)]
    scene%masses = [mass_settings(x=1.0_dp, mass=0.2_dp), mass_settings(x=0.5_dp, mass=0.1_dp, rotary_inertia=1e-4_dp)]
    allocate (scene%forces%load(2))   ! two loads of &forces (their defaults)
+   scene%analysis%kind = 'periodic'
    physical_scene = scene
    physical_scene%beam%youngs_modulus = 2.1e11_dp
    physical_scene%beam%density = 7850

@@ -1,0 +1,252 @@
+!> Linear exactness of the periodic-orbit analysis (issue 20; docs/method.md, "Periodic
+!! orbits by shooting"). Without contact the velocity scheme is the linear recurrence
+!!   W (V' - V) = dt (F^{n+theta} - C V - K (U + theta dt V)),  U' = U + dt (theta V' + (1 - theta) V),
+!! W = M + theta dt C + theta^2 dt^2 K, so under F(t) = Re(F^ e^{i Omega t}) its periodic
+!! solution is Re((U^, V^) z^n), z = e^{i Omega dt}, with
+!!   (z - 1) W V^ = dt (F^ (theta z + 1 - theta) - K U^ - (C + theta dt K) V^),
+!!   (z - 1) U^ = dt (theta z + 1 - theta) V^,
+!! a complex linear system solved here with LAPACK zgesv from the dense M, K of the
+!! scene's stepped system (independently of the shooting code: no stepper, no period map);
+!! F^ = F(0) - i F(T/4). The Floquet multipliers of that orbit are lambda_k^P, lambda_k the
+!! eigenvalues of the one-step amplification matrix A (dense, LAPACK dgeevx), P the steps
+!! of the orbit: exp(s_k T) for the scheme's own rates s_k = log(lambda_k)/dt.
+!!
+!! Checked against the orbit `find_periodic_orbit` returns (converged, its state at
+!! t = 0 and its tip over the period) and its multipliers, to round-off bounds derived
+!! below. Usage: test_periodic_linear SCENE.nml (a scene of kind = 'periodic' whose
+!! obstacles, if any, are never reached).
+program test_periodic_linear
+   use vibrobeam_kinds, only: dp, int64, pi
+   use vibrobeam_scene, only: scene_type
+   use vibrobeam_problem, only: run_problem
+   use vibrobeam_band, only: band_to_dense
+   use vibrobeam_model, only: node_row
+   use vibrobeam_lapack, only: dgeevx, zgesv
+   use vibrobeam_periodic_reference, only: identity, solve_dense, energy_gram, energy_norm, cancellation, &
+      fixed_point_condition
+   use vibrobeam_periodic_analysis, only: find_periodic_orbit, periodic_orbit
+   use vibrobeam_period_map, only: difference_fraction
+   use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
+   implicit none
+   type(test_counter) :: t
+   type(scene_type) :: scene
+   type(run_problem) :: prepared
+   type(periodic_orbit) :: orbit
+   character(len=512) :: path, errmsg
+   real(dp), allocatable :: mass(:, :), stiffness(:, :), damping(:, :), w(:, :), a(:, :), work(:, :), gram(:, :), &
+                            eye(:, :), tip_row(:), x_ref(:), &
+                            tip_ref(:), wr(:), wi(:), rconde(:), vectors(:, :)
+   complex(dp), allocatable :: system(:, :), rhs(:, :), mu_ref(:)
+   complex(dp) :: z, g
+   integer, allocatable :: pivots(:)
+   real(dp) :: dt, theta, omega, period, error, bound, inverse_norm, noise, worst, distance, lambda_power
+   integer :: n, m, stat, info, k, j, dofs(4)
+   integer(int64) :: steps
+   real(dp) :: weights(4)
+   logical, allocatable :: used(:)
+
+   call get_command_argument(1, path)
+   scene = read_test_scene(trim(path))
+   call prepare_test_scene(scene, prepared)
+   call find_periodic_orbit(scene, prepared, orbit, stat, errmsg)
+   call t%check_true('find_periodic_orbit runs', stat == 0, trim(errmsg))
+   if (stat /= 0) call t%finish('test_periodic_linear')
+   call t%check_true('Newton''s method converged', orbit%converged, trim(orbit%failure))
+   call t%check_true('no contact point was reached (a linear scene)', all(abs(orbit%image%tip(1, :)) < &
+                     minval(abs([prepared%contacts%lower, prepared%contacts%upper]))))
+
+   ! ---- the scheme's matrices, dense, from the stepped system's M and K ----
+   n = prepared%system%model%unknowns
+   m = 2*n
+   allocate (mass(n, n), stiffness(n, n), damping(n, n), w(n, n), eye(n, n), x_ref(m), gram(m, m))
+   mass = band_to_dense(prepared%system%model%mass)
+   stiffness = band_to_dense(prepared%system%model%stiffness)
+   dt = scene%time%dt
+   theta = scene%time%theta
+   damping = scene%beam%rayleigh_mass*mass + scene%beam%rayleigh_stiffness*stiffness
+   w = mass + theta*dt*damping + theta**2*dt**2*stiffness
+   omega = maxval([scene%load%point_frequency, scene%load%base_frequency, scene%load%distributed_frequency])
+   period = 2*pi/omega
+   steps = nint(scene%periodic%period_multiple*period/dt, int64)
+   eye = identity(n)
+
+   ! ---- one-step amplification matrix A: V' = A21 U + A22 V, U' = A11 U + A12 V ----
+   allocate (work(n, 2*n), pivots(n), a(m, m))
+   work(:, 1:n) = stiffness
+   work(:, n + 1:) = damping + theta*dt*stiffness
+   call solve_dense(w, work)
+   a(n + 1:, 1:n) = -dt*work(:, 1:n)
+   a(n + 1:, n + 1:) = eye - dt*work(:, n + 1:)
+   a(1:n, 1:n) = eye + theta*dt*a(n + 1:, 1:n)
+   a(1:n, n + 1:) = theta*dt*a(n + 1:, n + 1:) + (1 - theta)*dt*eye
+
+   ! ---- the harmonic steady state (complex system, zgesv) ----
+   z = exp(cmplx(0.0_dp, omega*dt, dp))
+   g = theta*z + (1 - theta)
+   allocate (system(m, m), rhs(m, 1))
+   system = 0
+   system(1:n, 1:n) = dt*stiffness
+   system(1:n, n + 1:) = (z - 1)*w + dt*(damping + theta*dt*stiffness)
+   rhs(1:n, 1) = dt*g*cmplx(prepared%system%loads%at(0.0_dp), -prepared%system%loads%at(period/4), dp)
+   do j = 1, n
+      system(n + j, j) = z - 1
+      system(n + j, n + j) = -dt*g
+   end do
+   rhs(n + 1:, 1) = 0
+   deallocate (pivots)
+   allocate (pivots(m))
+   call zgesv(m, 1, system, m, pivots, rhs, m, info)
+   call t%check_true('zgesv solves the harmonic system', info == 0)
+   x_ref = real(rhs(:, 1))
+
+   ! ---- the energy norm ||x||^2 = U^T (K + Omega^2 M) U + V^T M V, and the orbit's
+   ! ||(I - M)^-1||, M = A^P, which bounds how a residual of the period map moves its
+   ! fixed point ----
+   gram = energy_gram(prepared, omega)
+   inverse_norm = fixed_point_condition(gram, matrix_power(a, steps))
+   ! noise: the relative round-off of one evaluation of the period map in the energy
+   ! norm. Each of its P steps rounds each unknown relative to itself (a few operations:
+   ! 8 eps), and the energy norm weighs such componentwise errors of a state x by up to
+   ! rho(x) = sqrt(x^T diag(G) x / x^T G x) against the state's own norm (the cancellation
+   ! between neighbouring unknowns that x^T K x hides; G the Gram matrix above); the steps
+   ! are contractions in that norm (theta >= 1/2, damping), so the errors add:
+   ! noise = 8 eps P rho(x_ref).
+   noise = 8*epsilon(1.0_dp)*real(steps, dp)*cancellation(gram, x_ref)
+
+   ! ---- the orbit: state at t = 0 and tip over the period ----
+   ! Newton stops at a relative residual <= tolerance; with the map's own noise the fixed
+   ! point it returns is within ||(I - M)^-1|| (tolerance + 2 noise) of the exact one
+   ! (relative, energy norm), and the reference (a backward-stable solve of a system of
+   ! size 2J) adds 4 m eps cond: negligible beside P eps.
+   error = energy_norm(gram, orbit%x - x_ref)/energy_norm(gram, x_ref)
+   bound = inverse_norm*(scene%periodic%tolerance + 2*noise)
+   write (*, '(a,es10.3,a,es10.3,a,es10.3,a,es10.3)') 'state at t = 0: relative error ', error, ', bound ', bound, &
+      ' (||(I - M)^-1|| = ', inverse_norm, ', noise ', noise
+   call t%check_close('orbit state at t = 0 against the harmonic steady state (energy norm, relative)', error, &
+                      0.0_dp, bound, scale=1.0_dp)
+   call t%check_true('the bound is a round-off bound (< 1e-6)', bound < 1e-6_dp)
+   ! the tip, u = t^T U: a linear functional of U, bounded by the state's error in the
+   ! energy norm times its dual norm |t|_{(K + Omega^2 M)^-1}, relative to the tip's peak
+   call node_row(prepared%model, prepared%model%elements, dofs, weights)
+   tip_row = tip_functional(dofs, weights)
+   tip_ref = [(real(dot_product(cmplx(tip_row, 0.0_dp, dp), rhs(1:n, 1))*z**k), k=0, int(steps))]
+   error = maxval(abs(orbit%image%tip(1, :) - tip_ref))
+   bound = (scene%periodic%tolerance + 2*noise)*inverse_norm*energy_norm(gram, x_ref)*dual_norm(tip_row)*2
+   write (*, '(a,es10.3,a,es10.3,a,es10.3,a)') 'tip over the period: largest error ', error, ' m, bound ', bound, &
+      ' m (peak ', maxval(abs(tip_ref)), ' m)'
+   call t%check_close('tip displacement over the period against the harmonic steady state (m)', error, 0.0_dp, bound, &
+                      scale=1.0_dp)
+
+   ! ---- Floquet multipliers against lambda_k^P ----
+   allocate (wr(m), wi(m), rconde(m), vectors(m, m))
+   call eigenvalues_with_conditions(a, wr, wi, rconde, vectors)
+   mu_ref = cmplx(wr, wi, dp)**steps
+   call t%check_true('as many multipliers as unknowns of the map (2 J)', size(orbit%multipliers, 2) == m)
+   ! Bounds, to first order (a factor 4 beside them): an error E of a matrix moves its
+   ! eigenvalue by |y^H E x|/|y^H x| <= ||E x||/s_k (x, y right and left eigenvectors,
+   ! s_k = rconde, LAPACK's reciprocal condition number). The reference lambda_k^P:
+   ! dgeevx's backward error eps ||A||_F, times P |lambda_k|^(P-1). The monodromy, P
+   ! tangent steps applied to the eigenvector x_k: each step's componentwise round-off
+   ! (8 eps, as the noise above) of a vector of size |lambda_k|^j, carried to the end by
+   ! A^(P-1-j), adds to y^H E x a term lambda_k^(P-1) 8 eps rho(x_k), so P of them; and
+   ! dgeev on the monodromy its backward error eps ||M||_F (M in the energy coordinates,
+   ! where the steps are contractions: ||M||_F <= sqrt(2 J)). By finite differences
+   ! (&periodic monodromy = 'differences') each column is a difference quotient whose
+   ! numerator carries the map's noise: ||E|| <= noise/difference_fraction instead.
+   allocate (used(m), source=.false.)
+   worst = 0
+   do k = 1, m
+      j = minloc(abs(cmplx(orbit%multipliers(1, k), orbit%multipliers(2, k), dp) - mu_ref), mask=.not. used, dim=1)
+      used(j) = .true.
+      distance = abs(cmplx(orbit%multipliers(1, k), orbit%multipliers(2, k), dp) - mu_ref(j))
+      lambda_power = abs(cmplx(wr(j), wi(j), dp))**(steps - 1)
+      bound = epsilon(1.0_dp)*steps*sqrt(sum(a**2))*lambda_power + epsilon(1.0_dp)*sqrt(real(m, dp))
+      if (orbit%monodromy == 'differences') then
+         bound = bound + noise/difference_fraction
+      else
+         bound = bound + 8*epsilon(1.0_dp)*steps*lambda_power*cancellation_complex(vectors, j)
+      end if
+      bound = 4*bound/rconde(j)
+      worst = max(worst, distance/bound)
+      call t%check_close('Floquet multiplier against lambda^P', distance, 0.0_dp, bound, scale=1.0_dp)
+   end do
+   write (*, '(a,es10.3,a,es12.5)') 'Floquet multipliers: largest error / bound ', worst, ', largest modulus ', &
+      maxval(abs(mu_ref))
+   call t%finish('test_periodic_linear')
+
+contains
+
+   !> matrix^power by repeated squaring.
+   function matrix_power(matrix, exponent) result(out)
+      real(dp), intent(in) :: matrix(:, :)
+      integer(int64), intent(in) :: exponent
+      real(dp) :: out(size(matrix, 1), size(matrix, 2)), base(size(matrix, 1), size(matrix, 2))
+      integer(int64) :: e
+      out = identity(size(matrix, 1))
+      base = matrix
+      e = exponent
+      do while (e > 0)
+         if (mod(e, 2_int64) == 1) out = matmul(out, base)
+         base = matmul(base, base)
+         e = e/2
+      end do
+   end function matrix_power
+
+   !> rho of eigenvector j of dgeevx's `vectors` (a complex pair is stored as its real and
+   !! imaginary parts in columns j, j + 1): the larger of its parts' rho.
+   real(dp) function cancellation_complex(vectors, j)
+      real(dp), intent(in) :: vectors(:, :)
+      integer, intent(in) :: j
+      integer :: first
+      first = j
+      if (wi(j) < 0) first = j - 1
+      cancellation_complex = cancellation(gram, vectors(:, first))
+      if (abs(wi(j)) > 0) cancellation_complex = max(cancellation_complex, cancellation(gram, vectors(:, first + 1)))
+   end function cancellation_complex
+
+   !> The row t of u at the tip on the stepped system's unknowns (through the reduced
+   !! basis when the scene is reduced).
+   function tip_functional(dofs, weights) result(row)
+      integer, intent(in) :: dofs(4)
+      real(dp), intent(in) :: weights(4)
+      real(dp), allocatable :: row(:)
+      integer :: i
+      allocate (row(n), source=0.0_dp)
+      do i = 1, 4
+         if (dofs(i) == 0) cycle
+         if (prepared%reduced) then
+            row = row + weights(i)*prepared%reduction%transform(dofs(i), :)
+         else
+            row(dofs(i)) = row(dofs(i)) + weights(i)
+         end if
+      end do
+   end function tip_functional
+
+   !> sqrt(t^T (K + Omega^2 M)^-1 t): the largest |t^T U| over ||U||_(K + Omega^2 M) = 1.
+   real(dp) function dual_norm(row)
+      real(dp), intent(in) :: row(:)
+      real(dp) :: b(size(row), 1)
+      b(:, 1) = row
+      call solve_dense(gram(1:n, 1:n), b)
+      dual_norm = sqrt(dot_product(row, b(:, 1)))
+   end function dual_norm
+
+   !> Eigenvalues of `matrix`, the reciprocal condition number of each and the right
+   !! eigenvectors (LAPACK dgeevx).
+   subroutine eigenvalues_with_conditions(matrix, wr, wi, rconde, vr)
+      real(dp), intent(in) :: matrix(:, :)
+      real(dp), intent(out) :: wr(:), wi(:), rconde(:), vr(:, :)
+      real(dp) :: copy(size(matrix, 1), size(matrix, 1)), vl(size(matrix, 1), size(matrix, 1)), &
+                  scale(size(matrix, 1)), rcondv(size(matrix, 1)), abnrm, query(1)
+      real(dp), allocatable :: space(:)
+      integer :: iwork(2*size(matrix, 1)), ilo, ihi, status, size1
+      size1 = size(matrix, 1)
+      copy = matrix
+      call dgeevx('N', 'V', 'V', 'E', size1, copy, size1, wr, wi, vl, size1, vr, size1, ilo, ihi, scale, abnrm, &
+                  rconde, rcondv, query, -1, iwork, status)
+      allocate (space(int(query(1))))
+      call dgeevx('N', 'V', 'V', 'E', size1, copy, size1, wr, wi, vl, size1, vr, size1, ilo, ihi, scale, abnrm, &
+                  rconde, rcondv, space, size(space), iwork, status)
+      if (status /= 0) error stop 'dgeevx failed'
+   end subroutine eigenvalues_with_conditions
+end program test_periodic_linear
