@@ -22,6 +22,12 @@ printf '%-28s %12s %12s %6s %12s %12s %9s %9s %6s\n' input 'size est' 'size real
 for input in "$@"; do
   name=$(basename "$input" .nml)
   rm -rf "$work"/* && mkdir -p "$work/results" && cp "$input" "$work/input.nml"
+  # the tables a scene reads (&forces table, psd_table) lie beside it, named relative to
+  # it; they are copied beside the copy and not counted as written
+  tables=()
+  for table in "$(dirname "$input")"/*.dat; do
+    [ -e "$table" ] && cp "$table" "$work/" && tables+=(! -name "$(basename "$table")")
+  done
   if [ $reduce = 1 ] && grep -q '^&sweep' "$input"; then
     sed -i -e '/^&sweep/,$ s/\bcount = [0-9]*/count = 3/' -e '/^&sweep/,$ s/count2 = [0-9]*/count2 = 2/' \
            -e '/^&sweep/,$ s/settle_periods = [0-9]*/settle_periods = 10/' \
@@ -41,7 +47,7 @@ for input in "$@"; do
   cpu_real=$(tail -1 time.txt | awk '{print $1 + $2}')
   # the files the run left: every file but the input and what this script keeps
   written=$(find . -type f ! -name input.nml ! -name check.txt ! -name check.err ! -name run.txt ! -name run.err \
-            ! -name time.txt -exec cat {} + | wc -c)
+            ! -name time.txt "${tables[@]}" -exec cat {} + | wc -c)
   result=$(sed -n "s/^ *output.file *= *'\(.*\)'.*/\1/p" check.txt)
   listing=$(h5dump -n "$result" 2> /dev/null || true)   # (a here-string: grep -q would cut a pipe, pipefail)
   if grep -q ' /sweep/parameter$' <<< "$listing"; then

@@ -43,8 +43,8 @@ program test_frequency_twins
          call t%check_close(name//'_hz highest', table(twin)%highest, table(k)%highest/two_pi, tolerance)
          call t%check_true(name//'_hz scalar like its frequency', table(twin)%extent == table(k)%extent .and. &
                            table(twin)%optional .eqv. table(k)%optional)
-         call check_reading(group, name)
-         call check_setting(group, name)
+         call check_reading(group, name, table(k)%extent > 0)
+         call check_setting(group, name, table(k)%extent > 0)
       else if (index(name, '_hz', back=.true.) == len(name) - 2 .and. len(name) > 3) then
          call t%check_true('&'//group//' '//name//' is the twin of a frequency in rad/s', &
                            table(k)%unit == 'Hz' .and. table(k - 1)%unit == 'rad/s' .and. &
@@ -56,37 +56,53 @@ program test_frequency_twins
 
 contains
 
-   !> Item 2 for the frequency group.name.
-   subroutine check_reading(group, name)
+   !> Item 2 for the frequency group.name; of element 1 of an array of settings (`array`:
+   !! &forces frequency(1), the file then gives count = 1).
+   subroutine check_reading(group, name, array)
       character(len=*), intent(in) :: group, name
+      logical, intent(in) :: array
       type(scene_type) :: scene
       character(len=512) :: errmsg
+      character(len=:), allocatable :: count, item
       integer :: stat
       real(dp), parameter :: hz = 12.5_dp, omega = 150.0_dp
-      call write_file('&'//group//' '//name//'_hz = 12.5 /')
+      count = trim(merge('count = 1, ', '           ', array))//' '
+      item = trim(merge('(1)', '   ', array))
+      call write_file('&'//group//' '//count//name//'_hz'//item//' = 12.5 /')
       call read_scene(file, scene, stat, errmsg)
       call t%check_true(name//'_hz = 12.5 is read', stat == 0, errmsg)
       call t%check_close(name//' from '//name//'_hz = 12.5 (rad/s)', value_of(scene, group, name), two_pi*hz, tolerance)
-      call t%check_close(name//' listed (rad/s)', listed(scene, group//'.'//name), two_pi*hz, tolerance)
-      call t%check_close(name//'_hz listed as given (Hz)', listed(scene, group//'.'//name//'_hz'), hz, 0.0_dp)
-      call write_file('&'//group//' '//name//' = 150 /')
+      call t%check_close(name//' listed (rad/s)', listed(scene, group//'.'//name//item), two_pi*hz, tolerance)
+      call t%check_close(name//'_hz listed as given (Hz)', listed(scene, group//'.'//name//'_hz'//item), hz, 0.0_dp)
+      call write_file('&'//group//' '//count//name//item//' = 150 /')
       call read_scene(file, scene, stat, errmsg)
       call t%check_true(name//' = 150 is read', stat == 0, errmsg)
       call t%check_close(name//'_hz from '//name//' = 150 (Hz)', value_of(scene, group, name//'_hz'), omega/two_pi, &
                          tolerance)
-      call t%check_close(name//'_hz listed (Hz)', listed(scene, group//'.'//name//'_hz'), omega/two_pi, tolerance)
-      call write_file('&'//group//' '//name//' = 150, '//name//'_hz = 12.5 /')
+      call t%check_close(name//'_hz listed (Hz)', listed(scene, group//'.'//name//'_hz'//item), omega/two_pi, tolerance)
+      call write_file('&'//group//' '//count//name//item//' = 150, '//name//'_hz'//item//' = 12.5 /')
       call read_scene(file, scene, stat, errmsg)
       call t%check_true(name//' and '//name//'_hz both given: refused, naming both', stat /= 0 .and. &
-                        index(errmsg, name//' = 150 rad/s and '//name//'_hz = 12.5 Hz are both given') > 0, errmsg)
+                        index(errmsg, name//item//' = 150 rad/s and '//name//'_hz'//item//' = 12.5 Hz are both given') &
+                        > 0, errmsg)
       call delete_file()
    end subroutine check_reading
 
-   !> Item 3 for the frequency group.name.
-   subroutine check_setting(group, name)
+   !> Item 3 for the frequency group.name (element 1 of an array of settings: `array`, on a
+   !! scene read with count = 1).
+   subroutine check_setting(group, name, array)
       character(len=*), intent(in) :: group, name
+      logical, intent(in) :: array
       type(scene_type) :: scene
+      character(len=512) :: errmsg
+      integer :: stat
       logical :: found
+      if (array) then
+         call write_file('&'//group//' count = 1 /')
+         call read_scene(file, scene, stat, errmsg)
+         call t%check_true('&'//group//' count = 1 is read', stat == 0, errmsg)
+         call delete_file()
+      end if
       call set_real_input(scene, group, name//'_hz', 1, 40.0_dp, found)
       call t%check_true(name//'_hz can be set', found)
       call t%check_close(name//' set with '//name//'_hz = 40 (rad/s)', value_of(scene, group, name), two_pi*40, &

@@ -108,6 +108,8 @@ contains
          twin = group//'.'//variable//'_hz'
          twin_value = marker/(8*atan(1.0_dp))
       end if
+      ! an element of an array of settings is listed as 'group.name(i)', its twin too
+      if (name(len(name):) == ')') twin = twin//name(index(name, '(', back=.true.):)
       twin_shown = 0
       changed = scene
       if (group == 'beam' .and. any(variable == [character(len=14) :: 'youngs_modulus', 'density', 'area', &
