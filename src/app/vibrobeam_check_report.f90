@@ -88,7 +88,7 @@ contains
       report%unknowns = model%unknowns
       call highest_frequency(model, report%omega_max, stat, errmsg)
       if (stat /= 0) return
-      if (scene%analysis%kind /= 'periodic') report%size = estimate_result_size(scene, contact_points)
+      report%size = estimate_result_size(scene, contact_points)
       report%stepped = steps_in_time(scene)
       if (.not. report%stepped) return
       if (report%first > 0) report%omega1_dt = report%omega(report%first)*scene%time%dt
@@ -167,7 +167,7 @@ contains
          text = text//new_line('a')
       end do
       if (scene%analysis%kind == 'periodic') then
-         text = text//periodic_text(scene)
+         text = text//periodic_text(scene)//size_line()
          return
       end if
       if (.not. single_run) return
@@ -179,11 +179,12 @@ contains
          character(len=:), allocatable :: line
          line = 'estimated result size: '//g(report%size%total_bytes)//' bytes (HDF5 '//g(report%size%hdf5_bytes)// &
                 ', text '//g(report%size%text_bytes)//')'
-         if (report%stepped) line = line//': '//real_text(report%size%steps)//' steps, '//g(report%size%outputs)// &
-                                    ' output times of '// &
-                                    g(report%size%values_per_output)//' values and '//g(report%size%snapshots)// &
-                                    ' field snapshots of '//integer_text(scene%mesh%elements + 1)// &
-                                    ' nodes, spectra, checkpoint; up to 4096 impacts and episodes'
+         if (scene%analysis%kind == 'periodic') line = line//': one orbit and its multipliers'
+         if (scene%analysis%kind == 'dynamics') &
+            line = line//': '//real_text(report%size%steps)//' steps, '//g(report%size%outputs)//' output times of '// &
+                   g(report%size%values_per_output)//' values and '//g(report%size%snapshots)// &
+                   ' field snapshots of '//integer_text(scene%mesh%elements + 1)// &
+                   ' nodes, spectra, checkpoint; up to 4096 impacts and episodes'
          line = line//new_line('a')
       end function size_line
    end function check_report_text

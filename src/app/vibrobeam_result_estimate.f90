@@ -25,7 +25,7 @@
 module vibrobeam_result_estimate
    use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_sorting, only: median
-   use vibrobeam_scene, only: scene_type, step_count, forcing_of
+   use vibrobeam_scene, only: scene_type, step_count, forcing_of, forcing_period_steps
    use vibrobeam_hdf5_series, only: series_buffer_rows
    use vibrobeam_welch, only: welch_segment
    use vibrobeam_recorder, only: history_paths
@@ -132,6 +132,20 @@ contains
             estimate%hdf5_bytes = small_metadata_bytes + 8*nodes + sets*8*(2*modes + modes*nodes) + &
                                   (sets - 1)*small_metadata_bytes/3
             if (scene%output%text) estimate%text_bytes = sets*(modes*(6 + 2*wide + 1) + nodes*((1 + modes)*wide + 1))
+         end associate
+         estimate%total_bytes = estimate%hdf5_bytes + estimate%text_bytes
+         return
+      case ('periodic')
+         ! /mesh/x; /periodic: the orbit (time, tip displacement and velocity at P = k n + 1
+         ! times, n the steps of a forcing period, k period_multiple), the 2J Floquet
+         ! multipliers (real, imaginary), the start (2J), Newton's residuals (at most
+         ! max_iterations); STEM_orbit.dat (t, u, v) and STEM_multipliers.dat (real,
+         ! imaginary, modulus). J of the full model: a reduced one writes fewer multipliers.
+         associate (orbit => real(forcing_period_steps(scene), dp)*scene%periodic%period_multiple + 1, &
+                    multipliers => 2*real(unknowns, dp))
+            estimate%hdf5_bytes = small_metadata_bytes + 8*(nodes + 3*orbit + 3*multipliers + &
+                                                            scene%periodic%max_iterations)
+            if (scene%output%text) estimate%text_bytes = (orbit + multipliers)*(3*wide + 1)
          end associate
          estimate%total_bytes = estimate%hdf5_bytes + estimate%text_bytes
          return

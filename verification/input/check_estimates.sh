@@ -67,7 +67,8 @@ for input in "$@"; do
   if ! awk -v r="$ratio" 'BEGIN {exit !(r >= 1/1.3 && r <= 1.3)}'; then
     echo "FAIL $name: the run wrote $written bytes, --check estimated $size (ratio $ratio, allowed [0.77, 1.3])"; failed=1
   fi
-  if [ "$kind" != modes ] && [ "$kind" != static ]; then
+  # (a periodic analysis steps as many orbits as Newton's method needs: not estimated)
+  if [ "$kind" != modes ] && [ "$kind" != static ] && [ "$kind" != periodic ]; then
     if ! awk -v a="$steps" -v b="$real_steps" 'BEGIN {exit !(a + 0 == b + 0 && b > 0)}'; then
       echo "FAIL $name: --check counted $steps steps, the run made $real_steps"; failed=1
     fi
