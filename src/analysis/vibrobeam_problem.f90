@@ -319,7 +319,7 @@ contains
          case ('static')
             allocate (reaction(contacts%count))
             call solve_static(model, contacts, prepared%loads%at(0.0_dp), prepared%u0, reaction, iterations, stat, &
-                              errmsg, scene%solver%contact_max_iterations)
+                              errmsg, scene%solver%contact_max_iterations, tolerance=scene%solver%static_tolerance)
             if (stat /= 0) then
                errmsg = '&initial displacement = ''static'': '//trim(errmsg)
                stat = stat_numerical_failure

@@ -29,8 +29,10 @@
 !! - an a-posteriori check (`check_equilibrium`): the held nodes on their bounds, the free
 !!   ones within them and the springs' forces on their laws to the derived round-off bound
 !!   of the positions, and U against K^-1 (F + H^T P) recomputed independently to its
-!!   bound. An answer that fails it is not returned as a solution: stat /= 0, and the
-!!   caller publishes it marked 'failed' (exit status 3).
+!!   bound; and, when the caller asks for a tolerance (&solver static_tolerance), the
+!!   derived bound of every nodal displacement within it. An answer that fails it is not
+!!   returned as a solution: stat /= 0, and the caller publishes it marked 'failed' (exit
+!!   status 3).
 module vibrobeam_static
    use vibrobeam_kinds, only: dp
    use vibrobeam_status, only: stat_no_convergence, stat_residual_check_failed
@@ -55,9 +57,11 @@ contains
    !> Solve the static problem of the model under the loads `force` (theory §5 "Statics").
    !! stat: 0; stat_no_convergence (the active set or the compliant stops did not settle
    !! within the iterations allowed); stat_residual_check_failed (the answer fails its
-   !! a-posteriori check); stat_linear_solver_failure. On failure u and reaction hold the
-   !! last iterate (published marked 'failed' by the program).
-   subroutine solve_static(model, contacts, force, u, reaction, iterations, stat, errmsg, max_iterations, report)
+   !! a-posteriori check, or its displacements' bound exceeds `tolerance`);
+   !! stat_linear_solver_failure. On failure u and reaction hold the last iterate (published
+   !! marked 'failed' by the program).
+   subroutine solve_static(model, contacts, force, u, reaction, iterations, stat, errmsg, max_iterations, report, &
+                           tolerance)
       type(beam_model), intent(in) :: model
       type(contact_set), intent(in) :: contacts
       real(dp), intent(in) :: force(:)                 !! F (J)
@@ -68,14 +72,28 @@ contains
       !> held-set solves allowed per level (&solver contact_max_iterations; 0: the default, 100)
       integer, intent(in), optional :: max_iterations
       type(static_report), intent(out), optional :: report
+      !> the largest derived round-off bound of a nodal displacement accepted (m; &solver
+      !! static_tolerance); absent or 0: any
+      real(dp), intent(in), optional :: tolerance
       type(cantilever_flexibility) :: flexibility
       type(static_state) :: state
       type(static_report) :: done
       real(dp), allocatable :: free_curvature(:), curvature_error(:)
       integer :: limit
+      real(dp) :: required
+      required = 0
+      if (present(tolerance)) required = tolerance
       if (.not. flexibility_applies(model)) then
-         ! every other structure: the band Cholesky of K (docs/method.md, "Statics")
-         call solve_static_band(model, contacts, force, u, reaction, iterations, stat, errmsg, max_iterations, report)
+         ! every other structure: the band Cholesky of K (docs/method.md, "Statics"), its
+         ! position bound held to static_tolerance as the clamped-free path's is
+         call solve_static_band(model, contacts, force, u, reaction, iterations, stat, errmsg, max_iterations, done)
+         if (stat == 0 .and. required > 0 .and. done%position_bound > required) then
+            stat = stat_residual_check_failed
+            write (errmsg, '(a,es10.3,a,es10.3,a)') 'the static answer fails its check: its displacements are '// &
+               'bounded to ', done%position_bound, ' m (4 FERR of LAPACK dpbrfs), not to &solver static_tolerance = ', &
+               required, ' m; not trusted to it (docs/method.md, "Statics")'
+         end if
+         if (present(report)) report = done
          return
       end if
       iterations = 0
@@ -96,7 +114,7 @@ contains
       u = state%u
       reaction = state%reaction
       iterations = done%iterations
-      if (stat == 0) call check_equilibrium(flexibility, model, contacts, force, state, done, stat, errmsg)
+      if (stat == 0) call check_equilibrium(flexibility, model, contacts, force, state, required, done, stat, errmsg)
       if (present(report)) report = done
    end subroutine solve_static
 
@@ -308,13 +326,15 @@ contains
    !!   `flexibility_rounding` of the magnitude of |F| + |H^T| |P|) and of forming P from
    !!   the moments (`rounding`); the moments' own error is common to both and cancels;
    !! - held points on their bounds, free points within them and elastic supports on their
-   !!   spring law, to the bound of their positions (`tolerance`).
-   subroutine check_equilibrium(flexibility, model, contacts, force, state, report, stat, errmsg)
+   !!   spring law, to the bound of their positions (`tolerance`);
+   !! - with `required` > 0, the derived bound of every nodal displacement within it.
+   subroutine check_equilibrium(flexibility, model, contacts, force, state, required, report, stat, errmsg)
       type(cantilever_flexibility), intent(inout) :: flexibility
       type(beam_model), intent(in) :: model
       type(contact_set), intent(in) :: contacts
       real(dp), intent(in) :: force(:)
       type(static_state), intent(in) :: state
+      real(dp), intent(in) :: required   !! largest position bound accepted (m); 0: any
       type(static_report), intent(inout) :: report
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
@@ -376,5 +396,12 @@ contains
             return
          end if
       end do
+      if (required > 0 .and. report%position_bound > required) then
+         stat = stat_residual_check_failed
+         write (errmsg, '(a,es10.3,a,es10.3,a)') 'the static answer fails its check: its displacements are bounded to ', &
+            report%position_bound, ' m (their derived round-off bound), not to &solver static_tolerance = ', required, &
+            ' m; not trusted to it. Ask for no less than the round-off allows or, with compliant stops far softer '// &
+            'than the beam between many nodes, use fewer elements or stiffer stops (docs/method.md, "Statics")'
+      end if
    end subroutine check_equilibrium
 end module vibrobeam_static

@@ -41,7 +41,7 @@ contains
          call meter%init(scene%output%progress)
          allocate (u(model%unknowns), reaction(contacts%count))
          call solve_static(model, contacts, loads%at(0.0_dp), u, reaction, iterations, solve_stat, solve_message, &
-                           scene%solver%contact_max_iterations, report)
+                           scene%solver%contact_max_iterations, report, scene%solver%static_tolerance)
          if (solve_stat /= stat_ok) summary%status = outcome_failed
          call files%open(scene, model, stat, errmsg)
          if (stat == stat_ok) call files%write_static(nodal_displacement(model, u), contacts%x, reaction, stat, errmsg)

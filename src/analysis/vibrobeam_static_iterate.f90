@@ -135,14 +135,18 @@ contains
       real(dp), intent(inout) :: reaction(:)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp), allocatable :: miss(:), correction_z(:), correction_u(:), correction_reaction(:), zeros(:), unused(:)
+      real(dp), allocatable :: miss(:), correction_z(:), correction_u(:), correction_reaction(:), zeros(:)
+      ! outputs of held_equilibrium the refinement does not use; each its own array (Fortran
+      ! forbids actual arguments that overlap when one of them is written)
+      real(dp), allocatable :: unused_moment(:), unused_moment_error(:), unused_rounding(:), unused_reaction_error(:)
       real(dp) :: previous_miss
       integer :: k, m, n, step
       stat = 0
       errmsg = ''
       m = size(held)
       n = flexibility%unknowns
-      allocate (miss(m), correction_z(n), correction_u(n), correction_reaction(m), zeros(n), unused(2*m + 2))
+      allocate (miss(m), correction_z(n), correction_u(n), correction_reaction(m), zeros(n))
+      allocate (unused_moment(0:m), unused_moment_error(0:m), unused_rounding(m), unused_reaction_error(m))
       zeros = 0
       previous_miss = huge(1.0_dp)
       do step = 1, merge(4, 1, any(compliance > 0))
@@ -154,8 +158,8 @@ contains
          previous_miss = maxval(abs(miss))
          ! (the correction's own bounds are second order: those of the first solve stand)
          call held_equilibrium(flexibility, zeros, zeros, contacts%node(held), miss, compliance, correction_z, &
-                               correction_u, correction_reaction, unused(1:m + 1), unused(m + 2:2*m + 2), unused(1:m), &
-                               unused(m + 1:2*m), stat, errmsg)
+                               correction_u, correction_reaction, unused_moment, unused_moment_error, unused_rounding, &
+                               unused_reaction_error, stat, errmsg)
          if (stat /= 0) return
          state%z = state%z + correction_z
          state%u = state%u + correction_u

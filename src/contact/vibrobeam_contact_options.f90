@@ -1,7 +1,8 @@
 !> How the contact problems are solved, as the input gives it (&solver, docs/input.md),
 !! each variable declared once in `visit_solver` (`vibrobeam_schema_visitor`).
 module vibrobeam_contact_options
-   use vibrobeam_schema_visitor, only: schema_visitor, integer_row, keyword_row, keyword_length
+   use vibrobeam_kinds, only: dp
+   use vibrobeam_schema_visitor, only: schema_visitor, integer_row, keyword_row, real_row, keyword_length
    implicit none
    private
    public :: contact_options, visit_solver
@@ -11,6 +12,9 @@ module vibrobeam_contact_options
       character(len=keyword_length) :: contact_solver = 'auto'     !! 'auto' | 'delassus' | 'band'
       character(len=keyword_length) :: contact_method = 'newton'   !! 'newton' | 'pivoting'
       integer :: contact_max_iterations = 0                        !! pivots per projection; 0: the default
+      !> statics: the largest derived round-off bound of a nodal displacement accepted (m);
+      !! 0: any (docs/method.md, "Statics")
+      real(dp) :: static_tolerance = 0
    end type contact_options
 
 contains
@@ -27,5 +31,8 @@ contains
                             solver%contact_method)
       call visitor%variable(integer_row('solver', 'contact_max_iterations', 0, huge(1), &
                                         'pivots allowed per projection (0: the default)'), solver%contact_max_iterations)
+      call visitor%variable(real_row('solver', 'static_tolerance', 'm', 0.0_dp, 1e6_dp, &
+                                     'largest round-off bound of a static displacement accepted (0: any)'), &
+                            solver%static_tolerance)
    end subroutine visit_solver
 end module vibrobeam_contact_options

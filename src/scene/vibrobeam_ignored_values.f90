@@ -232,7 +232,8 @@ contains
       end if
    end subroutine time_warnings
 
-   !> &initial: the checkpoint's state, or the shape a keyword does not use.
+   !> &initial: the checkpoint's state, or the shape a keyword does not use; and &solver
+   !! static_tolerance without a static start.
    subroutine initial_warnings(scanned, scene, warnings)
       type(scanned_file), intent(in) :: scanned
       type(scene_type), intent(in) :: scene
@@ -243,6 +244,9 @@ contains
                                                           'velocity_amplitude']
       integer :: k
       associate (initial => scene%initial)
+         if (initial%displacement /= 'static' .or. len_trim(initial%from_file) > 0) &
+            call given_real(scanned, scene, warnings, 'solver', 'static_tolerance', scene%solver%static_tolerance, &
+                            'kind = ''dynamics'' solves a static equilibrium only for &initial displacement = ''static''')
          if (len_trim(initial%from_file) > 0) then
             do k = 1, size(initial_state)
                if (scanned%is_given('initial', trim(initial_state(k)))) &
