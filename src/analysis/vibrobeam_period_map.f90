@@ -123,6 +123,7 @@ contains
          type(map_image) :: shifted
          real(dp) :: h(2*n)
          real(dp), allocatable :: moved(:)
+         character(len=*), parameter :: prefix = 'a finite difference of the period map: '
          h = difference_step(self, prepared, x, image%state)
          allocate (image%jacobian(2*n, 2*n))
          do j = 1, 2*n
@@ -132,7 +133,8 @@ contains
             if (stat /= 0) return
             if (shifted%status /= outcome_ok) then
                image%status = shifted%status
-               image%failure = 'a finite difference of the period map: '//shifted%failure
+               ! (the reason cut to what the field holds, the prefix included)
+               image%failure = prefix//shifted%failure(1:len(image%failure) - len(prefix))
                return
             end if
             ! the step actually taken (x + h rounds h)
