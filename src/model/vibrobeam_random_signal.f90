@@ -82,6 +82,7 @@ module vibrobeam_random_signal
       real(dp) :: rms = 0                           !! root mean square of every channel, sqrt(sum h^2)
       real(dp) :: highest = 0                       !! the highest frequency where S is not 0 (Hz)
       real(dp) :: target_rms = 0                    !! sqrt of the integral of S, what the density asks
+      type(spectrum_shape) :: density               !! S, the target density (the result file's psd_target)
       integer(int64) :: block_index = -huge(1_int64)   !! the block in `block` (none yet)
       !> (L, channels) samples b L .. (b + 1) L - 1 of block b = block_index (allocated when
       !! the signal is first evaluated)
@@ -93,6 +94,7 @@ module vibrobeam_random_signal
       procedure :: design
       procedure :: values => signal_values
       procedure :: values_uncached => signal_values_uncached
+      procedure :: sample => signal_sample
       procedure :: fill_block
       procedure :: applied_density
    end type random_signal
@@ -204,6 +206,7 @@ contains
       self%key = key
       self%highest = shape%highest()
       self%target_rms = sqrt(shape%variance())
+      self%density = shape
       self%taps = filter_taps(shape, step)
       l = self%taps
       self%channels = 1
@@ -377,6 +380,16 @@ contains
          if (b /= self%block_index) call self%fill_block(b)
       end subroutine make_current
    end subroutine signal_values
+
+   !> Sample n >= 0 of every channel (y_n, at t_n = n tau), from the block kept (computed
+   !! when n is in another one): the values `values` gives at t_n.
+   subroutine signal_sample(self, n, values)
+      class(random_signal), intent(inout) :: self
+      integer(int64), intent(in) :: n
+      real(dp), intent(out) :: values(:)   !! (channels)
+      if (n/self%taps /= self%block_index) call self%fill_block(n/self%taps)
+      values = self%block(n - self%block_index*self%taps + 1, :)
+   end subroutine signal_sample
 
    !> `values` without keeping a block (for a caller that cannot change the signal): the
    !! same bits, at the cost of computing the block of t.
