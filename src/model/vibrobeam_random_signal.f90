@@ -95,6 +95,7 @@ module vibrobeam_random_signal
       procedure :: values => signal_values
       procedure :: values_uncached => signal_values_uncached
       procedure :: sample => signal_sample
+      procedure :: first_channel
       procedure :: fill_block
       procedure :: applied_density
    end type random_signal
@@ -390,6 +391,26 @@ contains
       if (n/self%taps /= self%block_index) call self%fill_block(n/self%taps)
       values = self%block(n - self%block_index*self%taps + 1, :)
    end subroutine signal_sample
+
+   !> The signal of channel 1 alone (q_1 = eta_1, stream 0: the same bits as channel 1 of
+   !! this signal, at 1/channels of its cost), no block kept.
+   function first_channel(self) result(single)
+      class(random_signal), intent(in) :: self
+      type(random_signal) :: single
+      single%step = self%step
+      single%taps = self%taps
+      single%key = self%key
+      single%channels = 1
+      single%stream = self%stream(1:1)
+      single%carried = [0.0_dp]
+      single%fresh = [1.0_dp]
+      single%taps_values = self%taps_values
+      single%response = self%response
+      single%rms = self%rms
+      single%highest = self%highest
+      single%target_rms = self%target_rms
+      single%density = self%density
+   end function first_channel
 
    !> `values` without keeping a block (for a caller that cannot change the signal): the
    !! same bits, at the cost of computing the block of t.

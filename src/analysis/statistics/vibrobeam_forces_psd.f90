@@ -54,7 +54,7 @@ module vibrobeam_forces_psd
    !> One random load's estimator and datasets.
    type :: load_psd
       integer :: load = 0                         !! its number in &forces
-      type(random_signal) :: signal               !! a copy of the load's signal (its own block)
+      type(random_signal) :: signal               !! a copy of the load's channel 1 (its own block)
       type(welch_estimator) :: welch
       real(dp), allocatable :: samples(:)         !! (N) y_1 .. y_N when N <= signal_samples_max, else (0)
       real(dp), allocatable :: values(:)          !! (channels) work space
@@ -92,7 +92,9 @@ contains
          r = r + 1
          associate (l => self%loads(r))
             l%load = i
+            ! channel 1 alone: a coherent field's other points would cost their blocks again
             l%signal = forces%random_of(i)
+            l%signal = l%signal%first_channel()
             allocate (l%values(l%signal%channels))
             call l%welch%init(l%signal%step, last_step, segment_samples(l%signal%taps))
             allocate (l%samples(merge(last_step, 0_int64, last_step <= signal_samples_max)), source=0.0_dp)
