@@ -21,9 +21,9 @@ module vibrobeam_text_output
    public :: derived_file, derive_text_files, discard_derived, text_file_name, text_suffixes, path_length
 
    !> Every suffix a result's .dat files can have.
-   character(len=*), parameter :: text_suffixes(21) = [character(len=16) :: 'modes', 'shapes', 'static', &
+   character(len=*), parameter :: text_suffixes(22) = [character(len=16) :: 'modes', 'shapes', 'static', &
       'reactions', 'tip', 'energy', 'impacts', 'episodes', 'points', 'field', 'spectrum', 'obstacles', 'contact', &
-      'force', 'sweep', 'poincare', 'contact_modes', 'contact_shapes', 'orbit', 'multipliers', 'forces_psd']
+      'force', 'sweep', 'poincare', 'contact_modes', 'contact_shapes', 'orbit', 'multipliers', 'forces_psd', 'ensemble']
 
 contains
 

@@ -28,7 +28,7 @@ program check_forces_psd
    use vibrobeam_random, only: random_key, gaussian_pair
    use vibrobeam_random_signal, only: spectrum_shape, random_signal
    use vibrobeam_hdf5_reader, only: h5_reader
-   use vibrobeam_forces_psd, only: chi_square_quantile
+   use vibrobeam_quantiles, only: chi_square_quantile
    use vibrobeam_test_support, only: test_counter, read_test_scene, same_bits
    implicit none
    integer(int64), parameter :: noise_origin = 2_int64**21

@@ -37,12 +37,13 @@ module vibrobeam_forces_psd
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_hdf5_series, only: h5_series
    use vibrobeam_welch, only: welch_estimator
+   use vibrobeam_quantiles, only: chi_square_quantile
    use vibrobeam_schema_visitor, only: unset_integer
    use vibrobeam_forces, only: force_set, forces_settings
    use vibrobeam_random_signal, only: random_signal
    implicit none
    private
-   public :: forces_psd, chi_square_quantile, welch_degrees_of_freedom, welch_density, signal_samples_max, &
+   public :: forces_psd, welch_degrees_of_freedom, welch_density, signal_samples_max, &
              psd_confidence, psd_reach
 
    !> a run of at most this many steps keeps the samples of its random loads (/forces/load_<i>/signal)
@@ -333,70 +334,4 @@ contains
       nu = 2*k**2/(k + 2*(k - 1)/36)
    end function welch_degrees_of_freedom
 
-   !> The quantile x of the chi-square distribution with nu > 0 degrees of freedom:
-   !! P(chi2_nu <= x) = p, 0 < p < 1, by bisection on the regularized incomplete gamma
-   !! function P(nu/2, x/2) to a relative 1e-13.
-   real(dp) function chi_square_quantile(nu, p) result(x)
-      real(dp), intent(in) :: nu, p
-      real(dp) :: low, high
-      integer :: i
-      low = 0
-      high = max(1.0_dp, 2*nu)
-      do while (gamma_p(nu/2, high/2) < p)
-         low = high
-         high = 2*high
-      end do
-      do i = 1, 200
-         x = (low + high)/2
-         if (gamma_p(nu/2, x/2) < p) then
-            low = x
-         else
-            high = x
-         end if
-         if (high - low <= 1e-13_dp*high) exit
-      end do
-      x = (low + high)/2
-   end function chi_square_quantile
-
-   !> The regularized lower incomplete gamma function P(a, x), a > 0, x >= 0: its series
-   !! for x < a + 1, else 1 - Q(a, x) from Legendre's continued fraction (modified Lentz).
-   real(dp) function gamma_p(a, x) result(p)
-      real(dp), intent(in) :: a, x
-      real(dp), parameter :: eps = epsilon(1.0_dp), small = tiny(1.0_dp)/eps
-      real(dp) :: term, total, prefactor, b, c, d, h, an, delta
-      integer :: i
-      if (x <= 0) then
-         p = 0
-         return
-      end if
-      prefactor = exp(-x + a*log(x) - log_gamma(a))
-      if (x < a + 1) then
-         term = 1/a
-         total = term
-         do i = 1, 10000
-            term = term*x/(a + i)
-            total = total + term
-            if (abs(term) < abs(total)*eps) exit
-         end do
-         p = total*prefactor
-      else
-         b = x + 1 - a
-         c = 1/small
-         d = 1/b
-         h = d
-         do i = 1, 10000
-            an = -i*(i - a)
-            b = b + 2
-            d = an*d + b
-            if (abs(d) < small) d = small
-            c = b + an/c
-            if (abs(c) < small) c = small
-            d = 1/d
-            delta = d*c
-            h = h*delta
-            if (abs(delta - 1) < eps) exit
-         end do
-         p = 1 - prefactor*h
-      end if
-   end function gamma_p
 end module vibrobeam_forces_psd
