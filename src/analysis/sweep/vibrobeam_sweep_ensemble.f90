@@ -90,7 +90,7 @@ contains
       class(sweep_ensemble), intent(inout) :: self
       integer, intent(in) :: k
       real(dp), intent(in) :: x(:)
-      real(dp), allocatable :: delta(:)
+      real(dp) :: delta(size(x))
       integer :: g
       g = self%group_of(k)
       self%count(g) = self%count(g) + 1
