@@ -8,6 +8,7 @@
 #                                       on the normalised axis Omega/omega_1 (--normalise)
 #   frequency_gap_map_map.png           the 2-D map as colour, on the same axis
 #   rattling_poincare_poincare.png      Poincare section of one run (rattling_poincare.nml)
+#   random_rattling_forces_psd.png      target and measured density of random_rattling.nml's load
 # usage: bash scripts/make_figures.sh [BUILD_DIR]
 #   BUILD_DIR: where vibrobeam is built (Release, default build/ of this repository);
 #   about 1 minute of two cores, most of it the three sweeps.
@@ -33,9 +34,11 @@ run frequency_gap_map
 bash scripts/plot_sweep.sh results/frequency_gap_map.h5 --normalise
 run rattling_poincare
 bash scripts/plot_results.sh results/rattling_poincare.h5
+run random_rattling
+bash scripts/plot_results.sh results/random_rattling.h5
 
 figures="tube_frequency_sweep_response rattling_bifurcation_bifurcation frequency_gap_map_response
-         frequency_gap_map_map rattling_poincare_poincare"
+         frequency_gap_map_map rattling_poincare_poincare random_rattling_forces_psd"
 for figure in $figures; do
   cp "results/$figure.png" "docs/figures/$figure.png"
 done

@@ -42,6 +42,7 @@ module vibrobeam_recorder
    use vibrobeam_step_observer, only: step_events
    use vibrobeam_episodes, only: episode_tracker
    use vibrobeam_run_spectra, only: run_spectra
+   use vibrobeam_forces_psd, only: forces_psd
    use vibrobeam_statistics, only: run_statistics, statistics_result, window_first_step
    use vibrobeam_statistics_output, only: statistics_datasets
    implicit none
@@ -82,6 +83,7 @@ module vibrobeam_recorder
       type(reduced_basis), allocatable :: reduction   !! T, for field snapshots
       real(dp), allocatable :: observed_rows(:, :)   !! (r, 1 + points) u_h at the tip and points = row . q
       type(run_spectra) :: spectra                   !! /spectrum: the tip's and the observation points'
+      type(forces_psd) :: forces_spectra             !! /forces: the random loads' densities (none without)
       type(episode_tracker) :: episodes
       type(run_statistics) :: statistics
       type(statistics_datasets) :: statistics_files
@@ -179,6 +181,7 @@ contains
       self%observed_weights(:, 2:) = self%point_weights
       allocate (self%events%observed(1 + size(self%point_x), 2))
       call self%spectra%init(self%every*scene%time%dt, last_step/self%every + 1, self%point_x)
+      if (self%write_rows) call self%forces_spectra%init(scene%forces, problem%loads%forces, last_step)
       gap = scene%output%episode_gap
       if (is_unset(gap)) gap = default_episode_gap(model)
       call self%episodes%init(stepper%contacts%x, gap, self%write_rows)
@@ -225,6 +228,10 @@ contains
       if (.not. self%write_rows) then
          call self%after_step(stepper, stat, errmsg)
          return
+      end if
+      if (allocated(self%forces_spectra%loads)) then
+         call self%forces_spectra%add(step, stat, errmsg)
+         if (stat /= 0) return
       end if
       !$omp critical (vibrobeam_hdf5)
       call self%after_step(stepper, stat, errmsg)
@@ -313,6 +320,7 @@ contains
       character(len=*), intent(out) :: errmsg
       call self%files%create(writer, self%point_x, stepper%contacts, model%elements + 1, self%compliant, stat, errmsg)
       if (stat == 0) call self%spectra%create(writer, stat, errmsg)
+      if (stat == 0 .and. allocated(self%forces_spectra%loads)) call self%forces_spectra%create(writer, stat, errmsg)
       if (stat == 0) call self%episodes%create_datasets(writer, stat, errmsg)
       if (stat == 0 .and. self%compliant) call self%files%create_compliant(writer, stepper%contacts, stat, errmsg)
       if (stat == 0 .and. self%statistics%active) &
@@ -517,6 +525,10 @@ contains
                              self%max_penetration_time, self%impacts, self%peak_force, stat, errmsg)
       if (stat == 0) call self%spectra%finish(writer, stat, errmsg)
       call self%spectra%close()
+      if (allocated(self%forces_spectra%loads)) then
+         if (stat == 0) call self%forces_spectra%finish(writer, stat, errmsg)
+         call self%forces_spectra%close()
+      end if
    end subroutine finish
 
    !> Everything a continued run needs (module documentation).
@@ -530,6 +542,7 @@ contains
       call record%put_reals('recorder.contact_time', self%contact_time)
       if (self%compliant) call record%put_reals('recorder.peak_force', self%peak_force)
       call self%spectra%save_state(record)
+      if (allocated(self%forces_spectra%loads)) call self%forces_spectra%save_state(record)
       call self%episodes%save_state(record)
       call self%statistics%save_state(record)
    end subroutine save_state
@@ -548,6 +561,7 @@ contains
       if (stat == 0) call record%get_reals('recorder.contact_time', self%contact_time, stat, errmsg)
       if (stat == 0 .and. self%compliant) call record%get_reals('recorder.peak_force', self%peak_force, stat, errmsg)
       if (stat == 0) call self%spectra%restore_state(record, stat, errmsg)
+      if (stat == 0 .and. allocated(self%forces_spectra%loads)) call self%forces_spectra%restore_state(record, stat, errmsg)
       if (stat == 0) call self%episodes%restore_state(record, stat, errmsg)
       if (stat == 0) call self%statistics%restore_state(record, stat, errmsg)
       if (stat /= 0) return

@@ -13,15 +13,17 @@ module vibrobeam_text_output
    use vibrobeam_text_derivation, only: derivation, text_sink, derived_file, discard_derived, text_file_name, &
       path_length, block_values
    use vibrobeam_sweep_text, only: sweep_files
+   use vibrobeam_text, only: integer_text
+   use vibrobeam_forces, only: max_forces
    use vibrobeam_progress, only: progress_meter
    implicit none
    private
    public :: derived_file, derive_text_files, discard_derived, text_file_name, text_suffixes, path_length
 
    !> Every suffix a result's .dat files can have.
-   character(len=*), parameter :: text_suffixes(20) = [character(len=16) :: 'modes', 'shapes', 'static', &
+   character(len=*), parameter :: text_suffixes(22) = [character(len=16) :: 'modes', 'shapes', 'static', &
       'reactions', 'tip', 'energy', 'impacts', 'episodes', 'points', 'field', 'spectrum', 'obstacles', 'contact', &
-      'force', 'sweep', 'poincare', 'contact_modes', 'contact_shapes', 'orbit', 'multipliers']
+      'force', 'sweep', 'poincare', 'contact_modes', 'contact_shapes', 'orbit', 'multipliers', 'forces_psd', 'ensemble']
 
 contains
 
@@ -201,6 +203,8 @@ contains
       if (stat /= 0 .or. run%interrupted) return
       call spectrum_file(run, stat, errmsg)
       if (stat /= 0 .or. run%interrupted) return
+      if (run%file%exists('/forces')) call forces_psd_file(run, stat, errmsg)
+      if (stat /= 0 .or. run%interrupted) return
       call poincare_file(run, stat, errmsg)
       if (stat /= 0 .or. run%interrupted) return
       call contact_point_files(run, stat, errmsg)
@@ -354,6 +358,42 @@ contains
       call run%stream_rows(sink, paths, widths, bins, 'wide', stat, errmsg)
       call run%close_sink(sink, stat, errmsg)
    end subroutine spectrum_file
+
+   !> STEM_forces_psd.dat: for each random load (/forces/load_<i>, in the order of
+   !! &forces), one gnuplot block (blocks separated by two blank lines, a comment naming the
+   !! load first): frequency (Hz), target density, measured density and its 95 % band.
+   subroutine forces_psd_file(run, stat, errmsg)
+      type(derivation), intent(inout) :: run
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(text_sink) :: sink
+      character(len=:), allocatable :: group, unit
+      character(len=40) :: paths(5)
+      integer(int64) :: bins
+      integer :: i, blocks
+      call run%open_sink(sink, 'forces_psd', 'frequency (Hz)  target one-sided density S (unit^2/Hz)  measured '// &
+                         'density (Welch, Hann segments overlapping by half)  lower and upper end of its 95 % '// &
+                         'confidence band (chi-square): one block per random load (gnuplot index 0, 1, ...)', &
+                         stat, errmsg)
+      if (stat /= 0) return
+      blocks = 0
+      do i = 1, max_forces
+         group = '/forces/load_'//integer_text(i)
+         if (.not. run%file%exists(group//'/frequency')) cycle
+         call run%file%attr_string(group, 'unit', unit, stat, errmsg)
+         if (stat == 0) call run%rows_of(group//'/frequency', bins, stat, errmsg)
+         if (stat == 0 .and. blocks > 0) call sink%put_line('', stat, errmsg)
+         if (stat == 0 .and. blocks > 0) call sink%put_line('', stat, errmsg)
+         if (stat == 0) call sink%put_line('# load '//integer_text(i)//' (unit '//unit//')', stat, errmsg)
+         if (stat /= 0) exit
+         paths = [character(len=40) :: group//'/frequency', group//'/psd_target', group//'/psd_measured', &
+                  group//'/psd_lower', group//'/psd_upper']
+         call run%stream_rows(sink, paths, [1, 1, 1, 1, 1], bins, 'wide', stat, errmsg)
+         if (stat /= 0 .or. run%interrupted) exit
+         blocks = blocks + 1
+      end do
+      call run%close_sink(sink, stat, errmsg)
+   end subroutine forces_psd_file
 
    !> STEM_poincare.dat of a run with Poincare samples (docs/statistics.md): time, then u
    !! at the tip and at each observation point, then v at each.

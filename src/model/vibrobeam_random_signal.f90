@@ -82,6 +82,7 @@ module vibrobeam_random_signal
       real(dp) :: rms = 0                           !! root mean square of every channel, sqrt(sum h^2)
       real(dp) :: highest = 0                       !! the highest frequency where S is not 0 (Hz)
       real(dp) :: target_rms = 0                    !! sqrt of the integral of S, what the density asks
+      type(spectrum_shape) :: density               !! S, the target density (the result file's psd_target)
       integer(int64) :: block_index = -huge(1_int64)   !! the block in `block` (none yet)
       !> (L, channels) samples b L .. (b + 1) L - 1 of block b = block_index (allocated when
       !! the signal is first evaluated)
@@ -93,6 +94,8 @@ module vibrobeam_random_signal
       procedure :: design
       procedure :: values => signal_values
       procedure :: values_uncached => signal_values_uncached
+      procedure :: sample => signal_sample
+      procedure :: first_channel
       procedure :: fill_block
       procedure :: applied_density
    end type random_signal
@@ -204,6 +207,7 @@ contains
       self%key = key
       self%highest = shape%highest()
       self%target_rms = sqrt(shape%variance())
+      self%density = shape
       self%taps = filter_taps(shape, step)
       l = self%taps
       self%channels = 1
@@ -377,6 +381,36 @@ contains
          if (b /= self%block_index) call self%fill_block(b)
       end subroutine make_current
    end subroutine signal_values
+
+   !> Sample n >= 0 of every channel (y_n, at t_n = n tau), from the block kept (computed
+   !! when n is in another one): the values `values` gives at t_n.
+   subroutine signal_sample(self, n, values)
+      class(random_signal), intent(inout) :: self
+      integer(int64), intent(in) :: n
+      real(dp), intent(out) :: values(:)   !! (channels)
+      if (n/self%taps /= self%block_index) call self%fill_block(n/self%taps)
+      values = self%block(n - self%block_index*self%taps + 1, :)
+   end subroutine signal_sample
+
+   !> The signal of channel 1 alone (q_1 = eta_1, stream 0: the same bits as channel 1 of
+   !! this signal, at 1/channels of its cost), no block kept.
+   function first_channel(self) result(single)
+      class(random_signal), intent(in) :: self
+      type(random_signal) :: single
+      single%step = self%step
+      single%taps = self%taps
+      single%key = self%key
+      single%channels = 1
+      single%stream = self%stream(1:1)
+      single%carried = [0.0_dp]
+      single%fresh = [1.0_dp]
+      single%taps_values = self%taps_values
+      single%response = self%response
+      single%rms = self%rms
+      single%highest = self%highest
+      single%target_rms = self%target_rms
+      single%density = self%density
+   end function first_channel
 
    !> `values` without keeping a block (for a caller that cannot change the signal): the
    !! same bits, at the cost of computing the block of t.

@@ -31,7 +31,12 @@
 !!   95 % - 3 binomial standard errors of the R points;
 !! - the spread of z_k = (rms_k - sigma)/error_k: its variance within [0.5, 2.5] (an honest
 !!   error gives about (c - 1)/(c - 3) = 1.2; a third too small or too large an error
-!!   would move it out by a factor 1.8).
+!!   would move it out by a factor 1.8);
+!! - the sweep file's own ensemble statistics (/sweep/ensemble, R = 40): its mean equals
+!!   the mean of the R rows to 1e-13 (two sums of 40 terms: 2 R u = 9e-15), its half-width
+!!   equals t_{0.975,39} s/sqrt(R) with t_{0.975,39} = 2.02269 from tables (1e-5, the
+!!   table's digits), and its interval mean +- half-width covers sigma (widened by the RMS
+!!   bias, below 1e-3 sigma).
 program check_random_response
    use, intrinsic :: iso_c_binding
    use vibrobeam_kinds, only: dp, output_unit, error_unit
@@ -111,6 +116,7 @@ program check_random_response
       end if
       call check_ensemble(trim(names(quantity)), rms(1, 1:replicates), errors(1, 1:replicates), batches(1:replicates), &
                           sigma(quantity), semi_discrete(quantity))
+      if (replicates == 40 .and. size(batches) == 40) call check_sweep_ensemble(trim(names(quantity)), sigma(quantity))
    end do
    call t%finish('check_random_response')
 
@@ -213,6 +219,27 @@ contains
       call t%check_true('tip '//name//' RMS: the errors are honest (variance of z in [0.5, 2.5])', &
                         z_variance >= 0.5_dp .and. z_variance <= 2.5_dp)
    end subroutine check_ensemble
+
+   !> The sweep file's ensemble mean and interval of the tip's `name` RMS (module
+   !! documentation), against `mean` and `spread` of `check_ensemble` and the exact sigma.
+   subroutine check_sweep_ensemble(name, sigma)
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: sigma
+      real(dp), allocatable :: ensemble_mean(:, :), half_width(:, :)
+      real(dp), parameter :: t_39 = 2.02269_dp   ! Student's t_{0.975, 39} (tables)
+      call read_real_2d(trim(sweep_path), '/sweep/ensemble/points/'//name//'_rms', ensemble_mean, stat, errmsg)
+      if (stat == 0) call read_real_2d(trim(sweep_path), '/sweep/ensemble/points/'//name//'_rms_half_width', &
+                                       half_width, stat, errmsg)
+      call t%check_true('the sweep file has /sweep/ensemble (tip '//name//' RMS)', stat == 0, errmsg)
+      if (stat /= 0) return
+      write (output_unit, '(a,es12.5,a,es10.3,a,f6.2,a)') '   sweep file ensemble: ', ensemble_mean(1, 1), ' +- ', &
+         half_width(1, 1), ' (', (ensemble_mean(1, 1) - sigma)/half_width(1, 1), ' half-widths from the exact)'
+      call t%check_close('tip '//name//' RMS: /sweep/ensemble mean', ensemble_mean(1, 1), mean, 1e-13_dp)
+      call t%check_close('tip '//name//' RMS: /sweep/ensemble half-width', half_width(1, 1), &
+                         t_39*spread/sqrt(40.0_dp), 1e-5_dp)
+      call t%check_true('tip '//name//' RMS: the ensemble''s 95 % interval covers the exact', &
+                        abs(ensemble_mean(1, 1) - sigma) <= half_width(1, 1) + 1e-3_dp*sigma)
+   end subroutine check_sweep_ensemble
 
    !> Student's t quantile 0.975 for nu degrees of freedom (tables; nu >= 30: 2.042 to 1.96).
    pure real(dp) function student_975(nu)

@@ -12,6 +12,10 @@
 !! still reads its amplitude. The samples after the last complete segment (fewer than
 !! 2^15) are not used. Bin width 1/(n dt) for one record, 1/(2^16 dt) for segments.
 !!
+!! An estimator may be given another segment length n_s (a power of two, `init`'s
+!! `segment`; the random loads' spectra use the filter's length): everything above holds
+!! with 2^16 replaced by n_s.
+!!
 !! Memory: one buffer of at most 2^16 samples and 2^15 + 1 power sums. The estimator's
 !! state goes into a checkpoint (`save_state`), so a continued run gives the spectrum of
 !! the whole run.
@@ -29,11 +33,12 @@ module vibrobeam_welch
 
    type :: welch_estimator
       real(dp) :: dt = 0                     !! sampling interval (s)
+      integer :: segment = welch_segment     !! samples per segment (a power of two)
       integer :: filled = 0                  !! samples in the buffer
       integer(int64) :: samples = 0          !! samples added since the start of the run
       integer(int64) :: segments = 0         !! segments transformed
       real(dp), allocatable :: buffer(:)     !! (capacity) the latest samples
-      real(dp), allocatable :: power(:)      !! (welch_segment/2 + 1) sums of a_k^2, or (0)
+      real(dp), allocatable :: power(:)      !! (segment/2 + 1) sums of a_k^2, or (0)
    contains
       procedure :: init
       procedure :: add
@@ -45,18 +50,22 @@ module vibrobeam_welch
 contains
 
    !> Start with sampling interval `dt`; `expected` samples at most in the whole run size
-   !! the buffer (min(expected, 2^16)).
-   subroutine init(self, dt, expected)
+   !! the buffer (min(expected, segment)); `segment` samples per segment (a power of two
+   !! >= 2; default `welch_segment`).
+   subroutine init(self, dt, expected, segment)
       class(welch_estimator), intent(inout) :: self
       real(dp), intent(in) :: dt
       integer(int64), intent(in) :: expected
+      integer, intent(in), optional :: segment
       self%dt = dt
+      self%segment = welch_segment
+      if (present(segment)) self%segment = segment
       self%filled = 0
       self%samples = 0
       self%segments = 0
       if (allocated(self%buffer)) deallocate (self%buffer)
       if (allocated(self%power)) deallocate (self%power)
-      allocate (self%buffer(int(max(2_int64, min(expected, int(welch_segment, int64))))), source=0.0_dp)
+      allocate (self%buffer(int(max(2_int64, min(expected, int(self%segment, int64))))), source=0.0_dp)
       call size_power(self)
    end subroutine init
 
@@ -64,8 +73,8 @@ contains
    subroutine size_power(self)
       type(welch_estimator), intent(inout) :: self
       if (allocated(self%power)) deallocate (self%power)
-      if (size(self%buffer) == welch_segment) then
-         allocate (self%power(welch_segment/2 + 1), source=0.0_dp)
+      if (size(self%buffer) == self%segment) then
+         allocate (self%power(self%segment/2 + 1), source=0.0_dp)
       else
          allocate (self%power(0))
       end if
@@ -81,17 +90,17 @@ contains
       stat = 0
       errmsg = ''
       if (self%filled == size(self%buffer)) then
-         if (size(self%buffer) < welch_segment) then
+         if (size(self%buffer) < self%segment) then
             ! more samples than expected (a longer continued run): grow up to one segment
-            allocate (bigger(min(welch_segment, 2*size(self%buffer))), source=0.0_dp)
+            allocate (bigger(min(self%segment, 2*size(self%buffer))), source=0.0_dp)
             bigger(1:self%filled) = self%buffer(1:self%filled)
             call move_alloc(bigger, self%buffer)
             call size_power(self)
          else
             call transform_segment(self, stat, errmsg)
             if (stat /= 0) return
-            self%buffer(1:welch_segment/2) = self%buffer(welch_segment/2 + 1:welch_segment)
-            self%filled = welch_segment/2
+            self%buffer(1:self%segment/2) = self%buffer(self%segment/2 + 1:self%segment)
+            self%filled = self%segment/2
          end if
       end if
       self%filled = self%filled + 1
@@ -136,17 +145,17 @@ contains
          width = bin_width(self%filled, self%dt)
          return
       end if
-      if (self%filled == welch_segment) then
+      if (self%filled == self%segment) then
          ! the last segment is complete: count it (once; the buffer then starts the next)
          call transform_segment(self, stat, errmsg)
          if (stat /= 0) return
-         self%buffer(1:welch_segment/2) = self%buffer(welch_segment/2 + 1:welch_segment)
-         self%filled = welch_segment/2
+         self%buffer(1:self%segment/2) = self%buffer(self%segment/2 + 1:self%segment)
+         self%filled = self%segment/2
       end if
       segments = self%segments
-      width = bin_width(welch_segment, self%dt)
-      allocate (frequency(welch_segment/2 + 1), amplitude(welch_segment/2 + 1))
-      do k = 0, welch_segment/2
+      width = bin_width(self%segment, self%dt)
+      allocate (frequency(self%segment/2 + 1), amplitude(self%segment/2 + 1))
+      do k = 0, self%segment/2
          frequency(k + 1) = k*width
       end do
       amplitude = sqrt(self%power/self%segments)
@@ -187,7 +196,7 @@ contains
          return
       end if
       saved = size(record%items(k)%reals)
-      if (counts(1) > saved .or. saved > welch_segment) then
+      if (counts(1) > saved .or. saved > self%segment) then
          stat = stat_failure
          errmsg = 'the checkpoint''s spectrum state is inconsistent'
          return

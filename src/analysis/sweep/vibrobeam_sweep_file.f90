@@ -39,6 +39,7 @@ module vibrobeam_sweep_file
       r_kept, r_poincare_first, r_message_length, r_point_file
    use vibrobeam_sweep_partial, only: sweep_partial
    use vibrobeam_sweep_point_files, only: point_files
+   use vibrobeam_sweep_ensemble, only: sweep_ensemble, ensemble_confidence
    implicit none
    private
    public :: write_sweep_file, sweep_counts
@@ -106,6 +107,7 @@ contains
       type(point_files) :: set
       type(point_tables) :: tables
       type(point_outcomes) :: outcomes
+      type(sweep_ensemble) :: ensemble
       text_skipped = .false.
       call files%open(scene, model, stat, errmsg, unbuffered=.true.)
       if (stat /= 0) then
@@ -118,8 +120,10 @@ contains
                                                   errmsg)
          if (stat == 0) call create_statistics_tables(files%h5, layout, size(points), tables, stat, errmsg)
          if (stat /= 0) exit write_all
+         call ensemble%init(settings, points, layout%size)
          call write_points(tables, settings, points, partial, owner, layout, status, trim(scene%output%file), meter, &
-                           outcomes, stat, errmsg)
+                           outcomes, ensemble, stat, errmsg)
+         if (stat == 0 .and. ensemble%axis > 0) call write_ensemble(files%h5, settings, layout, ensemble, stat, errmsg)
          if (stat /= 0) exit write_all
          call write_poincare(files%h5, settings, points, partial, owner, outcomes, size(point_x), stat, errmsg)
          if (stat /= 0) exit write_all
@@ -261,8 +265,8 @@ contains
    !> The rows of every point, a block of `block_points` at a time, from the journals;
    !! what each point left (`outcomes`: its Poincare samples, its file, the counts and
    !! messages). Closes the tables.
-   subroutine write_points(tables, settings, points, partial, owner, layout, status, file, meter, outcomes, stat, &
-                           errmsg)
+   subroutine write_points(tables, settings, points, partial, owner, layout, status, file, meter, outcomes, ensemble, &
+                           stat, errmsg)
       type(point_tables), intent(inout) :: tables
       type(sweep_settings), intent(in) :: settings
       type(sweep_point), intent(in) :: points(:)
@@ -273,6 +277,7 @@ contains
       character(len=*), intent(in) :: file
       type(progress_meter), intent(inout) :: meter
       type(point_outcomes), intent(out) :: outcomes
+      type(sweep_ensemble), intent(inout) :: ensemble   !! fed the points that finished, when an ensemble
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       real(dp), allocatable :: record(:, :)
@@ -292,6 +297,12 @@ contains
                                          layout, first, record(:, 1:count), stat, errmsg)
          if (stat == 0) call tally_block(partial, owner, status, first, record(:, 1:count), outcomes, stat, errmsg)
          if (stat /= 0) return
+         if (ensemble%axis > 0) then
+            do k = 1, count
+               if (nint(record(r_status, k)) == status_ok) &
+                  call ensemble%add(first + k - 1, record(record_head + 1:record_head + layout%size, k))
+            end do
+         end if
          if (meter%due()) call meter%report('writing '//file//': '//integer_text(first + count - 1)// &
                                             ' of '//integer_text(n)//' points')
       end do
@@ -303,6 +314,56 @@ contains
          call tables%errors(e)%close()
       end do
    end subroutine write_points
+
+   !> /sweep/ensemble (docs/output.md, "Sweep file"): for each group of an ensemble, the
+   !! other axis' value, its branch, its realisations R, and for every statistic of the
+   !! layout the mean over the realisations and the half-width of its 95 % interval, in
+   !! the shapes of /sweep/statistics with groups in place of points.
+   subroutine write_ensemble(h5, settings, layout, ensemble, stat, errmsg)
+      type(h5_writer), intent(inout) :: h5
+      type(sweep_settings), intent(in) :: settings
+      type(statistics_layout), intent(in) :: layout
+      type(sweep_ensemble), intent(in) :: ensemble
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp), allocatable :: half(:, :)
+      integer :: g, e, other_axis
+      allocate (half(layout%size, ensemble%groups))
+      do g = 1, ensemble%groups
+         half(:, g) = ensemble%half_width(g)
+      end do
+      other_axis = 3 - ensemble%axis
+      stat = 0
+      errmsg = ''
+      ! a 1-D ensemble has no other axis: one group (per branch)
+      if (len_trim(settings%axis(other_axis)%parameter) > 0) then
+         call h5%write_real_1d('/sweep/ensemble/parameter', ensemble%other, trim(settings%axis(other_axis)%unit), &
+                               stat, errmsg)
+         if (stat == 0) call h5%attr_string('/sweep/ensemble/parameter', 'name', &
+                                            trim(settings%axis(other_axis)%parameter), stat, errmsg)
+      end if
+      if (stat == 0) call h5%write_int_1d('/sweep/ensemble/direction', ensemble%direction, stat=stat, errmsg=errmsg)
+      if (stat == 0) call h5%write_int_1d('/sweep/ensemble/realisations', ensemble%count, stat=stat, errmsg=errmsg)
+      if (stat == 0) call h5%attr_real('/sweep/ensemble', 'confidence', ensemble_confidence, stat, errmsg)
+      if (stat == 0) call h5%attr_int('/sweep/ensemble', 'groups', ensemble%groups, stat, errmsg)
+      do e = 1, size(layout%entries)
+         if (stat /= 0) return
+         associate (entry => layout%entries(e), first => layout%entries(e)%offset + 1, &
+                    last => layout%entries(e)%offset + layout%entries(e)%length)
+            if (entry%group == group_beam .or. entry%group == group_energy) then
+               call h5%write_real_1d('/sweep/ensemble/'//layout%path(e, .false.), ensemble%mean(first, :), &
+                                     trim(entry%unit), stat, errmsg)
+               if (stat == 0) call h5%write_real_1d('/sweep/ensemble/'//layout%path(e, .false.)//'_half_width', &
+                                                    half(first, :), trim(entry%unit), stat, errmsg)
+            else
+               call h5%write_real_2d('/sweep/ensemble/'//layout%path(e, .false.), ensemble%mean(first:last, :), &
+                                     trim(entry%unit), stat, errmsg)
+               if (stat == 0) call h5%write_real_2d('/sweep/ensemble/'//layout%path(e, .false.)//'_half_width', &
+                                                    half(first:last, :), trim(entry%unit), stat, errmsg)
+            end if
+         end associate
+      end do
+   end subroutine write_ensemble
 
    !> The journal records of the points first .. first + size(record, 2) - 1 (a point
    !! without a journal: not run), reading runs of consecutive points of one journal at

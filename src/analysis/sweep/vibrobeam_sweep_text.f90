@@ -81,7 +81,64 @@ contains
       columns(1)%note = first_name
       columns(2)%note = second_name
       call poincare_file(run, int(samples), columns, first_label, second_label, stat, errmsg)
+      if (stat == 0 .and. run%file%exists('/sweep/ensemble/realisations')) call ensemble_file(run, observation, stat, errmsg)
    end subroutine sweep_files
+
+   !> STEM_ensemble.dat of an ensemble (a sweep over forces.realisation; docs/output.md):
+   !! one row per group of /sweep/ensemble, the other axis' value, the branch, the
+   !! realisations, then the mean and the half-width of the 95 % interval of the
+   !! statistics of STEM_sweep.dat's first columns (tip RMS displacement and velocity,
+   !! largest tip displacement, the beam's and the energy's), every column named.
+   subroutine ensemble_file(run, observation, stat, errmsg)
+      type(derivation), intent(inout) :: run
+      integer, intent(in) :: observation
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(text_sink) :: sink
+      type(table_column) :: columns(3 + 2*(3 + size(pairs)))
+      real(dp), allocatable :: table(:, :)
+      character(len=:), allocatable :: name, label, statistic
+      integer(int64) :: groups
+      integer :: j, k
+      character(len=*), parameter :: tip(3) = [character(len=24) :: 'displacement_rms', 'velocity_rms', &
+                                               'displacement_max']
+      call run%rows_of('/sweep/ensemble/realisations', groups, stat, errmsg)
+      if (stat /= 0) return
+      name = 'none'
+      label = 'none (a 1-D ensemble: one group)'
+      columns(1) = table_column('parameter', '')
+      if (run%file%exists('/sweep/ensemble/parameter')) then
+         call axis_label(run, '/sweep/ensemble/parameter', name, label, stat, errmsg)
+         if (stat /= 0) return
+         columns(1)%path = '/sweep/ensemble/parameter'
+         columns(1)%note = name
+      end if
+      columns(2) = table_column('direction', '/sweep/ensemble/direction')
+      columns(3) = table_column('realisations', '/sweep/ensemble/realisations')
+      do j = 1, size(tip)
+         columns(2 + 2*j) = table_column('tip_'//trim(tip(j)), '/sweep/ensemble/points/'//trim(tip(j)), observation, 1)
+         columns(3 + 2*j) = table_column('tip_'//trim(tip(j))//'_half_width', &
+                                         '/sweep/ensemble/points/'//trim(tip(j))//'_half_width', observation, 1)
+      end do
+      do j = 1, size(pairs)
+         statistic = trim(pairs(j)(index(pairs(j), '/') + 1:))
+         columns(2 + 2*(size(tip) + j)) = table_column(statistic, '/sweep/ensemble/'//trim(pairs(j)))
+         columns(3 + 2*(size(tip) + j)) = table_column(statistic//'_half_width', &
+                                                       '/sweep/ensemble/'//trim(pairs(j))//'_half_width')
+      end do
+      call run%open_sink(sink, 'ensemble', 'one row per value of the other axis ('//label//') and branch: its '// &
+                         'value, direction, realisations R, then the mean over the R realisations of each '// &
+                         'statistic and the half-width t(0.975, R - 1) s/sqrt(R) of its 95 % interval '// &
+                         '(docs/statistics.md, "Ensembles of realisations"); 0: R < 2', stat, errmsg)
+      if (stat /= 0) return
+      call column_lines(run, sink, columns, stat, errmsg)
+      if (stat == 0) call read_table(run, columns, 1, int(groups), table, stat, errmsg)
+      do k = 1, int(groups)
+         if (stat /= 0) exit
+         call sink%put_row('wide', table(:, k), stat, errmsg)
+      end do
+      call run%close_sink(sink, stat, errmsg)
+   end subroutine ensemble_file
 
    !> The contact point whose force_peak summed over the `points` (in their order) is
    !! largest; 0 when every sum is 0 or there is no contact point.
