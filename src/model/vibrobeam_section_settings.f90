@@ -91,6 +91,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: i, n, node, previous
+      real(dp) :: start
       character(len=:), allocatable :: item
       stat = 0
       errmsg = ''
@@ -98,24 +99,23 @@ contains
       if (n == 0) return
       stat = stat_failure
       previous = 0
+      start = 0
       do i = 1, n
          item = '('//integer_text(i)//')'
          associate (x => sections(i)%x_to)
-            if (.not. x > 0) then
-               errmsg = '&sections x_to'//item//' = '//real_text(x)//' m: a section ends after x = 0'
-               return
-            end if
-            if (i > 1) then
-               if (.not. x > sections(i - 1)%x_to) then
+            if (.not. x > start) then
+               if (i == 1) then
+                  errmsg = '&sections x_to'//item//' = '//real_text(x)//' m: a section ends after x = 0'
+               else
                   errmsg = '&sections x_to'//item//' = '//real_text(x)//' m is not after x_to('//integer_text(i - 1)// &
-                           ') = '//real_text(sections(i - 1)%x_to)//' m: give the section ends in increasing order'
-                  return
+                           ') = '//real_text(start)//' m: give the section ends in increasing order'
                end if
+               return
             end if
             if (i < n .and. x >= length) then
                errmsg = '&sections x_to'//item//' = '//real_text(x)//' m reaches the end of the beam (length = '// &
-                        real_text(length)//' m) before the last section ('//integer_text(n)//'): raise count no '// &
-                        'further than the sections inside the beam'
+                        real_text(length)//' m) before the last section (count = '//integer_text(n)//'): the '// &
+                        'last section ends at L; give count = '//integer_text(i)//', or ends inside the beam'
                return
             end if
             if (i == n .and. abs(x - length) > section_end_tolerance*length) then
@@ -127,12 +127,13 @@ contains
             if (i == n) node = elements
             if (node <= previous) then
                errmsg = '&sections x_to'//item//' = '//real_text(x)//' m and the section''s start '// &
-                        real_text(merge(0.0_dp, sections(max(i - 1, 1))%x_to, i == 1))//' m move to the same node x = '// &
+                        real_text(start)//' m move to the same node x = '// &
                         real_text(node*length/elements)//' m of &mesh elements = '//integer_text(elements)// &
                         ': the section has no element; refine the mesh or merge the sections'
                return
             end if
             previous = node
+            start = x
          end associate
       end do
       stat = 0

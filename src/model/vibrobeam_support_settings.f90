@@ -106,9 +106,11 @@ contains
       structure%boundary = beam%supports()
       structure%axial_force = beam%tension()
       if (beam%sectioned()) then
-         structure%section_end = beam%sections%x_to
-         structure%section_rho_s = beam%sections%rho_s()
-         structure%section_ei = beam%sections%ei()
+         allocate (structure%section_end(size(beam%sections)), structure%section_rho_s(size(beam%sections)), &
+                   structure%section_ei(size(beam%sections)))
+         structure%section_end(:) = beam%sections%x_to
+         structure%section_rho_s(:) = beam%sections%rho_s()
+         structure%section_ei(:) = beam%sections%ei()
       end if
       allocate (structure%support_x(size(supports)), structure%support_kind(size(supports)), &
                 structure%support_stiffness(size(supports)), structure%support_rotational_stiffness(size(supports)))

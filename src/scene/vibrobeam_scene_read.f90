@@ -277,6 +277,21 @@ contains
       errmsg = ''
    end subroutine check_count
 
+   !> The count of an array of settings whose count is an optional row (&supports, &masses,
+   !! &sections): `given` is 0 when the file does not give it (count is then unset, -1),
+   !! else the count given, checked as `check_count` does (even -1).
+   subroutine optional_count(scanned, group, element, names, count, most, given, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
+      character(len=*), intent(in) :: group, element, names(:)
+      integer, intent(in) :: count, most
+      integer, intent(out) :: given
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      given = 0
+      if (scanned%is_given(group, 'count')) given = count
+      call check_count(scanned, group, element, names, given, most, stat, errmsg)
+   end subroutine optional_count
+
    !> &supports after reading: count (0 when not given) and what it allows; each support
    !! needs its x.
    subroutine resolve_supports(scanned, count, scene, stat, errmsg)
@@ -287,10 +302,7 @@ contains
       character(len=*), intent(out) :: errmsg
       character(len=*), parameter :: names(4) = [character(len=20) :: 'x', 'kind', 'stiffness', 'rotational_stiffness']
       integer :: i, given
-      ! count is unset (-1) when not given; given, even -1 is checked
-      given = 0
-      if (scanned%is_given('supports', 'count')) given = count
-      call check_count(scanned, 'supports', 'support', names, given, max_supports, stat, errmsg)
+      call optional_count(scanned, 'supports', 'support', names, count, max_supports, given, stat, errmsg)
       if (stat /= 0) return
       scene%supports = scene%supports(1:given)
       do i = 1, size(scene%supports)
@@ -312,10 +324,7 @@ contains
       character(len=*), intent(out) :: errmsg
       character(len=*), parameter :: names(3) = [character(len=14) :: 'x', 'mass', 'rotary_inertia']
       integer :: i, given
-      ! count is unset (-1) when not given; given, even -1 is checked
-      given = 0
-      if (scanned%is_given('masses', 'count')) given = count
-      call check_count(scanned, 'masses', 'mass', names, given, max_masses, stat, errmsg)
+      call optional_count(scanned, 'masses', 'mass', names, count, max_masses, given, stat, errmsg)
       if (stat /= 0) return
       scene%masses = scene%masses(1:given)
       do i = 1, size(scene%masses)
@@ -338,14 +347,11 @@ contains
       character(len=*), intent(out) :: errmsg
       character(len=*), parameter :: names(5) = [character(len=14) :: 'x_to', 'youngs_modulus', 'density', 'area', &
                                                  'inertia']
-      character(len=*), parameter :: meaning(5) = [character(len=28) :: 'the end (m) of the section', &
+      character(len=*), parameter :: meaning(5) = [character(len=31) :: 'the end (m) of the section', &
                                                    'its Young''s modulus (Pa)', 'its density (kg/m^3)', &
                                                    'its cross-section area (m^2)', 'its second moment of area (m^4)']
       integer :: i, k, given
-      ! count is unset (-1) when not given; given, even -1 is checked
-      given = 0
-      if (scanned%is_given('sections', 'count')) given = count
-      call check_count(scanned, 'sections', 'section', names, given, max_sections, stat, errmsg)
+      call optional_count(scanned, 'sections', 'section', names, count, max_sections, given, stat, errmsg)
       if (stat /= 0) return
       scene%beam%sections = scene%beam%sections(1:given)
       if (given == 0) return

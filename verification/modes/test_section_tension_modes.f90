@@ -10,9 +10,10 @@
 !!   EI phi'' and the shear EI phi''' (the natural conditions of the energy 1/2 int EI u''^2
 !!   - omega^2/2 int rho S u^2 at an interior point), and the free end (phi'' = phi''' = 0)
 !!   make an 8 x 8 transfer system whose determinant vanishes at the frequencies; its roots
-!!   in b = beta_1 L by a scan of step 0.01 and bisection to 4 eps (LAPACK dgetrf for the
-!!   determinant's sign). Checked against itself: with equal sections its roots are the
-!!   cantilever's 1.8751040687, 4.6940911330 (to 4 eps e^b, the cancellation of its rows);
+!!   in b = beta_1 L by a scan of step 0.01 and bisection to 4 eps (`lu_determinant`:
+!!   LAPACK dgetrf for the determinant's sign). Checked against itself: with equal
+!!   sections its roots are the cantilever's 1.8751040687, 4.6940911330 (to 4 eps e^b,
+!!   the cancellation of its rows);
 !! - a tensioned pinned-pinned beam: sin(n pi x/L) are its modes for any EI and T, with
 !!   omega_n^2 = (n pi/L)^4 EI/(rho S) + (n pi/L)^2 T/(rho S) (theory §7);
 !! - its string limit EI -> 0: omega_n = (n pi/L) sqrt(T/(rho S)); a beam of EI =
@@ -37,8 +38,7 @@ program test_section_tension_modes
    use vibrobeam_scene, only: scene_type, section_settings, unset
    use vibrobeam_problem, only: run_problem, build_problem
    use vibrobeam_modes, only: compute_modes
-   use vibrobeam_lapack, only: dgetrf
-   use vibrobeam_test_support, only: test_counter
+   use vibrobeam_test_support, only: test_counter, wave_row, lu_determinant, scanned_roots
    implicit none
    type(test_counter) :: t
    real(dp), parameter :: length = 1.2_dp, step_at = 0.48_dp    ! a = 0.4 L: a node for N = 5 k
@@ -46,6 +46,7 @@ program test_section_tension_modes
    real(dp), parameter :: ei_1 = 60, rho_s_1 = 3, ei_2 = 15, rho_s_2 = 1.2_dp
    character(len=7), parameter :: bases(2) = ['hermite', 'bspline']
    real(dp) :: roots(2)
+   real(dp) :: current(4)   !! EI_1, rho S_1, EI_2, rho S_2 of the determinant being solved
    integer :: b
    ! the determinant against the uniform cantilever's roots
    roots = stepped_roots(ei_1, rho_s_1, ei_1, rho_s_1)
@@ -153,8 +154,8 @@ contains
       real(dp), intent(in) :: ei_right, rho_s_right
       real(dp) :: b_roots(2)
       b_roots = stepped_roots(ei_1, rho_s_1, ei_right, rho_s_right)
-      call convergence(basis//' stepped cantilever (EI '//trim(short(ei_1))//'/'//trim(short(ei_right))// &
-                       ', rho S '//trim(short(rho_s_1))//'/'//trim(short(rho_s_right))//')', &
+      call convergence(basis//' stepped cantilever (EI '//trim(four_digits(ei_1))//'/'//trim(four_digits(ei_right))// &
+                       ', rho S '//trim(four_digits(rho_s_1))//'/'//trim(four_digits(rho_s_right))//')', &
                        stepped_scene(basis, 20, ei_right, rho_s_right), b_roots**2*sqrt(ei_1/rho_s_1)/length**2, b_roots)
    end subroutine stepped
 
@@ -217,84 +218,48 @@ contains
       end do
    end subroutine string_limit
 
-   !> The first two roots b = beta_1 L of the stepped cantilever's transfer determinant.
+   !> The first two roots b = beta_1 L of the stepped cantilever's transfer determinant
+   !! (a scan of step 0.01 from 0.05, bisection to 4 eps: `scanned_roots`).
    function stepped_roots(ei_left, rho_s_left, ei_right, rho_s_right) result(roots)
       real(dp), intent(in) :: ei_left, rho_s_left, ei_right, rho_s_right
       real(dp) :: roots(2)
-      real(dp) :: low, high, middle, f_low
-      integer :: found, i
-      found = 0
-      low = 0.05_dp
-      f_low = stepped_determinant(low, ei_left, rho_s_left, ei_right, rho_s_right)
-      do i = 1, 3000
-         high = low + 0.01_dp
-         if ((stepped_determinant(high, ei_left, rho_s_left, ei_right, rho_s_right) > 0) .neqv. (f_low > 0)) then
-            do while (high - low > 4*epsilon(1.0_dp)*high)
-               middle = 0.5_dp*(low + high)
-               if ((stepped_determinant(middle, ei_left, rho_s_left, ei_right, rho_s_right) > 0) .eqv. (f_low > 0)) then
-                  low = middle
-               else
-                  high = middle
-               end if
-            end do
-            found = found + 1
-            roots(found) = 0.5_dp*(low + high)
-            if (found == 2) return
-         end if
-         low = high
-         f_low = stepped_determinant(low, ei_left, rho_s_left, ei_right, rho_s_right)
-      end do
-      error stop 'stepped_roots: fewer than two roots below b = 30'
+      current = [ei_left, rho_s_left, ei_right, rho_s_right]
+      roots = scanned_roots(stepped_at, 2, 0.05_dp, 0.01_dp, 30.0_dp)
    end function stepped_roots
+
+   !> The determinant of the sections of `stepped_roots` at b.
+   real(dp) function stepped_at(root)
+      real(dp), intent(in) :: root
+      stepped_at = stepped_determinant(root, current(1), current(2), current(3), current(4))
+   end function stepped_at
 
    !> The 8 x 8 determinant at b = beta_1 L (module documentation); each row divided by
    !! the power of beta its derivative carries, the moment and shear rows by EI_1.
    real(dp) function stepped_determinant(root, ei_left, rho_s_left, ei_right, rho_s_right) result(determinant)
-         real(dp), intent(in) :: root, ei_left, rho_s_left, ei_right, rho_s_right
-         real(dp) :: a(8, 8), beta_1, beta_2, ratio, lengths(2), ei_ratio
-         integer :: pivots(8), info, i
-         beta_1 = root/length
-         beta_2 = beta_1*(rho_s_right*ei_left/(rho_s_left*ei_right))**0.25_dp
-         ratio = beta_2/beta_1
-         ei_ratio = ei_right/ei_left
-         lengths = [step_at, length - step_at]
-         a = 0
-         a(1, 1:4) = basis_row(0.0_dp, 0)                 ! phi_1(0) = 0
-         a(2, 1:4) = basis_row(0.0_dp, 1)                 ! phi_1'(0) = 0
-         do i = 0, 3                                      ! phi, phi', EI phi'', EI phi''' at a
-            a(3 + i, 1:4) = basis_row(beta_1*lengths(1), i)
-            a(3 + i, 5:8) = -ratio**i*merge(ei_ratio, 1.0_dp, i >= 2)*basis_row(0.0_dp, i)
-         end do
-         a(7, 5:8) = basis_row(beta_2*lengths(2), 2)      ! phi_2''(L) = 0
-         a(8, 5:8) = basis_row(beta_2*lengths(2), 3)      ! phi_2'''(L) = 0
-         call dgetrf(8, 8, a, 8, pivots, info)
-         determinant = 1
-         do i = 1, 8
-            determinant = determinant*a(i, i)
-            if (pivots(i) /= i) determinant = -determinant
-         end do
+      real(dp), intent(in) :: root, ei_left, rho_s_left, ei_right, rho_s_right
+      real(dp) :: a(8, 8), beta_1, beta_2, ratio, lengths(2), ei_ratio
+      integer :: i
+      beta_1 = root/length
+      beta_2 = beta_1*(rho_s_right*ei_left/(rho_s_left*ei_right))**0.25_dp
+      ratio = beta_2/beta_1
+      ei_ratio = ei_right/ei_left
+      lengths = [step_at, length - step_at]
+      a = 0
+      a(1, 1:4) = wave_row(0.0_dp, 0)                 ! phi_1(0) = 0
+      a(2, 1:4) = wave_row(0.0_dp, 1)                 ! phi_1'(0) = 0
+      do i = 0, 3                                      ! phi, phi', EI phi'', EI phi''' at a
+         a(3 + i, 1:4) = wave_row(beta_1*lengths(1), i)
+         a(3 + i, 5:8) = -ratio**i*merge(ei_ratio, 1.0_dp, i >= 2)*wave_row(0.0_dp, i)
+      end do
+      a(7, 5:8) = wave_row(beta_2*lengths(2), 2)      ! phi_2''(L) = 0
+      a(8, 5:8) = wave_row(beta_2*lengths(2), 3)      ! phi_2'''(L) = 0
+      determinant = lu_determinant(a)
    end function stepped_determinant
 
-   !> The order-th derivatives of cosh, sinh, cos, sin at z, divided by beta^order.
-   pure function basis_row(z, order) result(row)
-      real(dp), intent(in) :: z
-      integer, intent(in) :: order
-      real(dp) :: row(4)
-      select case (order)
-      case (0)
-         row = [cosh(z), sinh(z), cos(z), sin(z)]
-      case (1)
-         row = [sinh(z), cosh(z), -sin(z), cos(z)]
-      case (2)
-         row = [cosh(z), sinh(z), -cos(z), -sin(z)]
-      case default
-         row = [sinh(z), cosh(z), sin(z), -cos(z)]
-      end select
-   end function basis_row
 
-   function short(value) result(text)
+   function four_digits(value) result(text)
       real(dp), intent(in) :: value
       character(len=12) :: text
       write (text, '(g0.4)') value
-   end function short
+   end function four_digits
 end program test_section_tension_modes

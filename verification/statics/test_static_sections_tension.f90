@@ -25,10 +25,8 @@ program test_static_sections_tension
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: integer_text
    use vibrobeam_scene, only: scene_type, section_settings, unset
-   use vibrobeam_problem, only: run_problem
-   use vibrobeam_model, only: nodal_displacement
-   use vibrobeam_static, only: solve_static, static_report
-   use vibrobeam_test_support, only: test_counter, prepare_test_scene
+   use vibrobeam_static, only: static_report
+   use vibrobeam_test_support, only: test_counter, static_deflection, gamma_n
    implicit none
    type(test_counter) :: t
    real(dp), parameter :: length = 0.8_dp, q = 3, step_at = 0.3_dp, ei_1 = 60, ei_2 = 15
@@ -42,11 +40,6 @@ program test_static_sections_tension
    call t%finish('test_static_sections_tension')
 
 contains
-
-   pure real(dp) function gamma_n(n)
-      integer, intent(in) :: n
-      gamma_n = n*0.5_dp*epsilon(1.0_dp)/(1 - n*0.5_dp*epsilon(1.0_dp))
-   end function gamma_n
 
    !> kind = 'static' under the uniform load f = -q, no obstacle.
    function static_scene(basis, elements) result(scene)
@@ -67,16 +60,10 @@ contains
       character(len=*), intent(in) :: label
       real(dp), allocatable, intent(out) :: w(:)
       type(static_report), intent(out) :: report
-      type(run_problem) :: prepared
-      real(dp), allocatable :: u(:), reaction(:)
-      integer :: iterations, stat
+      integer :: stat
       character(len=512) :: errmsg
-      call prepare_test_scene(scene, prepared)
-      allocate (u(prepared%model%unknowns), reaction(prepared%contacts%count))
-      call solve_static(prepared%model, prepared%contacts, prepared%loads%at(0.0_dp), u, reaction, iterations, stat, &
-                        errmsg, report=report)
+      call static_deflection(scene, w, report, stat, errmsg)
       call t%check_true(label//': the static solve succeeds (its a-posteriori check included)', stat == 0, trim(errmsg))
-      w = nodal_displacement(prepared%model, u)
    end subroutine solve
 
    !> The stepped cantilever at N elements (Hermite): every node to round-off.
