@@ -11,7 +11,7 @@ module vibrobeam_problem
    use vibrobeam_status, only: stat_failure, stat_numerical_failure
    use vibrobeam_text, only: real_text
    use vibrobeam_scene, only: scene_type, step_count, is_unset, structure_of, steps_in_time
-   use vibrobeam_scene_structure, only: support_warnings
+   use vibrobeam_scene_structure, only: off_node_warnings
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_obstacles, only: build_contact_points
@@ -75,7 +75,7 @@ contains
       call build_model(scene%mesh%basis, scene%mesh%elements, scene%beam%length, scene%beam%rho_s(), scene%beam%ei(), &
                        prepared%model, stat, errmsg, structure=structure_of(scene))
       if (stat /= 0) return
-      warnings = warnings//support_warnings(scene, prepared%model)
+      warnings = warnings//off_node_warnings(scene, prepared%model)
       call build_contact_points(scene%obstacles, prepared%model, prepared%contacts, warnings, stat, errmsg)
       if (stat /= 0) return
       call build_loads(scene%load, prepared%model, scene%beam%rho_s(), prepared%loads)

@@ -1,7 +1,7 @@
 !> Whether a scene may continue the checkpoint of an earlier result (docs/output.md,
 !! "Checkpoint and restart"; `&initial from_file`, and a sweep that starts from a file):
 !! the scene must match the file in its model (basis, elements, reduction, length, beam
-!! data, supports, springs and point masses), its time scheme (scheme, dt, theta, gamma) and its contact points (count and x);
+!! data, supports, springs, point masses, sections and axial force), its time scheme (scheme, dt, theta, gamma) and its contact points (count and x);
 !! a single run's continuation also in its compliant stops. Loads, restitution, rigid
 !! obstacle levels, a stop's damping and outputs may change. Reading the checkpoint itself
 !! is `vibrobeam_checkpoint`'s.
@@ -113,10 +113,10 @@ contains
       end do
    end subroutine compare_model
 
-   !> The supports, springs and point masses (&beam left_end, right_end and its springs,
-   !! &supports, &masses): listed only when given, so each is compared as resolved (the
-   !! ends clamped-free, the springs 0, the groups empty when absent), then element by
-   !! element.
+   !> The supports, springs, point masses, sections and axial force (&beam left_end,
+   !! right_end, its springs and axial_force, &supports, &masses, &sections): listed only
+   !! when given, so each is compared as resolved (the ends clamped-free, the springs and
+   !! the force 0, the groups empty when absent), then element by element.
    subroutine compare_structure(file, list, prefix, stat, errmsg)
       type(h5_reader), intent(in) :: file
       type(scene_entry), intent(in) :: list(:)
@@ -125,11 +125,11 @@ contains
       character(len=*), intent(out) :: errmsg
       character(len=*), parameter :: ends(2) = [character(len=9) :: 'left_end', 'right_end']
       character(len=*), parameter :: defaults(2) = [character(len=7) :: 'clamped', 'free']
-      character(len=*), parameter :: springs(4) = [character(len=23) :: 'left_spring', 'left_rotational_spring', &
-                                                   'right_spring', 'right_rotational_spring']
-      character(len=*), parameter :: groups(2) = [character(len=8) :: 'supports', 'masses']
-      character(len=*), parameter :: why = '; the supports, springs and point masses make the model''s unknowns, '// &
-                                           'stiffness and mass: they must match'
+      character(len=*), parameter :: springs(5) = [character(len=23) :: 'left_spring', 'left_rotational_spring', &
+                                                   'right_spring', 'right_rotational_spring', 'axial_force']
+      character(len=*), parameter :: groups(3) = [character(len=8) :: 'supports', 'masses', 'sections']
+      character(len=*), parameter :: why = '; the supports, springs, point masses, sections and axial force make '// &
+                                           'the model''s unknowns, stiffness and mass: they must match'
       character(len=:), allocatable :: in_file, in_scene, name
       real(dp) :: file_value, scene_value
       integer(int64) :: file_count, scene_count
@@ -150,7 +150,7 @@ contains
             return
          end if
       end do
-      do k = 1, 4
+      do k = 1, size(springs)
          name = 'beam.'//trim(springs(k))
          file_value = 0
          if (file%has_attr('/', name)) call file%attr_real('/', name, file_value, stat, errmsg)
@@ -164,7 +164,7 @@ contains
             return
          end if
       end do
-      do k = 1, 2
+      do k = 1, size(groups)
          name = trim(groups(k))//'.count'
          file_count = 0
          if (file%has_attr('/', name)) call file%attr_int64('/', name, file_count, stat, errmsg)

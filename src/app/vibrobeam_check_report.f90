@@ -14,7 +14,8 @@
 !!   own, `vibrobeam_sweep_check`);
 !! - for each compliant stop, its contact time scale T_c = pi sqrt(m_eff/(k + k_b)) against
 !!   dt (docs/theory.md section 8, "Resolution"): k_b = 3EI/x^3 is the beam's static
-!!   stiffness at the stop's position x (a clamped-free beam loaded at x), k the stop's
+!!   stiffness at the stop's position x (a clamped-free beam loaded at x; with a tension
+!!   T, plus a string's T L/(x (L - x))), k the stop's
 !!   stiffness (a longitudinal one's total, at its middle), m_eff = k_b/omega_1^2 the mass
 !!   that makes the beam at x a one-degree-of-freedom oscillator of mode 1's frequency.
 !!
@@ -123,6 +124,8 @@ contains
          if (size(scene%masses) > 0) what = what//' with '//integer_text(size(scene%masses))//' point mass'// &
                                             trim(merge('es', '  ', size(scene%masses) > 1))
       end if
+      if (scene%beam%sectioned()) what = what//' of '//integer_text(size(scene%beam%sections))//' sections'
+      if (abs(scene%beam%tension()) > 0) what = what//' under the axial force T = '//g(scene%beam%tension())//' N'
       if (report%closed_form) then
          text = 'natural frequencies of '//what//' (continuum closed form; the obstacles are ignored):'//new_line('a')
       else
@@ -222,8 +225,11 @@ contains
          if (x <= 0) return
          k = o%stiffness
          if (o%x_to - o%x_from > 1e-9_dp*scene%beam%length/scene%mesh%elements) k = k*(o%x_to - o%x_from)
-         ! ei() is k2 = EI/(rho S) when the beam is given by k2: then per unit rho S, like k
+         ! ei() is k2 = EI/(rho S) when the beam is given by k2: then per unit rho S, like k;
+         ! a tension adds a string's stiffness T L/(x (L - x)) between held ends
          beam_stiffness = 3*scene%beam%ei()/x**3
+         if (scene%beam%tension() > 0 .and. x < scene%beam%length) beam_stiffness = beam_stiffness + &
+            scene%beam%tension()*scene%beam%length/(x*(scene%beam%length - x))
          call scene_frequencies(scene, omega, first)
          if (first == 0) return
          omega1 = omega(first)
@@ -317,6 +323,11 @@ contains
       length = scene%beam%length
       a = scene%load%point_position
       deflection = abs(scene%load%distributed)*length**4/(8*ei) + abs(scene%load%point_force)*a**2*(3*length - a)/(6*ei)
+      ! a tension T stiffens it like a string in parallel: q L^2/(8 T) at midspan, F a (L - a)/(T L) under F
+      if (scene%beam%tension() > 0 .and. deflection > 0) &
+         deflection = 1/(1/deflection + 1/((abs(scene%load%distributed)*length**2/8 + &
+                                            abs(scene%load%point_force)*max(a*(length - a)/length, length/4))/ &
+                                           scene%beam%tension()))
       if (first > 0) call consider(deflection*omega(first), &
                     'a free oscillation in mode '//integer_text(first)//' with the static tip deflection under the loads ('// &
                     g(deflection)//' m) as amplitude (a resonant load moves faster)')
@@ -337,7 +348,8 @@ contains
    !! of every pair of end supports are spaced by pi to within exp(-b_n) (theory §7; for
    !! the clamped-free beam b_n = (2n - 1) pi/2), which gives the count without evaluating
    !! cosh of large arguments; for other structures the spacing is the continuum's
-   !! asymptote, so the count is an estimate.
+   !! asymptote, so the count is an estimate (with an axial force, b_n = beta_n L of
+   !! `wave_root`, the pinned-pinned beam's n pi).
    integer function resolved_modes(scene, report)
       type(scene_type), intent(in) :: scene
       type(check_report), intent(in) :: report
@@ -353,12 +365,12 @@ contains
          resolved_modes = n
       end do
       if (resolved_modes < listed_modes) return
-      b_limit = sqrt(omega_limit*scene%beam%length**2/sqrt(k2_of(scene)))
+      b_limit = wave_root(scene, omega_limit)
       if (supports%is_clamped_free() .and. report%closed_form) then
          ! omega_n = ((2n - 1) pi/2)^2 sqrt(k2)/L^2 <= omega_limit
          count = ((2/pi)*b_limit + 1)/2
       else
-         b_last = sqrt(report%omega(listed_modes)*scene%beam%length**2/sqrt(k2_of(scene)))
+         b_last = wave_root(scene, report%omega(listed_modes))
          count = listed_modes + (b_limit - b_last)/pi
       end if
       resolved_modes = int(min(real(unknowns, dp), max(real(listed_modes, dp), aint(count))))
@@ -380,9 +392,20 @@ contains
       end if
    end function resolved_text
 
-   !> k2 = EI/(rho S) (m^4/s^2).
-   pure real(dp) function k2_of(scene)
+   !> b = beta L of a frequency omega (rad/s) on the scene's beam, beta the root of
+   !! k2 beta^4 + (T/rho S) beta^2 = omega^2 (theory §1, "Axial force"; b = sqrt(omega L^2/
+   !! sqrt(k2)) without tension), beta^2 in the form 2 omega^2/(c^2 + sqrt(c^4 + 4 k2
+   !! omega^2)), c^2 = T/rho S, which loses no digits as k2 -> 0 (a string).
+   pure real(dp) function wave_root(scene, omega)
       type(scene_type), intent(in) :: scene
-      k2_of = scene%beam%ei()/scene%beam%rho_s()
-   end function k2_of
+      real(dp), intent(in) :: omega
+      real(dp) :: k2, c2
+      k2 = scene%beam%ei()/scene%beam%rho_s()
+      c2 = scene%beam%tension()/scene%beam%rho_s()
+      if (abs(c2) > 0) then
+         wave_root = sqrt(2*omega**2/(c2 + sqrt(c2**2 + 4*k2*omega**2)))*scene%beam%length
+      else
+         wave_root = sqrt(omega*scene%beam%length**2/sqrt(k2))
+      end if
+   end function wave_root
 end module vibrobeam_check_report

@@ -9,12 +9,14 @@ module vibrobeam_beam_settings
    use vibrobeam_namelist_schema, only: namelist_variable
    use vibrobeam_frequency_twins, only: hertz_twin
    use vibrobeam_modal_damping, only: max_damped_modes
+   use vibrobeam_section_settings, only: section_settings
    implicit none
    private
    public :: beam_settings, mesh_settings, visit_beam, visit_mesh
 
    !> &beam: the beam's length, stiffness and mass (by E, rho, S, I, or by k2 = EI/(rho S)
-   !! alone, per unit mass), its end supports and end springs, and its Rayleigh damping.
+   !! alone, per unit mass, or section by section: &sections), its end supports and end
+   !! springs, its axial force, and its Rayleigh damping.
    type :: beam_settings
       real(dp) :: length = 1                  !! L (m)
       real(dp) :: k2 = 1                      !! EI/(rho S) (m^4/s^2)
@@ -36,10 +38,18 @@ module vibrobeam_beam_settings
       !! that the results of a scene without them keep their attributes)
       real(dp) :: left_spring = unset, left_rotational_spring = unset
       real(dp) :: right_spring = unset, right_rotational_spring = unset
+      !> axial force T (N, positive in tension; per unit rho S when the beam is given by
+      !! k2); unset: none (listed only when given)
+      real(dp) :: axial_force = unset
+      !> the sections of a non-uniform beam (&sections, `vibrobeam_section_settings`; its
+      !! own group, visited by the scene): empty or unallocated for a uniform beam
+      type(section_settings), allocatable :: sections(:)
    contains
-      procedure :: physical                   !! given by E, rho, S, I?
+      procedure :: physical                   !! given by E, rho, S, I (or by sections)?
+      procedure :: sectioned                  !! given by sections?
       procedure :: rho_s                      !! mass per unit length (kg/m)
       procedure :: ei                         !! bending stiffness (N m^2)
+      procedure :: tension                    !! the axial force (N; 0 when not given)
       procedure :: supports                   !! the end supports and springs, resolved
       procedure :: modal                      !! is any damping per mode given?
    end type beam_settings
@@ -97,6 +107,9 @@ contains
       call visitor%variable(real_row('beam', 'right_rotational_spring', 'N m/rad', 0.0_dp, 1e30_dp, &
                                      'rotational spring at x = L (default none)', optional=.true.), &
                             beam%right_rotational_spring)
+      call visitor%variable(real_row('beam', 'axial_force', 'N', -1e20_dp, 1e20_dp, &
+                                     'axial force T, positive in tension (default 0)', optional=.true.), &
+                            beam%axial_force)
    end subroutine visit_beam
 
    !> Every variable of &mesh, once (docs/input.md, "&mesh"); the cut-off also in Hz, its
@@ -120,25 +133,70 @@ contains
                             mesh%reduction_modes)
    end subroutine visit_mesh
 
-   !> True when the beam is given by E, rho, S, I (then k2 = EI/(rho S)).
+   !> True when the beam is given by E, rho, S, I, or by sections (then k2 = EI/(rho S)).
    pure logical function physical(self)
       class(beam_settings), intent(in) :: self
-      physical = .not. all(is_unset([self%youngs_modulus, self%density, self%area, self%inertia]))
+      physical = self%sectioned() .or. .not. all(is_unset([self%youngs_modulus, self%density, self%area, self%inertia]))
    end function physical
 
-   !> Mass per unit length rho S (kg/m); 1 when the beam is given by k2.
+   !> True when the beam is given section by section (&sections; &beam's E, rho, S, I and
+   !! k2 are then not used).
+   pure logical function sectioned(self)
+      class(beam_settings), intent(in) :: self
+      sectioned = .false.
+      if (allocated(self%sections)) sectioned = size(self%sections) > 0
+   end function sectioned
+
+   !> Mass per unit length rho S (kg/m); 1 when the beam is given by k2; the mean over the
+   !! length of a beam of sections (sum of rho_i S_i times each section's length, over L).
    pure real(dp) function rho_s(self)
       class(beam_settings), intent(in) :: self
-      rho_s = 1
-      if (self%physical()) rho_s = self%density*self%area
+      if (self%sectioned()) then
+         rho_s = length_mean(self, self%sections%rho_s())
+      else if (self%physical()) then
+         rho_s = self%density*self%area
+      else
+         rho_s = 1
+      end if
    end function rho_s
 
-   !> Bending stiffness E I (N m^2); k2 when the beam is given by k2.
+   !> Bending stiffness E I (N m^2); k2 when the beam is given by k2; the mean over the
+   !! length of a beam of sections.
    pure real(dp) function ei(self)
       class(beam_settings), intent(in) :: self
-      ei = self%k2
-      if (self%physical()) ei = self%youngs_modulus*self%inertia
+      if (self%sectioned()) then
+         ei = length_mean(self, self%sections%ei())
+      else if (self%physical()) then
+         ei = self%youngs_modulus*self%inertia
+      else
+         ei = self%k2
+      end if
    end function ei
+
+   !> The mean over [0, L] of a value given per section (section i from the previous
+   !! one's end, or 0, to its x_to; the last to L): sum_i value_i (x_i - x_(i-1))/L.
+   pure real(dp) function length_mean(beam, values)
+      type(beam_settings), intent(in) :: beam
+      real(dp), intent(in) :: values(:)   !! one per section
+      real(dp) :: start, finish
+      integer :: i
+      length_mean = 0
+      start = 0
+      do i = 1, size(values)
+         finish = merge(beam%length, beam%sections(i)%x_to, i == size(values))
+         length_mean = length_mean + values(i)*(finish - start)
+         start = finish
+      end do
+      length_mean = length_mean/beam%length
+   end function length_mean
+
+   !> The axial force T (N, positive in tension; per unit rho S when the beam is given by
+   !! k2); 0 when not given.
+   pure real(dp) function tension(self)
+      class(beam_settings), intent(in) :: self
+      tension = 0
+      if (.not. is_unset(self%axial_force)) tension = self%axial_force
+   end function tension
 
    !> The end supports and end springs of the beam (docs/input.md, "&beam"): left_end and
    !! right_end, clamped and free when not given; a spring not given is none.

@@ -15,7 +15,7 @@ module vibrobeam_forces
    use vibrobeam_text, only: real_text, integer_text, short_text
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, text_row, unset, &
       is_unset, unset_integer, keyword_length, path_length
-   use vibrobeam_model, only: beam_model, point_load_vector, load_vector, unit_profile
+   use vibrobeam_model, only: beam_model, point_load_vector, load_vector, unit_profile, add_inertial_excess
    use vibrobeam_table_file, only: linear_table, read_table
    use vibrobeam_namelist_scanned, only: scanned_file
    use vibrobeam_namelist_schema, only: namelist_variable
@@ -350,12 +350,10 @@ contains
                call set_slice(term%channel(1), point_load_vector(model, merge(model%length, f%position, &
                                                                                is_unset(f%position))))
             case ('base')
-               ! the support's acceleration loads rho S and each point mass m_k (&masses)
+               ! the support's acceleration loads rho S (each section's) and each point mass
+               ! m_k (&masses)
                base = load_vector(model, unit_profile)
-               do k = 1, model%structure%masses()
-                  base = base + model%structure%mass_value(k)/rho_s*point_load_vector(model, &
-                                                                                     model%structure%mass_position(k))
-               end do
+               call add_inertial_excess(model, rho_s, base)
                call set_slice(term%channel(1), base)
                term%load_factor = -rho_s
             case default   ! distributed

@@ -5,8 +5,8 @@
 !! consistent load vector of a unit uniform load, F_p that of a unit point force, q(t) =
 !! distributed cos(Omega t + phi) and P(t) = point_force cos(Omega_p t). The last term is
 !! base excitation: in the frame of the support s(t) = A sin(Omega_b t) the beam feels the
-!! inertial load -rho S s''(t), and each point mass m_k (&masses) the point force
-!! -m_k s''(t) at x_k. Displacements are then relative to the support, and the obstacles
+!! inertial load -rho S s''(t) (the rho S of each section on a beam of &sections), and
+!! each point mass m_k (&masses) the point force -m_k s''(t) at x_k. Displacements are then relative to the support, and the obstacles
 !! move with the support (they are fixed in its frame).
 !!
 !! The loads of &forces (`vibrobeam_forces`: any number of point, distributed and base
@@ -15,7 +15,7 @@
 !! velocity scheme adds it at V^n.
 module vibrobeam_loads
    use vibrobeam_kinds, only: dp
-   use vibrobeam_model, only: beam_model, load_vector, point_load_vector, unit_profile
+   use vibrobeam_model, only: beam_model, load_vector, point_load_vector, unit_profile, add_inertial_excess
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, unset, is_unset
    use vibrobeam_namelist_schema, only: namelist_variable
    use vibrobeam_frequency_twins, only: hertz_twin
@@ -46,8 +46,9 @@ module vibrobeam_loads
       real(dp) :: point_force = 0, point_frequency = 0
       real(dp) :: base_load = 0              !! rho S A Omega_b^2 (N/m)
       real(dp) :: base_frequency = 0
-      !> the point masses' share of the base excitation per unit base_load: sum_k (m_k/rho S)
-      !! phi(x_k) (m; J), when the beam carries point masses (`masses`)
+      !> the share of the base excitation per unit base_load beyond rho S F_q: the point
+      !! masses' sum_k (m_k/rho S) phi(x_k) and the sections' int (rho S(x)/rho S - 1) phi
+      !! (m; J; `add_inertial_excess`), when the beam carries masses or sections (`masses`)
       logical :: masses = .false.
       real(dp), allocatable :: mass_points(:)
       type(force_set) :: forces              !! the loads of &forces
@@ -103,14 +104,13 @@ contains
    end function base_load_amplitude
 
    !> The loads of &load on the model (module documentation): the uniform load, the point
-   !! force and the base excitation, whose inertial load acts on rho S and on the point
-   !! masses of the model's structure.
+   !! force and the base excitation, whose inertial load acts on rho S (each section's) and
+   !! on the point masses of the model's structure.
    subroutine build_loads(load, model, rho_s, loads)
       type(load_settings), intent(in) :: load
       type(beam_model), intent(in) :: model
       real(dp), intent(in) :: rho_s
       type(load_set), intent(out) :: loads
-      integer :: k
       loads%distributed = load%distributed
       loads%distributed_frequency = load%distributed_frequency
       loads%distributed_phase = load%distributed_phase
@@ -124,13 +124,11 @@ contains
       loads%base_frequency = load%base_frequency
       loads%present = abs(loads%distributed) > 0 .or. abs(loads%point_force) > 0 .or. abs(loads%base_load) > 0
       loads%uniform = load_vector(model, unit_profile)
-      ! the base's inertial load acts on the point masses too: -m_k s''(t) at x_k
-      loads%masses = model%structure%masses() > 0
+      ! the base's inertial load acts on the point masses too, -m_k s''(t) at x_k, and on the
+      ! sections' rho S beyond rho_s
       allocate (loads%mass_points(model%unknowns), source=0.0_dp)
-      do k = 1, model%structure%masses()
-         loads%mass_points = loads%mass_points + model%structure%mass_value(k)/rho_s* &
-                             point_load_vector(model, model%structure%mass_position(k))
-      end do
+      call add_inertial_excess(model, rho_s, loads%mass_points)
+      loads%masses = model%structure%masses() > 0 .or. any(abs(model%element_rho_s - rho_s) > 0)
       if (abs(loads%point_force) > 0) then
          ! the default position, the tip, when a scene built in code leaves it unset
          loads%point = point_load_vector(model, merge(model%length, load%point_position, is_unset(load%point_position)))

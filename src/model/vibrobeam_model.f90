@@ -29,6 +29,7 @@ module vibrobeam_model
    private
    public :: beam_model, build_model, point_row, node_row, nodal_displacement
    public :: load_vector, point_load_vector, interpolate_field, space_profile, unit_profile, energy_integrals
+   public :: add_inertial_excess
    public :: rigid_motions, flexibility_applies, gauss_points, gauss_weights
 
    integer, parameter :: bandwidth = 3   !! sub-diagonals of M and K for both bases
@@ -106,13 +107,15 @@ contains
       model%rho_s = rho_s
       model%ei = ei
       model%x = [(length*i/elements, i=0, elements)]
-      if (model%structure%has_sections()) then
-         model%element_rho_s = model%structure%element_rho_s
-         model%element_ei = model%structure%element_ei
-         model%uniform = all(abs(model%element_rho_s - rho_s) <= 0) .and. all(abs(model%element_ei - ei) <= 0)
-      else
-         allocate (model%element_rho_s(elements), source=rho_s)
-         allocate (model%element_ei(elements), source=ei)
+      ! a beam whose sections all agree is uniform, with their rho S and EI (the fast paths
+      ! then apply); otherwise rho_s and ei stay the values given (scales, the scene's
+      ! length-weighted means)
+      call model%structure%element_properties(elements, length, rho_s, ei, model%element_rho_s, model%element_ei)
+      model%uniform = all(abs(model%element_rho_s - model%element_rho_s(1)) <= 0) .and. &
+                      all(abs(model%element_ei - model%element_ei(1)) <= 0)
+      if (model%uniform) then
+         model%rho_s = model%element_rho_s(1)
+         model%ei = model%element_ei(1)
       end if
       tension = model%structure%axial_force
       select case (basis)
@@ -197,10 +200,12 @@ contains
    end subroutine build_model
 
    !> B-splines refuse a point moment inside the beam (a rotational spring of a support,
-   !! the rotary inertia of a mass away from the ends): it makes u'' jump at its point,
-   !! which a C^2 spline cannot follow (the frequencies then converge like h, not h^4;
-   !! measured: 3.6e-3 at N = 32 for a rotational spring support, theory §2). Hermite
-   !! elements are C^1 and take it. stat = stat_failure with a message naming the input.
+   !! the rotary inertia of a mass away from the ends) and a jump of EI between sections:
+   !! each makes u'' jump at its point, which a C^2 spline cannot follow (the frequencies
+   !! then converge like h, not h^4; measured: 3.6e-3 at N = 32 for a rotational spring
+   !! support, 4.1e-3 at N = 40 for EI stepping by 4, theory §2). Hermite elements are C^1
+   !! and take it; a step of rho S alone leaves u'' continuous and B-splines take it.
+   !! stat = stat_failure with a message naming the input.
    subroutine check_point_moments(model, stat, errmsg)
       type(beam_model), intent(in) :: model
       integer, intent(out) :: stat
@@ -212,6 +217,15 @@ contains
       errmsg = ''
       if (model%hermite) return
       associate (st => model%structure)
+         do k = 1, st%sections() - 1
+            if (abs(st%section_ei(k + 1) - st%section_ei(k)) > 0) then
+               stat = stat_failure
+               errmsg = '&sections youngs_modulus and inertia of sections '//integer_text(k)//' and '// &
+                        integer_text(k + 1)//': their EI differ ('//real_text(st%section_ei(k))//' and '// &
+                        real_text(st%section_ei(k + 1))//' N m^2); a jump of EI at x_to('//integer_text(k)//')'//why
+               return
+            end if
+         end do
          do k = 1, st%supports()
             if (st%support_rotational_stiffness(k) > 0) then
                stat = stat_failure
@@ -508,16 +522,21 @@ contains
    !! 4-point Gauss quadrature per element (exact for profiles of degree <= 4); with
    !! `x_from` and `x_to` (m) the integral over that segment only, the rule then applied to
    !! the part of each element inside it (an element the segment covers whole takes the
-   !! same points as without a segment, so a segment [0, L] gives the same bits).
-   function load_vector(model, profile, x_from, x_to) result(f)
+   !! same points as without a segment, so a segment [0, L] gives the same bits); with
+   !! `element_factor` (N) the profile times factor(e) on element e.
+   function load_vector(model, profile, x_from, x_to, element_factor) result(f)
       type(beam_model), intent(in) :: model
       procedure(space_profile) :: profile
       real(dp), intent(in), optional :: x_from, x_to
+      real(dp), intent(in), optional :: element_factor(:)
       real(dp) :: f(model%unknowns)
       integer :: e, g, dofs(4), a
       real(dp) :: n(4), x, start, width
       f = 0
       do e = 1, model%elements
+         if (present(element_factor)) then
+            if (.not. abs(element_factor(e)) > 0) cycle
+         end if
          start = model%x(e)
          width = model%h
          if (present(x_from) .and. present(x_to)) then
@@ -530,12 +549,29 @@ contains
          do g = 1, 4
             x = start + gauss_points(g)*width
             call element_functions(model, e, x, 0, dofs, n)
+            if (present(element_factor)) n = element_factor(e)*n
             do a = 1, 4
                if (dofs(a) /= 0) f(dofs(a)) = f(dofs(a)) + gauss_weights(g)*width*profile(x)*n(a)
             end do
          end do
       end do
    end function load_vector
+
+   !> vector += the base excitation's inertial load beyond that of a uniform rho_s (theory
+   !! §1, "Base excitation"; per unit of the support's acceleration and of rho_s): each point
+   !! mass's m_k/rho_s phi(x_k), then on a beam of sections int (rho S(x)/rho_s - 1) phi dx.
+   !! With the uniform load vector (`unit_profile`) it makes int rho S phi/rho_s + the masses.
+   subroutine add_inertial_excess(model, rho_s, vector)
+      type(beam_model), intent(in) :: model
+      real(dp), intent(in) :: rho_s          !! the load's rho S (kg/m)
+      real(dp), intent(inout) :: vector(:)   !! (J)
+      integer :: k
+      do k = 1, model%structure%masses()
+         vector = vector + model%structure%mass_value(k)/rho_s*point_load_vector(model, model%structure%mass_position(k))
+      end do
+      if (any(abs(model%element_rho_s - rho_s) > 0)) &
+         vector = vector + load_vector(model, unit_profile, element_factor=model%element_rho_s/rho_s - 1)
+   end subroutine add_inertial_excess
 
    !> The profile of a uniform load: 1 along the whole beam.
    pure function unit_profile(x) result(value)

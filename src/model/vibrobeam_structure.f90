@@ -1,10 +1,11 @@
-!> What a beam carries beyond a uniform bending stiffness and mass (theory §1, "Supports"
-!! and "Point masses"): its end supports and end springs, intermediate supports, point
-!! masses, piecewise-constant sections and an axial force, as `build_model` takes them
-!! (positions in m, independent of the mesh: `build_model` puts each intermediate support
-!! on its nearest node; values in the model's units: N, kg, N m^2 and kg/m, or per unit
-!! rho S when the beam is given by k2). The scene turns the input (&beam, &supports,
-!! &masses, docs/input.md) into this.
+!> What a beam carries beyond a uniform bending stiffness and mass (theory §1, "Supports",
+!! "Point masses", "Sections" and "Axial force"): its end supports and end springs,
+!! intermediate supports, point masses, piecewise-constant sections and an axial force, as
+!! `build_model` takes them (positions in m, independent of the mesh: `build_model` puts
+!! each intermediate support and each section end on its nearest node; values in the
+!! model's units: N, kg, N m^2 and kg/m, or per unit rho S when the beam is given by k2).
+!! The scene turns the input (&beam, &supports, &masses, &sections, docs/input.md) into
+!! this.
 module vibrobeam_structure
    use vibrobeam_kinds, only: dp
    use vibrobeam_boundary, only: boundary_conditions
@@ -28,13 +29,18 @@ module vibrobeam_structure
       real(dp), allocatable :: support_stiffness(:), support_rotational_stiffness(:)
       !> point masses: position (m), mass (kg) and rotary inertia (kg m^2)
       real(dp), allocatable :: mass_position(:), mass_value(:), mass_rotary_inertia(:)
-      !> rho S (kg/m) and EI (N m^2) of each element (N): a beam of sections; unallocated:
-      !! uniform, the values given to `build_model`
-      real(dp), allocatable :: element_rho_s(:), element_ei(:)
+      !> sections of piecewise-constant rho S (kg/m) and EI (N m^2): section i ends at
+      !! section_end(i) (m, increasing, the last at L; `build_model` moves each end to its
+      !! nearest node) and begins where section i - 1 ends (at 0 for the first); unallocated
+      !! or empty: uniform, the values given to `build_model`
+      real(dp), allocatable :: section_end(:), section_rho_s(:), section_ei(:)
    contains
       procedure :: supports => structure_supports
       procedure :: masses => structure_masses
       procedure :: has_sections
+      procedure :: sections => structure_sections
+      procedure :: section_nodes
+      procedure :: element_properties
       procedure :: rigid_motions => structure_rigid_motions
       procedure :: held_count => structure_held_count
       procedure :: has_closed_form => structure_has_closed_form
@@ -136,9 +142,51 @@ contains
                                   .not. abs(self%axial_force) > 0
    end function structure_has_closed_form
 
-   !> Are rho S and EI given element by element?
+   !> Are rho S and EI given section by section?
    pure logical function has_sections(self)
       class(beam_structure), intent(in) :: self
-      has_sections = allocated(self%element_ei)
+      has_sections = self%sections() > 0
    end function has_sections
+
+   !> The node (0..N) where each section ends on a mesh of N elements of [0, L]: the one
+   !! nearest its end, the last section's at N (its end is L). Section i spans the elements
+   !! section_nodes(i - 1) + 1 .. section_nodes(i) (none when the two ends share a node).
+   pure function section_nodes(self, elements, length) result(nodes)
+      class(beam_structure), intent(in) :: self
+      integer, intent(in) :: elements   !! N
+      real(dp), intent(in) :: length    !! L (m)
+      integer :: nodes(self%sections())
+      integer :: i
+      do i = 1, self%sections()
+         nodes(i) = min(elements, max(0, nint(self%section_end(i)/length*elements)))
+      end do
+      if (self%sections() > 0) nodes(self%sections()) = elements
+   end function section_nodes
+
+   !> rho S (kg/m) and EI (N m^2) of each of N elements of [0, L]: section i on the
+   !! elements between the nodes nearest its ends (`section_nodes`); `rho_s` and `ei` on
+   !! every element of a beam without sections.
+   pure subroutine element_properties(self, elements, length, rho_s, ei, element_rho_s, element_ei)
+      class(beam_structure), intent(in) :: self
+      integer, intent(in) :: elements                   !! N
+      real(dp), intent(in) :: length, rho_s, ei         !! L (m), the uniform beam's rho S and EI
+      real(dp), allocatable, intent(out) :: element_rho_s(:), element_ei(:)   !! (N)
+      integer :: nodes(self%sections()), i, first
+      allocate (element_rho_s(elements), source=rho_s)
+      allocate (element_ei(elements), source=ei)
+      nodes = self%section_nodes(elements, length)
+      first = 1
+      do i = 1, size(nodes)
+         element_rho_s(first:nodes(i)) = self%section_rho_s(i)
+         element_ei(first:nodes(i)) = self%section_ei(i)
+         first = max(first, nodes(i) + 1)
+      end do
+   end subroutine element_properties
+
+   !> Number of sections (0: a uniform beam).
+   pure integer function structure_sections(self)
+      class(beam_structure), intent(in) :: self
+      structure_sections = 0
+      if (allocated(self%section_end)) structure_sections = size(self%section_end)
+   end function structure_sections
 end module vibrobeam_structure

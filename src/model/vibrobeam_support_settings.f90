@@ -95,8 +95,8 @@ contains
       end subroutine visit_one
    end subroutine visit_masses
 
-   !> The structure `build_model` takes (`vibrobeam_structure`) from &beam's supports and
-   !! springs, &supports and &masses as given.
+   !> The structure `build_model` takes (`vibrobeam_structure`) from &beam's supports,
+   !! springs, axial force and sections (&sections), &supports and &masses as given.
    pure function structure_from(beam, supports, masses) result(structure)
       type(beam_settings), intent(in) :: beam
       type(support_settings), intent(in) :: supports(:)
@@ -104,6 +104,14 @@ contains
       type(beam_structure) :: structure
       integer :: i
       structure%boundary = beam%supports()
+      structure%axial_force = beam%tension()
+      if (beam%sectioned()) then
+         allocate (structure%section_end(size(beam%sections)), structure%section_rho_s(size(beam%sections)), &
+                   structure%section_ei(size(beam%sections)))
+         structure%section_end(:) = beam%sections%x_to
+         structure%section_rho_s(:) = beam%sections%rho_s()
+         structure%section_ei(:) = beam%sections%ei()
+      end if
       allocate (structure%support_x(size(supports)), structure%support_kind(size(supports)), &
                 structure%support_stiffness(size(supports)), structure%support_rotational_stiffness(size(supports)))
       do i = 1, size(supports)

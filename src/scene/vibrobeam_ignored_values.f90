@@ -45,7 +45,7 @@ contains
    !> What the kind of analysis does not use: the modes' count, whole groups, &periodic
    !! outside kind = 'periodic' and t_end (and a dt that steps_per_period sets) inside it,
    !! damping outside the analyses that step in time, histories outside dynamics, the
-   !! reduction; and k2 beside the beam's data.
+   !! reduction; and k2 beside the beam's data, the beam's data beside &sections.
    subroutine analysis_warnings(scanned, scene, warnings)
       type(scanned_file), intent(in) :: scanned
       type(scene_type), intent(in) :: scene
@@ -53,6 +53,8 @@ contains
       character(len=*), parameter :: unused_by_modes(8) = [character(len=9) :: 'obstacles', 'impact', 'time', &
                                                             'initial', 'load', 'forces', 'flow', 'solver']
       character(len=*), parameter :: unused_by_static(3) = [character(len=9) :: 'impact', 'time', 'initial']
+      character(len=*), parameter :: beam_data(4) = [character(len=14) :: 'youngs_modulus', 'density', 'area', &
+                                                     'inertia']
       character(len=:), allocatable :: kind_reason, item
       integer :: k
       kind_reason = 'kind = '''//trim(scene%analysis%kind)//''''
@@ -65,6 +67,14 @@ contains
           scanned%is_given('beam', 'density') .or. scanned%is_given('beam', 'area') .or. &
           scanned%is_given('beam', 'inertia'))) &
          call add(warnings, '&beam k2 is ignored: youngs_modulus, density, area and inertia are given (k2 = EI/(rho S))')
+      ! a beam of sections takes its data from them (they cover the whole beam)
+      if (scene%beam%sectioned()) then
+         do k = 1, size(beam_data)
+            if (scanned%is_given('beam', trim(beam_data(k)))) &
+               call add(warnings, '&beam '//trim(beam_data(k))//' is ignored: the beam is given by its '// &
+                        integer_text(size(scene%beam%sections))//' &sections, which cover it whole')
+         end do
+      end if
       select case (scene%analysis%kind)
       case ('modes')
          do k = 1, size(unused_by_modes)

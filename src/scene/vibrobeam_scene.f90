@@ -35,6 +35,8 @@ module vibrobeam_scene
    use vibrobeam_obstacles, only: obstacle_type, max_obstacles, visit_obstacles
    use vibrobeam_support_settings, only: support_settings, mass_settings, visit_supports, visit_masses, &
       max_supports, max_masses, structure_from
+   use vibrobeam_section_settings, only: section_settings, visit_sections, check_sections, max_sections
+   use vibrobeam_buckling, only: check_compression
    use vibrobeam_initial_state, only: initial_settings, visit_initial
    use vibrobeam_loads, only: load_settings, visit_load
    use vibrobeam_forces, only: forces_settings, visit_forces, check_forces, max_forces
@@ -51,6 +53,7 @@ module vibrobeam_scene
    public :: scene_variables, path_length, keyword_length, max_steps, step_count
    public :: forcing_of, max_sweep_values, parameter_length, sync_frequency_twins, max_forces
    public :: support_settings, mass_settings, max_supports, max_masses, held_conditions, structure_of
+   public :: section_settings, max_sections
    public :: steps_in_time, forcing_period_steps
 
    !> Most time steps of a run: nint(t_end/dt) must fit a 64-bit count with room to spare.
@@ -85,21 +88,23 @@ module vibrobeam_scene
 contains
 
    !> Every variable of the scene, group by group in the order of docs/input.md.
-   !! `obstacle_count`, `support_count`, `mass_count`, `force_count` (the reader's): the
-   !! counts read, when the scene's arrays hold room for the most a file may give;
-   !! otherwise each count is the size of its array (&supports and &masses: not listed when
-   !! 0, so that a scene without them keeps the listing of earlier versions). &periodic
+   !! `obstacle_count`, `support_count`, `mass_count`, `section_count`, `force_count` (the
+   !! reader's): the counts read, when the scene's arrays hold room for the most a file may
+   !! give; otherwise each count is the size of its array (&supports, &masses and
+   !! &sections: not listed when 0, so that a scene without them keeps the listing of
+   !! earlier versions; the sections are the beam's, `beam_settings%sections`). &periodic
    !! belongs to kind = 'periodic' and is visited only in a scene of that kind (after
    !! &analysis, so a reader has read the kind by then): the results of the other kinds do
    !! not list it, and `scene_variables` takes its rows from a scene of that kind.
-   subroutine visit_scene(scene, visitor, obstacle_count, support_count, mass_count, force_count)
+   subroutine visit_scene(scene, visitor, obstacle_count, support_count, mass_count, force_count, section_count)
       type(scene_type), intent(inout) :: scene
       class(schema_visitor), intent(inout) :: visitor
-      integer, intent(inout), optional :: obstacle_count, support_count, mass_count, force_count
+      integer, intent(inout), optional :: obstacle_count, support_count, mass_count, force_count, section_count
       integer :: count
       if (.not. allocated(scene%obstacles)) allocate (scene%obstacles(0))
       if (.not. allocated(scene%supports)) allocate (scene%supports(0))
       if (.not. allocated(scene%masses)) allocate (scene%masses(0))
+      if (.not. allocated(scene%beam%sections)) allocate (scene%beam%sections(0))
       call visit_beam(scene%beam, visitor)
       call visit_mesh(scene%mesh, visitor)
       if (present(support_count)) then
@@ -113,6 +118,12 @@ contains
       else
          count = merge(size(scene%masses), unset_integer, size(scene%masses) > 0)
          call visit_masses(scene%masses, count, visitor)
+      end if
+      if (present(section_count)) then
+         call visit_sections(scene%beam%sections, section_count, visitor)
+      else
+         count = merge(size(scene%beam%sections), unset_integer, size(scene%beam%sections) > 0)
+         call visit_sections(scene%beam%sections, count, visitor)
       end if
       call visit_analysis(scene%analysis, visitor)
       if (scene%analysis%kind == 'periodic') call visit_periodic(scene%periodic, visitor)
@@ -290,6 +301,11 @@ contains
             call fail(stat, errmsg, '&masses count = '//integer_text(size(scene%masses))//' is outside [0, '// &
                       integer_text(max_masses)//']')
       end if
+      if (allocated(scene%beam%sections)) then
+         if (size(scene%beam%sections) > max_sections) &
+            call fail(stat, errmsg, '&sections count = '//integer_text(size(scene%beam%sections))//' is outside [0, '// &
+                      integer_text(max_sections)//']')
+      end if
       if (allocated(scene%output%points)) then
          if (size(scene%output%points) > max_points) &
             call fail(stat, errmsg, '&output points: '//integer_text(size(scene%output%points))// &
@@ -324,7 +340,7 @@ contains
       integer, intent(inout) :: stat
       character(len=*), intent(inout) :: errmsg
       associate (beam => scene%beam, mesh => scene%mesh, analysis => scene%analysis)
-         if (beam%physical()) then
+         if (beam%physical() .and. .not. beam%sectioned()) then
             call check_given('youngs_modulus', beam%youngs_modulus)
             call check_given('density', beam%density)
             call check_given('area', beam%area)
@@ -397,6 +413,15 @@ contains
          call in_range(stat, errmsg, 'masses', 'x('//integer_text(i)//')', scene%masses(i)%x, 0.0_dp, &
                        scene%beam%length, ' m, [0, length]')
       end do
+      if (scene%beam%sectioned() .and. stat == 0) then
+         call check_sections(scene%beam%sections, scene%beam%length, scene%mesh%elements, stat, errmsg)
+         if (scene%flow%velocity > 0 .and. scene%analysis%kind == 'dynamics') &
+            call fail(stat, errmsg, '&flow velocity = '//real_text(scene%flow%velocity)//' m/s is not available '// &
+                      'with &sections: Connors'' fluid-elastic force takes one mass per length, for now')
+      end if
+      ! an axial compression up to the buckling load (K positive definite on the mesh)
+      if (stat == 0) call check_compression(scene%mesh%basis, scene%mesh%elements, scene%beam%length, &
+                                            scene%beam%rho_s(), scene%beam%ei(), structure, stat, errmsg)
       associate (analysis => scene%analysis, mesh => scene%mesh)
          ! statics solves K U = F, singular with a rigid-body motion
          if (structure%rigid_motions(scene%beam%length) > 0) then

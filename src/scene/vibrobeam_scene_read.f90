@@ -17,7 +17,7 @@ module vibrobeam_scene_read
    use vibrobeam_text, only: integer_text, real_text
    use vibrobeam_periodic_settings, only: forcing_frequency, period_step
    use vibrobeam_scene, only: scene_type, max_obstacles, max_points, max_supports, max_masses, max_forces, &
-      scene_variables, visit_scene, held_conditions, sync_frequency_twins
+      max_sections, scene_variables, visit_scene, held_conditions, sync_frequency_twins
    use vibrobeam_scene_values, only: real_input, set_real_input
    use vibrobeam_frequency_twins, only: is_twin, frequency_name
    use vibrobeam_obstacles, only: obstacle_type
@@ -54,21 +54,22 @@ contains
       !! sweep%present is false without one
       type(sweep_settings), intent(out), optional :: sweep
       type(schema_reader) :: reader
-      integer :: count, support_count, mass_count, force_count
+      integer :: count, support_count, mass_count, force_count, section_count
       call scan_namelist_file(filename, scene_variables(), reader%scanned, stat, errmsg)
       if (stat /= 0) return
-      ! room for every obstacle, support, mass, load and point the file may describe; cut to
-      ! what it gives below
+      ! room for every obstacle, support, mass, section, load and point the file may
+      ! describe; cut to what it gives below
       allocate (scene%obstacles(max_obstacles), scene%output%points(max_points), scene%supports(max_supports), &
-                scene%masses(max_masses), scene%forces%load(max_forces))
+                scene%masses(max_masses), scene%forces%load(max_forces), scene%beam%sections(max_sections))
       scene%obstacles(:)%side = ''
       scene%output%points = 0
       count = 0
       support_count = 0
       mass_count = 0
       force_count = 0
+      section_count = 0
       call visit_scene(scene, reader, obstacle_count=count, support_count=support_count, mass_count=mass_count, &
-                       force_count=force_count)
+                       force_count=force_count, section_count=section_count)
       if (reader%stat /= 0) then
          stat = reader%stat
          errmsg = reader%errmsg
@@ -77,6 +78,7 @@ contains
       call resolve_obstacles(reader%scanned, count, scene, stat, errmsg)
       if (stat == 0) call resolve_supports(reader%scanned, support_count, scene, stat, errmsg)
       if (stat == 0) call resolve_masses(reader%scanned, mass_count, scene, stat, errmsg)
+      if (stat == 0) call resolve_sections(reader%scanned, section_count, scene, stat, errmsg)
       if (stat == 0) call resolve_forces(reader%scanned, force_count, filename, scene, stat, errmsg)
       if (stat == 0) call resolve_points(reader%scanned, scene, stat, errmsg)
       if (stat == 0) call resolve_frequency_twins(reader%scanned, scene, stat, errmsg)
@@ -275,6 +277,21 @@ contains
       errmsg = ''
    end subroutine check_count
 
+   !> The count of an array of settings whose count is an optional row (&supports, &masses,
+   !! &sections): `given` is 0 when the file does not give it (count is then unset, -1),
+   !! else the count given, checked as `check_count` does (even -1).
+   subroutine optional_count(scanned, group, element, names, count, most, given, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
+      character(len=*), intent(in) :: group, element, names(:)
+      integer, intent(in) :: count, most
+      integer, intent(out) :: given
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      given = 0
+      if (scanned%is_given(group, 'count')) given = count
+      call check_count(scanned, group, element, names, given, most, stat, errmsg)
+   end subroutine optional_count
+
    !> &supports after reading: count (0 when not given) and what it allows; each support
    !! needs its x.
    subroutine resolve_supports(scanned, count, scene, stat, errmsg)
@@ -285,10 +302,7 @@ contains
       character(len=*), intent(out) :: errmsg
       character(len=*), parameter :: names(4) = [character(len=20) :: 'x', 'kind', 'stiffness', 'rotational_stiffness']
       integer :: i, given
-      ! count is unset (-1) when not given; given, even -1 is checked
-      given = 0
-      if (scanned%is_given('supports', 'count')) given = count
-      call check_count(scanned, 'supports', 'support', names, given, max_supports, stat, errmsg)
+      call optional_count(scanned, 'supports', 'support', names, count, max_supports, given, stat, errmsg)
       if (stat /= 0) return
       scene%supports = scene%supports(1:given)
       do i = 1, size(scene%supports)
@@ -310,10 +324,7 @@ contains
       character(len=*), intent(out) :: errmsg
       character(len=*), parameter :: names(3) = [character(len=14) :: 'x', 'mass', 'rotary_inertia']
       integer :: i, given
-      ! count is unset (-1) when not given; given, even -1 is checked
-      given = 0
-      if (scanned%is_given('masses', 'count')) given = count
-      call check_count(scanned, 'masses', 'mass', names, given, max_masses, stat, errmsg)
+      call optional_count(scanned, 'masses', 'mass', names, count, max_masses, given, stat, errmsg)
       if (stat /= 0) return
       scene%masses = scene%masses(1:given)
       do i = 1, size(scene%masses)
@@ -324,6 +335,46 @@ contains
          end if
       end do
    end subroutine resolve_masses
+
+   !> &sections after reading: count (0 when not given) and what it allows; each section
+   !! needs its end and its four data; a beam given by &beam k2 alone (per unit mass) takes
+   !! none (docs/input.md, "&sections").
+   subroutine resolve_sections(scanned, count, scene, stat, errmsg)
+      type(scanned_file), intent(in) :: scanned
+      integer, intent(in) :: count
+      type(scene_type), intent(inout) :: scene
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=*), parameter :: names(5) = [character(len=14) :: 'x_to', 'youngs_modulus', 'density', 'area', &
+                                                 'inertia']
+      character(len=*), parameter :: meaning(5) = [character(len=31) :: 'the end (m) of the section', &
+                                                   'its Young''s modulus (Pa)', 'its density (kg/m^3)', &
+                                                   'its cross-section area (m^2)', 'its second moment of area (m^4)']
+      integer :: i, k, given
+      call optional_count(scanned, 'sections', 'section', names, count, max_sections, given, stat, errmsg)
+      if (stat /= 0) return
+      scene%beam%sections = scene%beam%sections(1:given)
+      if (given == 0) return
+      stat = stat_failure
+      if (scanned%is_given('beam', 'k2') .and. .not. (scanned%is_given('beam', 'youngs_modulus') .or. &
+          scanned%is_given('beam', 'density') .or. scanned%is_given('beam', 'area') .or. &
+          scanned%is_given('beam', 'inertia'))) then
+         errmsg = '&sections count = '//integer_text(given)//' is not available for a beam given by &beam k2 alone '// &
+                  '(per unit mass): sections give E, rho, S and I each; remove k2, or the sections'
+         return
+      end if
+      do i = 1, given
+         do k = 1, size(names)
+            if (.not. scanned%is_given('sections', trim(names(k)), i)) then
+               errmsg = '&sections '//trim(names(k))//'('//integer_text(i)//') is missing: give '//trim(meaning(k))// &
+                        ' (each section gives x_to, youngs_modulus, density, area and inertia)'
+               return
+            end if
+         end do
+      end do
+      stat = 0
+      errmsg = ''
+   end subroutine resolve_sections
 
    !> &forces after reading: nothing may be described beyond `count` (any array variable
    !! of &forces, as the table of variables declares them); the loads are cut to it; a

@@ -1,6 +1,6 @@
 !> The natural frequencies of the structure a scene describes (`structure_of`), which the
 !! checks, warnings and advice use before a run has its own model (`scene_frequencies`),
-!! and the warnings for intermediate supports off the nodes.
+!! and the warnings for intermediate supports and section ends off the nodes.
 module vibrobeam_scene_structure
    use vibrobeam_kinds, only: dp
    use vibrobeam_scene, only: scene_type, structure_of
@@ -9,7 +9,7 @@ module vibrobeam_scene_structure
    use vibrobeam_modes, only: reference_frequencies
    implicit none
    private
-   public :: scene_frequencies, support_warnings
+   public :: scene_frequencies, off_node_warnings
 
 contains
 
@@ -33,20 +33,30 @@ contains
       first = findloc(omega > 0, .true., dim=1)
    end subroutine scene_frequencies
 
-   !> One line per intermediate support that is not on a node of `model` (further than
-   !! 1e-9 h): it acts at its nearest node (docs/input.md, "&supports").
-   function support_warnings(scene, model) result(text)
+   !> One line per intermediate support, and per section end, that is not on a node of
+   !! `model` (further than 1e-9 h): it acts at its nearest node (docs/input.md, "&supports",
+   !! "&sections"; the last section's end is L, a node).
+   function off_node_warnings(scene, model) result(text)
       type(scene_type), intent(in) :: scene
       type(beam_model), intent(in) :: model
       character(len=:), allocatable :: text
       integer :: i
+      integer, allocatable :: nodes(:)
       text = ''
-      if (.not. allocated(scene%supports)) return
-      do i = 1, size(scene%supports)
-         if (abs(model%x(model%support_node(i) + 1) - scene%supports(i)%x) <= 1e-9_dp*model%h) cycle
-         text = text//'&supports x('//integer_text(i)//') = '//real_text(scene%supports(i)%x)// &
-                ' m is not on a node; the support acts at the nearest node x = '// &
-                real_text(model%x(model%support_node(i) + 1))//' m'//new_line('a')
+      if (allocated(scene%supports)) then
+         do i = 1, size(scene%supports)
+            if (abs(model%x(model%support_node(i) + 1) - scene%supports(i)%x) <= 1e-9_dp*model%h) cycle
+            text = text//'&supports x('//integer_text(i)//') = '//real_text(scene%supports(i)%x)// &
+                   ' m is not on a node; the support acts at the nearest node x = '// &
+                   real_text(model%x(model%support_node(i) + 1))//' m'//new_line('a')
+         end do
+      end if
+      nodes = model%structure%section_nodes(model%elements, model%length)
+      do i = 1, size(nodes) - 1
+         if (abs(model%x(nodes(i) + 1) - scene%beam%sections(i)%x_to) <= 1e-9_dp*model%h) cycle
+         text = text//'&sections x_to('//integer_text(i)//') = '//real_text(scene%beam%sections(i)%x_to)// &
+                ' m is not on a node; the section ends at the nearest node x = '//real_text(model%x(nodes(i) + 1))// &
+                ' m'//new_line('a')
       end do
-   end function support_warnings
+   end function off_node_warnings
 end module vibrobeam_scene_structure

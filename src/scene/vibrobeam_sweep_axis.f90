@@ -173,15 +173,24 @@ contains
 
    !> stat = stat_failure when the scene's rules replace the value the sweep would set, so that every
    !! point would run the same scene: k2 of a beam given by E, rho, S and I (k2 is then
-   !! EI/(rho S); docs/input.md, "&beam").
+   !! EI/(rho S); docs/input.md, "&beam"), and k2, E, rho, S, I of a beam given by its
+   !! &sections.
    subroutine used_by_scene(axis, label, scene, stat, errmsg)
       type(sweep_axis), intent(in) :: axis
       character(len=*), intent(in) :: label
       type(scene_type), intent(in) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      character(len=*), parameter :: beam_data(5) = [character(len=14) :: 'k2', 'youngs_modulus', 'density', 'area', &
+                                                     'inertia']
       stat = 0
       errmsg = ''
+      if (axis%group == 'beam' .and. scene%beam%sectioned() .and. any(axis%name == beam_data)) then
+         stat = stat_failure
+         errmsg = label//' would change nothing: the beam is given by its &sections, which cover it whole; sweep '// &
+                  'a section''s value (sections.'//trim(axis%name)//'(i))'
+         return
+      end if
       if (axis%group == 'beam' .and. axis%name == 'k2' .and. scene%beam%physical()) then
          stat = stat_failure
          errmsg = label//' would change nothing: youngs_modulus, density, area and inertia are given, so '// &

@@ -14,8 +14,8 @@
 !!   phi'''_right - phi'''_left + (kappa - b^4 mu) phi = 0 (kappa = k L^3/EI,
 !!   kappa_r = k_r L/EI, mu = m/(rho S L), j = J/(rho S L^3)); the ends as in
 !!   test_support_modes.f90 with the end mass's terms. Its roots: sign changes of the
-!!   determinant (LAPACK dgetrf: the product of U's diagonal and the pivots' sign) on a
-!!   scan of step 0.01, then bisection to 4 eps.
+!!   determinant (`lu_determinant`: LAPACK dgetrf, the product of U's diagonal and the
+!!   pivots' sign) on a scan of step 0.01, then bisection to 4 eps.
 !! - closed forms where they exist: the two-span beam on three pinned supports with equal
 !!   spans vibrates in pinned-pinned modes of each span, b_1 = 2 pi, and in
 !!   clamped-pinned ones, b_2 = 2 x 3.9266023120479187782 (Blevins 1979, table 8-1); a
@@ -49,8 +49,7 @@ program test_structure_modes
    use vibrobeam_structure, only: beam_structure, support_pinned, support_clamped, support_spring
    use vibrobeam_loads, only: load_settings, load_set, build_loads
    use vibrobeam_band, only: band_matvec
-   use vibrobeam_lapack, only: dgetrf
-   use vibrobeam_test_support, only: test_counter
+   use vibrobeam_test_support, only: test_counter, wave_row, lu_determinant, scanned_roots
    implicit none
    type(test_counter) :: t
    real(dp), parameter :: length = 0.8_dp, rho_s = 2.5_dp, ei = 40.0_dp
@@ -64,6 +63,8 @@ program test_structure_modes
    end type point_data
    type(beam_structure) :: s
    type(point_data), allocatable :: points(:)
+   type(boundary_conditions) :: current_ends              !! the case `determinant_roots` solves
+   type(point_data), allocatable :: current_points(:)
    integer :: b
    do b = 1, 2
       ! two spans on three pinned supports: equal (closed form too) and unequal
@@ -306,36 +307,21 @@ contains
    end subroutine base_load_on_masses
 
    !> The two lowest positive roots of the determinant (scan of step 0.01 from 0.05, then
-   !! bisection).
+   !! bisection: `scanned_roots`).
    function determinant_roots(ends, interior) result(roots)
       type(boundary_conditions), intent(in) :: ends
       type(point_data), intent(in) :: interior(:)
       real(dp) :: roots(2)
-      real(dp) :: low, high, middle, f_low
-      integer :: found, i
-      found = 0
-      low = 0.05_dp
-      f_low = determinant(ends, interior, low)
-      do i = 1, 3000
-         high = low + 0.01_dp
-         if ((determinant(ends, interior, high) > 0) .neqv. (f_low > 0)) then
-            do while (high - low > 4*epsilon(1.0_dp)*high)
-               middle = 0.5_dp*(low + high)
-               if ((determinant(ends, interior, middle) > 0) .eqv. (f_low > 0)) then
-                  low = middle
-               else
-                  high = middle
-               end if
-            end do
-            found = found + 1
-            roots(found) = 0.5_dp*(low + high)
-            if (found == 2) return
-         end if
-         low = high
-         f_low = determinant(ends, interior, low)
-      end do
-      error stop 'determinant_roots: fewer than two roots below b = 30'
+      current_ends = ends
+      current_points = interior
+      roots = scanned_roots(determinant_at, 2, 0.05_dp, 0.01_dp, 30.0_dp)
    end function determinant_roots
+
+   !> The determinant of `determinant_roots`'s case at b.
+   real(dp) function determinant_at(root)
+      real(dp), intent(in) :: root
+      determinant_at = determinant(current_ends, current_points, root)
+   end function determinant_at
 
    !> The determinant of the 4 (points + 1) rows of the spans' coefficients at b (the end
    !! masses and springs of the ends of `ends` are none here: a point at xi = 1 with mu, j
@@ -345,10 +331,9 @@ contains
       type(point_data), intent(in) :: interior(:)
       real(dp), intent(in) :: root
       real(dp), allocatable :: a(:,:)
-      integer, allocatable :: pivots(:)
       type(point_data), allocatable :: inner(:)
       type(point_data) :: tip
-      integer :: spans, n, p, c, row, info, i
+      integer :: spans, n, p, c, row
       ! a point at xi = 1 is the right end's mass
       tip = point_data(xi=1.0_dp)
       allocate (inner, source=interior)
@@ -362,7 +347,6 @@ contains
       spans = size(inner) + 1
       n = 4*spans
       allocate (a(n, n), source=0.0_dp)
-      allocate (pivots(n))
       ! left end (span 1 at xi = 0)
       call end_rows(a, root, 1, 0.0_dp, 1, ends%holds_deflection(1), ends%holds_rotation(1), point_data())
       ! interior points
@@ -398,12 +382,7 @@ contains
       end do
       ! right end (the last span at xi = 1)
       call end_rows(a, root, row + 1, 1.0_dp, spans, ends%holds_deflection(2), ends%holds_rotation(2), tip)
-      call dgetrf(n, n, a, n, pivots, info)
-      determinant = 1
-      do i = 1, n
-         determinant = determinant*a(i, i)
-         if (pivots(i) /= i) determinant = -determinant
-      end do
+      determinant = lu_determinant(a)
    end function determinant
 
    !> The two rows of an end at xi (0 or 1) of span `span`, from `first` (the left end
@@ -438,17 +417,6 @@ contains
       real(dp), intent(in) :: root, xi
       integer, intent(in) :: order
       real(dp) :: row(4)
-      real(dp) :: a
-      a = root*xi
-      select case (order)
-      case (0)
-         row = [cosh(a), sinh(a), cos(a), sin(a)]
-      case (1)
-         row = [sinh(a), cosh(a), -sin(a), cos(a)]
-      case (2)
-         row = [cosh(a), sinh(a), -cos(a), -sin(a)]
-      case default
-         row = [sinh(a), cosh(a), sin(a), -cos(a)]
-      end select
+      row = wave_row(root*xi, order)
    end function basis_row
 end program test_structure_modes

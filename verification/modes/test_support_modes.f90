@@ -40,7 +40,7 @@ program test_support_modes
    use vibrobeam_model, only: beam_model, build_model, rigid_motions
    use vibrobeam_modes, only: compute_modes
    use vibrobeam_boundary, only: boundary_conditions, end_clamped, end_pinned, end_sliding, end_free
-   use vibrobeam_test_support, only: test_counter
+   use vibrobeam_test_support, only: test_counter, wave_row, scanned_roots
    implicit none
    type(test_counter) :: t
    real(dp), parameter :: length = 0.8_dp, rho_s = 2.5_dp, ei = 40.0_dp
@@ -53,6 +53,8 @@ program test_support_modes
    real(dp), parameter :: root_sp(2) = [0.5_dp*pi, 1.5_dp*pi]
    character(len=7), parameter :: bases(2) = ['hermite', 'bspline']
    real(dp) :: worst_ratio = 0
+   type(boundary_conditions) :: current_supports   !! the case `spring_roots` solves
+   real(dp) :: current_kappa(4)
    integer :: b
    do b = 1, 2
       call check_pair(bases(b), end_clamped, end_free, root_cf, 0)
@@ -232,36 +234,21 @@ contains
    end subroutine frequencies
 
    !> The two lowest positive roots b of the spring determinant (bisection on sign changes
-   !! of a scan of step 0.01 from b = 0.05).
+   !! of a scan of step 0.01 from b = 0.05: `scanned_roots`).
    function spring_roots(supports, kappa) result(roots)
       type(boundary_conditions), intent(in) :: supports
       real(dp), intent(in) :: kappa(4)
       real(dp) :: roots(2)
-      real(dp) :: low, high, middle, f_low
-      integer :: found, i
-      found = 0
-      low = 0.05_dp
-      f_low = spring_determinant(supports, kappa, low)
-      do i = 1, 2000
-         high = low + 0.01_dp
-         if ((spring_determinant(supports, kappa, high) > 0) .neqv. (f_low > 0)) then
-            do while (high - low > 4*epsilon(1.0_dp)*high)
-               middle = 0.5_dp*(low + high)
-               if ((spring_determinant(supports, kappa, middle) > 0) .eqv. (f_low > 0)) then
-                  low = middle
-               else
-                  high = middle
-               end if
-            end do
-            found = found + 1
-            roots(found) = 0.5_dp*(low + high)
-            if (found == 2) return
-         end if
-         low = high
-         f_low = spring_determinant(supports, kappa, low)
-      end do
-      error stop 'spring_roots: fewer than two roots below b = 20'
+      current_supports = supports
+      current_kappa = kappa
+      roots = scanned_roots(spring_at, 2, 0.05_dp, 0.01_dp, 20.0_dp)
    end function spring_roots
+
+   !> The spring determinant of `spring_roots`'s case at b.
+   real(dp) function spring_at(root)
+      real(dp), intent(in) :: root
+      spring_at = spring_determinant(current_supports, current_kappa, root)
+   end function spring_at
 
    !> det of the four boundary rows of phi(xi) = a cosh(b xi) + c sinh(b xi) + d cos(b xi)
    !! + e sin(b xi), xi = x/L, b = beta L: the natural conditions of the energy
@@ -296,18 +283,7 @@ contains
       real(dp), intent(in) :: root, xi
       integer, intent(in) :: order
       real(dp) :: row(4)
-      real(dp) :: a
-      a = root*xi
-      select case (order)
-      case (0)
-         row = [cosh(a), sinh(a), cos(a), sin(a)]
-      case (1)
-         row = [sinh(a), cosh(a), -sin(a), cos(a)]
-      case (2)
-         row = [cosh(a), sinh(a), -cos(a), -sin(a)]
-      case default
-         row = [sinh(a), cosh(a), sin(a), -cos(a)]
-      end select
+      row = wave_row(root*xi, order)
    end function basis_row
 
    !> Determinant of a 4 x 4 matrix by Laplace expansion along the first row.

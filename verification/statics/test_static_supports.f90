@@ -40,10 +40,8 @@ program test_static_supports
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: integer_text, real_text
    use vibrobeam_scene, only: scene_type, obstacle_type, support_settings
-   use vibrobeam_problem, only: run_problem
-   use vibrobeam_model, only: nodal_displacement
-   use vibrobeam_static, only: solve_static, static_report
-   use vibrobeam_test_support, only: test_counter, prepare_test_scene
+   use vibrobeam_static, only: static_report
+   use vibrobeam_test_support, only: test_counter, static_deflection, gamma_n
    implicit none
    type(test_counter) :: t
    real(dp), parameter :: length = 0.8_dp, ei = 40, q = 3
@@ -72,11 +70,6 @@ program test_static_supports
 
 contains
 
-   pure real(dp) function gamma_n(n)
-      integer, intent(in) :: n
-      gamma_n = n*0.5_dp*epsilon(1.0_dp)/(1 - n*0.5_dp*epsilon(1.0_dp))
-   end function gamma_n
-
    !> The scene: the beam, its mesh, the uniform load; kind = 'static'.
    function static_scene(basis, elements, left, right) result(scene)
       character(len=*), intent(in) :: basis, left, right
@@ -99,16 +92,10 @@ contains
       character(len=*), intent(in) :: label
       real(dp), allocatable, intent(out) :: w(:), reaction(:)
       type(static_report), intent(out) :: report
-      type(run_problem) :: prepared
-      real(dp), allocatable :: u(:)
-      integer :: iterations, stat
+      integer :: stat
       character(len=512) :: errmsg
-      call prepare_test_scene(scene, prepared)
-      allocate (u(prepared%model%unknowns), reaction(prepared%contacts%count))
-      call solve_static(prepared%model, prepared%contacts, prepared%loads%at(0.0_dp), u, reaction, iterations, stat, &
-                        errmsg, report=report)
+      call static_deflection(scene, w, report, stat, errmsg, reaction)
       call t%check_true(label//': the static solve succeeds (its a-posteriori check included)', stat == 0, trim(errmsg))
-      w = nodal_displacement(prepared%model, u)
    end subroutine solve
 
    !> Every nodal deflection against `exact` to the position bound plus gamma_12 |exact|.

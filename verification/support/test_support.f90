@@ -10,7 +10,9 @@ module vibrobeam_test_support
    use vibrobeam_problem, only: run_problem, build_problem
    use vibrobeam_blas_threads, only: limit_blas_threads
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_entry, band_factor, band_solve
-   use vibrobeam_lapack, only: dpbcon, dpbtrf, dpotrf, dpotrs
+   use vibrobeam_lapack, only: dpbcon, dpbtrf, dpotrf, dpotrs, dgetrf
+   use vibrobeam_model, only: nodal_displacement
+   use vibrobeam_static, only: solve_static, static_report
    use vibrobeam_band_kernel, only: kernel_bandwidth
    use vibrobeam_contact_set, only: contact_set, contact_value, no_bound
    use vibrobeam_lcp, only: solve_lcp
@@ -19,6 +21,7 @@ module vibrobeam_test_support
    public :: test_counter, read_test_scene, prepare_test_scene, use_program_blas_threads, fitted_order, band_abs_times
    public :: band_condition, abs_factor_times
    public :: dense_lcp_reference, same_bits
+   public :: wave_row, lu_determinant, static_deflection, scanned_roots, real_function, gamma_n
 
    type, public :: test_counter
       integer :: passed = 0
@@ -30,6 +33,14 @@ module vibrobeam_test_support
       procedure :: check_true
       procedure :: finish
    end type test_counter
+
+   abstract interface
+      !> A real function of one real (a frequency determinant as a function of b = beta L).
+      real(dp) function real_function(x)
+         import :: dp
+         real(dp), intent(in) :: x
+      end function real_function
+   end interface
 
 contains
 
@@ -288,4 +299,99 @@ contains
       real(dp), intent(in) :: a, b
       same_bits = transfer(a, 0_int64) == transfer(b, 0_int64)
    end function same_bits
+
+   !> The order-th derivatives (0..3) of cosh(z), sinh(z), cos(z), sin(z) with respect to
+   !! z: a row of the frequency determinants of the beam tests, where z = beta x and each
+   !! derivative in x carries one more beta (docs/theory.md §7).
+   pure function wave_row(z, order) result(row)
+      real(dp), intent(in) :: z
+      integer, intent(in) :: order
+      real(dp) :: row(4)
+      select case (order)
+      case (0)
+         row = [cosh(z), sinh(z), cos(z), sin(z)]
+      case (1)
+         row = [sinh(z), cosh(z), -sin(z), cos(z)]
+      case (2)
+         row = [cosh(z), sinh(z), -cos(z), -sin(z)]
+      case default
+         row = [sinh(z), cosh(z), sin(z), -cos(z)]
+      end select
+   end function wave_row
+
+   !> The determinant of a square matrix from its LU factors (LAPACK dgetrf): the product
+   !! of U's diagonal, its sign turned by each row exchange (0 for a singular one).
+   real(dp) function lu_determinant(a) result(determinant)
+      real(dp), intent(in) :: a(:,:)
+      real(dp) :: lu(size(a, 1), size(a, 2))
+      integer :: pivots(size(a, 1)), info, i
+      lu = a
+      call dgetrf(size(a, 1), size(a, 1), lu, size(a, 1), pivots, info)
+      determinant = 1
+      do i = 1, size(a, 1)
+         determinant = determinant*lu(i, i)
+         if (pivots(i) /= i) determinant = -determinant
+      end do
+   end function lu_determinant
+
+   !> The static deflection at the nodes of a scene of kind 'static' (its whole path:
+   !! `build_problem`, `solve_static` under the loads at t = 0), the solver's report and
+   !! (optional) the reactions of its contact points.
+   subroutine static_deflection(scene, w, report, stat, errmsg, reaction)
+      type(scene_type), intent(in) :: scene
+      real(dp), allocatable, intent(out) :: w(:)
+      type(static_report), intent(out) :: report
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp), allocatable, intent(out), optional :: reaction(:)
+      type(run_problem) :: prepared
+      real(dp), allocatable :: u(:), reactions(:)
+      integer :: iterations
+      call prepare_test_scene(scene, prepared)
+      allocate (u(prepared%model%unknowns), reactions(prepared%contacts%count))
+      call solve_static(prepared%model, prepared%contacts, prepared%loads%at(0.0_dp), u, reactions, iterations, stat, &
+                        errmsg, report=report)
+      w = nodal_displacement(prepared%model, u)
+      if (present(reaction)) call move_alloc(reactions, reaction)
+   end subroutine static_deflection
+
+   !> The first `count` roots of f above `from`: the sign changes on a scan of step `step`,
+   !! each bisected to 4 eps relative; error stop when fewer lie below `limit`.
+   function scanned_roots(f, count, from, step, limit) result(roots)
+      procedure(real_function) :: f
+      integer, intent(in) :: count
+      real(dp), intent(in) :: from, step, limit
+      real(dp) :: roots(count)
+      real(dp) :: low, high, middle, f_low
+      integer :: found
+      found = 0
+      low = from
+      f_low = f(low)
+      do while (low < limit)
+         high = low + step
+         if ((f(high) > 0) .neqv. (f_low > 0)) then
+            do while (high - low > 4*epsilon(1.0_dp)*high)
+               middle = 0.5_dp*(low + high)
+               if ((f(middle) > 0) .eqv. (f_low > 0)) then
+                  low = middle
+               else
+                  high = middle
+               end if
+            end do
+            found = found + 1
+            roots(found) = 0.5_dp*(low + high)
+            if (found == count) return
+         end if
+         low = high
+         f_low = f(low)
+      end do
+      error stop 'scanned_roots: fewer roots than asked below the limit'
+   end function scanned_roots
+
+   !> gamma_n = n u/(1 - n u), u = eps/2: the bound of n roundings (Higham, Accuracy and
+   !! Stability of Numerical Algorithms, 2002, §3.1).
+   pure real(dp) function gamma_n(n)
+      integer, intent(in) :: n
+      gamma_n = n*0.5_dp*epsilon(1.0_dp)/(1 - n*0.5_dp*epsilon(1.0_dp))
+   end function gamma_n
 end module vibrobeam_test_support

@@ -25,7 +25,8 @@ reduction's cut-off (in rad/s and its twin in Hz) is swept in the reduced second
 Every frequency's twin in Hz (docs/input.md, "Frequencies in Hz") is a real variable of the
 table, swept like the others: each point must record the value swept in Hz. The variables
 of the structures (supports, springs, masses, damping per mode) are swept in the third
-scene.
+scene, those of &sections and the axial force in the fourth (the last section's end,
+which must stay L, is refused).
 Exit status 0 when every check holds, 1 otherwise (one line per failure), 77 without h5py.
 """
 import concurrent.futures
@@ -96,7 +97,20 @@ SCENE_C = """
 &load      base_acceleration = 2.0, base_frequency = 200 /
 &output    file = 'scene.h5', text = .false. @OUTPUT@ /
 """
-SCENES = {'A': SCENE_A, 'B': SCENE_B, 'C': SCENE_C}
+# The fourth scene: a beam of two sections under an axial force (issue 18, items 4 and 5),
+# pinned at both ends; the first section's end stays nearest its node when moved by 5 %.
+SCENE_D = """
+&beam      length = 0.5, left_end = 'pinned', right_end = 'pinned', axial_force = 500.0 /
+&mesh      elements = 4 /
+&sections  count = 2, x_to(1) = 0.26, youngs_modulus(1) = 210e9, density(1) = 7850, area(1) = 2e-4,
+           inertia(1) = 1.6666666666666667e-9, x_to(2) = 0.5, youngs_modulus(2) = 70e9, density(2) = 2700,
+           area(2) = 3e-4, inertia(2) = 2.5e-9 /
+&obstacles count = 1, side(1) = 'below', x_from(1) = 0.3, x_to(1) = 0.45, level_from(1) = -1e-3 /
+&time      dt = 2e-5 @TIME@ /
+&load      base_acceleration = 2.0, base_frequency = 200 /
+&output    file = 'scene.h5', text = .false. @OUTPUT@ /
+"""
+SCENES = {'A': SCENE_A, 'B': SCENE_B, 'C': SCENE_C, 'D': SCENE_D}
 # (scene, None: the sweep runs, or the text of the rule that refuses it); every other real
 # variable: [(the first scene that gives it, None)]. The rules: docs/sweeps.md, "The parameter"; docs/input.md.
 EXPECTED = {
@@ -111,6 +125,8 @@ EXPECTED = {
     # swept over whole numbers it is an ensemble (verification.random_point_force)
     'forces.realisation': [('A', 'is not a whole number')],
     'periodic.tolerance': [('A', "belongs to &analysis kind = 'periodic', which a sweep does not run")],
+    # the sections cover the whole beam: the last one ends at L
+    'sections.x_to(2)': [('D', 'the last section must end at the end of the beam')],
 }
 SWEEP = ("&sweep parameter = '{name}', values = {v1!r}, {v2!r}, mode = 'independent', "
          "settle = 1e-4, measure = 1e-4, keep_runs = .true. /\n")

@@ -10,7 +10,14 @@
 !!   mode shape, base excitation, uniform load and point force through their static tip
 !!   deflections q L^4/(8 EI), F a^2 (3L - a)/(6 EI)), and dt |v|;
 !! - each warning appears for data typed in the wrong unit, and none for a plausible
-!!   steel beam, a 1:100 flat strip, a thin tube (r/t = 100) or a resolved time step.
+!!   steel beam, a 1:100 flat strip, a thin tube (r/t = 100) or a resolved time step;
+!! - a pinned-pinned stiff string under an axial force (issue 18, item 5: the steel
+!!   section with I = 1e-12 m^4, T = 2e6 N, T L^2/EI = 2400): no closed form is claimed,
+!!   and the five frequencies computed on 64 Hermite elements agree with omega_n^2 =
+!!   (n pi/L)^4 EI/(rho S) + (n pi/L)^2 T/(rho S) to (n pi/64)^4/100 (the elements' error
+!!   bound, test_support_modes.f90); the modes with 20 steps per period beyond the listed
+!!   ones (dt = 1e-6 s) are counted from the tensioned roots b_n = beta_n L = n pi: the
+!!   closed form's count, 44 (a count from k2 alone, as without tension, gives 102).
 program test_check_report
    use vibrobeam_kinds, only: dp, pi
    use vibrobeam_scene, only: scene_type, validate_scene
@@ -129,6 +136,9 @@ program test_check_report
    call expect_warning('10 steps per period', scene, 'steps per period of mode 1')
    scene%time%dt = 2*pi/(omega(1)*25)
    call expect_warning('25 steps per period', scene, '')
+
+   ! an axial force: frequencies computed, the resolved count from the tensioned roots
+   call tensioned_beam()
    call t%finish('test_check_report')
 
 contains
@@ -159,6 +169,37 @@ contains
       call make_check_report(scene, model, report, stat, errmsg)
       call t%check_true('report made', stat == 0, trim(errmsg))
    end subroutine report_of
+
+   !> The stiff string pinned at both ends (module documentation).
+   subroutine tensioned_beam()
+      real(dp), parameter :: tension = 2e6_dp, step = 1e-6_dp, thin = 1e-12_dp
+      real(dp) :: exact(5), limit, wave
+      integer :: count
+      scene = steel()
+      scene%beam%inertia = thin
+      scene%beam%left_end = 'pinned'
+      scene%beam%right_end = 'pinned'
+      scene%beam%axial_force = tension
+      scene%mesh%elements = 64
+      scene%time%dt = step
+      call report_of(scene)
+      call t%check_true('tensioned beam: no closed form claimed', .not. report%closed_form)
+      do n = 1, 5
+         wave = n*pi/length
+         exact(n) = sqrt((wave**4*youngs*thin + wave**2*tension)/(density*area))
+         call t%check_close('tensioned beam: omega_'//achar(48 + n)//' (64 Hermite elements)', report%omega(n), &
+                            exact(n), (n*pi/64)**4/100)
+      end do
+      limit = 2*pi/(steps_per_period_wanted*step)
+      count = 0
+      do
+         wave = (count + 1)*pi/length
+         if (sqrt((wave**4*youngs*thin + wave**2*tension)/(density*area)) > limit) exit
+         count = count + 1
+      end do
+      call t%check_true('tensioned beam: resolved modes, dt = 1e-6 s', report%resolved_modes == count, &
+                        'counted '//text(real(count, dp))//', reported '//text(real(report%resolved_modes, dp)))
+   end subroutine tensioned_beam
 
    !> The warnings of `scene` name `expected` (one warning), or are empty ('').
    subroutine expect_warning(name, given, expected)

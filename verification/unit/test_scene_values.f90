@@ -13,8 +13,9 @@
 !!    and the twin of a frequency (docs/input.md, "Frequencies in Hz": setting a frequency
 !!    in rad/s sets its twin in Hz to it over 2 pi, setting the twin sets the frequency to 2
 !!    pi times it; compared to 4 eps, one rounding of the product and one of pi).
-!!    E, rho, S and I are set on a beam given by them, the others on a beam given by k2
-!!    (its k2 is listed, not derived).
+!!    E, rho, S and I are set on a beam given by them, the variables of &sections on a
+!!    beam of two sections, the others on a beam given by k2 (its k2 is listed, not
+!!    derived).
 !! 3. A name that is not a real input, and an element beyond the scene's, are not found.
 !! The scenes are of kind 'periodic', whose visit includes every group.
 !! The values are compared exactly: they are copied, never computed (but for the twins).
@@ -22,7 +23,7 @@ program test_scene_values
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: integer_text
    use vibrobeam_scene, only: scene_type, scene_entry, scene_entries, visit_scene, obstacle_type, support_settings, &
-      mass_settings
+      mass_settings, section_settings
    use vibrobeam_scene_values, only: real_input, set_real_input
    use vibrobeam_schema_operations, only: schema_table
    use vibrobeam_sweep_input, only: sweep_input, visit_sweep
@@ -31,7 +32,7 @@ program test_scene_values
    implicit none
    type(test_counter) :: t
    type(schema_table) :: table
-   type(scene_type) :: scene, defaults, physical_scene
+   type(scene_type) :: scene, defaults, physical_scene, sectioned_scene
    type(sweep_input) :: sweep
    type(scene_entry), allocatable :: before(:), after(:)
    real(dp) :: value, marker
@@ -61,6 +62,11 @@ program test_scene_values
    physical_scene%beam%density = 7850
    physical_scene%beam%area = 2e-4_dp
    physical_scene%beam%inertia = 1.6e-9_dp
+   sectioned_scene = scene
+   sectioned_scene%beam%sections = [section_settings(x_to=0.4_dp, youngs_modulus=2.1e11_dp, density=7850, area=2e-4_dp, &
+                                                     inertia=1.6e-9_dp), &
+                                    section_settings(x_to=1.0_dp, youngs_modulus=7e10_dp, density=2700, area=1e-4_dp, &
+                                                     inertia=1e-9_dp)]
    covered = 0
    marker = 0.123456789_dp
    do k = 1, size(table%rows)
@@ -114,6 +120,7 @@ contains
       changed = scene
       if (group == 'beam' .and. any(variable == [character(len=14) :: 'youngs_modulus', 'density', 'area', &
                                                   'inertia'])) changed = physical_scene
+      if (group == 'sections') changed = sectioned_scene
       before = scene_entries(changed)
       call set_real_input(changed, group, variable, element, marker, found)
       call t%check_true(name//' can be set', found)
