@@ -204,8 +204,8 @@ contains
 
    subroutine print_help()
       write (output_unit, '(a)') &
-         'vibrobeam '//version_string//': an elastic Euler-Bernoulli beam, clamped at x = 0 and free at', &
-         'x = L, vibrating between rigid obstacles (Newton impact law).', &
+         'vibrobeam '//version_string//': an elastic Euler-Bernoulli beam on its supports (clamped-free by', &
+         'default), vibrating between rigid obstacles (Newton impact law) or compliant ones.', &
          '', &
          'usage:', &
          '  vibrobeam INPUT.nml            run the scene described by INPUT.nml', &
