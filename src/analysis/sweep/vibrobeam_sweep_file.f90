@@ -31,7 +31,7 @@ module vibrobeam_sweep_file
    use vibrobeam_progress, only: progress_meter
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_hdf5_series, only: h5_table
-   use vibrobeam_statistics_layout, only: statistics_layout, group_beam, group_energy
+   use vibrobeam_statistics_layout, only: statistics_layout
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, task_count
    use vibrobeam_sweep_runner, only: status_ok, status_failed, status_interrupted, status_not_run, status_names
    use vibrobeam_sweep_journal, only: record_length, record_head, r_status, r_settled, r_start_point, &
@@ -227,19 +227,13 @@ contains
       do e = 1, size(layout%entries)
          associate (entry => layout%entries(e))
             call tables%values(e)%create(h5, '/sweep/statistics/'//layout%path(e, .false.), entry%length, rows, &
-                                         stat, errmsg, unit=trim(entry%unit), vector=one_value(e))
+                                         stat, errmsg, unit=trim(entry%unit), vector=layout%one_value(e))
             if (stat == 0 .and. entry%has_error) &
                call tables%errors(e)%create(h5, '/sweep/statistics/'//layout%path(e, .true.), entry%length, rows, &
-                                            stat, errmsg, unit=trim(entry%unit), vector=one_value(e))
+                                            stat, errmsg, unit=trim(entry%unit), vector=layout%one_value(e))
          end associate
          if (stat /= 0) return
       end do
-   contains
-      !> The statistics of the groups of one value (beam, energy) are 1-d datasets.
-      logical function one_value(e)
-         integer, intent(in) :: e
-         one_value = layout%entries(e)%group == group_beam .or. layout%entries(e)%group == group_energy
-      end function one_value
    end subroutine create_statistics_tables
 
    !> The positions of the observation and contact points and the obstacles at each
