@@ -614,9 +614,6 @@ contains
             if (scene%beam%modal()) &
                call fail(stat, errmsg, '&output lyapunov = .true. is not available with &beam modal_damping (or '// &
                          'modal_damping_ratios): the tangent map holds Rayleigh damping only, for now')
-            if (any(scene%obstacles%stiffness > 0)) &
-               call fail(stat, errmsg, '&output lyapunov = .true. is not available with compliant stops '// &
-                         '(&obstacles stiffness > 0): the tangent map linearises rigid stops only, for now')
             if (scene%flow%velocity > 0) &
                call fail(stat, errmsg, '&output lyapunov = .true. is not available with &flow velocity = '// &
                          real_text(scene%flow%velocity)//' m/s: the tangent map has no fluid-elastic force, for now')
