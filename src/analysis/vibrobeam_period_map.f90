@@ -131,7 +131,7 @@ contains
             if (stat /= 0) return
             if (shifted%status /= outcome_ok) then
                image%status = shifted%status
-               image%failure = 'a finite difference of the period map: '//shifted%failure
+               image%failure = 'a finite difference of the period map: '//trim(shifted%failure)
                return
             end if
             ! the step actually taken (x + h rounds h)

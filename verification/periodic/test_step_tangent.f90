@@ -18,8 +18,7 @@
 !! them (b = df/dp0 or a = df/dp1) moves the tangent far beyond that bound.
 !! Usage: test_step_tangent SCENE.nml springs|held
 program test_step_tangent
-   use vibrobeam_kinds, only: dp, int64, pi
-   use vibrobeam_status, only: outcome_ok
+   use vibrobeam_kinds, only: dp, int64
    use vibrobeam_scene, only: scene_type, forcing_of
    use vibrobeam_problem, only: run_problem, new_stepper, stepper_settings_of
    use vibrobeam_time_stepper, only: time_stepper, dynamic_state
@@ -88,6 +87,7 @@ program test_step_tangent
    tangent(n + 1:, :) = dv
    scale = energy_norm(gram, x)
    noise = 8*epsilon(1.0_dp)*cancellation(gram, image)*energy_norm(gram, image)
+   allocate (h(m))
    h = [(1e-5_dp*scale/sqrt(gram(j, j)), j=1, m)]
 
    ! ---- column by column against central differences ----
@@ -152,8 +152,8 @@ contains
       integer, intent(in) :: j
       real(dp), intent(in) :: step_size
       real(dp), allocatable :: d(:), plus(:), minus(:)
-      plus = x
-      minus = x
+      allocate (plus, source=x)
+      allocate (minus, source=x)
       plus(j) = plus(j) + step_size
       minus(j) = minus(j) - step_size
       d = (one_step(plus) - one_step(minus))/(plus(j) - minus(j))

@@ -37,7 +37,7 @@ program test_period_finder
       call feed(p, 256, 0.0_dp)
       call finder%find(whole, period, mismatch)
       call t%check_true('an exact period: found', period == p)
-      call t%check_true('exact period: mismatch 0', mismatch == 0)
+      call t%check_true('exact period: mismatch 0', abs(mismatch) <= 0)
    end do
 
    ! 2. period 2 with a wobble of 1e-9

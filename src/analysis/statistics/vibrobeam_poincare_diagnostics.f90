@@ -103,7 +103,7 @@ contains
       values(at('period_mismatch')) = mismatch
       call self%zero_one%result(k, lags)
       tolerance = self%period%tolerance(steps_per_period)
-      if (self%zero_one%spread() <= sum(tolerance(1:self%points))) k = 0
+      if (self%zero_one%deviation() <= sum(tolerance(1:self%points))) k = 0
       values(at('zero_one_k')) = k
       values(at('zero_one_lags')) = lags
       call self%lyapunov%exponent(lambda, error, periods)

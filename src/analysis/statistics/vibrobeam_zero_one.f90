@@ -49,7 +49,7 @@ module vibrobeam_zero_one
       procedure :: init
       procedure :: restart
       procedure :: add
-      procedure :: spread
+      procedure :: deviation
       procedure :: result => zero_one_result
       procedure :: save_state
       procedure :: restore_state
@@ -119,14 +119,14 @@ contains
    end subroutine add
 
    !> The standard deviation of the sequence so far (0 with fewer than 2 samples).
-   pure real(dp) function spread(self)
+   pure real(dp) function deviation(self)
       class(zero_one_test), intent(in) :: self
       real(dp) :: mean
-      spread = 0
+      deviation = 0
       if (self%samples < 2) return
       mean = self%total/self%samples
-      spread = sqrt(max(0.0_dp, self%square/self%samples - mean**2))
-   end function spread
+      deviation = sqrt(max(0.0_dp, self%square/self%samples - mean**2))
+   end function deviation
 
    !> K and the lags it used (n_cut; 0 and K = 0 with fewer than min_samples samples).
    subroutine zero_one_result(self, k, lags)

@@ -508,11 +508,11 @@ contains
          type(journal_chunks), intent(inout) :: chunks
          integer, intent(in) :: j
          integer :: c, p
-         integer, allocatable :: next(:)
+         integer :: next(size(points))
          call partial%read_chunks(j, chunks%table, stat, errmsg)
          if (stat /= 0) return
          allocate (chunks%first(size(points) + 1), source=0)
-         allocate (chunks%order(size(chunks%table, 2)))
+         allocate (chunks%order(size(chunks%table, 2)), source=0)
          do c = 1, size(chunks%table, 2)
             p = nint(chunks%table(1, c))
             if (p >= 1 .and. p <= size(points)) chunks%first(p + 1) = chunks%first(p + 1) + 1

@@ -528,6 +528,8 @@ contains
       integer :: j
       stat = 0
       errmsg = ''
+      ! the samples the recorder holds are those of the step the stepper just took
+      if (stepper%steps /= step) return
       associate (statistics => recorder%statistics)
          do j = 1, statistics%poincare_found
             if (self%count == size(self%rows, 2)) call self%flush(stat, errmsg)
