@@ -7,10 +7,10 @@
 !!
 !! The sequence is x_k = (u at each observation point, then v at each) at the k-th
 !! sample; the 0-1 test takes phi_k = the sum of the displacements of x_k (the tip's alone
-!! without &output points). A phi whose standard deviation is within the resolution of
-!! the period finder (the sum of its displacements' tolerances) is constant to what the
-!! scheme resolves: its K is 0, a regular sequence (the test would otherwise read the
-!! round-off, or the slip of the section, as noise).
+!! without &output points). A sequence of period 1 (every sample the same to the period
+!! finder's tolerance, velocities included) is constant to what the scheme resolves: its
+!! K is 0, a regular sequence (the test would otherwise read the round-off, or the slip of
+!! the section, as noise).
 module vibrobeam_poincare_diagnostics
    use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_state_record, only: state_record
@@ -90,7 +90,7 @@ contains
       class(poincare_diagnostics), intent(in) :: self
       type(statistics_layout), intent(in) :: layout
       real(dp), intent(inout) :: values(:), errors(:)
-      real(dp) :: steps_per_period, mismatch, k, lambda, error, tolerance(2*self%points)
+      real(dp) :: steps_per_period, mismatch, k, lambda, error
       integer :: period, lags
       integer(int64) :: periods
       if (.not. self%section) then
@@ -102,8 +102,7 @@ contains
       values(at('period')) = period
       values(at('period_mismatch')) = mismatch
       call self%zero_one%result(k, lags)
-      tolerance = self%period%tolerance(steps_per_period)
-      if (self%zero_one%deviation() <= sum(tolerance(1:self%points))) k = 0
+      if (period == 1) k = 0
       values(at('zero_one_k')) = k
       values(at('zero_one_lags')) = lags
       call self%lyapunov%exponent(lambda, error, periods)

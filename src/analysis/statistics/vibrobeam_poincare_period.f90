@@ -87,9 +87,12 @@ contains
    subroutine observe_step(self, values)
       class(period_finder), intent(inout) :: self
       real(dp), intent(in) :: values(:)
-      if (self%stepped) self%step_change = max(self%step_change, abs(values - self%previous))
-      self%largest = max(self%largest, abs(values))
-      self%previous = values
+      integer :: i
+      do i = 1, self%values
+         if (self%stepped) self%step_change(i) = max(self%step_change(i), abs(values(i) - self%previous(i)))
+         self%largest(i) = max(self%largest(i), abs(values(i)))
+         self%previous(i) = values(i)
+      end do
       self%stepped = .true.
    end subroutine observe_step
 

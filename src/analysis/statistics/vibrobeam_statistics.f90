@@ -230,6 +230,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       logical :: touched(targets(self))
+      real(dp) :: values(2*self%points)   !! u, then v, at each observation point
       integer(int64) :: offset
       real(dp) :: impulse, force
       integer :: k, c, p, obstacle, beam
@@ -285,10 +286,9 @@ contains
             if (touched(k)) call blocks%add(target_sum(self, k, s_contact_steps), 1.0_dp)
          end do
       end associate
-      call self%poincare%sample_step(stepper%steps, reshape(events%observed, [2*self%points]), self%poincare_found, &
-                                     self%sample_times, self%sample_values)
-      call self%diagnostics%observe_step(stepper, reshape(events%observed, [2*self%points]), self%poincare_found, &
-                                         self%sample_values)
+      values = reshape(events%observed, [2*self%points])
+      call self%poincare%sample_step(stepper%steps, values, self%poincare_found, self%sample_times, self%sample_values)
+      call self%diagnostics%observe_step(stepper, values, self%poincare_found, self%sample_values)
       call self%spectrum%add(events%observed(1, 1), stat, errmsg)
       ! the levels (an energy evaluation) only where a block ends
       if (self%blocks%completes_block()) then

@@ -40,7 +40,7 @@ module vibrobeam_zero_one
    type :: zero_one_test
       integer(int64) :: samples = 0              !! N so far
       real(dp) :: first = 0                      !! phi_1
-      real(dp) :: total = 0, square = 0          !! sum and sum of squares of phi_j - phi_1
+      real(dp) :: total = 0                      !! sum of phi_j - phi_1
       real(dp) :: c(frequencies) = 0             !! the frequencies c_k
       real(dp), allocatable :: cosines(:, :), sines(:, :)   !! (frequencies, 0:max_lag-1) cos(mc), -sin(mc)
       real(dp), allocatable :: latest(:)         !! (0:max_lag-1) the last max_lag samples, less phi_1
@@ -49,7 +49,6 @@ module vibrobeam_zero_one
       procedure :: init
       procedure :: restart
       procedure :: add
-      procedure :: deviation
       procedure :: result => zero_one_result
       procedure :: save_state
       procedure :: restore_state
@@ -88,7 +87,6 @@ contains
       self%samples = 0
       self%first = 0
       self%total = 0
-      self%square = 0
       self%latest = 0
       self%sums = 0
    end subroutine clear
@@ -103,7 +101,6 @@ contains
       shifted = phi - self%first
       self%samples = self%samples + 1
       self%total = self%total + shifted
-      self%square = self%square + shifted**2
       slot = int(mod(self%samples, int(max_lag, int64)))
       self%latest(slot) = shifted
       p = 0
@@ -117,16 +114,6 @@ contains
          self%sums(:, n) = self%sums(:, n) + (p**2 + q**2)
       end do
    end subroutine add
-
-   !> The standard deviation of the sequence so far (0 with fewer than 2 samples).
-   pure real(dp) function deviation(self)
-      class(zero_one_test), intent(in) :: self
-      real(dp) :: mean
-      deviation = 0
-      if (self%samples < 2) return
-      mean = self%total/self%samples
-      deviation = sqrt(max(0.0_dp, self%square/self%samples - mean**2))
-   end function deviation
 
    !> K and the lags it used (n_cut; 0 and K = 0 with fewer than min_samples samples).
    subroutine zero_one_result(self, k, lags)
@@ -162,7 +149,7 @@ contains
       type(state_record), intent(inout) :: record
       character(len=*), intent(in) :: prefix
       call record%put_int64s(prefix//'.samples', [self%samples])
-      call record%put_reals(prefix//'.moments', [self%first, self%total, self%square])
+      call record%put_reals(prefix//'.moments', [self%first, self%total])
       call record%put_reals(prefix//'.latest', self%latest)
       call record%put_reals(prefix//'.sums', reshape(self%sums, [size(self%sums)]))
    end subroutine save_state
@@ -174,7 +161,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer(int64) :: samples(1)
-      real(dp) :: moments(3), sums(size(self%sums))
+      real(dp) :: moments(2), sums(size(self%sums))
       call record%get_int64s(prefix//'.samples', samples, stat, errmsg)
       if (stat == 0) call record%get_reals(prefix//'.moments', moments, stat, errmsg)
       if (stat == 0) call record%get_reals(prefix//'.latest', self%latest, stat, errmsg)
@@ -183,7 +170,6 @@ contains
       self%samples = samples(1)
       self%first = moments(1)
       self%total = moments(2)
-      self%square = moments(3)
       self%sums = reshape(sums, shape(self%sums))
    end subroutine restore_state
 end module vibrobeam_zero_one
