@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Draw the plots of a sweep file, as PNG beside it (docs/sweeps.md, "Plots"): the
 # frequency response (STEM_response.png), the bifurcation diagram (STEM_bifurcation.png)
-# and, for a sweep with two parameters, the map (STEM_map.png).
+# with, below it, the period, the 0-1 test and the Lyapunov exponent of each point's
+# Poincare samples (STEM_chaos.png) and, for a sweep with two parameters, the map
+# (STEM_map.png).
 # usage: plot_sweep.sh SWEEP.h5 [--normalise [REFERENCE]]
 #   --normalise            the parameter axis over the first natural frequency of the
 #                          clamped-free beam (continuum closed form, docs/theory.md section 7,
@@ -97,6 +99,12 @@ drawn="${stem}_response.png"
 if awk '!/^#/ && NF {n++} END {exit !(n > 0)}' "${stem}_poincare.dat"; then
   gnuplot -e "$settings" "$here/plot_sweep_bifurcation.gp"
   drawn="$drawn ${stem}_bifurcation.png"
+  # the diagnostics of the samples: one parameter only (a map's lines would overlap), and
+  # a sweep file that has them (a 'zero_one_k' column; earlier sweep files have none)
+  if [ -z "$label2" ] && grep -q '^# [0-9]*: zero_one_k ' "${stem}_sweep.dat"; then
+    gnuplot -e "$settings" "$here/plot_sweep_chaos.gp"
+    drawn="$drawn ${stem}_chaos.png"
+  fi
 fi
 if [ -n "$label2" ]; then
   gnuplot -e "$settings" "$here/plot_sweep_map.gp"

@@ -25,7 +25,8 @@ module vibrobeam_dynamics
    use vibrobeam_checkpoint, only: checkpoint_slots
    use vibrobeam_state_record, only: state_record
    use vibrobeam_progress, only: progress_meter
-   use vibrobeam_statistics, only: statistics_result
+   use vibrobeam_statistics, only: statistics_result, first_value
+   use vibrobeam_statistics_layout, only: group_poincare
    use vibrobeam_run_loop, only: advance, run_hooks
    implicit none
    private
@@ -223,6 +224,7 @@ contains
          outcome%compliant = recorder%compliant
          if (outcome%compliant) outcome%peak_force = maxval(recorder%peak_force)
          outcome%contact_time = maxval([0.0_dp, recorder%contact_time])
+         call take_diagnostics(recorder%window_statistics(stepper), outcome)
          self%summary%status = outcome%status
          self%summary%steps = stepper%steps
          self%summary%wall_seconds = self%meter%elapsed()
@@ -238,6 +240,22 @@ contains
                                              errmsg)
       !$omp end critical (vibrobeam_hdf5)
    end subroutine finish_stream
+
+   !> What the statistics window's Poincare samples say, for the run's summary.
+   subroutine take_diagnostics(window, outcome)
+      type(statistics_result), intent(in) :: window
+      type(run_outcome), intent(inout) :: outcome
+      if (.not. window%present) return
+      outcome%poincare_samples = window%poincare_total
+      outcome%poincare_period = nint(first_value(window, group_poincare, 'period'))
+      outcome%zero_one_k = first_value(window, group_poincare, 'zero_one_k')
+      outcome%zero_one_lags = nint(first_value(window, group_poincare, 'zero_one_lags'))
+      outcome%lyapunov = first_value(window, group_poincare, 'lyapunov_exponent')
+      outcome%lyapunov_error = window%errors(window%layout%entries(window%layout%find(group_poincare, &
+                                                                                       'lyapunov_exponent'))%offset + 1)
+      outcome%lyapunov_per_period = first_value(window, group_poincare, 'lyapunov_exponent_per_period')
+      outcome%lyapunov_periods = nint(first_value(window, group_poincare, 'lyapunov_periods'), int64)
+   end subroutine take_diagnostics
 
    !> The state of stepper and recorder, as a checkpoint holds it.
    subroutine stream_save_state(self, stepper, recorder)

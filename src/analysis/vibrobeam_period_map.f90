@@ -11,8 +11,7 @@ module vibrobeam_period_map
    use vibrobeam_status, only: outcome_ok
    use vibrobeam_scene, only: scene_type
    use vibrobeam_problem, only: run_problem, stepper_settings_of
-   use vibrobeam_band, only: band_matvec
-   use vibrobeam_time_stepper, only: time_stepper, dynamic_state
+   use vibrobeam_time_stepper, only: time_stepper, dynamic_state, energy_norm
    use vibrobeam_stepper_factory, only: new_time_stepper, release_stepper, linearise_step
    use vibrobeam_recorder, only: dynamics_recorder
    use vibrobeam_run_loop, only: advance, run_hooks
@@ -40,7 +39,7 @@ module vibrobeam_period_map
       integer(int64) :: steps_taken = 0      !! every step of every evaluation so far (the cost)
    contains
       procedure :: evaluate
-      procedure :: norm => energy_norm
+      procedure :: norm => state_norm
    end type period_map
 
    !> Phi(x) and what came with it.
@@ -157,24 +156,15 @@ contains
       if (self%linearised) call linearise_step(stepper, self%du, self%dv, stat, errmsg)
    end subroutine track_step
 
-   !> sqrt(U^T (K + omega^2 M) U + V^T M V) of x = (U, V): twice the energy of the state
-   !! with U weighed at the forcing frequency, so that U and V of any unit and the rotations
-   !! of Hermite elements are measured alike (J^(1/2); per unit mass with k2).
-   real(dp) function energy_norm(self, prepared, x)
+   !> The energy norm of x = (U, V) at the forcing frequency (`vibrobeam_time_stepper`'s
+   !! energy_norm, J^(1/2); per unit mass with k2).
+   real(dp) function state_norm(self, prepared, x)
       class(period_map), intent(in) :: self
       type(run_problem), intent(in) :: prepared
       real(dp), intent(in) :: x(:)
-      real(dp) :: mx(self%unknowns), kx(self%unknowns)
-      integer :: n
-      n = self%unknowns
-      associate (model => prepared%system%model)
-         call band_matvec(model%mass, x(1:n), mx)
-         call band_matvec(model%stiffness, x(1:n), kx)
-         energy_norm = dot_product(x(1:n), kx) + self%omega**2*dot_product(x(1:n), mx)
-         call band_matvec(model%mass, x(n + 1:2*n), mx)
-         energy_norm = sqrt(max(0.0_dp, energy_norm + dot_product(x(n + 1:2*n), mx)))
-      end associate
-   end function energy_norm
+      state_norm = energy_norm(prepared%system%model%mass, prepared%system%model%stiffness, self%omega, &
+                               x(1:self%unknowns), x(self%unknowns + 1:2*self%unknowns))
+   end function state_norm
 
    !> The perturbation of each component of x for a forward difference: difference_fraction
    !! of the larger energy norm of x and Phi(x) (1 when both are 0), over the square root

@@ -191,7 +191,8 @@ contains
       self%measure_from = scene%output%measure_from
       call self%statistics%init(window_first_step(scene%output%measure_from, scene%time%dt), last_step, scene%time%dt, &
                                 1 + size(self%point_x), stepper%contacts%lower_obstacle, &
-                                stepper%contacts%upper_obstacle, size(scene%obstacles), omega, phase)
+                                stepper%contacts%upper_obstacle, size(scene%obstacles), omega, phase, &
+                                scene%output%lyapunov, stepper)
       if (problem%reduced) then
          self%reduction = problem%reduction
          allocate (self%observed_rows(problem%reduction%boundary + problem%reduction%modes, size(self%observed_dofs, 2)))

@@ -111,6 +111,14 @@ module vibrobeam_result_files
       real(dp) :: residual = 0                 !! kind = 'periodic': relative residual of the last iterate
       real(dp) :: period = 0                   !! kind = 'periodic': the orbit's period (s)
       real(dp) :: largest_multiplier = 0       !! kind = 'periodic': largest modulus of its Floquet multipliers
+      ! kind = 'dynamics' with a harmonic load: what its Poincare samples say (/statistics/poincare)
+      integer(int64) :: poincare_samples = 0   !! samples in the statistics window (0: no section)
+      integer :: poincare_period = -1          !! of the sequence; 0 none, -1 not determined
+      real(dp) :: zero_one_k = 0               !! the 0-1 test's K
+      integer :: zero_one_lags = 0             !! its lags (0: not determined)
+      real(dp) :: lyapunov = 0, lyapunov_error = 0   !! the largest Lyapunov exponent (1/s) and its standard error
+      real(dp) :: lyapunov_per_period = 0      !! times the forcing period
+      integer(int64) :: lyapunov_periods = 0   !! the periods it covers (0: not asked)
    end type run_outcome
 
 contains

@@ -6,7 +6,7 @@
 !! (docs/output.md, "Exit status").
 program vibrobeam_main
    use, intrinsic :: iso_c_binding, only: c_int
-   use vibrobeam_kinds, only: dp, pi, error_unit, output_unit
+   use vibrobeam_kinds, only: dp, int64, pi, error_unit, output_unit
    use vibrobeam_status, only: exit_ok, exit_other_error, exit_invalid_input, exit_numerical_failure, &
                                exit_interrupted, message_length, stat_numerical_failure, outcome_failed, outcome_interrupted, &
                                outcome_exit_status, stat_invalid_input
@@ -22,6 +22,7 @@ program vibrobeam_main
    use vibrobeam_dynamics, only: run_dynamics
    use vibrobeam_result_files, only: run_outcome, publish_files
    use vibrobeam_text_output, only: derived_file, derive_text_files
+   use vibrobeam_text, only: significant_text, integer_text
    use vibrobeam_hdf5_base, only: close_library
    use vibrobeam_progress, only: progress_meter
    use vibrobeam_signals, only: watch_signals, interrupt_requested, interrupt_name
@@ -342,9 +343,38 @@ contains
          100*outcome%contact_time/max(outcome%steps*scene%time%dt, tiny(1.0_dp)), ' % of the run), '
       write (output_unit, '(f0.2,a)') outcome%wall_seconds, ' s; written to '//trim(scene%output%file)//' (run '// &
          trim(outcome%run_id)//')'
+      if (outcome%poincare_samples > 0) call print_diagnostics(outcome)
       call stop_if_interrupted(outcome%text_skipped)
       call finish(exit_ok)
    end subroutine run_dynamics_scene
+
+   !> What the Poincare samples of the statistics window say (docs/output.md, "What a run
+   !! prints"): their period, the 0-1 test and, when asked, the Lyapunov exponent.
+   subroutine print_diagnostics(outcome)
+      type(run_outcome), intent(in) :: outcome
+      write (output_unit, '(a,i0,a)', advance='no') 'vibrobeam: ', outcome%poincare_samples, ' Poincare samples: '
+      select case (outcome%poincare_period)
+      case (1:)
+         write (output_unit, '(a,i0)', advance='no') 'period ', outcome%poincare_period
+      case (0)
+         write (output_unit, '(a,i0)', advance='no') 'no period up to ', min(64_int64, outcome%poincare_samples/3)
+      case default
+         write (output_unit, '(a)', advance='no') 'period not determined'
+      end select
+      if (outcome%zero_one_lags > 0) then
+         write (output_unit, '(a)', advance='no') ', 0-1 test K = '//significant_text(outcome%zero_one_k, 3)//' ('// &
+            integer_text(outcome%zero_one_lags)//' lags)'
+      else
+         write (output_unit, '(a)', advance='no') ', 0-1 test not determined (fewer than 100 samples)'
+      end if
+      if (outcome%lyapunov_periods > 0) then
+         write (output_unit, '(a)') ', Lyapunov exponent '//significant_text(outcome%lyapunov, 4)//' +- '// &
+            significant_text(outcome%lyapunov_error, 2)//' 1/s ('//significant_text(outcome%lyapunov_per_period, 4)// &
+            ' per forcing period, over '//integer_text(int(outcome%lyapunov_periods))//' periods)'
+      else
+         write (output_unit, '(a)') ''
+      end if
+   end subroutine print_diagnostics
 
    !> A sweep (docs/sweeps.md): every point not yet done, the sweep file, and the exit
    !! status: 0, 3 when a point failed (the sweep file is published, the failed points

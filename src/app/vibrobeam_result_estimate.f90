@@ -33,6 +33,9 @@ module vibrobeam_result_estimate
    use vibrobeam_statistics_layout, only: statistics_layout
    use vibrobeam_poincare, only: kept_samples
    use vibrobeam_sweep_journal, only: record_length, message_words
+   use vibrobeam_sweep_runner, only: chunk_rows
+   use vibrobeam_zero_one, only: frequencies, max_lag
+   use vibrobeam_poincare_period, only: max_period
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, point_scene, point_windows, max_settle_windows
    use vibrobeam_problem, only: run_problem, build_problem, new_stepper
    use vibrobeam_stepper_factory, only: release_stepper
@@ -55,7 +58,7 @@ module vibrobeam_result_estimate
    !> Characters of a number in the .dat files: 'wide' rows (%24.15E) and the field's (%16.7E).
    real(dp), parameter :: wide = 24, narrow = 16
    !> Columns of STEM_sweep.dat and of a sweep's STEM_poincare.dat.
-   integer, parameter :: sweep_columns = 45, sweep_poincare_columns = 7
+   integer, parameter :: sweep_columns = 54, sweep_poincare_columns = 7
 
    !> What a run will write (docs/output.md).
    type :: result_size
@@ -186,6 +189,10 @@ contains
          power = merge(welch_segment/2 + 1, 0, samples > welch_segment)
          h = h + 8*(merge(3, 2, scene%time%scheme == 'position')*unknowns + (1 + points)*(buffer + power) + &
                     min(window, real(welch_segment, dp)) + merge(welch_segment/2 + 1, 0, window > welch_segment))
+         ! with a Poincare section, the diagnostics' accumulators (the 0-1 test's sums, the
+         ! period's ring and differences; the Lyapunov exponent's perturbation)
+         if (forcing_of(scene) /= 'none') h = h + 8*(frequencies*max_lag + max_lag + 4*(1 + points)*max_period + &
+                                                     merge(2*unknowns, 0, scene%output%lyapunov))
       end associate
       if (scene%output%text) then
          associate (t => estimate%text_bytes)
@@ -212,7 +219,7 @@ contains
       type(scene_type) :: local
       type(result_size) :: run
       integer(int64) :: settle_steps, measure_steps
-      real(dp) :: omega, kept
+      real(dp) :: omega, kept, written
       integer :: k, observations, stat
       character(len=256) :: errmsg
       observations = 1
@@ -223,14 +230,22 @@ contains
          call point_windows(settings, local, settle_steps, measure_steps, stat, errmsg)
          if (stat /= 0) cycle
          kept = 0
-         if (forcing_of(local, omega) /= 'none') kept = min(real(kept_samples, dp), &
-                                                            aint(measure_steps*local%time%dt*omega/(2*pi)) + 1)
+         if (forcing_of(local, omega) /= 'none') kept = aint(measure_steps*local%time%dt*omega/(2*pi)) + 1
+         ! poincare_samples = 'all' keeps every sample of the window, and its journal those
+         ! of every window steady_tolerance measures too (at most max_settle_windows)
+         written = kept
+         if (settings%poincare_samples == 'all') then
+            if (settings%steady_tolerance > 0) written = max_settle_windows*kept
+         else
+            kept = min(real(kept_samples, dp), kept)
+            written = kept
+         end if
          ! the sweep file: 16 numbers of the point and every statistic with its error; the
          ! kept Poincare samples (point, branch, parameters, time, u and v)
          estimate%sweep_bytes = estimate%sweep_bytes + 8*(16 + 2*layout%size) + kept*8*(5 + 2*observations)
-         ! the journal: its record and message, the samples again
+         ! the journal: its record and message, the samples again (and their chunks' rows)
          estimate%journal_bytes = estimate%journal_bytes + 8*record_length(layout%size) + 4*(message_words + 1) + &
-                                  kept*8*(1 + 2*observations)
+                                  written*8*(1 + 2*observations) + 24*(aint(written/chunk_rows) + 1)
          if (scene%output%text) estimate%text_bytes = estimate%text_bytes + sweep_columns*wide + 1 + &
                                                       kept*(sweep_poincare_columns*wide + 1)
          if (settings%keep_runs) then

@@ -86,12 +86,15 @@ contains
 
    !> The force of one spring over a step from p0 to p1 (f), its derivative with respect
    !! to p1 (slope, for Newton's method), and its elastic part alone (elastic), so that
-   !! (f - elastic)(p1 - p0) >= 0 is the energy the contact damping takes.
-   pure subroutine step_force(rule, k, a, alpha, theta, dt, p0, p1, f, slope, elastic)
+   !! (f - elastic)(p1 - p0) >= 0 is the energy the contact damping takes; with
+   !! `start_slope`, also its derivative with respect to p0 (the tangent of a step,
+   !! `velocity_stepper%tangent`).
+   pure subroutine step_force(rule, k, a, alpha, theta, dt, p0, p1, f, slope, elastic, start_slope)
       integer, intent(in) :: rule
       real(dp), intent(in) :: k, a, alpha, theta, dt, p0, p1
       real(dp), intent(out) :: f, slope, elastic
-      real(dp) :: dp_, elastic_slope_, factor, scale
+      real(dp), intent(out), optional :: start_slope
+      real(dp) :: dp_, elastic_slope_, start_derivative, factor, scale
       ! below this relative separation of p0 and p1 the discrete gradient is replaced by the
       ! midpoint force, whose difference from it is a(a-1) k p^(a-1) dp^2 / 24: at 1e-5
       ! relative it is below 1e-11 of the force, while the quotient's cancellation would
@@ -102,14 +105,17 @@ contains
       case (rule_mean)
          elastic = theta*elastic_force(k, a, p1) + (1 - theta)*elastic_force(k, a, p0)
          elastic_slope_ = theta*elastic_slope(k, a, p1)
+         start_derivative = (1 - theta)*elastic_slope(k, a, p0)
       case default
          scale = max(abs(p0), abs(p1))
          if (abs(dp_) > close*scale) then
             elastic = (stop_potential(k, a, p1) - stop_potential(k, a, p0))/dp_
             elastic_slope_ = (elastic_force(k, a, p1) - elastic)/dp_
+            start_derivative = (elastic - elastic_force(k, a, p0))/dp_
          else
             elastic = elastic_force(k, a, 0.5_dp*(p0 + p1))
             elastic_slope_ = 0.5_dp*elastic_slope(k, a, 0.5_dp*(p0 + p1))
+            start_derivative = elastic_slope_
          end if
       end select
       if (alpha > 0) then
@@ -117,13 +123,16 @@ contains
          if (factor > 0) then
             f = elastic*factor
             slope = elastic_slope_*factor + elastic*1.5_dp*alpha/dt
+            start_derivative = start_derivative*factor - elastic*1.5_dp*alpha/dt
          else
             f = 0
             slope = 0
+            start_derivative = 0
          end if
       else
          f = elastic
          slope = elastic_slope_
       end if
+      if (present(start_slope)) start_slope = start_derivative
    end subroutine step_force
 end module vibrobeam_compliant_law

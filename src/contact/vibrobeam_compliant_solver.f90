@@ -42,7 +42,7 @@ module vibrobeam_compliant_solver
    use vibrobeam_compliant_law, only: spring_set, step_force
    implicit none
    private
-   public :: compliant_solver, rigid_none, rigid_active, rigid_admissible
+   public :: compliant_solver, rigid_none, rigid_active, rigid_admissible, add_row_product
 
    integer, parameter :: rigid_none = 0, rigid_active = 1, rigid_admissible = 2
    integer, parameter :: max_newton = 60

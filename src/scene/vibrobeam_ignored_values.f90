@@ -126,6 +126,7 @@ contains
          call given_real(scanned, scene, warnings, 'output', 'episode_gap', scene%output%episode_gap, item(14:))
          if (scanned%is_given('output', 'poincare_load')) &
             call add(warnings, '&output poincare_load = '''//trim(scene%output%poincare_load)//''''//item)
+         if (scene%output%lyapunov) call add(warnings, '&output lyapunov = .true.'//item)
       end if
 
       ! &mesh: the reduction steps a dynamics run only

@@ -23,6 +23,9 @@ module vibrobeam_output_settings
       real(dp) :: checkpoint_seconds = 0      !! > 0: restartable checkpoint this often (wall s)
       real(dp) :: episode_gap = unset         !! impacts closer than this form one episode (s); unset: default
       character(len=keyword_length) :: poincare_load = 'auto'   !! whose phase times the Poincare samples
+      !> the largest Lyapunov exponent of the discrete map over the statistics window (a
+      !! tangent step per step: opt-in)
+      logical :: lyapunov = .false.
    end type output_settings
 
 contains
@@ -55,5 +58,7 @@ contains
       call visitor%variable(keyword_row('output', 'poincare_load', 'auto|base|point|distributed', keyword_length, &
                                         'the harmonic load whose phase times the Poincare samples'), &
                             output%poincare_load)
+      call visitor%variable(logical_row('output', 'lyapunov', 'the largest Lyapunov exponent of the discrete map '// &
+                                        'over the statistics window (a tangent step per step)'), output%lyapunov)
    end subroutine visit_output
 end module vibrobeam_output_settings

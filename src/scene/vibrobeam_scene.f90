@@ -626,6 +626,23 @@ contains
                          ''' names no harmonic load: give that load a non-zero amplitude and frequency, or write '// &
                          '''auto''')
          end if
+         ! the Lyapunov exponent (docs/statistics.md): renormalised once per forcing period,
+         ! through the velocity scheme's tangent (Rayleigh damping; no fluid-elastic force)
+         if (output%lyapunov .and. scene%analysis%kind == 'dynamics') then
+            if (forcing_of(scene) == 'none') &
+               call fail(stat, errmsg, '&output lyapunov = .true. needs a harmonic load (&load base_frequency, '// &
+                         'point_frequency or distributed_frequency with its amplitude): the exponent is renormalised '// &
+                         'once per forcing period, at the Poincare section')
+            if (scene%time%scheme /= 'velocity') &
+               call fail(stat, errmsg, '&output lyapunov = .true. is not available with &time scheme = '''// &
+                         trim(scene%time%scheme)//''': the tangent map is the velocity scheme''s')
+            if (scene%beam%modal()) &
+               call fail(stat, errmsg, '&output lyapunov = .true. is not available with &beam modal_damping (or '// &
+                         'modal_damping_ratios): the tangent map holds Rayleigh damping only, for now')
+            if (scene%flow%velocity > 0) &
+               call fail(stat, errmsg, '&output lyapunov = .true. is not available with &flow velocity = '// &
+                         real_text(scene%flow%velocity)//' m/s: the tangent map has no fluid-elastic force, for now')
+         end if
       end associate
    end subroutine output_rules
 

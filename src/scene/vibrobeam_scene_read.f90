@@ -506,6 +506,7 @@ contains
       settings%measure_periods = input%measure_periods
       settings%steady_tolerance = input%steady_tolerance
       settings%keep_runs = input%keep_runs
+      settings%poincare_samples = input%poincare_samples
       settings%point_position_given = reader%scanned%is_given('load', 'point_position')
       do i = 1, max_obstacles
          settings%x_from_given(i) = reader%scanned%is_given('obstacles', 'x_from', i)

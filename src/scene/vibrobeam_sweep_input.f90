@@ -23,6 +23,7 @@ module vibrobeam_sweep_input
       real(dp) :: settle = 0, measure = 0, settle_periods = 0, measure_periods = 0
       real(dp) :: steady_tolerance = 0
       logical :: keep_runs = .false.
+      character(len=keyword_length) :: poincare_samples = 'latest'   !! 'latest' (256) | 'all' of a point's window
    end type sweep_input
 
 contains
@@ -71,5 +72,8 @@ contains
                             sweep%steady_tolerance)
       call visitor%variable(logical_row('sweep', 'keep_runs', 'also write each point''s full result file'), &
                             sweep%keep_runs)
+      call visitor%variable(keyword_row('sweep', 'poincare_samples', 'latest|all', keyword_length, &
+                                        'the Poincare samples of a point the sweep file keeps: the latest 256, or '// &
+                                        'every one of its window'), sweep%poincare_samples)
    end subroutine visit_sweep
 end module vibrobeam_sweep_input

@@ -44,6 +44,9 @@ module vibrobeam_sweep_points
       real(dp) :: settle = 0, measure = 0, settle_periods = 0, measure_periods = 0
       real(dp) :: steady_tolerance = 0
       logical :: keep_runs = .false.
+      !> 'latest': the last `kept_samples` Poincare samples of each point's window go into
+      !! the sweep file; 'all': every one, streamed into the journal while the point runs
+      character(len=keyword_length) :: poincare_samples = 'latest'
       ! inputs whose default follows another input (docs/sweeps.md, "The parameter")
       logical :: point_position_given = .true.
       logical :: x_from_given(max_obstacles) = .true., x_to_given(max_obstacles) = .true., &

@@ -68,8 +68,10 @@ contains
       end select
    end subroutine state_from_record
 
-   !> Whether `linearise_step` can linearise the steps of `stepper` (docs/method.md,
-   !! "Periodic orbits by shooting"): the velocity scheme with rigid stops only.
+   !> Whether the period map takes the monodromy from `linearise_step` for `stepper`
+   !! (docs/method.md, "Periodic orbits by shooting"): the velocity scheme with rigid stops
+   !! only. `linearise_step` also linearises compliant stops (the Lyapunov exponent's
+   !! tangent), but the periodic analysis keeps its finite differences there.
    logical function can_linearise(stepper)
       class(time_stepper), intent(in) :: stepper
       select type (stepper)

@@ -18,7 +18,7 @@ module vibrobeam_time_stepper
    implicit none
    private
    public :: time_stepper, stepper_settings, dynamic_state, step_report, energy_ledger
-   public :: save_stepper_state, restore_stepper_state, unresolved_fraction, checkpoint_state
+   public :: save_stepper_state, restore_stepper_state, unresolved_fraction, checkpoint_state, energy_norm
 
    !> The largest share of the energy scale the compliant stops' unresolved work may reach
    !! before the run stops as a numerical failure (docs/theory.md section 8, "Accuracy"):
@@ -160,6 +160,23 @@ contains
       call band_matvec(self%mass, self%v, mv)
       energy = 0.5_dp*dot_product(self%v, mv)
    end function kinetic_energy
+
+   !> sqrt(U^T (K + omega^2 M) U + V^T M V) of a state (U, V), or of a perturbation of one:
+   !! twice its energy with U weighed at the frequency omega, so that U and V of any unit
+   !! and the rotations of Hermite elements are measured alike, and the rigid-body motions
+   !! that supports let the beam make have a norm too (J^(1/2); per unit mass with k2).
+   !! The norm of the period map (docs/method.md, "Periodic orbits by shooting") and of the
+   !! Lyapunov exponent's perturbation (docs/statistics.md).
+   function energy_norm(mass, stiffness, omega, u, v) result(norm)
+      type(symmetric_band), intent(in) :: mass, stiffness
+      real(dp), intent(in) :: omega, u(:), v(:)
+      real(dp) :: norm, mx(size(u)), kx(size(u))
+      call band_matvec(mass, u, mx)
+      call band_matvec(stiffness, u, kx)
+      norm = dot_product(u, kx) + omega**2*dot_product(u, mx)
+      call band_matvec(mass, v, mx)
+      norm = sqrt(max(0.0_dp, norm + dot_product(v, mx)))
+   end function energy_norm
 
    !> 1/2 U^T K U (J).
    function elastic_energy(self) result(energy)

@@ -25,7 +25,7 @@ module vibrobeam_velocity_stepper
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
    use vibrobeam_status, only: stat_not_finite, stat_invalid_argument, stat_linear_solver_failure
-   use vibrobeam_band, only: band_matvec, band_residual_solve, band_solve
+   use vibrobeam_band, only: symmetric_band, band_cholesky, band_matvec, band_residual_solve, band_solve, band_factor
    use vibrobeam_lapack, only: dpotrf, dpotrs
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
@@ -33,8 +33,8 @@ module vibrobeam_velocity_stepper
       restore_stepper_state
    use vibrobeam_discrete_system, only: discrete_system
    use vibrobeam_state_record, only: state_record
-   use vibrobeam_compliant_law, only: end_force, stop_potential
-   use vibrobeam_compliant_solver, only: rigid_active
+   use vibrobeam_compliant_law, only: end_force, stop_potential, step_force
+   use vibrobeam_compliant_solver, only: rigid_active, add_row_product
    implicit none
    private
    public :: velocity_stepper
@@ -50,6 +50,7 @@ module vibrobeam_velocity_stepper
       real(dp), allocatable :: rhs(:), work_vector(:), damping_vector(:), v_free(:), v_new(:), u_new(:), &
                                force_new(:), force_theta(:), modal_vector(:)
       real(dp), allocatable :: signs(:), offsets(:)   !! (contact points) work space of `step`
+      real(dp), allocatable :: spring_start(:)        !! (springs) their penetrations at the last step's start (m)
       ! u = U^n, v = V^n; work = sum F^{n+theta}.(U^{n+1} - U^n),
       ! dissipated_impacts = -sum P.H (V^{n+1} + V^n)/2,
       ! dissipated_damping = sum dt V^{n+theta}.C V^{n+theta} (+ dt V^{n+theta}.C_m V^n per mode),
@@ -91,6 +92,7 @@ contains
       allocate (self%rhs(n), self%work_vector(n), self%damping_vector(n), self%v_free(n), self%v_new(n), &
                 self%u_new(n), self%force_new(n), self%force_theta(n), self%modal_vector(n), source=0.0_dp)
       allocate (self%signs(system%contacts%count), self%offsets(system%contacts%count))
+      allocate (self%spring_start(system%contacts%springs%count), source=0.0_dp)
    end subroutine init
 
    !> The base type's restore, then F(t_n) from the loads (which a continued run may change).
@@ -272,14 +274,21 @@ contains
    !! perturbation of U^{n+1} and V^{n+1} it makes out (docs/method.md, "Periodic orbits by
    !! shooting"). With the points h the step held (an impulse P_c /= 0) and their
    !! restitution e_c,
-   !!   dV_free = dV + dt W^-1 (-C dV - K (dU + theta dt dV)),
-   !!   dV' = dV_free - W^-1 H_h^T D^-1 (H_h dV_free + E_h H_h dV),  D = H_h W^-1 H_h^T,
-   !!   dU' = dU + dt (theta dV' + (1 - theta) dV):
-   !! the step is affine in (U^n, V^n) as long as the same points are active, the same
-   !! of them held and each approaches or separates as it did (the period map is
-   !! piecewise affine; a piece ends where an activation test, an impulse's sign or an
-   !! approach changes). Rigid stops only: with compliant stops (whose forces this does not
-   !! linearise) stat_invalid_argument; stat_linear_solver_failure when D is singular.
+   !!   dV_free = dV + dt J^-1 (-C dV - K (dU + theta dt dV) - S),
+   !!   dV' = dV_free - J^-1 H_h^T D^-1 (H_h dV_free + E_h H_h dV),  D = H_h J^-1 H_h^T,
+   !!   dU' = dU + dt (theta dV' + (1 - theta) dV),
+   !! J = W without compliant stops (S = 0): the step is affine in (U^n, V^n) as long as the
+   !! same points are active, the same of them held and each approaches or separates as it
+   !! did (the period map is piecewise affine; a piece ends where an activation test, an
+   !! impulse's sign or an approach changes). With compliant stops (docs/method.md,
+   !! "Compliant stops"), each spring j's step force f_j(p0_j, p1_j) of the penetrations at
+   !! the step's start and end has the slopes a_j = df/dp1 and b_j = df/dp0 there, and
+   !! differentiating W (V' - V_free) = dt sum_j s_j f_j H_j^T gives
+   !!   J = W + theta dt^2 sum_j a_j H_j^T H_j,  S = sum_j ((a_j + b_j) H_j dU + a_j dt H_j dV) H_j^T,
+   !! the held points projected in the metric J as the step's Newton solve does. The map is
+   !! then smooth where every spring stays engaged or free (its pieces end where a spring
+   !! engages or the contact damping's factor reaches 0). stat_linear_solver_failure when D
+   !! or J is singular.
    subroutine tangent(self, du, dv, stat, errmsg)
       class(velocity_stepper), intent(in) :: self
       real(dp), intent(inout) :: du(:, :), dv(:, :)   !! (unknowns, columns)
@@ -288,13 +297,29 @@ contains
       real(dp), allocatable :: columns(:, :), delassus(:, :)
       real(dp), dimension(size(self%u)) :: v_free, y, x, b, z
       real(dp) :: e(self%report%active_count), q(self%report%active_count)
+      real(dp) :: end_slope(self%contacts%springs%count), start_slope(self%contacts%springs%count)
       integer :: held(self%report%active_count), h, k, j, a, info
+      type(symmetric_band) :: jacobian
+      type(band_cholesky), target :: jacobian_factor
+      type(band_cholesky), pointer :: factor
       stat = 0
       errmsg = ''
-      if (self%contacts%springs%count > 0) then
-         stat = stat_invalid_argument
-         errmsg = 'the steps with compliant stops are not linearised (their forces depend on the state)'
-         return
+      factor => null()
+      call spring_slopes(end_slope, start_slope)
+      if (any(end_slope > 0 .or. abs(start_slope) > 0)) then
+         ! J = W + theta dt^2 sum_j a_j H_j^T H_j, factored for this step
+         jacobian = self%iteration_matrix
+         do j = 1, self%contacts%springs%count
+            if (end_slope(j) > 0) call add_row_product(jacobian, self%contacts, self%contacts%springs%point(j), &
+                                                       self%theta*self%dt**2*end_slope(j))
+         end do
+         call band_factor(jacobian, jacobian_factor, stat, errmsg)
+         if (stat /= 0) then
+            stat = stat_linear_solver_failure
+            errmsg = 'the tangent of a step with compliant stops: '//trim(errmsg)
+            return
+         end if
+         factor => jacobian_factor
       end if
       h = 0
       do k = 1, self%report%active_count
@@ -304,7 +329,7 @@ contains
          e(h) = merge(self%restitution, self%separating_restitution, self%report%approaching(k))
       end do
       if (h > 0) then
-         ! W^-1 H_c^T for each held point and the Delassus matrix D = H W^-1 H^T (h x h, SPD)
+         ! J^-1 H_c^T for each held point and the Delassus matrix D = H J^-1 H^T (h x h, SPD)
          allocate (columns(size(self%u), h), delassus(h, h))
          do k = 1, h
             columns(:, k) = 0
@@ -312,7 +337,11 @@ contains
                if (self%contacts%dofs(a, held(k)) /= 0) columns(self%contacts%dofs(a, held(k)), k) = &
                   columns(self%contacts%dofs(a, held(k)), k) + self%contacts%weights(a, held(k))
             end do
-            call band_solve(self%iteration_factor, columns(:, k))
+            if (associated(factor)) then
+               call band_solve(factor, columns(:, k))
+            else
+               call band_solve(self%iteration_factor, columns(:, k))
+            end if
          end do
          do k = 1, h
             do j = 1, h
@@ -333,7 +362,19 @@ contains
             call self%damping_into(dv(:, j), b, z)
             b = -b
          end if
-         call band_residual_solve(self%iteration_factor, self%stiffness, x, b, y)
+         if (associated(factor)) then
+            if (.not. (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0)) b = 0
+            do k = 1, self%contacts%springs%count
+               if (end_slope(k) <= 0 .and. abs(start_slope(k)) <= 0) cycle
+               associate (point => self%contacts%springs%point(k))
+                  call add_row(b, point, -((end_slope(k) + start_slope(k))*contact_value(self%contacts, point, du(:, j)) + &
+                                          end_slope(k)*self%dt*contact_value(self%contacts, point, dv(:, j))))
+               end associate
+            end do
+            call band_residual_solve(factor, self%stiffness, x, b, y)
+         else
+            call band_residual_solve(self%iteration_factor, self%stiffness, x, b, y)
+         end if
          v_free = dv(:, j) + self%dt*y
          if (h > 0) then
             do k = 1, h
@@ -345,6 +386,35 @@ contains
          du(:, j) = du(:, j) + self%dt*(self%theta*v_free + (1 - self%theta)*dv(:, j))
          dv(:, j) = v_free
       end do
+
+   contains
+
+      !> a_j and b_j of every spring at the last step's start and end penetrations (0 for
+      !! a spring the step left free).
+      subroutine spring_slopes(end_slope, start_slope)
+         real(dp), intent(out) :: end_slope(:), start_slope(:)
+         real(dp) :: f, elastic
+         integer :: i
+         associate (springs => self%contacts%springs)
+            do i = 1, springs%count
+               call step_force(self%compliant_rule, springs%stiffness(i), springs%exponent(i), springs%damping(i), &
+                               self%theta, self%dt, self%spring_start(i), self%compliant%p1(i), f, end_slope(i), &
+                               elastic, start_slope(i))
+            end do
+         end associate
+      end subroutine spring_slopes
+
+      !> r <- r + w H_c^T.
+      subroutine add_row(r, c, w)
+         real(dp), intent(inout) :: r(:)
+         integer, intent(in) :: c
+         real(dp), intent(in) :: w
+         integer :: i
+         do i = 1, 4
+            if (self%contacts%dofs(i, c) /= 0) r(self%contacts%dofs(i, c)) = r(self%contacts%dofs(i, c)) + &
+                                                                                w*self%contacts%weights(i, c)
+         end do
+      end subroutine add_row
    end subroutine tangent
 
    !> Step 3 with compliant stops: V^{n+1} from Newton's method on
@@ -363,6 +433,7 @@ contains
       m = size(signs)
       associate (springs => self%contacts%springs, dt => self%dt, theta => self%theta)
          p0 = self%spring_penetrations(self%u)
+         self%spring_start = p0
          q = self%spring_penetrations(self%u + dt*(1 - theta)*self%v)
          call self%compliant%solve(springs, self%contacts, self%iteration_matrix, self%projector, v_free, q, p0, &
                                    theta*dt, dt, theta, dt, rigid_active, self%report%active(1:m), signs, offsets, v_new, &

@@ -9,7 +9,8 @@
 #
 # A change that adds input variables lists their defaults in every result: name them in
 # VIBROBEAM_NEW_INPUTS (e.g. VIBROBEAM_NEW_INPUTS='forces.') to leave them out of the
-# comparison (compare_results.py).
+# comparison (compare_results.py); one that adds outputs names their paths in
+# VIBROBEAM_NEW_OUTPUTS (compare_results.py says how they are matched).
 #
 # Scenes that need files the test harness writes first (from_file of an earlier run) run as
 # they are: both builds must then fail alike. Prints one line per scene and a summary;
@@ -45,7 +46,8 @@ for scene in "${scenes[@]}"; do
     case "$relative" in
       *.h5) "$python" "$here/compare_results.py" "$file" "$work/new/$relative" > "$work/diff.txt" ||
               problems+=("$relative: $(head -3 "$work/diff.txt" | tr '\n' ' ')") ;;
-      *.dat) cmp -s <(tail -n +2 "$file") <(tail -n +2 "$work/new/$relative") || problems+=("$relative differs") ;;
+      *.dat) "$python" "$here/compare_results.py" --text "$file" "$work/new/$relative" > /dev/null ||
+               problems+=("$relative differs") ;;
     esac
   done < <(find "$work/old" -type f \( -name '*.h5' -o -name '*.dat' \) | sort)
   extra=$(cd "$work/new" && find . -type f \( -name '*.h5' -o -name '*.dat' \) | while read -r f; do

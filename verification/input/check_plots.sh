@@ -10,7 +10,11 @@
 #  - a forced single run with an observation point: plot_results.sh --point 1 draws the
 #    spectrum, the phase portrait and the Poincare section at that point without a
 #    warning, the spectrum on log axes over the band of the response; --point 2 (no such
-#    point) is refused.
+#    point) is refused;
+#  - a one-parameter sweep with &output lyapunov: plot_sweep.sh draws STEM_chaos.png
+#    without a warning, its Lyapunov panel over the points' exponents (issue 20, item 3);
+#  - a periodic orbit: plot_results.sh draws its multipliers without a warning, their
+#    moduli's panel from the smallest to 10 times max(1, the largest).
 # usage: check_plots.sh VIBROBEAM SCRIPTS_DIRECTORY
 set -uo pipefail
 vibrobeam=$1; scripts=$2
@@ -102,6 +106,54 @@ $beam
 NML
 "$vibrobeam" free.nml > free.out 2> free.err || { fail "the run without stops"; cat free.err; }
 spectrum_axes free 1 0.1
+
+# the Poincare samples' diagnostics along a one-parameter sweep with the Lyapunov
+# exponent (issue 20, item 3): plot_sweep.sh draws STEM_chaos.png, its last panel the
+# exponent per forcing period over the points' values (gnuplot's axis reaches them)
+cat > chaos.nml <<NML
+$beam
+&mesh elements = 8 /
+&obstacles count = 2, side(1) = 'below', x_from(1) = 0.5, level_from(1) = -5e-4,
+                      side(2) = 'above', x_from(2) = 0.5, level_from(2) = 5e-4 /
+&impact restitution = 0.7 /
+&time dt = 4e-5 /
+&load point_force = 2, point_frequency = 200 /
+&output file = 'chaos.h5', lyapunov = .true. /
+&sweep parameter = 'load.point_frequency', values = 150, 276, settle_periods = 5, measure_periods = 20 /
+NML
+"$vibrobeam" chaos.nml > chaos.out 2> chaos.err || { fail "the sweep with the Lyapunov exponent"; cat chaos.err; }
+VIBROBEAM=$vibrobeam bash "$scripts/plot_sweep.sh" chaos.h5 > chaos_plot.out 2> chaos_plot.err || fail "plot_sweep.sh (chaos)"
+quiet chaos_plot.err || fail "plot_sweep.sh (chaos) printed a warning"
+[ "$(stat -c %s chaos_chaos.png 2> /dev/null || echo 0)" -gt 10000 ] || fail "chaos_chaos.png not drawn"
+range=$(gnuplot -e "stem='chaos'" "$scripts/plot_sweep_chaos.gp" -e "print GPVAL_Y_MIN, GPVAL_Y_MAX" 2>&1)
+awk -v range="$range" -v c="$(sed -n 's/^# \([0-9]*\): lyapunov_exponent_per_period .*/\1/p' chaos_sweep.dat)" '
+  !/^#/ && NF { n++; if (n == 1 || $c < low) low = $c; if (n == 1 || $c > high) high = $c }
+  END { split(range, g, " "); printf "exponent panel: %s to %s, the exponents %.6g to %.6g\n", g[1], g[2], low, high
+        exit !(n == 2 && g[1] <= low && g[2] >= high && low < 0) }' chaos_sweep.dat ||
+  fail "the Lyapunov panel does not show the points' exponents ($range)"
+
+# a periodic orbit's Floquet multipliers: the complex plane and their moduli on a log scale
+cat > orbit.nml <<NML
+$beam
+&mesh elements = 8 /
+&analysis kind = 'periodic' /
+&periodic steps_per_period = 500, transient_periods = 10 /
+&obstacles count = 1, side(1) = 'below', x_from(1) = 0.5, level_from(1) = -5e-4 /
+&impact restitution = 0.5 /
+&load point_force = 2, point_frequency = 215 /
+&output file = 'orbit.h5' /
+NML
+"$vibrobeam" orbit.nml > orbit.out 2> orbit.err
+bash "$scripts/plot_results.sh" orbit.h5 > orbit_plot.out 2> orbit_plot.err || fail "plot_results.sh (periodic)"
+quiet orbit_plot.err || fail "plot_results.sh (periodic) printed a warning"
+[ "$(stat -c %s orbit_periodic.png 2> /dev/null || echo 0)" -gt 10000 ] || fail "orbit_periodic.png not drawn"
+# the moduli panel reaches from the smallest positive modulus to 10 times max(1, the largest)
+range=$(gnuplot -e "stem='orbit'" "$scripts/plot_periodic.gp" -e "print GPVAL_Y_MIN, GPVAL_Y_MAX" 2>&1)
+awk -v range="$range" '!/^#/ && NF && $3 > 0 { if (!n || $3 < low) low = $3; if ($3 > high) high = $3; n++ }
+  END { split(range, g, " "); top = (10 * high > 10 ? 10 * high : 10)
+        printf "moduli panel: %s to %s, the moduli %.3g to %.3g\n", g[1], g[2], low, high
+        exit !(n > 0 && g[1] <= low && g[2] >= top * (1 - 1e-9)) }' orbit_multipliers.dat ||
+  fail "the moduli panel does not show every multiplier and the unit line ($range)"
 
 [ $failed -eq 0 ] && echo "check_plots: every plot drawn and checked"
 exit $failed

@@ -5,7 +5,8 @@
 #             (&initial from_file) give bitwise identical histories over the continued
 #             part, the same spectrum, contact fractions, statistics and final state
 #             (compare_continued); also a scene with a compliant stop, continued inside a
-#             compliant episode
+#             compliant episode, and one with the Poincare diagnostics and the Lyapunov
+#             exponent
 #   refused   a file that does not match the scene is refused with exit status 2, a message
 #             naming the group, the variable, the file's value and the scene's, and nothing
 #             written: the model (basis, elements, reduction, length), the time scheme, the
@@ -90,6 +91,21 @@ bitwise)
   for name in full half continued; do run ${name}_compliant; done
   echo "compliant stop:"
   "$compare" full_compliant.h5 continued_compliant.h5 || failed=1
+
+  # the Poincare diagnostics (docs/statistics.md, "Period, Lyapunov exponent and the 0-1
+  # test") with &output lyapunov: the load at 4000 rad/s gives 108 samples in the window,
+  # so that the 0-1 test is computed (>= 100) and every accumulator is carried across
+  scheme=velocity; basis=hermite
+  scene full 0.2
+  scene half 0.1
+  scene continued 0.2 half.h5
+  for name in full half continued; do
+    sed -e "s/distributed_frequency = 150/distributed_frequency = 4000/" -e "s/measure_from = 0.03/measure_from = 0.03, lyapunov = .true./" \
+        -e "s/'$name.h5'/'${name}_lyapunov.h5'/" -e "s/'half.h5'/'half_lyapunov.h5'/" $name.nml > ${name}_lyapunov.nml
+    run ${name}_lyapunov
+  done
+  echo "Poincare diagnostics with the Lyapunov exponent:"
+  "$compare" full_lyapunov.h5 continued_lyapunov.h5 || failed=1
   ;;
 
 refused)

@@ -6,10 +6,11 @@ module vibrobeam_periodic_reference
    use vibrobeam_kinds, only: dp
    use vibrobeam_band, only: band_to_dense
    use vibrobeam_problem, only: run_problem
-   use vibrobeam_lapack, only: dgesv, dpotrf
+   use vibrobeam_lapack, only: dgesv, dpotrf, dgeevx
    implicit none
    private
    public :: identity, solve_dense, energy_gram, energy_norm, cancellation, fixed_point_condition
+   public :: amplification_matrix, eigenvalues_with_conditions
 
 contains
 
@@ -33,6 +34,46 @@ contains
       call dgesv(size(copy, 1), size(b, 2), copy, size(copy, 1), ipiv, b, size(b, 1), status)
       if (status /= 0) error stop 'dgesv: singular matrix'
    end subroutine solve_dense
+
+   !> The one-step amplification matrix A of the velocity scheme without contact,
+   !! (U', V') = A (U, V) + load terms: W (V' - V) = -dt (C V + K (U + theta dt V)),
+   !! U' = U + dt (theta V' + (1 - theta) V), W = M + theta dt C + theta^2 dt^2 K, from the
+   !! dense M, K and C = damping of the stepped system.
+   function amplification_matrix(mass, stiffness, damping, dt, theta) result(a)
+      real(dp), intent(in) :: mass(:, :), stiffness(:, :), damping(:, :), dt, theta
+      real(dp) :: a(2*size(mass, 1), 2*size(mass, 1))
+      real(dp) :: work(size(mass, 1), 2*size(mass, 1)), eye(size(mass, 1), size(mass, 1))
+      integer :: n
+      n = size(mass, 1)
+      eye = identity(n)
+      work(:, 1:n) = stiffness
+      work(:, n + 1:) = damping + theta*dt*stiffness
+      call solve_dense(mass + theta*dt*damping + theta**2*dt**2*stiffness, work)
+      a(n + 1:, 1:n) = -dt*work(:, 1:n)
+      a(n + 1:, n + 1:) = eye - dt*work(:, n + 1:)
+      a(1:n, 1:n) = eye + theta*dt*a(n + 1:, 1:n)
+      a(1:n, n + 1:) = theta*dt*a(n + 1:, n + 1:) + (1 - theta)*dt*eye
+   end function amplification_matrix
+
+   !> Eigenvalues of `matrix`, the reciprocal condition number of each and the right
+   !! eigenvectors (LAPACK dgeevx; a complex pair as the real and imaginary parts of its
+   !! first vector in two columns).
+   subroutine eigenvalues_with_conditions(matrix, wr, wi, rconde, vr)
+      real(dp), intent(in) :: matrix(:, :)
+      real(dp), intent(out) :: wr(:), wi(:), rconde(:), vr(:, :)
+      real(dp) :: copy(size(matrix, 1), size(matrix, 1)), vl(size(matrix, 1), size(matrix, 1)), &
+                  scale(size(matrix, 1)), rcondv(size(matrix, 1)), abnrm, query(1)
+      real(dp), allocatable :: space(:)
+      integer :: iwork(2*size(matrix, 1)), ilo, ihi, status, size1
+      size1 = size(matrix, 1)
+      copy = matrix
+      call dgeevx('N', 'V', 'V', 'E', size1, copy, size1, wr, wi, vl, size1, vr, size1, ilo, ihi, scale, abnrm, &
+                  rconde, rcondv, query, -1, iwork, status)
+      allocate (space(int(query(1))))
+      call dgeevx('N', 'V', 'V', 'E', size1, copy, size1, wr, wi, vl, size1, vr, size1, ilo, ihi, scale, abnrm, &
+                  rconde, rcondv, space, size(space), iwork, status)
+      if (status /= 0) error stop 'dgeevx failed'
+   end subroutine eigenvalues_with_conditions
 
    !> G = diag(K + omega^2 M, M) of the stepped system, dense (2 unknowns square).
    function energy_gram(prepared, omega) result(gram)

@@ -21,9 +21,9 @@ program test_periodic_linear
    use vibrobeam_problem, only: run_problem
    use vibrobeam_band, only: band_to_dense
    use vibrobeam_model, only: node_row
-   use vibrobeam_lapack, only: dgeevx, zgesv
+   use vibrobeam_lapack, only: zgesv
    use vibrobeam_periodic_reference, only: identity, solve_dense, energy_gram, energy_norm, cancellation, &
-      fixed_point_condition
+      fixed_point_condition, amplification_matrix, eigenvalues_with_conditions
    use vibrobeam_periodic_analysis, only: find_periodic_orbit, periodic_orbit
    use vibrobeam_period_map, only: difference_fraction
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
@@ -33,8 +33,8 @@ program test_periodic_linear
    type(run_problem) :: prepared
    type(periodic_orbit) :: orbit
    character(len=512) :: path, errmsg
-   real(dp), allocatable :: mass(:, :), stiffness(:, :), damping(:, :), w(:, :), a(:, :), work(:, :), gram(:, :), &
-                            eye(:, :), tip_row(:), x_ref(:), &
+   real(dp), allocatable :: mass(:, :), stiffness(:, :), damping(:, :), w(:, :), a(:, :), gram(:, :), &
+                            tip_row(:), x_ref(:), &
                             tip_ref(:), wr(:), wi(:), rconde(:), vectors(:, :)
    complex(dp), allocatable :: system(:, :), rhs(:, :), mu_ref(:)
    complex(dp) :: z, g
@@ -58,7 +58,7 @@ program test_periodic_linear
    ! ---- the scheme's matrices, dense, from the stepped system's M and K ----
    n = prepared%system%model%unknowns
    m = 2*n
-   allocate (mass(n, n), stiffness(n, n), damping(n, n), w(n, n), eye(n, n), x_ref(m), gram(m, m))
+   allocate (mass(n, n), stiffness(n, n), damping(n, n), w(n, n), x_ref(m), gram(m, m))
    mass = band_to_dense(prepared%system%model%mass)
    stiffness = band_to_dense(prepared%system%model%stiffness)
    dt = scene%time%dt
@@ -68,17 +68,9 @@ program test_periodic_linear
    omega = maxval([scene%load%point_frequency, scene%load%base_frequency, scene%load%distributed_frequency])
    period = 2*pi/omega
    steps = nint(scene%periodic%period_multiple*period/dt, int64)
-   eye = identity(n)
 
    ! ---- one-step amplification matrix A: V' = A21 U + A22 V, U' = A11 U + A12 V ----
-   allocate (work(n, 2*n), pivots(n), a(m, m))
-   work(:, 1:n) = stiffness
-   work(:, n + 1:) = damping + theta*dt*stiffness
-   call solve_dense(w, work)
-   a(n + 1:, 1:n) = -dt*work(:, 1:n)
-   a(n + 1:, n + 1:) = eye - dt*work(:, n + 1:)
-   a(1:n, 1:n) = eye + theta*dt*a(n + 1:, 1:n)
-   a(1:n, n + 1:) = theta*dt*a(n + 1:, n + 1:) + (1 - theta)*dt*eye
+   a = amplification_matrix(mass, stiffness, damping, dt, theta)
 
    ! ---- the harmonic steady state (complex system, zgesv) ----
    z = exp(cmplx(0.0_dp, omega*dt, dp))
@@ -93,7 +85,6 @@ program test_periodic_linear
       system(n + j, n + j) = -dt*g
    end do
    rhs(n + 1:, 1) = 0
-   deallocate (pivots)
    allocate (pivots(m))
    call zgesv(m, 1, system, m, pivots, rhs, m, info)
    call t%check_true('zgesv solves the harmonic system', info == 0)
@@ -231,22 +222,4 @@ contains
       dual_norm = sqrt(dot_product(row, b(:, 1)))
    end function dual_norm
 
-   !> Eigenvalues of `matrix`, the reciprocal condition number of each and the right
-   !! eigenvectors (LAPACK dgeevx).
-   subroutine eigenvalues_with_conditions(matrix, wr, wi, rconde, vr)
-      real(dp), intent(in) :: matrix(:, :)
-      real(dp), intent(out) :: wr(:), wi(:), rconde(:), vr(:, :)
-      real(dp) :: copy(size(matrix, 1), size(matrix, 1)), vl(size(matrix, 1), size(matrix, 1)), &
-                  scale(size(matrix, 1)), rcondv(size(matrix, 1)), abnrm, query(1)
-      real(dp), allocatable :: space(:)
-      integer :: iwork(2*size(matrix, 1)), ilo, ihi, status, size1
-      size1 = size(matrix, 1)
-      copy = matrix
-      call dgeevx('N', 'V', 'V', 'E', size1, copy, size1, wr, wi, vl, size1, vr, size1, ilo, ihi, scale, abnrm, &
-                  rconde, rcondv, query, -1, iwork, status)
-      allocate (space(int(query(1))))
-      call dgeevx('N', 'V', 'V', 'E', size1, copy, size1, wr, wi, vl, size1, vr, size1, ilo, ihi, scale, abnrm, &
-                  rconde, rcondv, space, size(space), iwork, status)
-      if (status /= 0) error stop 'dgeevx failed'
-   end subroutine eigenvalues_with_conditions
 end program test_periodic_linear

@@ -93,10 +93,11 @@ def expected(sweep, kind, name, rows):
         if name in ('line', 'direction', 'status', 'settled', 'transient', 'parameter', 'parameter2'):
             path = '/sweep/' + name
         else:
-            found = [group + '/' + name for group in ('beam', 'energy')
+            found = [group + '/' + name for group in ('beam', 'energy', 'poincare')
                      if name in sweep['/sweep/statistics/' + group]]
             if len(found) != 1:
-                raise KeyError(f'{name}: {len(found)} statistics of that name in /sweep/statistics/beam, energy')
+                raise KeyError(f'{name}: {len(found)} statistics of that name in /sweep/statistics/beam, energy, '
+                               'poincare')
             path = '/sweep/statistics/' + found[0]
     if name == 'parameter2' and path not in sweep:
         return np.zeros(rows), '1', 'none'

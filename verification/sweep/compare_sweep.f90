@@ -13,7 +13,7 @@ program compare_sweep
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: integer_text
    use vibrobeam_hdf5_file_reads, only: read_real_1d, read_real_2d, read_int_1d, read_attr_int
-   use vibrobeam_statistics_layout, only: statistics_layout, group_beam, group_energy
+   use vibrobeam_statistics_layout, only: statistics_layout
    use vibrobeam_test_support, only: test_counter
    implicit none
    type(test_counter) :: t
@@ -60,7 +60,7 @@ contains
       integer, intent(in) :: e
       real(dp), allocatable :: row(:), column(:), table(:, :)
       allocate (row(0))
-      if (layout%entries(e)%group == group_beam .or. layout%entries(e)%group == group_energy) then
+      if (layout%one_value(e)) then
          call read_real_1d(file, path, column, stat, errmsg)
          if (stat == 0) row = column(point:point)
       else
@@ -135,7 +135,7 @@ contains
          do k = 0, 1
             if (k == 1 .and. .not. layout%entries(e)%has_error) cycle
             associate (path => '/sweep/statistics/'//layout%path(e, k == 1))
-               if (layout%entries(e)%group == group_beam .or. layout%entries(e)%group == group_energy) then
+               if (layout%one_value(e)) then
                   call read_real_1d(trim(first), path, a, stat, errmsg)
                   if (stat == 0) call read_real_1d(trim(second), path, b, stat, errmsg)
                   call equal(path, same_bits(a, b))

@@ -13,7 +13,8 @@
 #            published as 'interrupted'; SIGTERM to mpirun (which then exits 1 whatever its
 #            ranks do): never published as 'ok' with points not run, and resumable
 #   memory   the peak resident set of a sweep of 600 points with Poincare samples stays
-#            within 10 % of that of 60 points
+#            within 10 % of that of 60 points, and so does that of a point that keeps
+#            every one of its 160000 samples (poincare_samples = 'all')
 #
 # When each run is stopped does not depend on the machine's speed or load: no step waits
 # a measured time. A stopped run is started in a session of its own (setsid; the MPI ranks,
@@ -189,14 +190,17 @@ usr1_to_mpirun() { kill -USR1 "$session"; }
 term_to_mpirun() { kill -TERM "$session"; }
 
 # independent NAME COUNT: COUNT independent points; map NAME COUNT: 4 up-down lines of COUNT
-# values (each a task of 2 COUNT points). Both report progress (on stderr).
+# values (each a task of 2 COUNT points), every Poincare sample of a point written to its
+# journal while it runs (poincare_samples = 'all': an interrupted point's samples stay in
+# the journal of the run it was interrupted in, and the resumed sweep must leave them
+# out). Both report progress (on stderr).
 independent() {
   scene "$1" 200 velocity "" ", progress = .true." \
     "\&sweep parameter = 'load.point_frequency', from = 150, to = 250, count = $2, settle = 0.5, measure = 0.5 /"
 }
 map() {
   scene "$1" 200 position "" ", progress = .true." \
-    "\&sweep parameter = 'load.point_frequency', from = 180, to = 220, count = $2, mode = 'up-down', parameter2 = 'obstacles.level_from(2)', values2 = 4e-4, 5e-4, 6e-4, 7e-4, settle = 0.4, measure = 0.4 /"
+    "\&sweep parameter = 'load.point_frequency', from = 180, to = 220, count = $2, mode = 'up-down', parameter2 = 'obstacles.level_from(2)', values2 = 4e-4, 5e-4, 6e-4, 7e-4, settle = 0.4, measure = 0.4, poincare_samples = 'all' /"
 }
 
 # stopped MAKER NAME ACTION COMMAND...: make NAME.nml with `MAKER NAME $count` and stop it
@@ -321,6 +325,19 @@ memory)
   # then needed 20 MB more than 60, on about 24 MB; streamed, the points leave nothing behind
   echo "peak resident set: $peak60 kB for 60 points, $peak600 kB for 600 points (limit 1.10 times)"
   expect 'memory flat in the number of points' awk "BEGIN {exit !($peak600 <= 1.10 * $peak60)}"
+  # every Poincare sample of a point (&sweep poincare_samples = 'all'): 160000 of them,
+  # 6.4 MB held in memory (time, u and v at two points); streamed into the journal in
+  # chunks of 4096 samples (160 kB) they leave the memory as it was
+  scene memory_all 20000 velocity "" "" \
+    "\&sweep parameter = 'load.point_frequency', values = 20000, settle = 0, measure_periods = 160000, poincare_samples = 'all' /"
+  run memory_all OMP_NUM_THREADS=1
+  peak_all=$(h5dump -a /run/peak_memory_kb memory_all.h5 | sed -n 's/.*(0): *\([0-9]*\).*/\1/p')
+  kept=$(h5ls memory_all.h5/sweep/poincare/time | sed -n 's/.*{\([0-9]*\)[}/].*/\1/p')
+  window=$(h5dump -d /sweep/poincare_samples -y memory_all.h5 | sed -n '/DATA {/,/}/{/DATA {/d;/}/d;p;}' | tr -d ' ,\n')
+  echo "every sample of the point: $kept in the sweep file of $window in its window, peak resident set" \
+       "$peak_all kB (limit 1.10 times $peak60)"
+  expect 'every Poincare sample of the point in the sweep file' [ "$kept" = "$window" -a "$kept" -ge 159999 ]
+  expect 'memory flat in the Poincare samples kept' awk "BEGIN {exit !($peak_all <= 1.10 * $peak60)}"
   ;;
 *)
   echo "unknown mode $mode"; exit 2 ;;

@@ -16,13 +16,14 @@ module vibrobeam_statistics
    use vibrobeam_step_observer, only: step_observer, step_events
    use vibrobeam_batch_blocks, only: block_accumulator, standard_error
    use vibrobeam_poincare, only: poincare_sampler
+   use vibrobeam_poincare_diagnostics, only: poincare_diagnostics
    use vibrobeam_welch, only: welch_estimator
    use vibrobeam_spectrum, only: spectral_peaks
    use vibrobeam_statistics_layout, only: statistics_layout, peak_count, group_points, group_contacts, &
-      group_obstacles, group_beam, group_energy, group_spectrum
+      group_obstacles, group_beam, group_energy, group_spectrum, group_poincare
    implicit none
    private
-   public :: run_statistics, statistics_result, window_first_step
+   public :: run_statistics, statistics_result, window_first_step, first_value
 
    !> Levels recorded at block boundaries: the running sums of the stepper and the balance.
    integer, parameter :: level_work = 1, level_impacts = 2, level_damping = 3, level_numerical = 4, &
@@ -62,6 +63,7 @@ module vibrobeam_statistics
       type(statistics_layout) :: layout
       type(block_accumulator) :: blocks
       type(poincare_sampler) :: poincare
+      type(poincare_diagnostics) :: diagnostics   !! period, 0-1 test, Lyapunov exponent of the samples
       type(welch_estimator) :: spectrum
       !> (contact points) sample offset at which the open episode there opened; -1: none in the window
       integer(int64), allocatable :: episode_offset(:)
@@ -85,6 +87,14 @@ module vibrobeam_statistics
 
 contains
 
+   !> The value of statistic `name` of `group` in `outcome` (its first, for a vector).
+   pure real(dp) function first_value(outcome, group, name)
+      type(statistics_result), intent(in) :: outcome
+      integer, intent(in) :: group
+      character(len=*), intent(in) :: name
+      first_value = outcome%values(outcome%layout%entries(outcome%layout%find(group, name))%offset + 1)
+   end function first_value
+
    !> n0: the first step with n0 dt >= measure_from (module documentation).
    pure function window_first_step(measure_from, dt) result(step)
       real(dp), intent(in) :: measure_from, dt
@@ -94,13 +104,17 @@ contains
 
    !> Statistics from step `first_step` to `last_step` (none when first_step >= last_step)
    !! of `points` observation points, the contact points with their obstacles, and
-   !! Poincare samples at phase 0 of the forcing omega t + phase (omega = 0: none).
-   subroutine init(self, first_step, last_step, dt, points, lower_obstacle, upper_obstacle, obstacles, omega, phase)
+   !! Poincare samples at phase 0 of the forcing omega t + phase (omega = 0: none), with
+   !! their diagnostics (the Lyapunov exponent when `lyapunov`, on the unknowns of `stepper`).
+   subroutine init(self, first_step, last_step, dt, points, lower_obstacle, upper_obstacle, obstacles, omega, phase, &
+                   lyapunov, stepper)
       class(run_statistics), intent(inout) :: self
       integer(int64), intent(in) :: first_step, last_step
       real(dp), intent(in) :: dt, omega, phase
       integer, intent(in) :: points, obstacles
       integer, intent(in) :: lower_obstacle(:), upper_obstacle(:)
+      logical, intent(in) :: lyapunov
+      class(time_stepper), intent(in) :: stepper
       integer :: capacity
       self%active = first_step < last_step
       self%dt = dt
@@ -113,6 +127,7 @@ contains
       allocate (self%episode_offset(self%contacts), self%force_offset(self%contacts), source=-1_int64)
       allocate (self%force_touching(self%contacts), source=.false.)
       call self%poincare%init(omega, phase, dt, 2*points)
+      call self%diagnostics%init(points, omega, lyapunov, stepper)
       capacity = 1
       if (omega > 0) capacity = int(min(1e6_dp, dt*omega/(8*atan(1.0_dp)))) + 2
       allocate (self%sample_times(capacity), self%sample_values(2*points, capacity))
@@ -151,6 +166,7 @@ contains
       real(dp), intent(in) :: observed(:, :)
       call self%blocks%init(sum_count(self), extreme_count(self), levels_of(stepper))
       call self%poincare%start(stepper%t, reshape(observed, [2*self%points]))
+      call self%diagnostics%start(reshape(observed, [2*self%points]))
       self%started = .true.
    end subroutine start
 
@@ -214,6 +230,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       logical :: touched(targets(self))
+      real(dp) :: values(2*self%points)   !! u, then v, at each observation point
       integer(int64) :: offset
       real(dp) :: impulse, force
       integer :: k, c, p, obstacle, beam
@@ -269,8 +286,9 @@ contains
             if (touched(k)) call blocks%add(target_sum(self, k, s_contact_steps), 1.0_dp)
          end do
       end associate
-      call self%poincare%sample_step(stepper%steps, reshape(events%observed, [2*self%points]), self%poincare_found, &
-                                     self%sample_times, self%sample_values)
+      values = reshape(events%observed, [2*self%points])
+      call self%poincare%sample_step(stepper%steps, values, self%poincare_found, self%sample_times, self%sample_values)
+      call self%diagnostics%observe_step(stepper, values, self%poincare_found, self%sample_values)
       call self%spectrum%add(events%observed(1, 1), stat, errmsg)
       ! the levels (an energy evaluation) only where a block ends
       if (self%blocks%completes_block()) then
@@ -393,6 +411,7 @@ contains
       allocate (outcome%poincare_time(0), outcome%poincare_values(2*self%points, 0))
       outcome%first_step = self%first_step
       outcome%window_start = self%first_step*self%dt
+      outcome%values(self%layout%entries(self%layout%find(group_poincare, 'period'))%offset + 1) = -1
       if (.not. (self%active .and. self%started)) return
       if (self%blocks%samples < 1) return
       select type (self)
@@ -454,6 +473,7 @@ contains
       call copy%spectrum%spectrum(frequency, amplitude, segments, outcome%bin_width, stat, errmsg)
       if (stat == 0) call peaks(frequency, amplitude)
       outcome%poincare_total = self%poincare%taken
+      call self%diagnostics%fill(self%layout, outcome%values, outcome%errors)
       call self%poincare%kept(outcome%poincare_time, outcome%poincare_values)
    contains
       !> Mean, RMS, min, max of quantity `which` (1: u, 2: v) at point p into the entries
@@ -626,6 +646,7 @@ contains
       call record%put_int64s('statistics.force_touching', merge(1_int64, 0_int64, self%force_touching))
       call self%blocks%save_state(record, 'statistics.blocks')
       call self%poincare%save_state(record, 'statistics.poincare')
+      call self%diagnostics%save_state(record, 'statistics.diagnostics')
       call self%spectrum%save_state(record, 'statistics.spectrum')
    end subroutine save_state
 
@@ -655,6 +676,7 @@ contains
       self%started = .true.
       call self%blocks%restore_state(record, 'statistics.blocks', stat, errmsg)
       if (stat == 0) call self%poincare%restore_state(record, 'statistics.poincare', stat, errmsg)
+      if (stat == 0) call self%diagnostics%restore_state(record, 'statistics.diagnostics', stat, errmsg)
       if (stat == 0) call self%spectrum%restore_state(record, stat, errmsg, 'statistics.spectrum')
    end subroutine restore_state
 end module vibrobeam_statistics

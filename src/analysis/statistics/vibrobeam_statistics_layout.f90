@@ -6,19 +6,22 @@
 !! Groups and lengths: 'points' (the tip, then each &output points x), 'contacts' (the
 !! contact points), 'obstacles' (each obstacle of &obstacles), 'beam' (all contact points
 !! together; 1; the contact points also have the force statistics of the compliant
-!! stops), 'energy' (1), 'spectrum' (the `peak_count` largest peaks). Every
-!! statistic has a standard error beside it (`<name>_error`) except the spectrum's.
+!! stops), 'energy' (1), 'spectrum' (the `peak_count` largest peaks), 'poincare' (1: the
+!! period of the Poincare sequence, the 0-1 test and the Lyapunov exponent,
+!! `vibrobeam_poincare_diagnostics`). Every statistic has a standard error beside it
+!! (`<name>_error`) except the spectrum's and the 'poincare' group's, where only the
+!! Lyapunov exponent has one.
 module vibrobeam_statistics_layout
    implicit none
    private
    public :: statistics_layout, statistic_entry, peak_count
-   public :: group_points, group_contacts, group_obstacles, group_beam, group_energy, group_spectrum
+   public :: group_points, group_contacts, group_obstacles, group_beam, group_energy, group_spectrum, group_poincare
 
    integer, parameter :: peak_count = 3   !! dominant response frequencies reported
    integer, parameter :: group_points = 1, group_contacts = 2, group_obstacles = 3, group_beam = 4, &
-                         group_energy = 5, group_spectrum = 6
-   character(len=*), parameter :: group_names(6) = [character(len=9) :: 'points', 'contacts', 'obstacles', &
-                                                    'beam', 'energy', 'spectrum']
+                         group_energy = 5, group_spectrum = 6, group_poincare = 7
+   character(len=*), parameter :: group_names(7) = [character(len=9) :: 'points', 'contacts', 'obstacles', &
+                                                    'beam', 'energy', 'spectrum', 'poincare']
 
    !> One statistic: a vector of `length` values.
    type :: statistic_entry
@@ -40,6 +43,7 @@ module vibrobeam_statistics_layout
       procedure :: init
       procedure :: find
       procedure :: path
+      procedure :: one_value
    end type statistics_layout
 
    !> Statistics of the observation points (m for displacement, m/s for velocity).
@@ -55,6 +59,11 @@ module vibrobeam_statistics_layout
       'force_contact_mean', 'force_contact_rms', 'force_contact_fraction', 'force_episode_duration_mean', &
       'force_episode_duration_max']
    character(len=*), parameter :: force_units(7) = [character(len=8) :: 'N', 'N', 'N', 'N', '1', 's', 's']
+   !> The Poincare sequence's diagnostics (docs/statistics.md, "Period, Lyapunov exponent and
+   !! the 0-1 test"), one value each; only the Lyapunov exponent has a standard error.
+   character(len=*), parameter :: poincare_names(7) = [character(len=32) :: 'period', 'period_mismatch', &
+      'zero_one_k', 'zero_one_lags', 'lyapunov_exponent', 'lyapunov_exponent_per_period', 'lyapunov_periods']
+   character(len=*), parameter :: poincare_units(7) = [character(len=8) :: '1', '1', '1', '1', '1/s', '1', '1']
    character(len=*), parameter :: energy_names(8) = [character(len=32) :: 'power_input', 'power_impacts', &
       'power_damping', 'power_numerical', 'power_contact_damping', 'power_dissipated', 'power_stored', &
       'balance_residual']
@@ -89,6 +98,9 @@ contains
       call add('peak_frequency', 'Hz', group_spectrum, peak_count, .false.)
       call add('peak_amplitude', 'm', group_spectrum, peak_count, .false.)
       call add('peak_frequency_rad_s', 'rad/s', group_spectrum, peak_count, .false.)   ! 2 pi peak_frequency
+      do k = 1, size(poincare_names)
+         call add(poincare_names(k), poincare_units(k), group_poincare, 1, index(poincare_names(k), 'lyapunov_exponent') == 1)
+      end do
    contains
       subroutine add(name, unit, group, length, has_error)
          character(len=*), intent(in) :: name, unit
@@ -120,6 +132,14 @@ contains
          end if
       end do
    end function find
+
+   !> Entry k is one value per run (its group is 'beam', 'energy' or 'poincare'): a sweep
+   !! file holds it as a vector over the points, not a matrix.
+   pure logical function one_value(self, k)
+      class(statistics_layout), intent(in) :: self
+      integer, intent(in) :: k
+      one_value = any(self%entries(k)%group == [group_beam, group_energy, group_poincare])
+   end function one_value
 
    !> 'group/name' of entry k (e.g. 'points/displacement_rms'), '_error' appended when
    !! `error`; the caller prefixes '/statistics/' or '/sweep/statistics/'.

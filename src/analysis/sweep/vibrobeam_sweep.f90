@@ -60,6 +60,7 @@ module vibrobeam_sweep
       integer :: done = 0, total = 0, rank = 0, ranks = 1, points = 0
    contains
       procedure :: take => sink_take
+      procedure :: take_samples => sink_take_samples
       procedure :: halted => sink_halted
    end type journal_sink
 
@@ -424,6 +425,18 @@ contains
       end if
       !$omp end critical (vibrobeam_hdf5)
    end subroutine sink_take
+
+   !> Poincare samples of point k into the journal, one thread at a time.
+   subroutine sink_take_samples(self, k, rows, stat, errmsg)
+      class(journal_sink), intent(inout) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: rows(:, :)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      !$omp critical (vibrobeam_hdf5)
+      call self%journal%write_samples(k, rows, stat, errmsg)
+      !$omp end critical (vibrobeam_hdf5)
+   end subroutine sink_take_samples
 
    logical function sink_halted(self)
       class(journal_sink), intent(in) :: self

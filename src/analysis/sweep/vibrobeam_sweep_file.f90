@@ -55,6 +55,14 @@ module vibrobeam_sweep_file
       character(len=failures_length) :: failures = ''   !! the first failed points and their reasons
    end type sweep_counts
 
+   !> The Poincare chunks of one journal, grouped by point: order(first(k) : first(k+1) - 1)
+   !! are the columns of `table` (point, first row, rows) of point k's chunks, in order.
+   type :: journal_chunks
+      logical :: loaded = .false.
+      real(dp), allocatable :: table(:, :)
+      integer, allocatable :: first(:), order(:)
+   end type journal_chunks
+
    !> The per-point datasets (index t_*) and the statistics' values and errors (index
    !! of the layout's entries), written a block of points at a time.
    integer, parameter :: t_parameter = 1, t_parameter2 = 2, t_direction = 3, t_line = 4, t_task = 5, &
@@ -70,7 +78,7 @@ module vibrobeam_sweep_file
    !> What the journals say of each point beyond its rows.
    type :: point_outcomes
       integer, allocatable :: kept(:)                  !! (points) Poincare samples kept
-      integer(int64), allocatable :: poincare_first(:) !! (points) the first in its journal
+      integer(int64), allocatable :: poincare_first(:) !! (points) its rows in the journal's chunks to skip
       logical, allocatable :: has_file(:)              !! (points) its result file is in the set
       type(sweep_counts) :: counts
       character(len=:), allocatable :: messages        !! one line per point with a message
@@ -231,19 +239,13 @@ contains
       do e = 1, size(layout%entries)
          associate (entry => layout%entries(e))
             call tables%values(e)%create(h5, '/sweep/statistics/'//layout%path(e, .false.), entry%length, rows, &
-                                         stat, errmsg, unit=trim(entry%unit), vector=one_value(e))
+                                         stat, errmsg, unit=trim(entry%unit), vector=layout%one_value(e))
             if (stat == 0 .and. entry%has_error) &
                call tables%errors(e)%create(h5, '/sweep/statistics/'//layout%path(e, .true.), entry%length, rows, &
-                                            stat, errmsg, unit=trim(entry%unit), vector=one_value(e))
+                                            stat, errmsg, unit=trim(entry%unit), vector=layout%one_value(e))
          end associate
          if (stat /= 0) return
       end do
-   contains
-      !> The statistics of the groups of one value (beam, energy) are 1-d datasets.
-      logical function one_value(e)
-         integer, intent(in) :: e
-         one_value = layout%entries(e)%group == group_beam .or. layout%entries(e)%group == group_energy
-      end function one_value
    end subroutine create_statistics_tables
 
    !> The positions of the observation and contact points and the obstacles at each
@@ -493,7 +495,9 @@ contains
    end subroutine tally_block
 
    !> The kept Poincare samples of every point, one row per sample, in the order of the
-   !! points (`observations` points observed).
+   !! points (`observations` points observed): from the chunks of the journal that holds
+   !! the point as done, its r_poincare_first first rows skipped (earlier windows), then
+   !! r_kept rows, read a chunk at a time.
    subroutine write_poincare(h5, settings, points, partial, owner, outcomes, observations, stat, errmsg)
       type(h5_writer), intent(inout) :: h5
       type(sweep_settings), intent(in) :: settings
@@ -505,12 +509,14 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(h5_table) :: point, direction, first_value, second_value, time, u, v
+      type(journal_chunks), allocatable :: journals(:)
       real(dp), allocatable :: rows(:, :)
-      integer(int64) :: row, total
-      integer :: k
+      integer(int64) :: row, total, skip, first_row
+      integer :: k, c, count, left
       logical :: second_axis
       second_axis = len_trim(settings%axis(2)%parameter) > 0
       total = sum(int(outcomes%kept, int64))
+      allocate (journals(max(1, maxval([0, owner]))))
       call point%create(h5, '/sweep/poincare/point', 1, total, stat, errmsg, integers=.true., vector=.true.)
       if (stat == 0) call direction%create(h5, '/sweep/poincare/direction', 1, total, stat, errmsg, &
                                            integers=.true., vector=.true.)
@@ -523,25 +529,33 @@ contains
       if (stat == 0) call u%create(h5, '/sweep/poincare/displacement', observations, total, stat, errmsg, unit='m')
       if (stat == 0) call v%create(h5, '/sweep/poincare/velocity', observations, total, stat, errmsg, unit='m/s')
       row = 1
-      do k = 1, size(points)
-         associate (kept => outcomes%kept(k))
-            if (stat /= 0 .or. kept == 0) cycle
-            if (allocated(rows)) deallocate (rows)
-            allocate (rows(1 + 2*observations, kept))
-            call partial%read_poincare(owner(k), outcomes%poincare_first(k), rows, stat, errmsg)
-            if (stat == 0) call point%write_rows(row, spread(spread(real(k, dp), 1, 1), 2, kept), stat, errmsg)
-            if (stat == 0) call direction%write_rows(row, spread(spread(real(points(k)%direction, dp), 1, 1), 2, &
-                                                                 kept), stat, errmsg)
-            if (stat == 0) call first_value%write_rows(row, spread(spread(points(k)%value(1), 1, 1), 2, kept), &
-                                                       stat, errmsg)
-            if (stat == 0 .and. second_axis) &
-               call second_value%write_rows(row, spread(spread(points(k)%value(2), 1, 1), 2, kept), stat, errmsg)
-            if (stat == 0) call time%write_rows(row, rows(1:1, :), stat, errmsg)
-            if (stat == 0) call u%write_rows(row, rows(2:1 + observations, :), stat, errmsg)
-            if (stat == 0) call v%write_rows(row, rows(2 + observations:, :), stat, errmsg)
-            row = row + kept
+      points_loop: do k = 1, size(points)
+         if (stat /= 0 .or. outcomes%kept(k) == 0) cycle
+         associate (chunks => journals(owner(k)))
+            if (.not. chunks%loaded) call load_chunks(chunks, owner(k))
+            if (stat /= 0) exit points_loop
+            skip = outcomes%poincare_first(k)
+            left = outcomes%kept(k)
+            do c = chunks%first(k), chunks%first(k + 1) - 1
+               if (left == 0) exit
+               associate (chunk => chunks%table(:, chunks%order(c)))
+                  if (skip >= nint(chunk(3), int64)) then
+                     skip = skip - nint(chunk(3), int64)
+                     cycle
+                  end if
+                  first_row = nint(chunk(2), int64) + skip
+                  count = int(min(int(left, int64), nint(chunk(3), int64) - skip))
+                  skip = 0
+               end associate
+               if (allocated(rows)) deallocate (rows)
+               allocate (rows(1 + 2*observations, count))
+               call partial%read_poincare(owner(k), first_row, rows, stat, errmsg)
+               if (stat == 0) call write_samples(k, count)
+               if (stat /= 0) exit points_loop
+               left = left - count
+            end do
          end associate
-      end do
+      end do points_loop
       call point%close()
       call direction%close()
       call first_value%close()
@@ -549,6 +563,50 @@ contains
       call time%close()
       call u%close()
       call v%close()
+   contains
+      !> The chunk table of journal j, its chunks grouped by point (in their order).
+      subroutine load_chunks(chunks, j)
+         type(journal_chunks), intent(inout) :: chunks
+         integer, intent(in) :: j
+         integer :: c, p
+         integer :: next(size(points))
+         call partial%read_chunks(j, chunks%table, stat, errmsg)
+         if (stat /= 0) return
+         allocate (chunks%first(size(points) + 1), source=0)
+         allocate (chunks%order(size(chunks%table, 2)), source=0)
+         do c = 1, size(chunks%table, 2)
+            p = nint(chunks%table(1, c))
+            if (p >= 1 .and. p <= size(points)) chunks%first(p + 1) = chunks%first(p + 1) + 1
+         end do
+         chunks%first(1) = 1
+         do p = 1, size(points)
+            chunks%first(p + 1) = chunks%first(p) + chunks%first(p + 1)
+         end do
+         next = chunks%first(1:size(points))
+         do c = 1, size(chunks%table, 2)
+            p = nint(chunks%table(1, c))
+            if (p < 1 .or. p > size(points)) cycle
+            chunks%order(next(p)) = c
+            next(p) = next(p) + 1
+         end do
+         chunks%loaded = .true.
+      end subroutine load_chunks
+
+      !> rows(:, 1:count) of point k at `row`.
+      subroutine write_samples(k, count)
+         integer, intent(in) :: k, count
+         call point%write_rows(row, spread(spread(real(k, dp), 1, 1), 2, count), stat, errmsg)
+         if (stat == 0) call direction%write_rows(row, spread(spread(real(points(k)%direction, dp), 1, 1), 2, count), &
+                                                  stat, errmsg)
+         if (stat == 0) call first_value%write_rows(row, spread(spread(points(k)%value(1), 1, 1), 2, count), stat, &
+                                                    errmsg)
+         if (stat == 0 .and. second_axis) &
+            call second_value%write_rows(row, spread(spread(points(k)%value(2), 1, 1), 2, count), stat, errmsg)
+         if (stat == 0) call time%write_rows(row, rows(1:1, :), stat, errmsg)
+         if (stat == 0) call u%write_rows(row, rows(2:1 + observations, :), stat, errmsg)
+         if (stat == 0) call v%write_rows(row, rows(2 + observations:, :), stat, errmsg)
+         row = row + count
+      end subroutine write_samples
    end subroutine write_poincare
 
    !> The attributes of /sweep (module documentation).

@@ -11,8 +11,14 @@
 !! its statistics); /journal/message (points, message_words): its message, four
 !! characters per integer; /journal/done (points): 0 not written, 1 done (ok), 2 done
 !! (failed), 3 interrupted (written, to be run again); /journal/poincare (rows,
-!! 1 + 2 observation points): the kept Poincare samples, time then u then v, of the
-!! points in the order they ended (a record gives its first row and count); with
+!! 1 + 2 observation points): Poincare samples, time then u then v, written in chunks:
+!! /journal/poincare_chunks (chunks, 3) gives for each chunk its point, first row (from 0)
+!! and rows, the chunks of a point in time order. With &sweep poincare_samples = 'latest'
+!! a point writes one chunk when it ends (its kept samples); with 'all' it writes its
+!! samples while it runs, a chunk of at most `chunk_rows` at a time (and the rest when it
+!! ends; `vibrobeam_sweep_runner`), so that no point holds them in memory; its record then says how many of its
+!! first rows to skip (those of earlier windows of steady_tolerance) and how many follow
+!! (r_poincare_first, r_kept); with
 !! continuation, /journal/state (2 tasks, 2 + 3 unknowns): two slots per task, each the
 !! final state of a point of the task (the point, whether U^{n-1} is there, U, V, U^{n-1}).
 !! Attributes of /journal: `fingerprint` (`vibrobeam_sweep_partial`), `generation` (1 for
@@ -58,7 +64,7 @@ module vibrobeam_sweep_journal
    type :: sweep_journal
       type(h5_writer) :: h5
       type(h5_table) :: records, messages, done, states
-      type(h5_series) :: poincare
+      type(h5_series) :: poincare, chunks
       integer :: layout_size = 0, observations = 0, state_length = 0
       logical :: continuation = .false.
       integer(int64) :: poincare_rows = 0
@@ -72,6 +78,7 @@ module vibrobeam_sweep_journal
    contains
       procedure :: create => journal_create
       procedure :: write_point => journal_write_point
+      procedure :: write_samples => journal_write_samples
       procedure :: commit => journal_commit
       procedure :: close => journal_close
    end type sweep_journal
@@ -119,6 +126,7 @@ contains
                                            vector=.true., early=.true.)
       if (stat == 0) call self%poincare%create(self%h5, '/journal/poincare', 1 + 2*observations, '', stat, errmsg, &
                                                matrix=.true.)
+      if (stat == 0) call self%chunks%create(self%h5, '/journal/poincare_chunks', 3, '', stat, errmsg)
       if (stat == 0 .and. self%continuation) then
          call self%states%create(self%h5, '/journal/state', state_length, 2*int(tasks, int64), stat, errmsg, &
                                  early=.true.)
@@ -146,22 +154,20 @@ contains
       character(len=*), intent(out) :: errmsg
       real(dp) :: record(record_length(self%layout_size))
       real(dp), allocatable :: rows(:, :)
-      integer :: kept, j, slot
+      integer :: kept, slot
       integer(int64) :: now, rate
       kept = 0
       if (allocated(result%statistics%poincare_time)) kept = size(result%statistics%poincare_time)
-      record = pack_record(result, self%layout_size, self%poincare_rows, point_file)
+      record = pack_record(result, self%layout_size, point_file)
       call self%records%write_rows(int(k, int64), reshape(record, [size(record), 1]), stat, errmsg)
       if (stat == 0) call self%messages%write_rows(int(k, int64), reshape(message_values(result%message), &
                                                                           [message_words, 1]), stat, errmsg)
-      if (stat == 0 .and. kept > 0) then
+      if (stat == 0 .and. kept > 0 .and. result%samples_written == 0) then
+         ! the kept samples (poincare_samples = 'latest'), one chunk
          allocate (rows(1 + 2*self%observations, kept))
          rows(1, :) = result%statistics%poincare_time
          rows(2:, :) = result%statistics%poincare_values(1:2*self%observations, :)
-         do j = 1, kept
-            if (stat == 0) call self%poincare%append(rows(:, j), stat, errmsg)
-         end do
-         self%poincare_rows = self%poincare_rows + kept
+         call self%write_samples(k, rows, stat, errmsg)
       end if
       if (stat == 0 .and. self%continuation .and. result%status == status_ok .and. allocated(final%u)) then
          slot = 1
@@ -189,6 +195,26 @@ contains
       if (now - self%last_flush >= commit_seconds*rate) call self%commit(stat, errmsg)
    end subroutine journal_write_point
 
+   !> Poincare samples of point k (time, then u, then v at each observation point; a column
+   !! each), after those it wrote before: one chunk.
+   subroutine journal_write_samples(self, k, rows, stat, errmsg)
+      class(sweep_journal), intent(inout) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: rows(:, :)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: j
+      stat = 0
+      errmsg = ''
+      if (size(rows, 2) == 0) return
+      do j = 1, size(rows, 2)
+         if (stat == 0) call self%poincare%append(rows(:, j), stat, errmsg)
+      end do
+      if (stat == 0) call self%chunks%append([real(k, dp), real(self%poincare_rows, dp), real(size(rows, 2), dp)], &
+                                             stat, errmsg)
+      self%poincare_rows = self%poincare_rows + size(rows, 2)
+   end subroutine journal_write_samples
+
    !> Flush the journal, then set the done flags of the points written since the last
    !! commit (module documentation).
    subroutine journal_commit(self, stat, errmsg)
@@ -197,6 +223,7 @@ contains
       character(len=*), intent(out) :: errmsg
       integer :: j
       call self%poincare%write(stat, errmsg)
+      if (stat == 0) call self%chunks%write(stat, errmsg)
       if (stat == 0) call self%h5%flush(stat, errmsg)
       do j = 1, self%pending_count
          if (stat /= 0) exit
@@ -223,17 +250,18 @@ contains
       call self%done%close()
       call self%states%close()
       call self%poincare%close()
+      call self%chunks%close()
       if (stat == 0) call self%h5%finish(stat, errmsg)
    end subroutine journal_close
 
    !> A point's result as doubles (every integer in it is exactly representable):
    !! record_head numbers at the positions r_*, then the values and the standard errors
-   !! of its statistics (zeros when it has none). `poincare_first`: the row (from 0) of its
-   !! first kept Poincare sample in the journal.
-   function pack_record(result, layout_size, poincare_first, point_file) result(record)
+   !! of its statistics (zeros when it has none). Its Poincare samples in the journal's
+   !! chunks: r_poincare_first rows to skip (written before its reported window), then
+   !! r_kept rows.
+   function pack_record(result, layout_size, point_file) result(record)
       type(point_result), intent(in) :: result
       integer, intent(in) :: layout_size
-      integer(int64), intent(in) :: poincare_first
       logical, intent(in) :: point_file
       real(dp) :: record(record_length(layout_size))
       integer :: kept
@@ -241,6 +269,7 @@ contains
       kept = 0
       associate (s => result%statistics)
          if (allocated(s%poincare_time)) kept = size(s%poincare_time)
+         if (result%samples_written > 0) kept = int(min(s%poincare_total, result%samples_written))
          record(r_status) = result%status
          record(r_settled) = result%settled
          record(r_start_point) = result%start_point
@@ -258,7 +287,7 @@ contains
          record(r_bin_width) = s%bin_width
          record(r_poincare_total) = real(s%poincare_total, dp)
          record(r_kept) = kept
-         record(r_poincare_first) = real(poincare_first, dp)
+         record(r_poincare_first) = real(max(0_int64, result%samples_written - kept), dp)
          record(r_message_length) = len_trim(result%message)
          record(r_point_file) = merge(1, 0, point_file)
          if (allocated(s%values)) then

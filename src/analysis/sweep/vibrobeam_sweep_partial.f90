@@ -59,6 +59,7 @@ module vibrobeam_sweep_partial
       procedure :: read_records => partial_read_records
       procedure :: read_message => partial_read_message
       procedure :: read_poincare => partial_read_poincare
+      procedure :: read_chunks => partial_read_chunks
       procedure :: read_state => partial_read_state
       procedure :: journal_label => partial_journal_label
       procedure :: reload => partial_reload
@@ -314,6 +315,27 @@ contains
       call self%journals(j)%reader%read_rows('/journal/poincare', first_row + 1, rows, stat, errmsg)
    end subroutine partial_read_poincare
 
+   !> The Poincare chunks of journal j (`vibrobeam_sweep_journal`): chunks(:, c) = its
+   !! point, first row (from 0) and rows; none when it wrote no samples.
+   subroutine partial_read_chunks(self, j, chunks, stat, errmsg)
+      class(sweep_partial), intent(inout) :: self
+      integer, intent(in) :: j
+      real(dp), allocatable, intent(out) :: chunks(:, :)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(int64), allocatable :: dims(:)
+      stat = 0
+      errmsg = ''
+      allocate (chunks(3, 0))
+      if (.not. self%journals(j)%reader%exists('/journal/poincare_chunks')) return
+      call self%journals(j)%reader%shape('/journal/poincare_chunks', dims, stat, errmsg)
+      if (stat /= 0 .or. size(dims) < 2) return
+      deallocate (chunks)
+      allocate (chunks(3, dims(size(dims))))
+      if (size(chunks, 2) > 0) call self%journals(j)%reader%read_rows('/journal/poincare_chunks', 1_int64, chunks, &
+                                                                       stat, errmsg)
+   end subroutine partial_read_chunks
+
    !> The state of point k of task `task` from journal j; state%u not allocated when neither
    !! slot of the task holds it there.
    subroutine partial_read_state(self, j, task, k, unknowns, state, stat, errmsg)
@@ -423,7 +445,8 @@ contains
             call add(trim(list(k)%string_value))
          end select
       end do
-      call add('sweep mode='//trim(settings%mode)//' keep_runs='//merge('T', 'F', settings%keep_runs))
+      call add('sweep mode='//trim(settings%mode)//' keep_runs='//merge('T', 'F', settings%keep_runs)// &
+               ' poincare_samples='//trim(settings%poincare_samples))
       call add_reals([settings%settle, settings%measure, settings%settle_periods, settings%measure_periods, &
                       settings%steady_tolerance])
       do a = 1, 2

@@ -15,7 +15,9 @@
 !! directory (`kept_point_file`), published with the sweep file at the end.
 !!
 !! Each point's result goes to a `point_sink` as soon as the point ends (the sweep's
-!! journal), so nothing accumulates here. A point that fails (contact solver, non-finite
+!! journal), so nothing accumulates here. With &sweep poincare_samples = 'all' its
+!! Poincare samples go there while it runs, `chunk_rows` at a time (`sample_stream`; with
+!! keep_runs, read back from its point file in such chunks). A point that fails (contact solver, non-finite
 !! state, a start its scene refuses) is marked failed with the reason; the next point of
 !! its task starts from the last point that succeeded (the scene's initial state if none
 !! did). After SIGINT/SIGTERM the point in progress stops (status 'interrupted', its
@@ -37,18 +39,22 @@ module vibrobeam_sweep_runner
    use vibrobeam_statistics, only: statistics_result
    use vibrobeam_statistics_layout, only: group_points, group_beam
    use vibrobeam_signals, only: interrupt_requested
-   use vibrobeam_run_loop, only: advance
+   use vibrobeam_run_loop, only: advance, run_hooks
+   use vibrobeam_hdf5_reader, only: h5_reader
    use vibrobeam_filesystem, only: file_exists
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, point_scene, point_windows, max_settle_windows
    implicit none
    private
    public :: point_result, task_start, point_sink, run_task, point_file_name, kept_point_file, point_digits
-   public :: status_ok, status_failed, status_interrupted, status_not_run, status_names
+   public :: status_ok, status_failed, status_interrupted, status_not_run, status_names, chunk_rows
 
    ! a point's status: the run outcome of core/vibrobeam_status (the numbers in /sweep/status)
    integer, parameter :: status_ok = outcome_ok, status_failed = outcome_failed, &
                          status_interrupted = outcome_interrupted, status_not_run = outcome_not_run
    character(len=*), parameter :: status_names = '0 ok, 1 failed, 2 interrupted, 3 not run'
+   !> Poincare samples a point holds before it hands them to the sink as one chunk
+   !! (poincare_samples = 'all'): memory of 4096 (1 + 2 observation points) reals a thread.
+   integer, parameter :: chunk_rows = 4096
 
 
    !> What a point reached.
@@ -62,6 +68,7 @@ module vibrobeam_sweep_runner
       real(dp) :: dt = 0
       real(dp) :: wall_seconds = 0
       type(statistics_result) :: statistics
+      integer(int64) :: samples_written = 0      !! Poincare samples handed to the sink while it ran ('all')
    end type point_result
 
    !> Where a task starts: its first point to run (the points before it are done), the
@@ -78,6 +85,7 @@ module vibrobeam_sweep_runner
    type, abstract :: point_sink
    contains
       procedure(take_point), deferred :: take
+      procedure(take_point_samples), deferred :: take_samples
       procedure(sink_halted), deferred :: halted
    end type point_sink
 
@@ -94,11 +102,33 @@ module vibrobeam_sweep_runner
          integer, intent(out) :: stat
          character(len=*), intent(out) :: errmsg
       end subroutine take_point
+      !> Poincare samples of point k (a column each: time, u then v at each observation
+      !! point), after those it handed before; may be called from several threads.
+      subroutine take_point_samples(self, k, rows, stat, errmsg)
+         import :: point_sink, dp
+         class(point_sink), intent(inout) :: self
+         integer, intent(in) :: k
+         real(dp), intent(in) :: rows(:, :)
+         integer, intent(out) :: stat
+         character(len=*), intent(out) :: errmsg
+      end subroutine take_point_samples
       logical function sink_halted(self)
          import :: point_sink
          class(point_sink), intent(in) :: self
       end function sink_halted
    end interface
+
+   !> What a point does after each step with poincare_samples = 'all': the Poincare
+   !! samples that fell in the step into `rows`, handed to the sink as a chunk when full.
+   type, extends(run_hooks) :: sample_stream
+      class(point_sink), pointer :: sink => null()
+      integer :: point = 0, count = 0
+      integer(int64) :: written = 0
+      real(dp), allocatable :: rows(:, :)   !! (1 + 2 observation points, chunk_rows)
+   contains
+      procedure :: after_step => stream_samples
+      procedure :: flush => flush_samples
+   end type sample_stream
 
 contains
 
@@ -147,7 +177,7 @@ contains
       type(dynamic_state), intent(in) :: base
       type(task_start), intent(in) :: start
       character(len=*), intent(in) :: directory
-      class(point_sink), intent(inout) :: sink
+      class(point_sink), intent(inout), target :: sink
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(dynamic_state) :: last_good, final
@@ -163,9 +193,10 @@ contains
          one_point: block
             type(point_result) :: result   ! a new one for each point
             if (points(k)%start_point == 0 .or. last_good_point == 0) then
-               call run_point(scene, settings, k, points(k), base, 0, directory, result, final, written, stat, errmsg)
+               call run_point(scene, settings, k, points(k), base, 0, directory, sink, result, final, written, stat, &
+                              errmsg)
             else
-               call run_point(scene, settings, k, points(k), last_good, last_good_point, directory, result, final, &
+               call run_point(scene, settings, k, points(k), last_good, last_good_point, directory, sink, result, final, &
                               written, stat, errmsg)
             end if
             if (stat /= 0) return
@@ -193,14 +224,15 @@ contains
    !> One point (module documentation): its result, and its final state in `final`;
    !! `written`: its keep_runs file is in `directory`. io_stat /= 0 (with io_message): the
    !! point file could not be written.
-   subroutine run_point(scene, settings, k, point, start, start_point, directory, result, final, written, io_stat, &
-                        io_message)
+   subroutine run_point(scene, settings, k, point, start, start_point, directory, sink, result, final, written, &
+                        io_stat, io_message)
       type(scene_type), intent(in) :: scene
       type(sweep_settings), intent(in) :: settings
       integer, intent(in) :: k, start_point
       type(sweep_point), intent(in) :: point
       type(dynamic_state), intent(in) :: start
       character(len=*), intent(in) :: directory
+      class(point_sink), intent(inout), target :: sink
       type(point_result), intent(inout) :: result
       type(dynamic_state), intent(out) :: final
       logical, intent(out) :: written
@@ -212,6 +244,7 @@ contains
       character(len=512) :: errmsg
       integer(int64) :: clock_start, clock_end, rate, transient
       integer :: stat, windows
+      type(sample_stream), allocatable :: stream
       written = .false.
       io_stat = 0
       io_message = ''
@@ -229,15 +262,26 @@ contains
       end if
       if (allocated(start%u)) call take_start()
       transient = result%settle_steps
+      if (settings%poincare_samples == 'all' .and. .not. settings%keep_runs) then
+         ! the samples of a point without a file go to the sink while it runs
+         allocate (stream)
+         stream%sink => sink
+         stream%point = k
+         allocate (stream%rows(1 + 2*(1 + size(local%output%points)), chunk_rows))
+      end if
       if (settings%steady_tolerance > 0) then
          call measure_until_steady()
-         if (stat /= 0 .or. result%status /= status_ok) return
+         if (stat /= 0 .or. result%status /= status_ok) then
+            call hand_on_samples()
+            return
+         end if
       end if
       if (settings%keep_runs) then
          call run_with_file()
       else if (settings%steady_tolerance <= 0) then
          call run_without_file()
       end if
+      call hand_on_samples()
       call system_clock(clock_end)
       result%wall_seconds = real(clock_end - clock_start, dp)/rate
    contains
@@ -277,7 +321,11 @@ contains
          integer(int64), intent(in) :: last
          integer :: status
          character(len=512) :: failure
-         call advance(stepper, recorder, prepared%model, last, status, failure, stat, errmsg)
+         if (allocated(stream)) then
+            call advance(stepper, recorder, prepared%model, last, status, failure, stat, errmsg, stream)
+         else
+            call advance(stepper, recorder, prepared%model, last, status, failure, stat, errmsg)
+         end if
          if (stat /= 0) then
             call failed(errmsg)
             return
@@ -387,6 +435,10 @@ contains
             return
          end if
          written = .true.
+         if (settings%poincare_samples == 'all') then
+            call samples_of_file(trim(local%output%file))
+            if (io_stat /= 0) return
+         end if
          select case (outcome%status)
          case (outcome_failed)
             call failed('numerical failure at '//trim(outcome%failure))
@@ -400,6 +452,62 @@ contains
          call move_state(last_state, final)
       end subroutine run_with_file
 
+      !> The samples the stream still holds go to the sink; how many it handed on.
+      subroutine hand_on_samples()
+         if (.not. allocated(stream)) return
+         call stream%flush(stat, errmsg)
+         if (stat /= 0) then
+            io_stat = stat
+            io_message = errmsg
+            result%status = status_not_run
+         end if
+         result%samples_written = stream%written
+      end subroutine hand_on_samples
+
+      !> keep_runs with poincare_samples = 'all': the samples of the point file's
+      !! /statistics/poincare, read back and handed to the sink chunk_rows at a time.
+      subroutine samples_of_file(file)
+         character(len=*), intent(in) :: file
+         type(h5_reader) :: reader
+         integer(int64), allocatable :: dims(:)
+         integer(int64) :: first, total
+         integer :: count, observations
+         real(dp), allocatable :: rows(:, :)
+         observations = 1 + size(local%output%points)
+         total = 0
+         !$omp critical (vibrobeam_hdf5)
+         call reader%open(file, io_stat, io_message)
+         if (io_stat == 0) then
+            if (reader%exists('/statistics/poincare/time')) call reader%shape('/statistics/poincare/time', dims, io_stat, &
+                                                                              io_message)
+            if (allocated(dims)) total = dims(1)
+         end if
+         !$omp end critical (vibrobeam_hdf5)
+         do first = 1, total, chunk_rows
+            if (io_stat /= 0) exit
+            count = int(min(int(chunk_rows, int64), total - first + 1))
+            allocate (rows(1 + 2*observations, count))
+            !$omp critical (vibrobeam_hdf5)
+            call reader%read_rows('/statistics/poincare/time', first, rows(1:1, :), io_stat, io_message)
+            if (io_stat == 0) call reader%read_rows('/statistics/poincare/displacement', first, &
+                                                    rows(2:1 + observations, :), io_stat, io_message)
+            if (io_stat == 0) call reader%read_rows('/statistics/poincare/velocity', first, rows(2 + observations:, :), &
+                                                    io_stat, io_message)
+            !$omp end critical (vibrobeam_hdf5)
+            if (io_stat == 0) call sink%take_samples(k, rows, io_stat, io_message)
+            if (io_stat == 0) result%samples_written = result%samples_written + count
+            deallocate (rows)
+         end do
+         !$omp critical (vibrobeam_hdf5)
+         call reader%close()
+         !$omp end critical (vibrobeam_hdf5)
+         if (io_stat /= 0) then
+            io_message = '&sweep poincare_samples = ''all'': the samples of point '//integer_text(k)//' ('''//file// &
+                         '''): '//trim(io_message)
+            result%status = status_not_run
+         end if
+      end subroutine samples_of_file
+
       !> The state the point ends in, which the next point of a continuation starts from.
       subroutine keep_final(stepper)
          class(time_stepper), intent(in) :: stepper
@@ -407,6 +515,45 @@ contains
          final = stepper%state()
       end subroutine keep_final
    end subroutine run_point
+
+   !> After a step of a point with poincare_samples = 'all': its Poincare samples into
+   !! the buffer, handed to the sink when the buffer is full.
+   subroutine stream_samples(self, stepper, recorder, step, stat, errmsg)
+      class(sample_stream), intent(inout) :: self
+      class(time_stepper), intent(in) :: stepper
+      type(dynamics_recorder), intent(inout) :: recorder
+      integer(int64), intent(in) :: step
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: j
+      stat = 0
+      errmsg = ''
+      ! the samples the recorder holds are those of the step the stepper just took
+      if (stepper%steps /= step) return
+      associate (statistics => recorder%statistics)
+         do j = 1, statistics%poincare_found
+            if (self%count == size(self%rows, 2)) call self%flush(stat, errmsg)
+            if (stat /= 0) return
+            self%count = self%count + 1
+            self%rows(1, self%count) = statistics%sample_times(j)
+            self%rows(2:, self%count) = statistics%sample_values(:, j)
+         end do
+      end associate
+   end subroutine stream_samples
+
+   !> The samples held so far to the sink, as one chunk.
+   subroutine flush_samples(self, stat, errmsg)
+      class(sample_stream), intent(inout) :: self
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      stat = 0
+      errmsg = ''
+      if (self%count == 0) return
+      call self%sink%take_samples(self%point, self%rows(:, 1:self%count), stat, errmsg)
+      if (stat /= 0) return
+      self%written = self%written + self%count
+      self%count = 0
+   end subroutine flush_samples
 
    !> The RMS tip displacement and the impact rate of the beam agree within `tolerance`
    !! (relative to the larger; two zeros agree).

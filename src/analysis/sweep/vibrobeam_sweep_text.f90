@@ -37,6 +37,12 @@ module vibrobeam_sweep_text
    character(len=*), parameter :: force_names(7) = [character(len=28) :: 'force_peak', 'force_mean', &
       'force_contact_mean', 'force_contact_rms', 'force_contact_fraction', 'force_episode_duration_mean', &
       'force_episode_duration_max']
+   !> The Poincare sequence's diagnostics (docs/statistics.md, "Period, Lyapunov exponent and
+   !! the 0-1 test"), after the force statistics: each a column, the Lyapunov exponents with
+   !! their standard errors.
+   character(len=*), parameter :: diagnostic_names(9) = [character(len=36) :: 'period', 'period_mismatch', &
+      'zero_one_k', 'zero_one_lags', 'lyapunov_exponent', 'lyapunov_exponent_error', 'lyapunov_exponent_per_period', &
+      'lyapunov_exponent_per_period_error', 'lyapunov_periods']
 
 contains
 
@@ -181,7 +187,7 @@ contains
    pure function point_columns(second_axis, observation, peaks, contacts, loaded) result(columns)
       logical, intent(in) :: second_axis
       integer, intent(in) :: observation, peaks, contacts, loaded
-      type(table_column) :: columns(12 + 2*size(pairs) + 1 + 2*size(force_names))
+      type(table_column) :: columns(12 + 2*size(pairs) + 1 + 2*size(force_names) + size(diagnostic_names))
       character(len=:), allocatable :: statistic
       integer :: j
       columns(1) = table_column('point', '')   ! the point's number
@@ -214,6 +220,10 @@ contains
          columns(13 + 2*size(pairs) + 2*j) = table_column('stop_'//trim(force_names(j))//'_error', &
                                                           '/sweep/statistics/contacts/'//trim(force_names(j))// &
                                                           '_error', contacts, loaded)
+      end do
+      do j = 1, size(diagnostic_names)
+         columns(13 + 2*size(pairs) + 2*size(force_names) + j) = &
+            table_column(trim(diagnostic_names(j)), '/sweep/statistics/poincare/'//trim(diagnostic_names(j)))
       end do
    end function point_columns
 
@@ -254,7 +264,10 @@ contains
                          '  in all (W); then the first dominant frequency (Hz); then value and standard error of '// &
                          'the compliant stops'' force at x = '//real_text(loaded_x)//' m (0: no spring; docs/statistics.md): '// &
                          'peak (N)  mean (N)  mean in contact (N)'// &
-                         '  RMS in contact (N)  contact fraction (1)  mean episode duration (s)  longest episode (s)', &
+                         '  RMS in contact (N)  contact fraction (1)  mean episode duration (s)  longest episode (s); '// &
+                         'then the Poincare samples'' period (0: none, -1: not determined) and mismatch, the 0-1 '// &
+                         'test''s K and lags, the Lyapunov exponent (1/s) and per forcing period with their errors, '// &
+                         'and its periods', &
                          stat, errmsg)
       if (stat /= 0) return
       call column_lines(run, sink, columns, stat, errmsg)
