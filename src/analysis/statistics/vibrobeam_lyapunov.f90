@@ -168,10 +168,11 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer(int64) :: counts(2)
-      real(dp) :: perturbation(2*size(self%du))
+      real(dp), allocatable :: perturbation(:)   ! (sized after the return: du is unallocated when inactive)
       stat = 0
       errmsg = ''
       if (.not. self%active .or. record%find(prefix//'.counts') == 0) return
+      allocate (perturbation(2*size(self%du)))
       call record%get_int64s(prefix//'.counts', counts, stat, errmsg)
       if (stat == 0) call record%get_reals(prefix//'.perturbation', perturbation, stat, errmsg)
       if (stat == 0) call self%blocks%restore_state(record, prefix//'.blocks', stat, errmsg)
