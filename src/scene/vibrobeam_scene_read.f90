@@ -160,9 +160,7 @@ contains
       type(obstacle_type), allocatable :: read(:)
       integer :: i
       character(len=:), allocatable :: number
-      character(len=*), parameter :: names(8) = [character(len=10) :: 'side', 'x_from', 'x_to', 'level_from', &
-                                                  'level_to', 'stiffness', 'exponent', 'damping']
-      call check_count(scanned, 'obstacles', 'obstacle', names, count, max_obstacles, stat, errmsg)
+      call check_count(scanned, 'obstacles', 'obstacle', count, max_obstacles, stat, errmsg)
       if (stat /= 0) return
       stat = stat_failure
       call move_alloc(scene%obstacles, read)
@@ -249,26 +247,30 @@ contains
          end if
       end function given_too
    end subroutine resolve_frequency_twins
-   !> The count of an array of settings (&obstacles, &supports, &masses) against what the
-   !! file describes: in [0, most], and no element beyond it given (any of `names`).
-   subroutine check_count(scanned, group, element, names, count, most, stat, errmsg)
+   !> The count of an array of settings (&obstacles, &supports, &masses, &sections, &forces)
+   !! against what the file describes: in [0, most], and no element beyond it given (any
+   !! array variable of `group`, as the table of variables declares them; the message
+   !! names the first one found).
+   subroutine check_count(scanned, group, element, count, most, stat, errmsg)
       type(scanned_file), intent(in) :: scanned
       character(len=*), intent(in) :: group, element   !! 'obstacles', 'obstacle'
-      character(len=*), intent(in) :: names(:)           !! the variables of an element
       integer, intent(in) :: count, most
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      type(namelist_variable), allocatable :: table(:)
       integer :: i, k
       stat = stat_failure
       if (count < 0 .or. count > most) then
          errmsg = '&'//group//' count = '//integer_text(count)//' is outside [0, '//integer_text(most)//']'
          return
       end if
+      allocate (table, source=scene_variables())
       do i = count + 1, most
-         do k = 1, size(names)
-            if (scanned%is_given(group, trim(names(k)), i)) then
-               errmsg = '&'//group//': '//element//' '//integer_text(i)//' is described but count = '// &
-                        integer_text(count)//'; raise count or remove it'
+         do k = 1, size(table)
+            if (table(k)%group /= group .or. table(k)%extent == 0) cycle
+            if (scanned%is_given(group, trim(table(k)%name), i)) then
+               errmsg = '&'//group//': '//element//' '//integer_text(i)//' is described ('//trim(table(k)%name)// &
+                        '('//integer_text(i)//')) but count = '//integer_text(count)//'; raise count or remove it'
                return
             end if
          end do
@@ -280,16 +282,16 @@ contains
    !> The count of an array of settings whose count is an optional row (&supports, &masses,
    !! &sections): `given` is 0 when the file does not give it (count is then unset, -1),
    !! else the count given, checked as `check_count` does (even -1).
-   subroutine optional_count(scanned, group, element, names, count, most, given, stat, errmsg)
+   subroutine optional_count(scanned, group, element, count, most, given, stat, errmsg)
       type(scanned_file), intent(in) :: scanned
-      character(len=*), intent(in) :: group, element, names(:)
+      character(len=*), intent(in) :: group, element
       integer, intent(in) :: count, most
       integer, intent(out) :: given
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       given = 0
       if (scanned%is_given(group, 'count')) given = count
-      call check_count(scanned, group, element, names, given, most, stat, errmsg)
+      call check_count(scanned, group, element, given, most, stat, errmsg)
    end subroutine optional_count
 
    !> &supports after reading: count (0 when not given) and what it allows; each support
@@ -300,9 +302,8 @@ contains
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      character(len=*), parameter :: names(4) = [character(len=20) :: 'x', 'kind', 'stiffness', 'rotational_stiffness']
       integer :: i, given
-      call optional_count(scanned, 'supports', 'support', names, count, max_supports, given, stat, errmsg)
+      call optional_count(scanned, 'supports', 'support', count, max_supports, given, stat, errmsg)
       if (stat /= 0) return
       scene%supports = scene%supports(1:given)
       do i = 1, size(scene%supports)
@@ -322,9 +323,8 @@ contains
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      character(len=*), parameter :: names(3) = [character(len=14) :: 'x', 'mass', 'rotary_inertia']
       integer :: i, given
-      call optional_count(scanned, 'masses', 'mass', names, count, max_masses, given, stat, errmsg)
+      call optional_count(scanned, 'masses', 'mass', count, max_masses, given, stat, errmsg)
       if (stat /= 0) return
       scene%masses = scene%masses(1:given)
       do i = 1, size(scene%masses)
@@ -351,7 +351,7 @@ contains
                                                    'its Young''s modulus (Pa)', 'its density (kg/m^3)', &
                                                    'its cross-section area (m^2)', 'its second moment of area (m^4)']
       integer :: i, k, given
-      call optional_count(scanned, 'sections', 'section', names, count, max_sections, given, stat, errmsg)
+      call optional_count(scanned, 'sections', 'section', count, max_sections, given, stat, errmsg)
       if (stat /= 0) return
       scene%beam%sections = scene%beam%sections(1:given)
       if (given == 0) return
@@ -388,27 +388,10 @@ contains
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      type(namelist_variable), allocatable :: table(:)
-      integer :: i, k
-      stat = stat_failure
-      if (count < 0 .or. count > max_forces) then
-         errmsg = '&forces count = '//integer_text(count)//' is outside [0, '//integer_text(max_forces)//']'
-         return
-      end if
-      allocate (table, source=scene_variables())
-      do i = count + 1, max_forces
-         do k = 1, size(table)
-            if (table(k)%group /= 'forces' .or. table(k)%extent == 0) cycle
-            if (scanned%is_given('forces', trim(table(k)%name), i)) then
-               errmsg = '&forces: load '//integer_text(i)//' is described ('//trim(table(k)%name)//'('// &
-                        integer_text(i)//')) but count = '//integer_text(count)//'; raise count or remove it'
-               return
-            end if
-         end do
-      end do
+      integer :: i
+      call check_count(scanned, 'forces', 'load', count, max_forces, stat, errmsg)
+      if (stat /= 0) return
       scene%forces%load = scene%forces%load(1:count)
-      stat = 0
-      errmsg = ''
       do i = 1, count
          call beside_input('table', scene%forces%load(i)%table, i)
          call beside_input('psd_table', scene%forces%load(i)%psd_table, i)

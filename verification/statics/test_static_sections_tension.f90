@@ -26,7 +26,8 @@ program test_static_sections_tension
    use vibrobeam_text, only: integer_text
    use vibrobeam_scene, only: scene_type, section_settings, unset
    use vibrobeam_static, only: static_report
-   use vibrobeam_test_support, only: test_counter, static_deflection, gamma_n
+   use vibrobeam_test_support, only: test_counter, static_deflection
+   use vibrobeam_roundoff_bounds, only: gamma_n
    implicit none
    type(test_counter) :: t
    real(dp), parameter :: length = 0.8_dp, q = 3, step_at = 0.3_dp, ei_1 = 60, ei_2 = 15

@@ -41,7 +41,8 @@ program test_static_supports
    use vibrobeam_text, only: integer_text, real_text
    use vibrobeam_scene, only: scene_type, obstacle_type, support_settings
    use vibrobeam_static, only: static_report
-   use vibrobeam_test_support, only: test_counter, static_deflection, gamma_n
+   use vibrobeam_test_support, only: test_counter, static_deflection
+   use vibrobeam_roundoff_bounds, only: gamma_n
    implicit none
    type(test_counter) :: t
    real(dp), parameter :: length = 0.8_dp, ei = 40, q = 3

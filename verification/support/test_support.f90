@@ -21,7 +21,7 @@ module vibrobeam_test_support
    public :: test_counter, read_test_scene, prepare_test_scene, use_program_blas_threads, fitted_order, band_abs_times
    public :: band_condition, abs_factor_times
    public :: dense_lcp_reference, same_bits
-   public :: wave_row, lu_determinant, static_deflection, scanned_roots, real_function, gamma_n
+   public :: wave_row, lu_determinant, static_deflection, scanned_roots, real_function
 
    type, public :: test_counter
       integer :: passed = 0
@@ -387,11 +387,4 @@ contains
       end do
       error stop 'scanned_roots: fewer roots than asked below the limit'
    end function scanned_roots
-
-   !> gamma_n = n u/(1 - n u), u = eps/2: the bound of n roundings (Higham, Accuracy and
-   !! Stability of Numerical Algorithms, 2002, §3.1).
-   pure real(dp) function gamma_n(n)
-      integer, intent(in) :: n
-      gamma_n = n*0.5_dp*epsilon(1.0_dp)/(1 - n*0.5_dp*epsilon(1.0_dp))
-   end function gamma_n
 end module vibrobeam_test_support
