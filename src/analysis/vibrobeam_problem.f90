@@ -85,6 +85,7 @@ contains
          call add_flow(prepared%loads, scene%flow, prepared%model, scene%beam%rayleigh_mass, &
                        scene%beam%rayleigh_stiffness, stat, errmsg)
          if (stat /= 0) return
+         warnings = warnings//prepared%loads%flow%unbounded_warning(prepared%contacts%count > 0)
       end if
       if (steps_in_time(scene) .and. len_trim(scene%initial%from_file) > 0) then
          call resume_from_file(scene, prepared, warnings, stat, errmsg)

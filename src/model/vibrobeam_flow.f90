@@ -64,6 +64,7 @@ module vibrobeam_flow
       procedure :: add_force
       procedure :: project
       procedure :: report
+      procedure :: unbounded_warning
    end type fluid_elastic
 
 contains
@@ -248,6 +249,28 @@ contains
          text = text//new_line('a')
       end do
    end function report
+
+   !> A warning when the flow velocity exceeds the critical velocity of a mode and nothing
+   !! bounds the motion (`bounded` false: the scene has no obstacle): without contact that
+   !! mode's amplitude grows as exp(-zeta_total omega t), so a long enough run reaches any
+   !! size (or overflows, a numerical failure) while each step is computed correctly.
+   !! '' when every mode is stable or the stops bound it.
+   function unbounded_warning(self, bounded) result(text)
+      class(fluid_elastic), intent(in) :: self
+      logical, intent(in) :: bounded
+      character(len=:), allocatable :: text
+      integer :: n
+      text = ''
+      if (.not. self%active .or. bounded) return
+      do n = 1, self%count
+         if (self%velocity <= self%critical(n)) cycle
+         text = '&flow velocity = '//short_text(self%velocity)//' m/s exceeds the critical velocity of mode '// &
+                integer_text(n)//' (U_c = '//short_text(self%critical(n))//' m/s) and no obstacle bounds the '// &
+                'motion: its amplitude grows as exp('//short_text(self%fluid_zeta(n) - self%zeta(n))// &
+                ' omega_'//integer_text(n)//' t) without end (vibrobeam --check lists every mode)'//new_line('a')
+         return
+      end do
+   end function unbounded_warning
 
    !> Warnings for &flow values given that the run does not use (docs/input.md,
    !! "Warnings"): the group without a flow velocity, or for an analysis that is not
