@@ -22,7 +22,7 @@ program vibrobeam_main
    use vibrobeam_dynamics, only: run_dynamics
    use vibrobeam_result_files, only: run_outcome, publish_files
    use vibrobeam_text_output, only: derived_file, derive_text_files
-   use vibrobeam_text, only: significant_text, integer_text
+   use vibrobeam_text, only: significant_text, integer_text, fixed_text
    use vibrobeam_hdf5_base, only: close_library
    use vibrobeam_progress, only: progress_meter
    use vibrobeam_signals, only: watch_signals, interrupt_requested, interrupt_name
@@ -308,10 +308,10 @@ contains
          call stop_if_interrupted(outcome%text_skipped)
          call finish(outcome_exit_status(outcome%status))
       end select
-      write (output_unit, '(a,es12.5,a,i0,a,es9.2,a,f0.6,a,f0.2,a)') 'vibrobeam: periodic orbit of period ', &
+      write (output_unit, '(a,es12.5,a,i0,a,es9.2,a)') 'vibrobeam: periodic orbit of period ', &
          outcome%period, ' s after ', outcome%newton_iterations, ' Newton iterations (residual ', outcome%residual, &
-         '), largest Floquet multiplier modulus ', outcome%largest_multiplier, ', ', outcome%wall_seconds, &
-         ' s; written to '//trim(scene%output%file)
+         '), largest Floquet multiplier modulus '//fixed_text(outcome%largest_multiplier, 6)//', '// &
+         fixed_text(outcome%wall_seconds, 2)//' s; written to '//trim(scene%output%file)
       call stop_if_interrupted(outcome%text_skipped)
       call finish(exit_ok)
    end subroutine run_periodic_scene
@@ -338,11 +338,11 @@ contains
       if (any(scene%obstacles%stiffness <= 0) .or. .not. outcome%compliant) &
          write (output_unit, '(i0,a,es10.3,a)', advance='no') outcome%impacts, ' impacts, largest penetration ', &
          outcome%max_penetration, ' m, '
-      if (outcome%compliant) write (output_unit, '(a,es10.3,a,es10.3,a,f0.2,a)', advance='no') 'peak contact force ', &
-         outcome%peak_force, ' N, in contact ', outcome%contact_time, ' s (', &
-         100*outcome%contact_time/max(outcome%steps*scene%time%dt, tiny(1.0_dp)), ' % of the run), '
-      write (output_unit, '(f0.2,a)') outcome%wall_seconds, ' s; written to '//trim(scene%output%file)//' (run '// &
-         trim(outcome%run_id)//')'
+      if (outcome%compliant) write (output_unit, '(a,es10.3,a,es10.3,a)', advance='no') 'peak contact force ', &
+         outcome%peak_force, ' N, in contact ', outcome%contact_time, ' s ('// &
+         fixed_text(100*outcome%contact_time/max(outcome%steps*scene%time%dt, tiny(1.0_dp)), 2)//' % of the run), '
+      write (output_unit, '(a)') fixed_text(outcome%wall_seconds, 2)//' s; written to '//trim(scene%output%file)// &
+         ' (run '//trim(outcome%run_id)//')'
       if (outcome%poincare_samples > 0) call print_diagnostics(outcome)
       call stop_if_interrupted(outcome%text_skipped)
       call finish(exit_ok)
@@ -394,8 +394,8 @@ contains
       write (output_unit, '(a,i0,a)', advance='no') 'vibrobeam: sweep of ', outcome%points, ' points ('
       if (outcome%resumed > 0) write (output_unit, '(i0,a)', advance='no') outcome%resumed, &
          ' done before, from '//trim(scene%output%file)//'.partial, '
-      write (output_unit, '(i0,a,i0,a,f0.2,a,i0,a,i0,a)') outcome%failed, ' failed, ', outcome%interrupted, &
-         ' interrupted), ', outcome%wall_seconds, ' s on ', outcome%threads, ' threads x ', outcome%ranks, &
+      write (output_unit, '(i0,a,i0,a,i0,a,i0,a)') outcome%failed, ' failed, ', outcome%interrupted, &
+         ' interrupted), '//fixed_text(outcome%wall_seconds, 2)//' s on ', outcome%threads, ' threads x ', outcome%ranks, &
          ' processes; written to '//trim(scene%output%file)
       if (outcome%status == outcome_interrupted) then
          write (error_unit, '(a,i0,a)') 'vibrobeam: interrupted by '//signal_name()//'; the points done are in '// &

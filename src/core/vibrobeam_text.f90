@@ -4,7 +4,7 @@ module vibrobeam_text
    use vibrobeam_kinds, only: dp, int64
    implicit none
    private
-   public :: real_text, integer_text, significant_text, short_text
+   public :: real_text, integer_text, significant_text, short_text, fixed_text
 
 contains
 
@@ -105,10 +105,7 @@ contains
             end do
             if (text(len(text):) == '.') text = text(1:len(text) - 1)
          end if
-         if (text(1:1) == '.') text = '0'//text
-         if (len(text) >= 2) then
-            if (text(1:2) == '-.') text = '-0'//text(2:)
-         end if
+         text = with_leading_zero(text)
       else if (abs(value) > 0) then
          write (buffer, '(es30.'//integer_text(max(digits - 1, 0))//'e3)') value
          buffer = adjustl(buffer)
@@ -126,6 +123,30 @@ contains
          text = '0'
       end if
    end function significant_text
+
+   !> `value` with `decimals` digits after the point and a digit before it, for what a
+   !! person reads (seconds of a run, a multiplier's modulus): 0.63, 12.40, -0.05 with 2
+   !! (Fortran's `f0.d` writes .63).
+   function fixed_text(value, decimals) result(text)
+      real(dp), intent(in) :: value
+      integer, intent(in) :: decimals
+      character(len=:), allocatable :: text
+      character(len=48) :: buffer
+      write (buffer, '(f0.'//integer_text(max(decimals, 0))//')') value
+      text = with_leading_zero(trim(adjustl(buffer)))
+   end function fixed_text
+
+   !> `text` of a decimal number with the 0 before its point that `f0.d` leaves out.
+   pure function with_leading_zero(text) result(fixed)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: fixed
+      fixed = text
+      if (len(fixed) == 0) return
+      if (fixed(1:1) == '.') fixed = '0'//fixed
+      if (len(fixed) >= 2) then
+         if (fixed(1:2) == '-.') fixed = '-0'//fixed(2:)
+      end if
+   end function with_leading_zero
 
    !> `value` with 6 significant digits (`significant_text`): 210.347, 0.0213, 1.23457e7.
    function short_text(value) result(text)
