@@ -250,9 +250,9 @@ contains
       type(scene_type), intent(in) :: scene
       character(len=:), allocatable, intent(inout) :: warnings
       !> &initial variables that describe the initial state
-      character(len=*), parameter :: initial_state(6) = [character(len=22) :: 'displacement', 'displacement_mode', &
+      character(len=*), parameter :: initial_state(7) = [character(len=22) :: 'displacement', 'displacement_mode', &
                                                           'displacement_amplitude', 'velocity', 'velocity_mode', &
-                                                          'velocity_amplitude']
+                                                          'velocity_amplitude', 'velocity_profile']
       integer :: k
       associate (initial => scene%initial)
          if (initial%displacement /= 'static' .or. len_trim(initial%from_file) > 0) &
@@ -277,9 +277,12 @@ contains
          if (initial%velocity /= 'mode' .and. scanned%is_given('initial', 'velocity_mode')) &
             call add(warnings, '&initial velocity_mode = '//integer_text(initial%velocity_mode)//' is ignored: '// &
                      'velocity = '''//trim(initial%velocity)//'''')
-         if (initial%velocity == 'zero') &
+         if (initial%velocity == 'zero' .or. initial%velocity == 'profile') &
             call given_real(scanned, scene, warnings, 'initial', 'velocity_amplitude', initial%velocity_amplitude, &
-                            'velocity = ''zero''')
+                            'velocity = '''//trim(initial%velocity)//'''')
+         if (initial%velocity /= 'profile' .and. scanned%is_given('initial', 'velocity_profile')) &
+            call add(warnings, '&initial velocity_profile = '''//trim(initial%velocity_profile)//''' is ignored: '// &
+                     'velocity = '''//trim(initial%velocity)//'''')
       end associate
    end subroutine initial_warnings
 

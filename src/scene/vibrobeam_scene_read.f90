@@ -80,6 +80,7 @@ contains
       if (stat == 0) call resolve_masses(reader%scanned, mass_count, scene, stat, errmsg)
       if (stat == 0) call resolve_sections(reader%scanned, section_count, scene, stat, errmsg)
       if (stat == 0) call resolve_forces(reader%scanned, force_count, filename, scene, stat, errmsg)
+      call beside_input(filename, 'initial', 'velocity_profile', scene%initial%velocity_profile, stat, errmsg)
       if (stat == 0) call resolve_points(reader%scanned, scene, stat, errmsg)
       if (stat == 0) call resolve_frequency_twins(reader%scanned, scene, stat, errmsg)
       if (stat /= 0) return
@@ -379,7 +380,7 @@ contains
    !> &forces after reading: nothing may be described beyond `count` (any array variable
    !! of &forces, as the table of variables declares them); the loads are cut to it; a
    !! relative file name of a table is taken from the directory of the input file
-   !! `filename` (docs/input.md, "Tables"), so that a scene and its tables move together.
+   !! `filename` (`beside_input`).
    !! The defaults that follow other inputs are taken when the loads are built.
    subroutine resolve_forces(scanned, count, filename, scene, stat, errmsg)
       type(scanned_file), intent(in) :: scanned
@@ -393,28 +394,35 @@ contains
       if (stat /= 0) return
       scene%forces%load = scene%forces%load(1:count)
       do i = 1, count
-         call beside_input('table', scene%forces%load(i)%table, i)
-         call beside_input('psd_table', scene%forces%load(i)%psd_table, i)
+         call beside_input(filename, 'forces', 'table', scene%forces%load(i)%table, stat, errmsg, i)
+         call beside_input(filename, 'forces', 'psd_table', scene%forces%load(i)%psd_table, stat, errmsg, i)
       end do
-   contains
-      !> A relative path taken from the input file's directory; an absolute one as it is.
-      subroutine beside_input(name, path, i)
-         character(len=*), intent(in) :: name
-         character(len=*), intent(inout) :: path
-         integer, intent(in) :: i
-         character(len=:), allocatable :: directory
-         if (stat /= 0 .or. len_trim(path) == 0 .or. path(1:1) == '/') return
-         directory = directory_of(filename)
-         if (directory == '.') return
-         if (len(directory) + 1 + len_trim(path) > len(path)) then
-            errmsg = '&forces '//name//'('//integer_text(i)//') = '''//trim(path)//''' taken from the directory '// &
-                     'of the input file is longer than '//integer_text(len(path))//' characters'
-            stat = stat_failure
-            return
-         end if
-         path = directory//'/'//trim(path)
-      end subroutine beside_input
    end subroutine resolve_forces
+
+   !> A relative file name `path` of group.name(i) taken from the directory of the input
+   !! file `filename` (docs/input.md, "Tables"), so that a scene and its files move
+   !! together; an absolute one as it is; nothing when stat is already set. stat =
+   !! stat_failure when the result is longer than the variable.
+   subroutine beside_input(filename, group, name, path, stat, errmsg, i)
+      character(len=*), intent(in) :: filename, group, name
+      character(len=*), intent(inout) :: path
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer, intent(in), optional :: i   !! the element of an array variable
+      character(len=:), allocatable :: directory, shown
+      if (stat /= 0 .or. len_trim(path) == 0 .or. path(1:1) == '/') return
+      directory = directory_of(filename)
+      if (directory == '.') return
+      shown = '&'//group//' '//name
+      if (present(i)) shown = shown//'('//integer_text(i)//')'
+      if (len(directory) + 1 + len_trim(path) > len(path)) then
+         errmsg = shown//' = '''//trim(path)//''' taken from the directory of the input file is longer than '// &
+                  integer_text(len(path))//' characters'
+         stat = stat_failure
+         return
+      end if
+      path = directory//'/'//trim(path)
+   end subroutine beside_input
 
    !> &output points: the leading elements given (points(1), points(2), ...), no gaps.
    subroutine resolve_points(scanned, scene, stat, errmsg)
