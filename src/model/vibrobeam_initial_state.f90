@@ -24,8 +24,7 @@ module vibrobeam_initial_state
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use vibrobeam_kinds, only: dp
    use vibrobeam_status, only: stat_failure, stat_invalid_input
-   use vibrobeam_text, only: real_text
-   use vibrobeam_table_file, only: linear_table, read_table
+   use vibrobeam_table_file, only: linear_table, read_table, outside_beam
    use vibrobeam_model, only: beam_model, interpolate_field, flexibility_applies
    use vibrobeam_modes, only: compute_modes
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, text_row, &
@@ -134,11 +133,9 @@ contains
          errmsg = shown//': '//trim(errmsg)
          return
       end if
-      ! the beam's ends as the input gives them: x typed as the length itself is in
-      if (profile%x(1) < 0 .or. profile%x(size(profile%x)) > length) then
+      if (len(outside_beam(profile, length)) > 0) then
          stat = stat_invalid_input
-         errmsg = shown//' holds x = '//real_text(merge(profile%x(1), profile%x(size(profile%x)), profile%x(1) < 0))// &
-                  ' m, outside the beam: x in [0, '//real_text(length)//'] m (&beam length) is allowed'
+         errmsg = shown//outside_beam(profile, length)
          return
       end if
       profile%hold_ends = .true.   ! beyond its first and last x: their velocities

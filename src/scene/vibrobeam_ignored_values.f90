@@ -173,6 +173,14 @@ contains
                call add(warnings, '&obstacles level_to'//item//' = '//real_text(o%level_to)//' m is ignored: obstacle '// &
                         integer_text(i)//' is punctual (x_to = x_from = '//real_text(o%x_from)// &
                         ' m): its level is level_from'//item)
+            if (len_trim(o%profile) > 0) then
+               if (scanned%is_given('obstacles', 'level_from', i)) &
+                  call add(warnings, '&obstacles level_from'//item//' = '//real_text(o%level_from)//' m is ignored: '// &
+                           'obstacle '//integer_text(i)//' takes its levels from profile'//item)
+               if (scanned%is_given('obstacles', 'level_to', i)) &
+                  call add(warnings, '&obstacles level_to'//item//' = '//real_text(o%level_to)//' m is ignored: '// &
+                           'obstacle '//integer_text(i)//' takes its levels from profile'//item)
+            end if
          end associate
       end do
    end subroutine obstacle_warnings

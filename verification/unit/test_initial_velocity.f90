@@ -21,7 +21,7 @@ program test_initial_velocity
    use vibrobeam_table_file, only: linear_table
    use vibrobeam_roundoff_bounds, only: gamma_n
    use vibrobeam_static_bounds, only: dense_inverse, permuted_lu_times
-   use vibrobeam_test_support, only: test_counter
+   use vibrobeam_test_support, only: test_counter, same_bits
    implicit none
    real(dp), parameter :: length = 0.783_dp, omega = -3.8_dp
    character(len=*), parameter :: file = 'test_initial_velocity_profile.dat'
@@ -76,9 +76,10 @@ contains
       if (model%hermite) then
          do i = 0, elements
             if (model%unknown_of(2*i + 1) > 0) call t%check_true(label//' rotation: w_i = omega x_i bitwise', &
-                                                                 v(model%unknown_of(2*i + 1)) == omega*model%x(i + 1))
+                                                                 same_bits(v(model%unknown_of(2*i + 1)), &
+                                                                           omega*model%x(i + 1)))
             if (model%unknown_of(2*i + 2) > 0) call t%check_true(label//' rotation: theta_i = omega bitwise', &
-                                                                 v(model%unknown_of(2*i + 2)) == omega)
+                                                                 same_bits(v(model%unknown_of(2*i + 2)), omega))
          end do
          call t%check_close(label//' profile = rotation (values and slopes)', &
                             maxval(abs(w - v)/merge(abs(omega)*length, abs(omega), is_value(model))), &
@@ -111,16 +112,16 @@ contains
       call add_row(a, b_exact, row, dofs, weights, omega)
       call t%check_true(label//' one condition per unknown', row == n)
       factors = a
-      allocate (pivots(n))
+      allocate (pivots(n), bound(n))
       call dgetrf(n, n, factors, n, pivots, info)
       inverse = dense_inverse(a)
-      bound = matmul(abs(inverse), gamma_n(3*n)*permuted_lu_times(factors, pivots, abs(v)) + &
+      bound(:) = matmul(abs(inverse), gamma_n(3*n)*permuted_lu_times(factors, pivots, abs(v)) + &
                      gamma_n(4)*abs(b_exact)) + gamma_n(4)*abs(exact)
       call t%check_close(label//' rotation: c_j = omega x Greville abscissa (error / bound)', &
                          maxval(abs(v - exact)/bound), 0.0_dp, 1.0_dp, 1.0_dp)
       ! the profile's data differ from the rotation's by gamma_4 |omega| L (values) and
       ! gamma_3 |omega| (slopes): through A^-1, and both solves' round-off
-      bound = 2*bound + matmul(abs(inverse), gamma_n(5)*abs(omega)*[(max(length, 1.0_dp), i=1, n)])
+      bound(:) = 2*bound + matmul(abs(inverse), gamma_n(5)*abs(omega)*[(max(length, 1.0_dp), i=1, n)])
       call t%check_close(label//' profile = rotation (error / bound)', maxval(abs(w - v)/bound), 0.0_dp, 1.0_dp, 1.0_dp)
    end subroutine check_rotation
 
@@ -172,7 +173,7 @@ contains
       associate (from_profile => initial_velocity(initial, model, profile))
          initial%velocity = 'uniform'
          call t%check_true('hermite: a constant profile is ''uniform'' bitwise', &
-                           all(from_profile == initial_velocity(initial, model)))
+                           all(same_bits(from_profile, initial_velocity(initial, model))))
       end associate
    end subroutine check_uniform
 end program test_initial_velocity
