@@ -16,7 +16,8 @@ module vibrobeam_problem
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_obstacles, only: build_contact_points
    use vibrobeam_loads, only: load_set, build_loads, add_forces, add_flow
-   use vibrobeam_initial_state, only: mode_field, initial_velocity
+   use vibrobeam_initial_state, only: mode_field, initial_velocity, read_velocity_profile
+   use vibrobeam_table_file, only: linear_table
    use vibrobeam_static, only: solve_static
    use vibrobeam_discrete_system, only: discrete_system
    use vibrobeam_time_stepper, only: time_stepper, stepper_settings, dynamic_state
@@ -64,6 +65,8 @@ contains
    !! stat = `stat_failure` with a message naming the input when the scene is
    !! inconsistent (obstacles that contradict each other, an initial displacement outside
    !! the obstacles, a checkpoint of &initial from_file that does not match);
+   !! `stat_invalid_input` when a table of &forces or &initial velocity_profile cannot be
+   !! read or does not fit;
    !! `stat_numerical_failure` when the static solve of `&initial displacement = 'static'`
    !! fails; `warnings` collects one line per warning.
    subroutine build_problem(scene, prepared, warnings, stat, errmsg)
@@ -72,6 +75,7 @@ contains
       character(len=:), allocatable, intent(inout) :: warnings
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      type(linear_table) :: profile   ! &initial velocity_profile
       call build_model(scene%mesh%basis, scene%mesh%elements, scene%beam%length, scene%beam%rho_s(), scene%beam%ei(), &
                        prepared%model, stat, errmsg, structure=structure_of(scene))
       if (stat /= 0) return
@@ -95,7 +99,13 @@ contains
       end if
       call initial_displacement(scene, prepared, stat, errmsg)
       if (stat /= 0) return
-      prepared%v0 = initial_velocity(scene%initial, prepared%model)
+      if (scene%initial%velocity == 'profile') then
+         call read_velocity_profile(scene%initial, scene%beam%length, profile, stat, errmsg)
+         if (stat /= 0) return
+         prepared%v0 = initial_velocity(scene%initial, prepared%model, profile)
+      else
+         prepared%v0 = initial_velocity(scene%initial, prepared%model)
+      end if
       ! a failed interpolation of the initial fields returns NaN (vibrobeam_lapack)
       if (.not. all(ieee_is_finite(prepared%u0)) .or. .not. all(ieee_is_finite(prepared%v0))) then
          stat = stat_numerical_failure

@@ -251,9 +251,15 @@ contains
                           stops_why, stat, errmsg)
             return
          end if
-         do k = 1, size(compared)
+         do k = 1, size(compared) + 1
+            ! the profile's file name too when the scene has one (files from before
+            ! profiles have no such attribute, and no profile)
+            if (k > size(compared)) then
+               if (len_trim(scene%obstacles(i)%profile) == 0) exit
+            end if
             do e = size(list), 1, -1
-               if (list(e)%name == 'obstacles.'//trim(compared(k))//item) exit
+               if (list(e)%name == 'obstacles.'//trim(merge(compared(min(k, size(compared))), 'profile   ', &
+                                                            k <= size(compared)))//item) exit
             end do
             call compare_entry(file, list(e), prefix, stops_why, stat, errmsg)
             if (stat /= 0) return

@@ -30,6 +30,8 @@ module vibrobeam_check_report
    use vibrobeam_scene, only: scene_type, is_unset, held_conditions, steps_in_time, forcing_period_steps
    use vibrobeam_scene_structure, only: scene_frequencies
    use vibrobeam_model, only: beam_model
+   use vibrobeam_initial_state, only: read_velocity_profile
+   use vibrobeam_table_file, only: linear_table
    use vibrobeam_boundary, only: boundary_conditions
    use vibrobeam_highest_frequency, only: highest_frequency
    use vibrobeam_result_estimate, only: result_size, estimate_result_size
@@ -302,11 +304,22 @@ contains
       real(dp), intent(out) :: velocity
       character(len=:), allocatable, intent(out) :: source
       real(dp) :: candidate, deflection, ei, length, a, omega(100)
-      integer :: first
+      integer :: first, stat
+      type(linear_table) :: profile
+      character(len=256) :: errmsg
       velocity = 0
       source = 'nothing moves (zero initial data, no loads): no penetration expected'
-      if (scene%initial%velocity /= 'zero') call consider(abs(scene%initial%velocity_amplitude), 'the initial velocity '// &
-                                                  '(&initial velocity_amplitude)')
+      select case (scene%initial%velocity)
+      case ('mode', 'uniform')
+         call consider(abs(scene%initial%velocity_amplitude), 'the initial velocity (&initial velocity_amplitude)')
+      case ('rotation')
+         call consider(abs(scene%initial%velocity_amplitude)*scene%beam%length, 'the initial velocity at x = L '// &
+                       '(&initial velocity_amplitude x length)')
+      case ('profile')
+         call read_velocity_profile(scene%initial, scene%beam%length, profile, stat, errmsg)
+         if (stat == 0) call consider(maxval(abs(profile%y)), 'the initial velocity (largest of &initial '// &
+                                      'velocity_profile)')
+      end select
       call scene_frequencies(scene, omega(1:max(listed_modes, scene%initial%displacement_mode)), first)
       if (scene%initial%displacement == 'mode') &
          call consider(abs(scene%initial%displacement_amplitude)*omega(scene%initial%displacement_mode), &

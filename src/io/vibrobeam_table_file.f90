@@ -14,7 +14,7 @@ module vibrobeam_table_file
    use vibrobeam_text, only: integer_text, real_text
    implicit none
    private
-   public :: linear_table, read_table
+   public :: linear_table, read_table, outside_beam
 
    integer, parameter :: line_length = 1024   !! longest line of a table
 
@@ -109,6 +109,23 @@ contains
          errmsg = 'the table '''//trim(path)//''' '//message
       end subroutine fail
    end subroutine read_table
+
+   !> '' when every x of a table of positions lies on a beam of `length` (m), [0, length];
+   !! else the sentence that says which does not and what is allowed (for the message of
+   !! the variable that named the table).
+   function outside_beam(table, length) result(message)
+      type(linear_table), intent(in) :: table
+      real(dp), intent(in) :: length
+      character(len=:), allocatable :: message
+      integer :: n
+      message = ''
+      n = size(table%x)
+      if (n == 0) return
+      ! the beam's ends as the input gives them: an x typed as the length itself is on it
+      if (table%x(1) < 0 .or. table%x(n) > length) &
+         message = ' holds x = '//real_text(merge(table%x(1), table%x(n), table%x(1) < 0))//' m, outside the beam: '// &
+                   'x in [0, '//real_text(length)//'] m (&beam length) is allowed'
+   end function outside_beam
 
    !> The table's value at x (module documentation), the interval found by bisection.
    pure real(dp) function table_at(self, x) result(value)

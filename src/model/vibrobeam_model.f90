@@ -595,43 +595,74 @@ contains
       end do
    end function point_load_vector
 
-   !> Unknowns of a field given by its value and slope at the nodes x_1..x_N.
-   !! Hermite (any supports): the interpolant w_i = value(i), theta_i = slope(i) where the
-   !! node's unknowns exist. B-splines (the clamped-free beam only: the caller checks
-   !! `flexibility_applies` or `boundary%is_clamped_free()`): the spline through
-   !! value(1..N) at the nodes with slope(N) at the tip (N + 1 conditions for the N + 1
-   !! unknowns; the clamp gives u = u_x = 0 at x = 0), solved as a band system.
+   !> Unknowns of a field given by its value and slope at the nodes x_0..x_N (index
+   !! 1..N+1). Hermite: the interpolant w_i = value(i), theta_i = slope(i) where the node's
+   !! unknowns exist (a support holds the others). B-splines: the spline through the values
+   !! at every node whose deflection no support holds, with the slope at each end whose
+   !! rotation the end leaves free (the complete cubic spline of the free data: one
+   !! condition per unknown; on the clamped-free beam N + 1, the clamp giving u = u_x = 0 at
+   !! x = 0), solved as a band system; its rows in the order of x keep the band. Both
+   !! reproduce a cubic polynomial that satisfies the supports exactly. NaN when the
+   !! conditions do not match the unknowns (a tied support the conditions do not describe).
    function interpolate_field(model, value, slope) result(u)
       type(beam_model), intent(in) :: model
-      real(dp), intent(in) :: value(:)   !! (N) u(x_i), i = 1..N (m)
-      real(dp), intent(in) :: slope(:)   !! (N) u_x(x_i)
+      real(dp), intent(in) :: value(:)   !! (N + 1) u(x_i), i = 0..N (m)
+      real(dp), intent(in) :: slope(:)   !! (N + 1) u_x(x_i)
       real(dp) :: u(model%unknowns)
       integer, parameter :: kl = 3, ku = 3
       real(dp) :: ab(2*kl + ku + 1, model%unknowns), weights(4)
-      integer :: ipiv(model%unknowns), i, a, dofs(4), info, n
+      integer :: ipiv(model%unknowns), i, dofs(4), info, n, row
+      logical :: fits
       if (model%hermite) then
-         u = 0   ! the unknowns of node 0, if a free or sliding left end has any
-         do i = 1, model%elements
-            if (model%unknown_of(2*i + 1) > 0) u(model%unknown_of(2*i + 1)) = value(i)
-            if (model%unknown_of(2*i + 2) > 0) u(model%unknown_of(2*i + 2)) = slope(i)
+         u = 0
+         do i = 0, model%elements
+            if (model%unknown_of(2*i + 1) > 0) u(model%unknown_of(2*i + 1)) = value(i + 1)
+            if (model%unknown_of(2*i + 2) > 0) u(model%unknown_of(2*i + 2)) = slope(i + 1)
          end do
          return
       end if
       n = model%unknowns
       ab = 0
-      do i = 1, model%elements          ! row i: u_h(x_i) = value(i)
+      row = 0
+      fits = .true.
+      if (.not. model%boundary%holds_rotation(1)) then   ! u_x(0) = slope(0)
+         call point_row(model, 0.0_dp, dofs, weights, order=1)
+         call add_row(slope(1))
+      end if
+      do i = 0, model%elements                            ! u_h(x_i) = value(i)
+         if (model%deflection_held(i)) cycle
          call node_row(model, i, dofs, weights)
-         do a = 1, 4
-            if (dofs(a) /= 0) ab(kl + ku + 1 + i - dofs(a), dofs(a)) = weights(a)
-         end do
+         call add_row(value(i + 1))
       end do
-      call point_row(model, model%length, dofs, weights, order=1)   ! row N+1: u_x(L) = slope(N)
-      do a = 1, 4
-         if (dofs(a) /= 0) ab(kl + ku + 1 + n - dofs(a), dofs(a)) = weights(a)
-      end do
-      u(1:model%elements) = value
-      u(n) = slope(model%elements)
-      call dgbsv(n, kl, ku, 1, ab, 2*kl + ku + 1, ipiv, u, n, info)
+      if (.not. model%boundary%holds_rotation(2)) then   ! u_x(L) = slope(N)
+         call point_row(model, model%length, dofs, weights, order=1)
+         call add_row(slope(model%elements + 1))
+      end if
+      if (.not. fits .or. row /= n) then
+         info = -1
+      else
+         call dgbsv(n, kl, ku, 1, ab, 2*kl + ku + 1, ipiv, u, n, info)
+      end if
       call poison_failed_solve(info, u)   ! nonsingular for distinct nodes (Schoenberg-Whitney)
+   contains
+      !> The next row: weights at the unknowns dofs, right-hand side `rhs`.
+      subroutine add_row(rhs)
+         real(dp), intent(in) :: rhs
+         integer :: a
+         row = row + 1
+         if (row > n) then
+            fits = .false.
+            return
+         end if
+         u(row) = rhs
+         do a = 1, 4
+            if (dofs(a) == 0) cycle
+            if (abs(row - dofs(a)) > min(kl, ku)) then
+               fits = .false.
+               cycle
+            end if
+            ab(kl + ku + 1 + row - dofs(a), dofs(a)) = ab(kl + ku + 1 + row - dofs(a), dofs(a)) + weights(a)
+         end do
+      end subroutine add_row
    end function interpolate_field
 end module vibrobeam_model

@@ -11,6 +11,9 @@
 !! - longitudinal obstacle: acts at every node in [x_from, x_to] (1e-9 h tolerance), its
 !!   level interpolated linearly; one covering no node acts at the node nearest its middle,
 !!   with a warning;
+!! - an obstacle with a `profile` takes its level at each node it covers from that table
+!!   (x, level), linear between its points, instead of level_from/level_to; the table must
+!!   span those nodes;
 !! - several obstacles on the same side of a node: the most restrictive one counts;
 !! - a node whose deflection a support holds (the clamped node x = 0 of a cantilever, a
 !!   pinned end, docs/input.md "&beam") never moves: an obstacle there is only checked
@@ -23,17 +26,21 @@
 !!   and side act in parallel, each from its own level, and a rigid bound on the same node
 !!   and side acts beside them (whichever is reached first holds).
 module vibrobeam_obstacles
-   use vibrobeam_status, only: stat_failure
+   use vibrobeam_status, only: stat_failure, stat_invalid_input
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: real_text, integer_text
-   use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, keyword_length
+   use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, text_row, keyword_length, &
+      path_length
+   use vibrobeam_table_file, only: linear_table, read_table, outside_beam
    use vibrobeam_model, only: beam_model, node_row
    use vibrobeam_contact_set, only: contact_set, no_bound
    implicit none
    private
    public :: obstacle_type, max_obstacles, visit_obstacles, build_contact_points
 
-   integer, parameter :: max_obstacles = 32       !! most obstacles a scene may hold
+   !> most obstacles a scene may hold (a tube through 100 baffles has 200 stops); memory and
+   !! cost follow the obstacles given, this bounds only the reading of the input
+   integer, parameter :: max_obstacles = 256
 
    !> One obstacle of `&obstacles` (docs/input.md).
    type :: obstacle_type
@@ -46,6 +53,9 @@ module vibrobeam_obstacles
       real(dp) :: stiffness = 0
       real(dp) :: exponent = 1                   !! 1 linear, 1.5 Hertz-like
       real(dp) :: damping = 0                    !! Hunt-Crossley alpha (s/m), compliant stops only
+      !> file of (x, level) pairs (m, m), linear in between: the surface instead of
+      !! level_from/level_to ('' = none)
+      character(len=path_length) :: profile = ''
    end type obstacle_type
 
    !> What the obstacles make of the nodes 0..N (0 the clamp) while the contact points
@@ -103,12 +113,16 @@ contains
                                o%exponent)
          call visitor%variable(real_row('obstacles', 'damping', 's/m', 0.0_dp, 1e6_dp, &
                                         'Hunt-Crossley contact damping of a compliant stop', n, i), o%damping)
+         call visitor%variable(text_row('obstacles', 'profile', path_length, 'file of (x, level) pairs (m, m), '// &
+                                        'linear in between: the surface, instead of level_from and level_to', n, i), &
+                               o%profile)
       end subroutine visit_one
    end subroutine visit_obstacles
 
    !> Build the contact points of the obstacles on `model`'s mesh. Warnings (one line each) are
    !! appended to `warnings`; stat = stat_failure with a message when the obstacles contradict each
-   !! other (a 'below' level at or above an 'above' level) or the clamp.
+   !! other (a 'below' level at or above an 'above' level) or the clamp, stat_invalid_input
+   !! when a profile cannot be read or does not fit (`read_profiles`).
    subroutine build_contact_points(obstacles, model, contacts, warnings, stat, errmsg)
       type(obstacle_type), intent(in) :: obstacles(:)
       type(beam_model), intent(in) :: model
@@ -117,11 +131,14 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(nodal_bounds) :: nodes
+      type(linear_table) :: profiles(size(obstacles))
       integer :: k, first, last
+      call read_profiles(obstacles, model, profiles, stat, errmsg)
+      if (stat /= 0) return
       call nodes%init(model%elements, size(obstacles))
       do k = 1, size(obstacles)
          call covered_nodes(obstacles(k), k, model, first, last, warnings)
-         call add_obstacle(obstacles(k), k, model, first, last, nodes)
+         call add_obstacle(obstacles(k), k, model, first, last, profiles(k), nodes)
       end do
       call check_bounds(nodes, model, stat, errmsg)
       if (stat /= 0) return
@@ -163,20 +180,24 @@ contains
       end if
    end subroutine covered_nodes
 
-   !> Obstacle k at the nodes first..last: its level interpolated linearly along it; a
+   !> Obstacle k at the nodes first..last: its level from its profile, or interpolated
+   !! linearly along it (exactly level_from where level_to is the same); a
    !! rigid one tightens the bound of its side where it is more restrictive, a compliant
    !! one gives each node (but a held one) a spring of its tributary length inside
    !! [x_from, x_to] (h inside, h/2 at an end node; a punctual one its whole stiffness).
-   subroutine add_obstacle(o, k, model, first, last, nodes)
+   subroutine add_obstacle(o, k, model, first, last, profile, nodes)
       type(obstacle_type), intent(in) :: o
       integer, intent(in) :: k, first, last
       type(beam_model), intent(in) :: model
+      type(linear_table), intent(in) :: profile   !! the obstacle's profile (none: not allocated)
       type(nodal_bounds), intent(inout) :: nodes
       real(dp) :: level, xi, tolerance
       integer :: i, j
       tolerance = 1e-9_dp*model%h
       do i = first, last
-         if (o%x_to - o%x_from <= tolerance) then
+         if (allocated(profile%x)) then
+            level = profile%at(model%x(i + 1))
+         else if (o%x_to - o%x_from <= tolerance .or. abs(o%level_to - o%level_from) <= 0) then
             level = o%level_from
          else
             xi = min(1.0_dp, max(0.0_dp, (model%x(i + 1) - o%x_from)/(o%x_to - o%x_from)))
@@ -214,6 +235,51 @@ contains
          end if
       end do
    end subroutine add_obstacle
+
+   !> The surface of each obstacle with a `profile` (docs/input.md, "&obstacles"): its
+   !! table, every x in [0, L] and covering every node the obstacle acts at. stat =
+   !! stat_invalid_input with a message naming the variable, the file (and line) and what
+   !! is allowed. Obstacles without a profile get an empty table.
+   subroutine read_profiles(obstacles, model, profiles, stat, errmsg)
+      type(obstacle_type), intent(in) :: obstacles(:)
+      type(beam_model), intent(in) :: model
+      type(linear_table), intent(out) :: profiles(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=:), allocatable :: shown, quiet
+      integer :: k, first, last, n
+      stat = 0
+      errmsg = ''
+      do k = 1, size(obstacles)
+         if (len_trim(obstacles(k)%profile) == 0) cycle
+         shown = '&obstacles profile('//integer_text(k)//') = '''//trim(obstacles(k)%profile)//''''
+         call read_table(trim(obstacles(k)%profile), profiles(k), stat, errmsg)
+         if (stat /= 0) then
+            stat = stat_invalid_input
+            errmsg = shown//': '//trim(errmsg)
+            return
+         end if
+         n = size(profiles(k)%x)
+         if (len(outside_beam(profiles(k), model%length)) > 0) then
+            stat = stat_invalid_input
+            errmsg = shown//outside_beam(profiles(k), model%length)
+            return
+         end if
+         ! a node within round-off (1e-9 h, as covered_nodes) of an end takes the end's level
+         profiles(k)%hold_ends = .true.
+         quiet = ''   ! the nodes only: covered_nodes warns once, in build_contact_points
+         call covered_nodes(obstacles(k), k, model, first, last, quiet)
+         if (model%x(first + 1) < profiles(k)%x(1) - 1e-9_dp*model%h .or. &
+             model%x(last + 1) > profiles(k)%x(n) + 1e-9_dp*model%h) then
+            stat = stat_invalid_input
+            errmsg = shown//' spans x in ['//real_text(profiles(k)%x(1))//', '//real_text(profiles(k)%x(n))// &
+                     '] m, but obstacle '//integer_text(k)//' acts at the nodes from x = '// &
+                     real_text(model%x(first + 1))//' to '//real_text(model%x(last + 1))//' m: the profile must '// &
+                     'span every node in [x_from, x_to]'
+            return
+         end if
+      end do
+   end subroutine read_profiles
 
    !> stat = stat_failure when a bound cuts a support (u = 0 must be admissible at a node
    !! whose deflection a support holds) or a 'below' level is not under an 'above' level at

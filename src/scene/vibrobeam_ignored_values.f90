@@ -173,6 +173,14 @@ contains
                call add(warnings, '&obstacles level_to'//item//' = '//real_text(o%level_to)//' m is ignored: obstacle '// &
                         integer_text(i)//' is punctual (x_to = x_from = '//real_text(o%x_from)// &
                         ' m): its level is level_from'//item)
+            if (len_trim(o%profile) > 0) then
+               if (scanned%is_given('obstacles', 'level_from', i)) &
+                  call add(warnings, '&obstacles level_from'//item//' = '//real_text(o%level_from)//' m is ignored: '// &
+                           'obstacle '//integer_text(i)//' takes its levels from profile'//item)
+               if (scanned%is_given('obstacles', 'level_to', i)) &
+                  call add(warnings, '&obstacles level_to'//item//' = '//real_text(o%level_to)//' m is ignored: '// &
+                           'obstacle '//integer_text(i)//' takes its levels from profile'//item)
+            end if
          end associate
       end do
    end subroutine obstacle_warnings
@@ -250,9 +258,9 @@ contains
       type(scene_type), intent(in) :: scene
       character(len=:), allocatable, intent(inout) :: warnings
       !> &initial variables that describe the initial state
-      character(len=*), parameter :: initial_state(6) = [character(len=22) :: 'displacement', 'displacement_mode', &
+      character(len=*), parameter :: initial_state(7) = [character(len=22) :: 'displacement', 'displacement_mode', &
                                                           'displacement_amplitude', 'velocity', 'velocity_mode', &
-                                                          'velocity_amplitude']
+                                                          'velocity_amplitude', 'velocity_profile']
       integer :: k
       associate (initial => scene%initial)
          if (initial%displacement /= 'static' .or. len_trim(initial%from_file) > 0) &
@@ -277,9 +285,12 @@ contains
          if (initial%velocity /= 'mode' .and. scanned%is_given('initial', 'velocity_mode')) &
             call add(warnings, '&initial velocity_mode = '//integer_text(initial%velocity_mode)//' is ignored: '// &
                      'velocity = '''//trim(initial%velocity)//'''')
-         if (initial%velocity == 'zero') &
+         if (initial%velocity == 'zero' .or. initial%velocity == 'profile') &
             call given_real(scanned, scene, warnings, 'initial', 'velocity_amplitude', initial%velocity_amplitude, &
-                            'velocity = ''zero''')
+                            'velocity = '''//trim(initial%velocity)//'''')
+         if (initial%velocity /= 'profile' .and. scanned%is_given('initial', 'velocity_profile')) &
+            call add(warnings, '&initial velocity_profile = '''//trim(initial%velocity_profile)//''' is ignored: '// &
+                     'velocity = '''//trim(initial%velocity)//'''')
       end associate
    end subroutine initial_warnings
 

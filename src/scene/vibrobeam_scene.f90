@@ -37,7 +37,7 @@ module vibrobeam_scene
       max_supports, max_masses, structure_from
    use vibrobeam_section_settings, only: section_settings, visit_sections, check_sections, max_sections
    use vibrobeam_buckling, only: check_compression
-   use vibrobeam_initial_state, only: initial_settings, visit_initial
+   use vibrobeam_initial_state, only: initial_settings, visit_initial, check_initial
    use vibrobeam_loads, only: load_settings, visit_load
    use vibrobeam_forces, only: forces_settings, visit_forces, check_forces, max_forces
    use vibrobeam_flow, only: flow_settings, visit_flow, check_flow
@@ -328,6 +328,8 @@ contains
                                        stat, errmsg)
       if (stat == 0) call check_flow(copy%flow, copy%beam%length, copy%time%scheme, copy%mesh%unknowns(), &
                                      copy%analysis%kind == 'dynamics', stat, errmsg)
+      if (stat == 0 .and. steps_in_time(copy) .and. len_trim(copy%initial%from_file) == 0) &
+         call check_initial(copy%initial, stat, errmsg)
       call output_rules(copy, stat, errmsg)
       if (copy%analysis%kind == 'periodic') call periodic_rules(copy, stat, errmsg)
    end subroutine validate_scene

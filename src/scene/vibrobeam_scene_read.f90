@@ -58,8 +58,10 @@ contains
       call scan_namelist_file(filename, scene_variables(), reader%scanned, stat, errmsg)
       if (stat /= 0) return
       ! room for every obstacle, support, mass, section, load and point the file may
-      ! describe; cut to what it gives below
-      allocate (scene%obstacles(max_obstacles), scene%output%points(max_points), scene%supports(max_supports), &
+      ! describe (the obstacles it does describe: each holds a file name); cut to what it
+      ! gives below
+      allocate (scene%obstacles(highest_given(reader%scanned, 'obstacles', max_obstacles)), &
+                scene%output%points(max_points), scene%supports(max_supports), &
                 scene%masses(max_masses), scene%forces%load(max_forces), scene%beam%sections(max_sections))
       scene%obstacles(:)%side = ''
       scene%output%points = 0
@@ -75,11 +77,12 @@ contains
          errmsg = reader%errmsg
          return
       end if
-      call resolve_obstacles(reader%scanned, count, scene, stat, errmsg)
+      call resolve_obstacles(reader%scanned, count, filename, scene, stat, errmsg)
       if (stat == 0) call resolve_supports(reader%scanned, support_count, scene, stat, errmsg)
       if (stat == 0) call resolve_masses(reader%scanned, mass_count, scene, stat, errmsg)
       if (stat == 0) call resolve_sections(reader%scanned, section_count, scene, stat, errmsg)
       if (stat == 0) call resolve_forces(reader%scanned, force_count, filename, scene, stat, errmsg)
+      call beside_input(filename, 'initial', 'velocity_profile', scene%initial%velocity_profile, stat, errmsg)
       if (stat == 0) call resolve_points(reader%scanned, scene, stat, errmsg)
       if (stat == 0) call resolve_frequency_twins(reader%scanned, scene, stat, errmsg)
       if (stat /= 0) return
@@ -149,11 +152,13 @@ contains
    end function namelist_groups_text
 
    !> &obstacles after reading: nothing may be described beyond `count`; each obstacle
-   !! needs side and level_from and takes the defaults that follow other inputs for what
+   !! needs side and level_from (or a profile, whose relative file name is taken from the
+   !! input file's directory) and takes the defaults that follow other inputs for what
    !! is not given (x_from = L, x_to = x_from, level_to = level_from).
-   subroutine resolve_obstacles(scanned, count, scene, stat, errmsg)
+   subroutine resolve_obstacles(scanned, count, filename, scene, stat, errmsg)
       type(scanned_file), intent(in) :: scanned
       integer, intent(in) :: count
+      character(len=*), intent(in) :: filename
       type(scene_type), intent(inout) :: scene
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
@@ -171,8 +176,9 @@ contains
             errmsg = '&obstacles side('//number//') is missing: give ''below'' or ''above'''
             return
          end if
-         if (.not. scanned%is_given('obstacles', 'level_from', i)) then
-            errmsg = '&obstacles level_from('//number//') is missing: give the height (m) of the obstacle surface'
+         if (.not. (scanned%is_given('obstacles', 'level_from', i) .or. scanned%is_given('obstacles', 'profile', i))) then
+            errmsg = '&obstacles level_from('//number//') is missing: give the height (m) of the obstacle surface '// &
+                     '(or its profile('//number//'))'
             return
          end if
          scene%obstacles(i) = read(i)
@@ -182,6 +188,9 @@ contains
       end do
       stat = 0
       errmsg = ''
+      do i = 1, count
+         call beside_input(filename, 'obstacles', 'profile', scene%obstacles(i)%profile, stat, errmsg, i)
+      end do
    end subroutine resolve_obstacles
 
    !> The frequencies given in Hz (docs/input.md, "Frequencies in Hz"): a twin and its
@@ -278,6 +287,24 @@ contains
       stat = 0
       errmsg = ''
    end subroutine check_count
+
+   !> The highest element i <= most of any array variable of `group` the file gives (0:
+   !! none), so that reading holds only the elements described.
+   integer function highest_given(scanned, group, most) result(highest)
+      type(scanned_file), intent(in) :: scanned
+      character(len=*), intent(in) :: group
+      integer, intent(in) :: most
+      type(namelist_variable), allocatable :: table(:)
+      integer :: k
+      allocate (table, source=scene_variables())
+      do highest = most, 1, -1
+         do k = 1, size(table)
+            if (table(k)%group /= group .or. table(k)%extent == 0) cycle
+            if (scanned%is_given(group, trim(table(k)%name), highest)) return
+         end do
+      end do
+      highest = 0
+   end function highest_given
 
    !> The count of an array of settings whose count is an optional row (&supports, &masses,
    !! &sections): `given` is 0 when the file does not give it (count is then unset, -1),
@@ -379,7 +406,7 @@ contains
    !> &forces after reading: nothing may be described beyond `count` (any array variable
    !! of &forces, as the table of variables declares them); the loads are cut to it; a
    !! relative file name of a table is taken from the directory of the input file
-   !! `filename` (docs/input.md, "Tables"), so that a scene and its tables move together.
+   !! `filename` (`beside_input`).
    !! The defaults that follow other inputs are taken when the loads are built.
    subroutine resolve_forces(scanned, count, filename, scene, stat, errmsg)
       type(scanned_file), intent(in) :: scanned
@@ -393,28 +420,35 @@ contains
       if (stat /= 0) return
       scene%forces%load = scene%forces%load(1:count)
       do i = 1, count
-         call beside_input('table', scene%forces%load(i)%table, i)
-         call beside_input('psd_table', scene%forces%load(i)%psd_table, i)
+         call beside_input(filename, 'forces', 'table', scene%forces%load(i)%table, stat, errmsg, i)
+         call beside_input(filename, 'forces', 'psd_table', scene%forces%load(i)%psd_table, stat, errmsg, i)
       end do
-   contains
-      !> A relative path taken from the input file's directory; an absolute one as it is.
-      subroutine beside_input(name, path, i)
-         character(len=*), intent(in) :: name
-         character(len=*), intent(inout) :: path
-         integer, intent(in) :: i
-         character(len=:), allocatable :: directory
-         if (stat /= 0 .or. len_trim(path) == 0 .or. path(1:1) == '/') return
-         directory = directory_of(filename)
-         if (directory == '.') return
-         if (len(directory) + 1 + len_trim(path) > len(path)) then
-            errmsg = '&forces '//name//'('//integer_text(i)//') = '''//trim(path)//''' taken from the directory '// &
-                     'of the input file is longer than '//integer_text(len(path))//' characters'
-            stat = stat_failure
-            return
-         end if
-         path = directory//'/'//trim(path)
-      end subroutine beside_input
    end subroutine resolve_forces
+
+   !> A relative file name `path` of group.name(i) taken from the directory of the input
+   !! file `filename` (docs/input.md, "Tables"), so that a scene and its files move
+   !! together; an absolute one as it is; nothing when stat is already set. stat =
+   !! stat_failure when the result is longer than the variable.
+   subroutine beside_input(filename, group, name, path, stat, errmsg, i)
+      character(len=*), intent(in) :: filename, group, name
+      character(len=*), intent(inout) :: path
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      integer, intent(in), optional :: i   !! the element of an array variable
+      character(len=:), allocatable :: directory, shown
+      if (stat /= 0 .or. len_trim(path) == 0 .or. path(1:1) == '/') return
+      directory = directory_of(filename)
+      if (directory == '.') return
+      shown = '&'//group//' '//name
+      if (present(i)) shown = shown//'('//integer_text(i)//')'
+      if (len(directory) + 1 + len_trim(path) > len(path)) then
+         errmsg = shown//' = '''//trim(path)//''' taken from the directory of the input file is longer than '// &
+                  integer_text(len(path))//' characters'
+         stat = stat_failure
+         return
+      end if
+      path = directory//'/'//trim(path)
+   end subroutine beside_input
 
    !> &output points: the leading elements given (points(1), points(2), ...), no gaps.
    subroutine resolve_points(scanned, scene, stat, errmsg)

@@ -25,6 +25,18 @@ letters() { head -c "$1" /dev/zero | tr '\0' 'a'; }
 table_scene() {
   printf "&forces count = 1, signal(1) = 'table', table(1) = 'record.dat' /\n&output file = 'out/bad.h5' /\n" > "$name"
 }
+# the scene of the &initial velocity_profile cases: a pinned-free beam of length 1 m whose
+# initial velocity is read from profile.dat (the case writes the file)
+profile_scene() {
+  printf "&beam left_end = 'pinned' /\n&time t_end = 1e-3, dt = 1e-4 /\n" > "$name"
+  printf "&initial velocity = 'profile', velocity_profile = 'profile.dat' /\n&output file = 'out/bad.h5' /\n" >> "$name"
+}
+# the scene of the &obstacles profile cases: a floor over [0.5, 1] m of a 1 m beam whose
+# surface is read from floor.dat (the case writes the file)
+obstacle_profile_scene() {
+  printf "&time t_end = 1e-3, dt = 1e-4 /\n&obstacles count = 1, side(1) = 'below', x_from(1) = 0.5, x_to(1) = 1.0,\n" > "$name"
+  printf "           profile(1) = 'floor.dat' /\n&output file = 'out/bad.h5' /\n" >> "$name"
+}
 psd_table_scene() {
   printf "&time t_end = 0.1, dt = 1e-3 /\n&forces count = 1, signal(1) = 'random', psd_table(1) = 'psd.dat' /\n" > "$name"
   printf "&output file = 'out/bad.h5' /\n" >> "$name"
@@ -46,6 +58,27 @@ case "$case_name" in
   overlong_keyword) printf "&mesh basis = '%s' /\n" "hermite$(letters 100)" > "$name" ;;
   input_too_large) { echo '&mesh elements = 4 /'; for i in $(seq 1 40000); do echo '! padding padding padding padding padding'; done; } > "$name" ;;
   input_is_directory) mkdir "$name" ;;
+  initial_profile_not_increasing)
+    profile_scene
+    printf '# x (m), v (m/s)\n0 0\n0.6 1\n0.5 2\n1 3\n' > profile.dat ;;
+  initial_profile_not_a_number)
+    profile_scene
+    printf '0 0\n0.5 fast\n1 2\n' > profile.dat ;;
+  initial_profile_outside_beam)
+    profile_scene
+    printf '0 0\n0.5 1\n1.5 3\n' > profile.dat ;;
+  obstacle_profile_not_increasing)
+    obstacle_profile_scene
+    printf '0 -1e-3\n0.7 -1e-3\n0.7 -2e-3\n1 -2e-3\n' > floor.dat ;;
+  obstacle_profile_not_a_number)
+    obstacle_profile_scene
+    printf '0 -1e-3\n0.5 low\n1 -2e-3\n' > floor.dat ;;
+  obstacle_profile_outside_beam)
+    obstacle_profile_scene
+    printf '0 -1e-3\n1.2 -2e-3\n' > floor.dat ;;
+  obstacle_profile_short)
+    obstacle_profile_scene
+    printf '0 -1e-3\n0.8 -2e-3\n' > floor.dat ;;
   forces_psd_table_negative)
     psd_table_scene
     printf '10 0\n50 -1\n100 0\n' > psd.dat ;;

@@ -112,7 +112,7 @@ contains
       ! the factors of a dense dgetrf of A are the same) and |db| <= gamma_4 |b| (the
       ! cubic's values), so |dc| <= |A^-1| (gamma_{3n} P^T|L||U||c| + gamma_4 |b|); each
       ! value then adds sum |w_a| |dc_a| and the rounding of the sum, gamma_25 sum |w_a c_a|.
-      u = interpolate_field(model, [(cubic(model%x(i + 1), 0), i=1, elements)], [(cubic(model%x(i + 1), 1), i=1, elements)])
+      u = interpolate_field(model, [(cubic(model%x(i + 1), 0), i=0, elements)], [(cubic(model%x(i + 1), 1), i=0, elements)])
       n = model%unknowns
       allocate (collocation(n, n), source=0.0_dp)
       do i = 1, elements

@@ -71,12 +71,12 @@ program test_load_vector
       call build_model('hermite', meshes(k), length, 1.0_dp, 1.0_dp, model, stat, errmsg)
       h = model%h
       ! u = 1 at every node but the clamped one: integral of q * (its interpolant)
-      ones = interpolate_field(model, [(one(model%x(i)), i=2, size(model%x))], &
-                               [(zero(model%x(i)), i=2, size(model%x))])
-      square = interpolate_field(model, [(x_squared(model%x(i)), i=2, size(model%x))], &
-                                 [(two_x(model%x(i)), i=2, size(model%x))])
-      cube = interpolate_field(model, [(x_cubed(model%x(i)), i=2, size(model%x))], &
-                               [(three_x_squared(model%x(i)), i=2, size(model%x))])
+      ones = interpolate_field(model, [(one(model%x(i)), i=1, size(model%x))], &
+                               [(zero(model%x(i)), i=1, size(model%x))])
+      square = interpolate_field(model, [(x_squared(model%x(i)), i=1, size(model%x))], &
+                                 [(two_x(model%x(i)), i=1, size(model%x))])
+      cube = interpolate_field(model, [(x_cubed(model%x(i)), i=1, size(model%x))], &
+                               [(three_x_squared(model%x(i)), i=1, size(model%x))])
       f = load_vector(model, one)
       call check_dot(trim(label)//' uniform q=1: F.1 = L - h/2', f, ones, length - h/2)
       call check_dot(trim(label)//' uniform q=1: F.x^2 = L^3/3', f, square, length**3/3)
