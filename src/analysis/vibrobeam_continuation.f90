@@ -123,7 +123,7 @@ contains
       real(dp) :: start, first_step, ds, lambda_scale
       real(dp), allocatable :: seed(:)
       logical :: converged
-      integer :: halvings, m
+      integer :: halvings, m, before, kind
       call resolve_continuation(scene, branch%axis, start, stat, errmsg)
       if (stat /= 0) return
       run%scene = scene
@@ -207,38 +207,43 @@ contains
             cycle
          end if
          halvings = 0
-         if (outside(next%parameter)) exit
-         call add_point(next)
-         if (stat /= 0) return
+         if (outside(scene, next%parameter)) exit
+         ! the point, and each test function's sign change since the point before, located
+         before = size(branch%points)
+         branch%points = [branch%points, next]
+         do kind = 1, 3
+            if (.not. (branch%points(before)%tests(kind)*next%tests(kind) < 0)) cycle
+            call locate(run, branch%points(before), next, kind, before, branch%bifurcations, stat, errmsg)
+            if (stat /= 0) return
+         end do
          if (next%iterations <= easy_iterations) ds = min(step_growth*ds, largest_step*first_step)
       end do
       branch%steps_taken = run%map%steps_taken
       stat = 0
       errmsg = ''
 
-   contains
-
-      !> lambda beyond parameter_min or parameter_max.
-      logical function outside(lambda)
-         real(dp), intent(in) :: lambda
-         outside = .false.
-         if (.not. is_unset(scene%periodic%parameter_min)) outside = lambda < scene%periodic%parameter_min
-         if (.not. is_unset(scene%periodic%parameter_max)) outside = outside .or. lambda > scene%periodic%parameter_max
-      end function outside
-
-      !> Append `point`, and locate each test function's sign change since the point before.
-      subroutine add_point(point)
-         type(branch_point), intent(in) :: point
-         integer :: kind, before
-         before = size(branch%points)
-         branch%points = [branch%points, point]
-         do kind = 1, 3
-            if (.not. (branch%points(before)%tests(kind)*point%tests(kind) < 0)) cycle
-            call locate(run, branch%points(before), point, kind, before, branch%bifurcations, stat, errmsg)
-            if (stat /= 0) return
-         end do
-      end subroutine add_point
    end subroutine continue_branch
+
+   !> lambda beyond &periodic parameter_min or parameter_max.
+   logical function outside(scene, lambda)
+      type(scene_type), intent(in) :: scene
+      real(dp), intent(in) :: lambda
+      outside = .false.
+      if (.not. is_unset(scene%periodic%parameter_min)) outside = lambda < scene%periodic%parameter_min
+      if (.not. is_unset(scene%periodic%parameter_max)) outside = outside .or. lambda > scene%periodic%parameter_max
+   end function outside
+
+   !> The forcing frequency of the scene at lambda (rad/s).
+   real(dp) function omega_at(run, lambda)
+      type(continuation_context), intent(in) :: run
+      real(dp), intent(in) :: lambda
+      type(scene_type) :: local
+      character(len=:), allocatable :: problem
+      logical :: found
+      local = run%scene
+      call set_real_input(local, run%axis%group, run%axis%name, run%axis%index, lambda, found)
+      call forcing_frequency(local%load, omega_at, problem)
+   end function omega_at
 
    !> The scene at lambda, with dt = T/P for the scene's forcing there (P kept), and its
    !! problem. stat /= 0: the harmonic loads no longer share one frequency, or the problem
@@ -331,8 +336,10 @@ contains
       logical :: ok
       m = size(base%x)
       converged = .false.
-      predicted = [base%x, base%parameter] + ds*base%tangent/base%scale
-      z = predicted
+      allocate (predicted(m + 1), z(m + 1))
+      predicted(1:m) = base%x + ds*base%tangent(1:m)/base%scale(1:m)
+      predicted(m + 1) = base%parameter + ds*base%tangent(m + 1)/base%scale(m + 1)
+      z(:) = predicted
       previous = huge(1.0_dp)
       do iteration = 0, corrector_iterations
          call evaluate_at(run, z(1:m), z(m + 1), run%jacobian, image, stat, errmsg)
@@ -409,7 +416,7 @@ contains
       call floquet_multipliers(image%jacobian, point%multipliers, stat, errmsg)
       if (stat /= 0) return
       point%amplitude = maxval(abs(image%tip(1, :)))
-      point%period = run%map%steps*period_step(omega_at(), int(run%period_steps))
+      point%period = run%map%steps*period_step(omega_at(run, point%parameter), int(run%period_steps))
       call parameter_derivative(run, point%x, point%parameter, image, derivative, ok, stat, errmsg)
       if (stat /= 0) return
       if (.not. ok) then
@@ -447,16 +454,6 @@ contains
             exit   ! (largest modulus first: the first complex pair is the largest)
          end if
       end do
-   contains
-      !> The forcing frequency at the point's lambda.
-      real(dp) function omega_at()
-         type(scene_type) :: local
-         character(len=:), allocatable :: problem
-         logical :: found
-         local = run%scene
-         call set_real_input(local, run%axis%group, run%axis%name, run%axis%index, point%parameter, found)
-         call forcing_frequency(local%load, omega_at, problem)
-      end function omega_at
    end subroutine finish_point
 
    !> The scaled coordinates of `point`: x by the weights over the point's own size
