@@ -47,7 +47,11 @@ module vibrobeam_continuation
    !! fold is stationary in s: its error is of the bracket's square), or a test function
    !! within locate_tolerance of 0 (the unit tangent's component, det(M + I), |mu|^2 - 1).
    integer, parameter :: locate_iterations = 12
-   real(dp), parameter :: locate_bracket = 1e-4_dp, locate_tolerance = 1e-10_dp
+   !! Or when two trials in a row give lambda within locate_lambda of each other,
+   !! relative: at a fold, where the test function's zero is no sharper than the noise of
+   !! a monodromy by differences (measured: the bracket of the bundled scene's upper fold
+   !! stalls at 2e-3 of the step while lambda no longer moves in its 7th digit).
+   real(dp), parameter :: locate_bracket = 1e-4_dp, locate_tolerance = 1e-10_dp, locate_lambda = 1e-9_dp
    !> The kinds of bifurcation, in the order of the test functions.
    character(len=*), parameter :: bifurcation_names(3) = [character(len=15) :: 'fold', 'period-doubling', &
                                                           'neimark-sacker']
@@ -477,7 +481,8 @@ contains
    !! and `b`: regula falsi (Illinois) on the test function over the arclength s from a,
    !! each trial a corrector from a along its tangent (from b backwards along its own when
    !! that fails), until the bracket is below locate_bracket of the step, the test
-   !! function below locate_tolerance, or after locate_iterations; lambda and the amplitude
+   !! function below locate_tolerance, lambda moves by less than locate_lambda between
+   !! two trials, or after locate_iterations; lambda and the amplitude
    !! interpolated linearly in the last bracket; a trial whose correctors both fail leaves
    !! that estimate with located = .false.
    subroutine locate(run, a, b, kind, before, found, stat, errmsg)
@@ -490,7 +495,7 @@ contains
       type(bifurcation_point) :: located
       type(branch_point) :: trial
       real(dp) :: s_low, s_high, f_low, f_high, s, weight
-      real(dp) :: lambda_low, lambda_high, amplitude_low, amplitude_high
+      real(dp) :: lambda_low, lambda_high, amplitude_low, amplitude_high, previous_lambda
       integer :: iteration, side, last_side
       logical :: converged
       stat = 0
@@ -504,6 +509,7 @@ contains
       amplitude_low = a%amplitude
       amplitude_high = b%amplitude
       last_side = 0
+      previous_lambda = huge(1.0_dp)
       located%kind = kind
       located%index = before
       do iteration = 1, locate_iterations
@@ -532,10 +538,13 @@ contains
             if (side > 0) f_low = f_low/2
          end if
          last_side = side
-         if (s_high - s_low <= locate_bracket*b%step .or. abs(trial%tests(kind)) <= locate_tolerance) then
+         if (s_high - s_low <= locate_bracket*b%step .or. abs(trial%tests(kind)) <= locate_tolerance .or. &
+             abs(trial%parameter - previous_lambda) <= locate_lambda*max(abs(trial%parameter), &
+                                                                         1/run%weights(size(run%weights)))) then
             located%located = .true.
             exit
          end if
+         previous_lambda = trial%parameter
       end do
       errmsg = ''
       weight = f_low/(f_low - f_high)
