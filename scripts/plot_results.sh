@@ -74,6 +74,7 @@ plot() {  # plot SCRIPT REQUIRED_DAT
 plot plot_modes.gp shapes
 plot plot_static.gp static
 plot plot_periodic.gp orbit
+plot plot_branch.gp branch
 for gp in "$here"/plot_dynamics_*.gp; do
   [ -e "$gp" ] || continue
   name=$(basename "$gp" .gp)

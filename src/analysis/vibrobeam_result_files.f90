@@ -111,6 +111,8 @@ module vibrobeam_result_files
       real(dp) :: residual = 0                 !! kind = 'periodic': relative residual of the last iterate
       real(dp) :: period = 0                   !! kind = 'periodic': the orbit's period (s)
       real(dp) :: largest_multiplier = 0       !! kind = 'periodic': largest modulus of its Floquet multipliers
+      integer :: branch_points = 0             !! a continuation: points of the branch
+      integer :: bifurcations = 0              !! a continuation: bifurcations located on it
       ! kind = 'dynamics' with a harmonic load: what its Poincare samples say (/statistics/poincare)
       integer(int64) :: poincare_samples = 0   !! samples in the statistics window (0: no section)
       integer :: poincare_period = -1          !! of the sequence; 0 none, -1 not determined

@@ -5,7 +5,7 @@
 !!
 !! One deriver per kind of result: the modes (`modes_files`), the static equilibrium
 !! (`static_files`), a periodic orbit (`periodic_files`), the histories of a dynamics run
-!! (`dynamics_files`) and a sweep
+!! (`dynamics_files`), a continued branch (`vibrobeam_branch_text`) and a sweep
 !! (`vibrobeam_sweep_text`); what they share, the open file, the names and the checked
 !! writes, is `vibrobeam_text_derivation`'s.
 module vibrobeam_text_output
@@ -13,6 +13,7 @@ module vibrobeam_text_output
    use vibrobeam_text_derivation, only: derivation, text_sink, derived_file, discard_derived, text_file_name, &
       path_length, block_values
    use vibrobeam_sweep_text, only: sweep_files
+   use vibrobeam_branch_text, only: branch_files
    use vibrobeam_text, only: integer_text
    use vibrobeam_forces, only: max_forces
    use vibrobeam_progress, only: progress_meter
@@ -21,9 +22,10 @@ module vibrobeam_text_output
    public :: derived_file, derive_text_files, discard_derived, text_file_name, text_suffixes, path_length
 
    !> Every suffix a result's .dat files can have.
-   character(len=*), parameter :: text_suffixes(22) = [character(len=16) :: 'modes', 'shapes', 'static', &
+   character(len=*), parameter :: text_suffixes(24) = [character(len=16) :: 'modes', 'shapes', 'static', &
       'reactions', 'tip', 'energy', 'impacts', 'episodes', 'points', 'field', 'spectrum', 'obstacles', 'contact', &
-      'force', 'sweep', 'poincare', 'contact_modes', 'contact_shapes', 'orbit', 'multipliers', 'forces_psd', 'ensemble']
+      'force', 'sweep', 'poincare', 'contact_modes', 'contact_shapes', 'orbit', 'multipliers', 'forces_psd', 'ensemble', &
+      'branch', 'bifurcations']
 
 contains
 
@@ -75,6 +77,10 @@ contains
          end if
          if (run%file%exists('/periodic/orbit/time')) then
             call periodic_files(run, stat, errmsg)
+            if (stat /= 0 .or. run%interrupted) exit derive
+         end if
+         if (run%file%exists('/periodic/branch/parameter')) then
+            call branch_files(run, stat, errmsg)
             if (stat /= 0 .or. run%interrupted) exit derive
          end if
          if (run%file%exists('/time')) call dynamics_files(run, stat, errmsg)

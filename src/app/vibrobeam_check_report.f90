@@ -184,7 +184,13 @@ contains
          character(len=:), allocatable :: line
          line = 'estimated result size: '//g(report%size%total_bytes)//' bytes (HDF5 '//g(report%size%hdf5_bytes)// &
                 ', text '//g(report%size%text_bytes)//')'
-         if (scene%analysis%kind == 'periodic') line = line//': one orbit and its multipliers'
+         if (scene%analysis%kind == 'periodic') then
+            if (len_trim(scene%periodic%parameter) > 0) then
+               line = line//': a branch of at most '//integer_text(scene%periodic%max_points)//' points'
+            else
+               line = line//': one orbit and its multipliers'
+            end if
+         end if
          if (scene%analysis%kind == 'dynamics') &
             line = line//': '//real_text(report%size%steps)//' steps, '//g(report%size%outputs)//' output times of '// &
                    g(report%size%values_per_output)//' values and '//g(report%size%snapshots)// &
@@ -207,6 +213,11 @@ contains
              g(real(steps*scene%periodic%period_multiple, dp))//' steps, stepped once per Newton iteration with '// &
              'its monodromy ('''//trim(scene%periodic%monodromy)//'''), after a transient of '// &
              integer_text(scene%periodic%transient_periods)//' period(s)'//new_line('a')
+      if (len_trim(scene%periodic%parameter) > 0) &
+         text = text//'continuation in '//trim(scene%periodic%parameter)//': first step '// &
+                g(scene%periodic%step)//', at most '//integer_text(scene%periodic%max_points)// &
+                ' points; each corrector iteration steps the orbit with its monodromy and once more for '// &
+                'dPhi/dlambda, at '//g(real(steps, dp))//' steps per forcing period at every value'//new_line('a')
    end function periodic_text
 
    !> Contact time scale of compliant obstacle i of the scene (s; module comment), with the

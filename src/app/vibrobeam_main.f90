@@ -18,6 +18,9 @@ program vibrobeam_main
    use vibrobeam_modal_analysis, only: run_modal, frequencies_text
    use vibrobeam_static_analysis, only: run_equilibrium
    use vibrobeam_periodic_analysis, only: run_periodic
+   use vibrobeam_branch_output, only: run_continuation
+   use vibrobeam_continuation_axis, only: resolve_continuation, continues
+   use vibrobeam_sweep_axis, only: sweep_axis
    use vibrobeam_problem, only: run_problem, build_problem
    use vibrobeam_dynamics, only: run_dynamics
    use vibrobeam_result_files, only: run_outcome, publish_files
@@ -54,6 +57,7 @@ program vibrobeam_main
       call resolve_sweep(sweep, scene, stat, errmsg)
       if (stat /= 0) call fail(exit_invalid_input, errmsg)
    end if
+   if (continues(scene)) call check_continuation()
    call check_output_target(scene, input_file, stat, errmsg, check_size=.not. sweep%present)
    if (stat /= 0) call fail(exit_invalid_input, errmsg)
    ! one BLAS thread unless VIBROBEAM_BLAS_THREADS says otherwise; a sweep's tasks share the
@@ -292,6 +296,10 @@ contains
    !! iterate marked 'failed' with the reason in /periodic failure and exits with status 3.
    subroutine run_periodic_scene()
       type(run_outcome) :: outcome
+      if (continues(scene)) then
+         call run_continuation_scene()
+         return
+      end if
       call run_periodic(scene, prepared, outcome, stat, errmsg)
       if (stat /= 0) call fail(exit_other_error, errmsg)
       select case (outcome%status)
@@ -315,6 +323,44 @@ contains
       call stop_if_interrupted(outcome%text_skipped)
       call finish(exit_ok)
    end subroutine run_periodic_scene
+
+   !> The continuation's parameter, step and bounds (`resolve_continuation`): invalid input
+   !! stops here, before anything is written.
+   subroutine check_continuation()
+      type(sweep_axis) :: axis
+      real(dp) :: start
+      call resolve_continuation(scene, axis, start, stat, errmsg)
+      if (stat /= 0) call fail(exit_invalid_input, errmsg)
+   end subroutine check_continuation
+
+   !> A continuation of periodic orbits (docs/method.md, "Continuation of periodic
+   !! orbits"). A branch that ends early (its first orbit not found, the corrector failing
+   !! at the smallest step) publishes its points marked 'failed' with the reason in
+   !! /periodic failure and exits with status 3.
+   subroutine run_continuation_scene()
+      type(run_outcome) :: outcome
+      call run_continuation(scene, prepared, outcome, stat, errmsg)
+      if (stat /= 0) call fail(exit_other_error, errmsg)
+      select case (outcome%status)
+      case (outcome_failed)
+         write (error_unit, '(a)') 'vibrobeam: continuation ended early: '//trim(outcome%failure)
+         write (error_unit, '(a,i0,a)') 'vibrobeam: the branch''s ', outcome%branch_points, ' points written to '// &
+            trim(scene%output%file)//' (/run status = ''failed'', the reason in /periodic failure)'
+         call stop_if_interrupted(outcome%text_skipped)
+         call finish(outcome_exit_status(outcome%status))
+      case (outcome_interrupted)
+         write (error_unit, '(a,i0,a)') 'vibrobeam: interrupted by '//interrupt_name()//' after ', &
+            outcome%branch_points, ' branch points; they are written to '//trim(scene%output%file)// &
+            ' (/run status = ''interrupted'')'
+         call stop_if_interrupted(outcome%text_skipped)
+         call finish(outcome_exit_status(outcome%status))
+      end select
+      write (output_unit, '(a,i0,a,i0,a,f0.2,a)') 'vibrobeam: branch of ', outcome%branch_points, &
+         ' periodic orbits with ', outcome%bifurcations, ' bifurcations located, ', outcome%wall_seconds, &
+         ' s; written to '//trim(scene%output%file)
+      call stop_if_interrupted(outcome%text_skipped)
+      call finish(exit_ok)
+   end subroutine run_continuation_scene
 
    subroutine run_dynamics_scene()
       type(run_outcome) :: outcome

@@ -49,6 +49,9 @@ module vibrobeam_result_estimate
    !! dynamics result file and of a modes or static one (measured on the bundled scenes: 98
    !! kB, about 20 kB).
    real(dp), parameter :: metadata_bytes = 100000, small_metadata_bytes = 20000
+   !> The header of one more small dataset (its object header, unit attribute and link):
+   !! measured on a continuation's /periodic/branch, 12 datasets in 10.3 kB beyond the rest.
+   real(dp), parameter :: dataset_header_bytes = 900
    !> The same for a sweep file (measured: 66 kB), and the header lines of a .dat file (a
    !! line naming the run, one with the columns' names and units, and in a sweep's files a
    !! line per column: 2.2 kB for STEM_sweep.dat, 0.4 kB for STEM_poincare.dat).
@@ -139,6 +142,18 @@ contains
          estimate%total_bytes = estimate%hdf5_bytes + estimate%text_bytes
          return
       case ('periodic')
+         if (len_trim(scene%periodic%parameter) > 0) then
+            ! a continuation, at most max_points points: /mesh/x; /periodic/branch, 6 values
+            ! a point, and a few bifurcations (5 values each), 12 datasets' headers beside the
+            ! small metadata; STEM_branch.dat (6 columns a point) and STEM_bifurcations.dat,
+            ! with their column lines
+            associate (points => real(scene%periodic%max_points, dp))
+               estimate%hdf5_bytes = small_metadata_bytes + 12*dataset_header_bytes + 8*(nodes + 6*points + 5*4)
+               if (scene%output%text) estimate%text_bytes = points*(6*wide + 1) + 4*(5*wide + 1) + text_header_bytes
+            end associate
+            estimate%total_bytes = estimate%hdf5_bytes + estimate%text_bytes
+            return
+         end if
          ! /mesh/x; /periodic: the orbit (time, tip displacement and velocity at P = k n + 1
          ! times, n the steps of a forcing period, k period_multiple), the 2J Floquet
          ! multipliers (real, imaginary), the start (2J), Newton's residuals (at most

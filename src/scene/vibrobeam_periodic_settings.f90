@@ -10,11 +10,16 @@
 module vibrobeam_periodic_settings
    use vibrobeam_kinds, only: dp, pi
    use vibrobeam_text, only: real_text
-   use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, keyword_length
+   use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, text_row, keyword_length, &
+      unset
    use vibrobeam_loads, only: load_settings
    implicit none
    private
    public :: periodic_settings, visit_periodic, forcing_frequency, period_step, whole_step_tolerance
+   public :: continuation_parameter_length
+
+   !> Longest &periodic parameter name ('group.variable(i)', as &sweep parameter).
+   integer, parameter :: continuation_parameter_length = 64
 
    !> Largest relative distance of T/dt from a whole number that &time dt may leave (the
    !! forcing period T = 2 pi/Omega): the phase of the forcing then slips by at most
@@ -29,6 +34,12 @@ module vibrobeam_periodic_settings
       real(dp) :: tolerance = 1e-9_dp             !! relative residual of the period map (energy norm)
       integer :: max_iterations = 30              !! Newton iterations before the analysis fails
       character(len=keyword_length) :: monodromy = 'auto'   !! 'auto' | 'linearised' | 'differences'
+      ! continuation (docs/method.md, "Continuation of periodic orbits"); parameter '': none
+      character(len=continuation_parameter_length) :: parameter = ''   !! 'group.variable(i)' continued in
+      real(dp) :: step = 0                         !! first arclength step, in the parameter's unit (its sign: the direction)
+      real(dp) :: parameter_min = unset            !! the branch ends below it (unset: no bound)
+      real(dp) :: parameter_max = unset            !! the branch ends above it (unset: no bound)
+      integer :: max_points = 100                  !! most points of the branch
    end type periodic_settings
 
 contains
@@ -53,6 +64,20 @@ contains
       call visitor%variable(keyword_row('periodic', 'monodromy', 'auto|linearised|differences', keyword_length, &
                                         'Jacobian of the period map: linearised steps or finite differences'), &
                             periodic%monodromy)
+      call visitor%variable(text_row('periodic', 'parameter', continuation_parameter_length, &
+                                     'continue the orbit in this input, ''group.variable'' as &sweep parameter '// &
+                                     '('''': one orbit, no continuation)'), periodic%parameter)
+      call visitor%variable(real_row('periodic', 'step', '', -1e30_dp, 1e30_dp, &
+                                     'first continuation step, in the parameter''s unit; its sign is the '// &
+                                     'direction'), periodic%step)
+      call visitor%variable(real_row('periodic', 'parameter_min', '', -1e30_dp, 1e30_dp, &
+                                     'the branch ends where the parameter goes below this', optional=.true.), &
+                            periodic%parameter_min)
+      call visitor%variable(real_row('periodic', 'parameter_max', '', -1e30_dp, 1e30_dp, &
+                                     'the branch ends where the parameter goes above this', optional=.true.), &
+                            periodic%parameter_max)
+      call visitor%variable(integer_row('periodic', 'max_points', 2, 100000, &
+                                        'most points of a continued branch'), periodic%max_points)
    end subroutine visit_periodic
 
    !> The one frequency of the harmonic loads of `load` (a load with a non-zero amplitude

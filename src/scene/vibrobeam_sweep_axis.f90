@@ -14,7 +14,7 @@ module vibrobeam_sweep_axis
    use vibrobeam_scene_values, only: real_input
    implicit none
    private
-   public :: sweep_axis, resolve_axis
+   public :: sweep_axis, resolve_axis, resolve_name, check_range
 
    !> One axis: the parameter as written, what it names, and its values.
    type :: sweep_axis
@@ -45,10 +45,27 @@ contains
       character(len=*), intent(out) :: errmsg
       type(namelist_variable) :: variable
       character(len=:), allocatable :: label, suffix
-      real(dp) :: value
-      logical :: found, element_given
       suffix = merge('  ', '2 ', a == 1)
       label = '&sweep parameter'//trim(suffix)//' = '''//trim(axis%parameter)//''''
+      call resolve_name(axis, label, scene, variable, stat, errmsg)
+      if (stat /= 0) return
+      call axis_values(axis, trim(suffix), label, stat, errmsg)
+      if (stat /= 0) return
+      call check_range(axis, variable, label, stat, errmsg)
+   end subroutine resolve_axis
+
+   !> Group, name, element and unit of axis%parameter, an input of `scene` a sweep may
+   !! vary (`variable`: its row); `label` starts each message ('&sweep parameter =
+   !! ''...''', or a continuation's '&periodic parameter = ''...''').
+   subroutine resolve_name(axis, label, scene, variable, stat, errmsg)
+      type(sweep_axis), intent(inout) :: axis
+      character(len=*), intent(in) :: label
+      type(scene_type), intent(in) :: scene
+      type(namelist_variable), intent(out) :: variable
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp) :: value
+      logical :: found, element_given
       call parse_parameter(axis, label, element_given, stat, errmsg)
       if (stat /= 0) return
       call sweepable_variable(axis, label, element_given, variable, stat, errmsg)
@@ -65,12 +82,8 @@ contains
             errmsg = label//': element '//integer_text(axis%index)//' is outside [1, '// &
                      integer_text(size(scene%output%points))//'], the &output points given'
          end if
-         return
       end if
-      call axis_values(axis, trim(suffix), label, stat, errmsg)
-      if (stat /= 0) return
-      call check_range(axis, variable, label, stat, errmsg)
-   end subroutine resolve_axis
+   end subroutine resolve_name
 
    !> 'group.variable' or 'group.variable(i)': axis%parameter in lower case, its group,
    !! name and element (`element_given`: written with '(i)').
@@ -248,7 +261,7 @@ contains
       errmsg = ''
    end subroutine axis_values
 
-   !> Each value of the axis inside the hard range of its `variable`.
+   !> Each value of the axis (axis%values) inside the hard range of its `variable`.
    subroutine check_range(axis, variable, label, stat, errmsg)
       type(sweep_axis), intent(in) :: axis
       type(namelist_variable), intent(in) :: variable

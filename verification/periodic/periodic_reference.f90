@@ -3,14 +3,14 @@
 !! (the norm `period_map` measures residuals in), written here from the dense M and K so
 !! that the tests' bounds do not rest on the code under test.
 module vibrobeam_periodic_reference
-   use vibrobeam_kinds, only: dp
+   use vibrobeam_kinds, only: dp, int64
    use vibrobeam_band, only: band_to_dense
    use vibrobeam_problem, only: run_problem
-   use vibrobeam_lapack, only: dgesv, dpotrf, dgeevx
+   use vibrobeam_lapack, only: dgesv, dpotrf, dgeevx, zgesv
    implicit none
    private
    public :: identity, solve_dense, energy_gram, energy_norm, cancellation, fixed_point_condition
-   public :: amplification_matrix, eigenvalues_with_conditions
+   public :: amplification_matrix, eigenvalues_with_conditions, harmonic_steady_state, matrix_power
 
 contains
 
@@ -34,6 +34,59 @@ contains
       call dgesv(size(copy, 1), size(b, 2), copy, size(copy, 1), ipiv, b, size(b, 1), status)
       if (status /= 0) error stop 'dgesv: singular matrix'
    end subroutine solve_dense
+
+   !> matrix^power by repeated squaring.
+   function matrix_power(matrix, exponent) result(out)
+      real(dp), intent(in) :: matrix(:, :)
+      integer(int64), intent(in) :: exponent
+      real(dp) :: out(size(matrix, 1), size(matrix, 2)), base(size(matrix, 1), size(matrix, 2))
+      integer(int64) :: e
+      out = identity(size(matrix, 1))
+      base = matrix
+      e = exponent
+      do while (e > 0)
+         if (mod(e, 2_int64) == 1) out = matmul(out, base)
+         base = matmul(base, base)
+         e = e/2
+      end do
+   end function matrix_power
+
+   !> The harmonic steady state of the velocity scheme without contact under F(t) =
+   !! Re(F^ e^{i Omega t}), F^ = F(0) - i F(T/4) (the loads of `prepared`), from the dense
+   !! M, K, C = damping and W = M + theta dt C + theta^2 dt^2 K: its solution is
+   !! Re((U^, V^) z^n), z = e^{i Omega dt}, with
+   !!   (z - 1) W V^ = dt (F^ (theta z + 1 - theta) - K U^ - (C + theta dt K) V^),
+   !!   (z - 1) U^ = dt (theta z + 1 - theta) V^,
+   !! a complex linear system solved with LAPACK zgesv; `state` = (U^, V^). `info` /= 0:
+   !! zgesv found it singular.
+   subroutine harmonic_steady_state(prepared, mass, stiffness, damping, dt, theta, omega, state, info)
+      type(run_problem), intent(in) :: prepared
+      real(dp), intent(in) :: mass(:, :), stiffness(:, :), damping(:, :), dt, theta, omega
+      complex(dp), allocatable, intent(out) :: state(:)
+      integer, intent(out) :: info
+      complex(dp), allocatable :: system(:, :), rhs(:, :)
+      complex(dp) :: z, g
+      integer, allocatable :: pivots(:)
+      real(dp), parameter :: pi = acos(-1.0_dp)
+      integer :: n, m, j
+      n = size(mass, 1)
+      m = 2*n
+      z = exp(cmplx(0.0_dp, omega*dt, dp))
+      g = theta*z + (1 - theta)
+      allocate (system(m, m), rhs(m, 1), pivots(m))
+      system = 0
+      system(1:n, 1:n) = dt*stiffness
+      system(1:n, n + 1:) = (z - 1)*(mass + theta*dt*damping + theta**2*dt**2*stiffness) + &
+                            dt*(damping + theta*dt*stiffness)
+      rhs(1:n, 1) = dt*g*cmplx(prepared%system%loads%at(0.0_dp), -prepared%system%loads%at(2*pi/omega/4), dp)
+      do j = 1, n
+         system(n + j, j) = z - 1
+         system(n + j, n + j) = -dt*g
+      end do
+      rhs(n + 1:, 1) = 0
+      call zgesv(m, 1, system, m, pivots, rhs, m, info)
+      state = rhs(:, 1)
+   end subroutine harmonic_steady_state
 
    !> The one-step amplification matrix A of the velocity scheme without contact,
    !! (U', V') = A (U, V) + load terms: W (V' - V) = -dt (C V + K (U + theta dt V)),

@@ -5,8 +5,8 @@
 !! solution is Re((U^, V^) z^n), z = e^{i Omega dt}, with
 !!   (z - 1) W V^ = dt (F^ (theta z + 1 - theta) - K U^ - (C + theta dt K) V^),
 !!   (z - 1) U^ = dt (theta z + 1 - theta) V^,
-!! a complex linear system solved here with LAPACK zgesv from the dense M, K of the
-!! scene's stepped system (independently of the shooting code: no stepper, no period map);
+!! a complex linear system solved with LAPACK zgesv from the dense M, K of the scene's
+!! stepped system (`harmonic_steady_state`, independently of the shooting code: no stepper, no period map);
 !! F^ = F(0) - i F(T/4). The Floquet multipliers of that orbit are lambda_k^P, lambda_k the
 !! eigenvalues of the one-step amplification matrix A (dense, LAPACK dgeevx), P the steps
 !! of the orbit: exp(s_k T) for the scheme's own rates s_k = log(lambda_k)/dt.
@@ -21,9 +21,8 @@ program test_periodic_linear
    use vibrobeam_problem, only: run_problem
    use vibrobeam_band, only: band_to_dense
    use vibrobeam_model, only: node_row
-   use vibrobeam_lapack, only: zgesv
    use vibrobeam_periodic_reference, only: identity, solve_dense, energy_gram, energy_norm, cancellation, &
-      fixed_point_condition, amplification_matrix, eigenvalues_with_conditions
+      fixed_point_condition, amplification_matrix, eigenvalues_with_conditions, harmonic_steady_state, matrix_power
    use vibrobeam_periodic_analysis, only: find_periodic_orbit, periodic_orbit
    use vibrobeam_period_map, only: difference_fraction
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
@@ -33,12 +32,11 @@ program test_periodic_linear
    type(run_problem) :: prepared
    type(periodic_orbit) :: orbit
    character(len=512) :: path, errmsg
-   real(dp), allocatable :: mass(:, :), stiffness(:, :), damping(:, :), w(:, :), a(:, :), gram(:, :), &
+   real(dp), allocatable :: mass(:, :), stiffness(:, :), damping(:, :), a(:, :), gram(:, :), &
                             tip_row(:), x_ref(:), &
                             tip_ref(:), wr(:), wi(:), rconde(:), vectors(:, :)
-   complex(dp), allocatable :: system(:, :), rhs(:, :), mu_ref(:)
-   complex(dp) :: z, g
-   integer, allocatable :: pivots(:)
+   complex(dp), allocatable :: rhs(:, :), mu_ref(:), harmonic(:)
+   complex(dp) :: z
    real(dp) :: dt, theta, omega, period, error, bound, inverse_norm, noise, worst, distance, lambda_power
    integer :: n, m, stat, info, k, j, dofs(4)
    integer(int64) :: steps
@@ -58,13 +56,12 @@ program test_periodic_linear
    ! ---- the scheme's matrices, dense, from the stepped system's M and K ----
    n = prepared%system%model%unknowns
    m = 2*n
-   allocate (mass(n, n), stiffness(n, n), damping(n, n), w(n, n), x_ref(m), gram(m, m))
+   allocate (mass(n, n), stiffness(n, n), damping(n, n), x_ref(m), gram(m, m))
    mass = band_to_dense(prepared%system%model%mass)
    stiffness = band_to_dense(prepared%system%model%stiffness)
    dt = scene%time%dt
    theta = scene%time%theta
    damping = scene%beam%rayleigh_mass*mass + scene%beam%rayleigh_stiffness*stiffness
-   w = mass + theta*dt*damping + theta**2*dt**2*stiffness
    omega = maxval([scene%load%point_frequency, scene%load%base_frequency, scene%load%distributed_frequency])
    period = 2*pi/omega
    steps = nint(scene%periodic%period_multiple*period/dt, int64)
@@ -74,20 +71,9 @@ program test_periodic_linear
 
    ! ---- the harmonic steady state (complex system, zgesv) ----
    z = exp(cmplx(0.0_dp, omega*dt, dp))
-   g = theta*z + (1 - theta)
-   allocate (system(m, m), rhs(m, 1))
-   system = 0
-   system(1:n, 1:n) = dt*stiffness
-   system(1:n, n + 1:) = (z - 1)*w + dt*(damping + theta*dt*stiffness)
-   rhs(1:n, 1) = dt*g*cmplx(prepared%system%loads%at(0.0_dp), -prepared%system%loads%at(period/4), dp)
-   do j = 1, n
-      system(n + j, j) = z - 1
-      system(n + j, n + j) = -dt*g
-   end do
-   rhs(n + 1:, 1) = 0
-   allocate (pivots(m))
-   call zgesv(m, 1, system, m, pivots, rhs, m, info)
+   call harmonic_steady_state(prepared, mass, stiffness, damping, dt, theta, omega, harmonic, info)
    call t%check_true('zgesv solves the harmonic system', info == 0)
+   rhs = reshape(harmonic, [m, 1])
    x_ref = real(rhs(:, 1))
 
    ! ---- the energy norm ||x||^2 = U^T (K + Omega^2 M) U + V^T M V, and the orbit's
@@ -166,22 +152,6 @@ program test_periodic_linear
    call t%finish('test_periodic_linear')
 
 contains
-
-   !> matrix^power by repeated squaring.
-   function matrix_power(matrix, exponent) result(out)
-      real(dp), intent(in) :: matrix(:, :)
-      integer(int64), intent(in) :: exponent
-      real(dp) :: out(size(matrix, 1), size(matrix, 2)), base(size(matrix, 1), size(matrix, 2))
-      integer(int64) :: e
-      out = identity(size(matrix, 1))
-      base = matrix
-      e = exponent
-      do while (e > 0)
-         if (mod(e, 2_int64) == 1) out = matmul(out, base)
-         base = matmul(base, base)
-         e = e/2
-      end do
-   end function matrix_power
 
    !> rho of eigenvector j of dgeevx's `vectors` (a complex pair is stored as its real and
    !! imaginary parts in columns j, j + 1): the larger of its parts' rho.

@@ -125,6 +125,9 @@ EXPECTED = {
     # swept over whole numbers it is an ensemble (verification.random_point_force)
     'forces.realisation': [('A', 'is not a whole number')],
     'periodic.tolerance': [('A', "belongs to &analysis kind = 'periodic', which a sweep does not run")],
+    'periodic.step': [('A', "belongs to &analysis kind = 'periodic', which a sweep does not run")],
+    'periodic.parameter_min': [('A', "belongs to &analysis kind = 'periodic', which a sweep does not run")],
+    'periodic.parameter_max': [('A', "belongs to &analysis kind = 'periodic', which a sweep does not run")],
     # the sections cover the whole beam: the last one ends at L
     'sections.x_to(2)': [('D', 'the last section must end at the end of the beam')],
 }

@@ -1,0 +1,57 @@
+# A continued branch of periodic orbits (&periodic parameter, docs/method.md
+# "Continuation of periodic orbits"): the tip's amplitude (largest |u| over the orbit)
+# against the parameter, stable points joined by a solid line, unstable ones by a dashed
+# line, the folds, period doublings and Neimark-Sacker points located on it marked; and
+# the largest Floquet multiplier's modulus along the branch against |mu| = 1. With
+# -e "sweep='STEM2'" the points of a time-marching sweep of the same scene
+# (STEM2_sweep.dat, its tip_displacement_max, up and down branches apart) are drawn over
+# the branch: they lie on its stable parts and jump at its folds.
+# usage: gnuplot -e "stem='results/compliant_stop_branch'" scripts/plot_branch.gp
+# needs: branch
+# reads  stem_branch.dat and stem_bifurcations.dat (docs/output.md, "Text files");
+# writes stem_branch.png
+if (!exists("stem")) stem = 'results/vibrobeam'
+branch = stem.'_branch.dat'
+found = stem.'_bifurcations.dat'
+# a column's number from its header line '# n: name (unit)'
+col(file, name) = int(system("sed -n 's/^# \\([0-9]*\\): ".name." .*/\\1/p' '".file."'"))
+p = col(branch, 'parameter')
+a = col(branch, 'amplitude')
+s = col(branch, 'stable')
+m = col(branch, 'largest_multiplier')
+xlabel = system("sed -n 's/^# [0-9]*: parameter (\\([^)]*\\)) \\(.*\\)$/\\2 (\\1)/p' '".branch."'")
+have_found = int(system("awk '!/^#/ && NF {n++} END {print n + 0}' '".found."' 2> /dev/null")) > 0
+set terminal pngcairo size 1200,1000 noenhanced
+set output stem.'_branch.png'
+set multiplot layout 2,1 title 'Continued branch: '.stem
+set grid
+set xlabel xlabel
+set ylabel 'tip amplitude (mm)'
+set key top left
+# stable and unstable parts: a segment is drawn in the style of its two ends (NaN breaks it)
+stable_y(y, flag) = flag > 0.5 ? y : NaN
+unstable_y(y, flag) = flag < 0.5 ? y : NaN
+plot_cmd = "branch using (column(p)):(stable_y(column(a)*1e3, column(s))) with lines lw 2 lc rgb '#1f77b4' title 'stable', ".\
+           "branch using (column(p)):(unstable_y(column(a)*1e3, column(s))) with lines lw 2 dt 2 lc rgb '#d62728' title 'unstable'"
+if (have_found) {
+   k = col(found, 'kind')
+   fp = col(found, 'parameter')
+   fa = col(found, 'amplitude')
+   plot_cmd = plot_cmd.", found using (column(fp)):(column(k) == 1 ? column(fa)*1e3 : NaN) with points pt 7 ps 1.6 lc rgb 'black' title 'fold', ".\
+              "found using (column(fp)):(column(k) == 2 ? column(fa)*1e3 : NaN) with points pt 5 ps 1.6 lc rgb '#2ca02c' title 'period doubling', ".\
+              "found using (column(fp)):(column(k) == 3 ? column(fa)*1e3 : NaN) with points pt 9 ps 1.8 lc rgb '#9467bd' title 'Neimark-Sacker'"
+}
+if (exists("sweep")) {
+   swept = sweep.'_sweep.dat'
+   sp = col(swept, 'parameter')
+   sd = col(swept, 'direction')
+   sa = col(swept, 'tip_displacement_max')
+   plot_cmd = plot_cmd.", swept using (column(sp)):(column(sd) > 0 ? column(sa)*1e3 : NaN) with points pt 8 ps 1 lc rgb '#ff7f0e' title 'sweep up', ".\
+              "swept using (column(sp)):(column(sd) < 0 ? column(sa)*1e3 : NaN) with points pt 10 ps 1 lc rgb '#8c564b' title 'sweep down'"
+}
+eval('plot '.plot_cmd)
+set ylabel 'largest |mu|'
+set key top right
+plot branch using (column(p)):(column(m)) with linespoints pt 7 ps 0.6 lw 1 lc rgb '#1f77b4' title 'largest Floquet multiplier modulus', \
+     1 with lines dt 2 lc rgb '#d62728' title '|mu| = 1'
+unset multiplot

@@ -1,0 +1,98 @@
+!> A continuation from start to published result (&analysis kind = 'periodic' with
+!! &periodic parameter; docs/method.md, "Continuation of periodic orbits"; docs/output.md,
+!! "Continued branch"): the branch of `continue_branch` written to /periodic/branch and
+!! /periodic/branch/bifurcations, published at once like every result (a temporary file
+!! renamed when complete); a branch that ended early is published too, marked 'failed'
+!! with the reason in /periodic failure.
+module vibrobeam_branch_output
+   use vibrobeam_kinds, only: dp
+   use vibrobeam_status, only: stat_ok, outcome_interrupted
+   use vibrobeam_scene, only: scene_type
+   use vibrobeam_problem, only: run_problem
+   use vibrobeam_continuation, only: continuation_branch, continue_branch, bifurcation_names
+   use vibrobeam_result_files, only: result_files, run_summary, run_outcome
+   use vibrobeam_progress, only: progress_meter
+   use vibrobeam_signals, only: interrupt_requested
+   implicit none
+   private
+   public :: run_continuation
+
+contains
+
+   !> Continue the orbit of the prepared scene and publish the branch. stat /= 0 (errmsg)
+   !! when the continuation input is invalid, a problem cannot be built or the result
+   !! cannot be written (nothing is published, earlier results stay).
+   subroutine run_continuation(scene, prepared, outcome, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(run_problem), intent(in) :: prepared
+      type(run_outcome), intent(out) :: outcome
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(continuation_branch) :: branch
+      type(progress_meter) :: meter
+      type(result_files) :: files
+      type(run_summary) :: summary
+      call meter%init(scene%output%progress)
+      call continue_branch(scene, prepared, branch, stat, errmsg)
+      if (stat /= 0) return
+      call files%open(scene, prepared%model, stat, errmsg)
+      if (stat == stat_ok) call write_branch(files, branch, stat, errmsg)
+      summary%status = branch%status
+      summary%steps = branch%steps_taken
+      summary%wall_seconds = meter%elapsed()
+      if (interrupt_requested()) summary%status = outcome_interrupted
+      call files%finish(summary, meter, outcome%text_skipped, stat, errmsg)
+      if (stat /= stat_ok) return
+      outcome%status = summary%status
+      outcome%failure = branch%failure
+      outcome%wall_seconds = summary%wall_seconds
+      outcome%run_id = files%run_id
+      outcome%steps = branch%steps_taken
+      outcome%branch_points = size(branch%points)
+      outcome%bifurcations = size(branch%bifurcations)
+   end subroutine run_continuation
+
+   !> /periodic (what the branch cost and how it ended), /periodic/branch (one value per
+   !! point) and /periodic/branch/bifurcations (docs/output.md, "Continued branch").
+   subroutine write_branch(files, branch, stat, errmsg)
+      type(result_files), intent(inout) :: files
+      type(continuation_branch), intent(in) :: branch
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=*), parameter :: group = '/periodic/branch', found = '/periodic/branch/bifurcations'
+      integer :: k
+      stat = 0
+      errmsg = ''
+      associate (points => branch%points, bifurcations => branch%bifurcations)
+         call files%h5%write_real_1d(group//'/parameter', points%parameter, trim(branch%axis%unit), stat, errmsg)
+         if (stat == 0) call files%h5%attr_string(group, 'parameter', trim(branch%axis%parameter), stat, errmsg)
+         if (stat == 0) call files%h5%write_real_1d(group//'/amplitude', points%amplitude, 'm', stat, errmsg)
+         if (stat == 0) call files%h5%write_real_1d(group//'/period', points%period, 's', stat, errmsg)
+         if (stat == 0) call files%h5%write_int_1d(group//'/stable', [(merge(1, 0, largest(k) < 1), &
+                                                                      k=1, size(points))], stat, errmsg)
+         if (stat == 0) call files%h5%write_real_1d(group//'/largest_multiplier', [(largest(k), k=1, size(points))], &
+                                                    '1', stat, errmsg)
+         if (stat == 0) call files%h5%write_int_1d(group//'/newton_iterations', points%iterations, stat, errmsg)
+         if (stat == 0) call files%h5%write_int_1d(found//'/kind', bifurcations%kind, stat, errmsg)
+         if (stat == 0) call files%h5%attr_string(found, 'kinds', '1 '//trim(bifurcation_names(1))//', 2 '// &
+                                                  trim(bifurcation_names(2))//', 3 '//trim(bifurcation_names(3)), &
+                                                  stat, errmsg)
+         if (stat == 0) call files%h5%write_real_1d(found//'/parameter', bifurcations%parameter, &
+                                                    trim(branch%axis%unit), stat, errmsg)
+         if (stat == 0) call files%h5%write_real_1d(found//'/amplitude', bifurcations%amplitude, 'm', stat, errmsg)
+         if (stat == 0) call files%h5%write_int_1d(found//'/index', bifurcations%index, stat, errmsg)
+         if (stat == 0) call files%h5%write_int_1d(found//'/located', merge(1, 0, bifurcations%located), stat, errmsg)
+      end associate
+      if (stat == 0) call files%h5%attr_string('/periodic', 'monodromy', trim(branch%monodromy), stat, errmsg)
+      if (stat == 0) call files%h5%attr_int64('/periodic', 'steps_taken', branch%steps_taken, stat, errmsg)
+      if (stat == 0) call files%h5%attr_int64('/periodic', 'orbit_steps', branch%orbit_steps, stat, errmsg)
+      if (stat == 0 .and. len_trim(branch%failure) > 0) &
+         call files%h5%attr_string('/periodic', 'failure', trim(branch%failure), stat, errmsg)
+   contains
+      !> The largest modulus of point k's multipliers.
+      real(dp) function largest(k)
+         integer, intent(in) :: k
+         largest = hypot(branch%points(k)%multipliers(1, 1), branch%points(k)%multipliers(2, 1))
+      end function largest
+   end subroutine write_branch
+end module vibrobeam_branch_output

@@ -1,0 +1,66 @@
+!> The text files of a continued branch (docs/output.md, "Text files"): STEM_branch.dat,
+!! one row per branch point, and STEM_bifurcations.dat, one row per bifurcation located,
+!! each column named in a header line as in the sweep files ('# 2: amplitude (m)'), read
+!! from its dataset of /periodic/branch (`vibrobeam_sweep_text`'s table columns).
+module vibrobeam_branch_text
+   use vibrobeam_kinds, only: dp
+   use vibrobeam_text_derivation, only: derivation, text_sink
+   use vibrobeam_sweep_text, only: table_column, column_lines, read_table
+   implicit none
+   private
+   public :: branch_files
+
+   character(len=*), parameter :: group = '/periodic/branch', found = '/periodic/branch/bifurcations'
+
+contains
+
+   !> STEM_branch.dat and STEM_bifurcations.dat of the branch in the open result.
+   subroutine branch_files(run, stat, errmsg)
+      type(derivation), intent(inout) :: run
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(table_column) :: points(6), bifurcations(5)
+      character(len=:), allocatable :: parameter
+      call run%file%attr_string(group, 'parameter', parameter, stat, errmsg)
+      if (stat /= 0) return
+      points = [table_column('parameter', group//'/parameter', note=parameter), &
+                table_column('amplitude', group//'/amplitude'), table_column('period', group//'/period'), &
+                table_column('largest_multiplier', group//'/largest_multiplier'), &
+                table_column('stable', group//'/stable'), table_column('newton_iterations', group//'/newton_iterations')]
+      call write_table('branch', 'one row per point of the continued branch, in its order: the parameter, the '// &
+                       'largest |u| of the tip over the orbit, the period, the largest |mu|, 1 stable (every |mu| < 1) '// &
+                       'or 0, the corrector''s Newton iterations', points, group//'/parameter', 2, stat, errmsg)
+      if (stat /= 0) return
+      bifurcations = [table_column('parameter', found//'/parameter', note=parameter), &
+                      table_column('amplitude', found//'/amplitude'), &
+                      table_column('kind', found//'/kind', note='1 fold, 2 period-doubling, 3 neimark-sacker'), &
+                      table_column('index', found//'/index'), table_column('located', found//'/located')]
+      call write_table('bifurcations', 'one row per bifurcation located on the branch: its parameter, '// &
+                       'amplitude and kind, the branch point before it, 1 when the test function''s zero was located (0: '// &
+                       'the linear estimate between the two points)', bifurcations, found//'/kind', 3, stat, errmsg)
+   contains
+      !> '<stem>_<suffix>.dat' of `columns`, as many rows as the dataset `rows_of` has;
+      !! the last `integers` columns written as integers.
+      subroutine write_table(suffix, what, columns, rows_of, integers, stat, errmsg)
+         character(len=*), intent(in) :: suffix, what, rows_of
+         type(table_column), intent(in) :: columns(:)
+         integer, intent(in) :: integers
+         integer, intent(out) :: stat
+         character(len=*), intent(out) :: errmsg
+         type(text_sink) :: sink
+         real(dp), allocatable :: values(:), table(:, :)
+         integer :: k
+         call run%file%read_reals(rows_of, values, stat, errmsg)
+         if (stat /= 0) return
+         call run%open_sink(sink, suffix, what, stat, errmsg)
+         if (stat /= 0) return
+         call column_lines(run, sink, columns, stat, errmsg)
+         if (stat == 0 .and. size(values) > 0) call read_table(run, columns, 1, size(values), table, stat, errmsg)
+         do k = 1, size(values)
+            if (stat /= 0) exit
+            call sink%put_row('wide', table(:, k), stat, errmsg, integers)
+         end do
+         call run%close_sink(sink, stat, errmsg)
+      end subroutine write_table
+   end subroutine branch_files
+end module vibrobeam_branch_text

@@ -1,0 +1,555 @@
+!> Pseudo-arclength continuation of the fixed point of the period map in (x, lambda)
+!! (&periodic parameter; docs/method.md, "Continuation of periodic orbits"): from the orbit
+!! Newton's method finds at the scene's value of the parameter (`find_periodic_orbit`),
+!! each next point is predicted along the branch's tangent, the null vector of
+!! [M - I, dPhi/dlambda], and corrected by Newton's method on the bordered system
+!! (Phi(x, lambda) - x = 0 and the arclength condition; LAPACK dgesv); the step halves
+!! when the corrector fails and grows when it converges easily. Along the branch: the
+!! Floquet multipliers, stability, and the sign changes of three test functions (fold,
+!! period doubling, Neimark-Sacker), each located by regula falsi on the arclength.
+!!
+!! lambda is any input a sweep may vary (`vibrobeam_continuation_axis`), set through the
+!! sweep's setter (`set_real_input`); each evaluation at a new lambda builds its problem
+!! anew (`build_problem`), with dt = T/P for the P steps per forcing period of the start,
+!! so that a forcing frequency can be continued in with P dt = T kept.
+module vibrobeam_continuation
+   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_status, only: stat_ok, stat_failure, outcome_ok, outcome_failed, outcome_interrupted
+   use vibrobeam_text, only: real_text, integer_text
+   use vibrobeam_scene, only: scene_type, forcing_period_steps
+   use vibrobeam_scene_values, only: set_real_input
+   use vibrobeam_schema_visitor, only: is_unset
+   use vibrobeam_sweep_axis, only: sweep_axis
+   use vibrobeam_continuation_axis, only: resolve_continuation
+   use vibrobeam_periodic_settings, only: forcing_frequency, period_step
+   use vibrobeam_problem, only: run_problem, build_problem
+   use vibrobeam_period_map, only: period_map, map_image, jacobian_none, jacobian_linearised, jacobian_differences, &
+      difference_fraction
+   use vibrobeam_periodic_analysis, only: find_periodic_orbit, periodic_orbit, floquet_multipliers
+   use vibrobeam_signals, only: interrupt_requested
+   use vibrobeam_lapack, only: dgesv
+   implicit none
+   private
+   public :: continuation_branch, branch_point, bifurcation_point, continue_branch, bifurcation_names
+
+   !> Newton iterations of one corrector before its step is halved: from a predictor on
+   !! the tangent the corrector converges quadratically in 2 to 4; more means the step is
+   !! too long for the branch's curvature.
+   integer, parameter :: corrector_iterations = 8
+   !> A corrector that converged in at most this many iterations lets the step grow.
+   integer, parameter :: easy_iterations = 3
+   !> Growth of the step after an easy corrector, and its largest multiple of the first step.
+   real(dp), parameter :: step_growth = 1.5_dp, largest_step = 10
+   !> Halvings of the first step before the branch is given up.
+   integer, parameter :: max_halvings = 10
+   !> Regula falsi iterations that locate a bifurcation between two branch points, and
+   !! when it stops: the bracket below locate_bracket of the arclength step (lambda at a
+   !! fold is stationary in s: its error is of the bracket's square), or a test function
+   !! within locate_tolerance of 0 (the unit tangent's component, det(M + I), |mu|^2 - 1).
+   integer, parameter :: locate_iterations = 12
+   !! Or when two trials in a row give lambda within locate_lambda of each other,
+   !! relative: at a fold, where the test function's zero is no sharper than the noise of
+   !! a monodromy by differences (measured: the bracket of the bundled scene's upper fold
+   !! stalls at 2e-3 of the step while lambda no longer moves in its 7th digit).
+   real(dp), parameter :: locate_bracket = 1e-4_dp, locate_tolerance = 1e-10_dp, locate_lambda = 1e-9_dp
+   !> The kinds of bifurcation, in the order of the test functions.
+   character(len=*), parameter :: bifurcation_names(3) = [character(len=15) :: 'fold', 'period-doubling', &
+                                                          'neimark-sacker']
+
+   !> One point of the branch: a converged orbit.
+   type :: branch_point
+      real(dp) :: parameter = 0                   !! lambda
+      real(dp), allocatable :: x(:)               !! (U, V) at phase 0
+      real(dp), allocatable :: tangent(:)         !! unit tangent in the point's scaled coordinates (2 J + 1)
+      real(dp), allocatable :: scale(:)           !! (2 J + 1) the point's scaled coordinates z = scale * (x, lambda)
+      real(dp), allocatable :: multipliers(:, :)  !! (2, 2 J) Floquet multipliers, largest modulus first
+      real(dp) :: amplitude = 0                   !! largest |u| of the tip over the orbit (m)
+      real(dp) :: period = 0                      !! the orbit's period, k P dt (s)
+      real(dp) :: step = 0                        !! the arclength step that reached it (scaled)
+      integer :: iterations = 0                   !! corrector's Newton iterations
+      !> the test functions: the tangent's lambda component (fold), det(M + I) (period
+      !! doubling), the largest |mu|^2 - 1 of a complex pair, -1 without one (Neimark-Sacker)
+      real(dp) :: tests(3) = 0
+   end type branch_point
+
+   !> A bifurcation located between two branch points.
+   type :: bifurcation_point
+      integer :: kind = 0                  !! 1 fold, 2 period doubling, 3 Neimark-Sacker (`bifurcation_names`)
+      real(dp) :: parameter = 0            !! lambda where the test function vanishes
+      real(dp) :: amplitude = 0            !! the tip's amplitude there (m)
+      integer :: index = 0                 !! the branch point before it (1-based)
+      logical :: located = .false.         !! regula falsi converged (else the linear estimate between the points)
+   end type bifurcation_point
+
+   !> The branch and how its computation went.
+   type :: continuation_branch
+      type(sweep_axis) :: axis                         !! the parameter
+      type(branch_point), allocatable :: points(:)
+      type(bifurcation_point), allocatable :: bifurcations(:)
+      integer :: status = outcome_ok                   !! outcome_ok, outcome_failed, outcome_interrupted
+      character(len=512) :: failure = ''
+      character(len=16) :: monodromy = ''
+      integer(int64) :: steps_taken = 0                !! every time step of every evaluation
+      integer(int64) :: orbit_steps = 0                !! steps of one orbit, k P
+      integer :: first_iterations = 0                  !! Newton iterations of the first orbit
+   end type continuation_branch
+
+   !> What every evaluation needs: the base scene, the period map, the scaling.
+   type :: continuation_context
+      type(scene_type) :: scene
+      type(sweep_axis) :: axis
+      integer(int64) :: period_steps = 0                !! P, steps per forcing period, kept along the branch
+      type(period_map) :: map
+      type(run_problem) :: reference                   !! the start's problem: the norm of the residual
+      !> (2 J + 1) the weights of the scaled coordinates: of each unknown the square root
+      !! of its diagonal weight in the energy norm, of lambda 1 over the parameter's scale
+      real(dp), allocatable :: weights(:)
+      real(dp) :: largest_size = 0                     !! the largest weighted size of a point's x so far
+      integer :: jacobian = jacobian_linearised
+      real(dp) :: tolerance = 0
+   end type continuation_context
+
+contains
+
+   !> The branch through the orbit of `scene` (kind = 'periodic', &periodic parameter
+   !! given; `prepared` its problem) in `branch`. stat /= 0 (errmsg): invalid continuation
+   !! input, a stepper or problem that cannot be made; a branch that ends early is
+   !! branch%status = outcome_failed with the reason, its points kept.
+   subroutine continue_branch(scene, prepared, branch, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(run_problem), intent(in) :: prepared
+      type(continuation_branch), intent(out) :: branch
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(continuation_context) :: run
+      type(periodic_orbit) :: orbit
+      type(branch_point) :: first, next
+      real(dp) :: start, first_step, ds, lambda_scale
+      real(dp), allocatable :: seed(:)
+      logical :: converged
+      integer :: halvings, m, before, kind
+      call resolve_continuation(scene, branch%axis, start, stat, errmsg)
+      if (stat /= 0) return
+      run%scene = scene
+      run%scene%initial%from_file = ''
+      run%axis = branch%axis
+      run%period_steps = forcing_period_steps(scene)
+      run%reference = prepared
+      run%tolerance = scene%periodic%tolerance
+      allocate (branch%points(0), branch%bifurcations(0))
+      call find_periodic_orbit(scene, prepared, orbit, stat, errmsg)
+      if (stat /= 0) return
+      branch%monodromy = orbit%monodromy
+      branch%first_iterations = orbit%iterations
+      run%map = orbit%map
+      branch%orbit_steps = orbit%map%steps
+      run%jacobian = merge(jacobian_linearised, jacobian_differences, orbit%monodromy == 'linearised')
+      if (.not. orbit%converged .or. orbit%status /= outcome_ok) then
+         branch%status = merge(outcome_interrupted, outcome_failed, orbit%status == outcome_interrupted)
+         branch%failure = 'the first orbit, at '//trim(branch%axis%parameter)//' = '//real_text(start)//': '// &
+                          trim(orbit%failure)
+         branch%steps_taken = run%map%steps_taken
+         return
+      end if
+      ! the weights of the scaled coordinates (`point_scale`): each unknown by the square
+      ! root of its diagonal weight in the energy norm (K + Omega^2 M for U, M for V);
+      ! lambda relative to the parameter's range (or the larger of its start and the step)
+      m = size(orbit%x)
+      allocate (run%weights(m + 1))
+      associate (model => prepared%system%model)
+         run%weights(1:m/2) = sqrt(model%stiffness%lower(1, :) + run%map%omega**2*model%mass%lower(1, :))
+         run%weights(m/2 + 1:m) = sqrt(model%mass%lower(1, :))
+      end associate
+      lambda_scale = max(abs(start), abs(scene%periodic%step))
+      if (.not. (is_unset(scene%periodic%parameter_min) .or. is_unset(scene%periodic%parameter_max))) then
+         if (scene%periodic%parameter_max > scene%periodic%parameter_min) &
+            lambda_scale = scene%periodic%parameter_max - scene%periodic%parameter_min
+      end if
+      run%weights(m + 1) = 1/lambda_scale
+      ! the first point: its tangent oriented by the sign of step
+      allocate (seed(m + 1), source=0.0_dp)
+      seed(m + 1) = sign(run%weights(m + 1), scene%periodic%step)
+      first%x = orbit%x
+      first%parameter = start
+      call finish_point(run, orbit%image, seed, first, stat, errmsg)
+      if (stat /= 0) return
+      if (first%iterations < 0) then
+         branch%status = outcome_failed
+         branch%failure = 'the tangent at the first orbit: '//trim(errmsg)
+         stat = 0
+         errmsg = ''
+         branch%steps_taken = run%map%steps_taken
+         return
+      end if
+      branch%points = [first]
+      first_step = abs(scene%periodic%step)*run%weights(m + 1)
+      ds = first_step
+      halvings = 0
+      do while (size(branch%points) < scene%periodic%max_points)
+         if (interrupt_requested()) then
+            branch%status = outcome_interrupted
+            exit
+         end if
+         associate (last => branch%points(size(branch%points)))
+            call correct(run, last, ds, next, converged, stat, errmsg)
+         end associate
+         if (stat /= 0) return
+         if (.not. converged) then
+            ds = ds/2
+            halvings = halvings + 1
+            if (halvings > max_halvings) then
+               branch%status = outcome_failed
+               branch%failure = 'the branch could not be continued beyond point '//integer_text(size(branch%points))// &
+                                ' ('//trim(branch%axis%parameter)//' = '// &
+                                real_text(branch%points(size(branch%points))%parameter)//'): the corrector failed '// &
+                                'with steps down to 2^-'//integer_text(max_halvings)//' of the first ('// &
+                                trim(errmsg)//')'
+               errmsg = ''
+               exit
+            end if
+            errmsg = ''
+            cycle
+         end if
+         halvings = 0
+         if (outside(scene, next%parameter)) exit
+         ! the point, and each test function's sign change since the point before, located
+         before = size(branch%points)
+         branch%points = [branch%points, next]
+         do kind = 1, 3
+            if (.not. (branch%points(before)%tests(kind)*next%tests(kind) < 0)) cycle
+            call locate(run, branch%points(before), next, kind, before, branch%bifurcations, stat, errmsg)
+            if (stat /= 0) return
+         end do
+         if (next%iterations <= easy_iterations) ds = min(step_growth*ds, largest_step*first_step)
+      end do
+      branch%steps_taken = run%map%steps_taken
+      stat = 0
+      errmsg = ''
+
+   end subroutine continue_branch
+
+   !> lambda beyond &periodic parameter_min or parameter_max.
+   logical function outside(scene, lambda)
+      type(scene_type), intent(in) :: scene
+      real(dp), intent(in) :: lambda
+      outside = .false.
+      if (.not. is_unset(scene%periodic%parameter_min)) outside = lambda < scene%periodic%parameter_min
+      if (.not. is_unset(scene%periodic%parameter_max)) outside = outside .or. lambda > scene%periodic%parameter_max
+   end function outside
+
+   !> The forcing frequency of the scene at lambda (rad/s).
+   real(dp) function omega_at(run, lambda)
+      type(continuation_context), intent(in) :: run
+      real(dp), intent(in) :: lambda
+      type(scene_type) :: local
+      character(len=:), allocatable :: problem
+      logical :: found
+      local = run%scene
+      call set_real_input(local, run%axis%group, run%axis%name, run%axis%index, lambda, found)
+      call forcing_frequency(local%load, omega_at, problem)
+   end function omega_at
+
+   !> The scene at lambda, with dt = T/P for the scene's forcing there (P kept), and its
+   !! problem. stat /= 0: the harmonic loads no longer share one frequency, or the problem
+   !! cannot be built.
+   subroutine problem_at(run, lambda, local, prepared, stat, errmsg)
+      type(continuation_context), intent(in) :: run
+      real(dp), intent(in) :: lambda
+      type(scene_type), intent(out) :: local
+      type(run_problem), intent(out) :: prepared
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=:), allocatable :: problem, warnings
+      real(dp) :: omega
+      logical :: found
+      local = run%scene
+      call set_real_input(local, run%axis%group, run%axis%name, run%axis%index, lambda, found)
+      call forcing_frequency(local%load, omega, problem)
+      if (len(problem) > 0 .or. .not. omega > 0) then
+         stat = stat_failure
+         errmsg = 'at '//trim(run%axis%parameter)//' = '//real_text(lambda)//' the scene '//problem
+         return
+      end if
+      local%time%dt = period_step(omega, int(run%period_steps))
+      warnings = ''
+      call build_problem(local, prepared, warnings, stat, errmsg)
+   end subroutine problem_at
+
+   !> Phi(x, lambda) (with the monodromy by `jacobian`) in `image`; a lambda at which the
+   !! scene cannot be built is image%status = outcome_failed with the reason.
+   subroutine evaluate_at(run, x, lambda, jacobian, image, stat, errmsg)
+      type(continuation_context), intent(inout) :: run
+      real(dp), intent(in) :: x(:), lambda
+      integer, intent(in) :: jacobian
+      type(map_image), intent(out) :: image
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(scene_type) :: local
+      type(run_problem) :: prepared
+      call problem_at(run, lambda, local, prepared, stat, errmsg)
+      if (stat /= 0) then
+         ! (a corrector that wandered out of the parameter's domain: a failed evaluation)
+         image%status = outcome_failed
+         image%failure = errmsg
+         stat = 0
+         errmsg = ''
+         return
+      end if
+      call run%map%evaluate(local, prepared, x, jacobian, image, stat, errmsg)
+   end subroutine evaluate_at
+
+   !> dPhi/dlambda at (x, lambda) by a forward difference, h = sqrt(eps) max(|lambda|,
+   !! 1/scale_lambda) (the step actually taken after rounding), from `image` = Phi(x,
+   !! lambda). `ok` false when the shifted evaluation failed (errmsg says why).
+   subroutine parameter_derivative(run, x, lambda, image, derivative, ok, stat, errmsg)
+      type(continuation_context), intent(inout) :: run
+      real(dp), intent(in) :: x(:), lambda
+      type(map_image), intent(in) :: image
+      real(dp), allocatable, intent(out) :: derivative(:)
+      logical, intent(out) :: ok
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(map_image) :: shifted
+      real(dp) :: moved
+      moved = lambda + difference_fraction*max(abs(lambda), 1/run%weights(size(run%weights)))
+      call evaluate_at(run, x, moved, jacobian_none, shifted, stat, errmsg)
+      ok = stat == 0 .and. shifted%status == outcome_ok
+      if (stat == 0 .and. .not. ok) errmsg = 'dPhi/dlambda: '//trim(shifted%failure)
+      if (.not. ok) return
+      derivative = (shifted%state - image%state)/(moved - lambda)
+   end subroutine parameter_derivative
+
+   !> Predictor from `base` along its tangent by the arclength `ds` (scaled), corrector
+   !! Newton on the bordered system [M - I, Phi_lambda; t^T S] (dx, dlambda) = -(Phi - x, g),
+   !! g the arclength condition t . S((x, lambda) - predictor) = 0. `converged` false (the
+   !! reason in errmsg, stat 0) when it does not reach the tolerance in
+   !! corrector_iterations, its residual grows after the second iteration, or a step fails.
+   subroutine correct(run, base, ds, point, converged, stat, errmsg)
+      type(continuation_context), intent(inout) :: run
+      type(branch_point), intent(in) :: base
+      real(dp), intent(in) :: ds
+      type(branch_point), intent(out) :: point
+      logical, intent(out) :: converged
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(map_image) :: image
+      real(dp), allocatable :: predicted(:), z(:), derivative(:), matrix(:, :), rhs(:)
+      integer, allocatable :: pivots(:)
+      real(dp) :: relative, previous
+      integer :: iteration, m, j, info
+      logical :: ok
+      m = size(base%x)
+      converged = .false.
+      allocate (predicted(m + 1), z(m + 1))
+      predicted(1:m) = base%x + ds*base%tangent(1:m)/base%scale(1:m)
+      predicted(m + 1) = base%parameter + ds*base%tangent(m + 1)/base%scale(m + 1)
+      z(:) = predicted
+      previous = huge(1.0_dp)
+      do iteration = 0, corrector_iterations
+         call evaluate_at(run, z(1:m), z(m + 1), run%jacobian, image, stat, errmsg)
+         if (stat /= 0) return
+         if (image%status /= outcome_ok) then
+            errmsg = trim(image%failure)
+            return
+         end if
+         relative = residual(run, z(1:m), image)
+         if (relative <= run%tolerance) then
+            point%x = z(1:m)
+            point%parameter = z(m + 1)
+            point%step = ds
+            call finish_point(run, image, base%tangent*base%scale, point, stat, errmsg)
+            point%iterations = iteration
+            converged = stat == 0 .and. allocated(point%tangent)
+            return
+         end if
+         if (iteration == corrector_iterations .or. (iteration >= 2 .and. relative > previous)) then
+            errmsg = 'corrector residual '//real_text(relative)//' after '//integer_text(iteration)//' iterations'
+            return
+         end if
+         previous = relative
+         call parameter_derivative(run, z(1:m), z(m + 1), image, derivative, ok, stat, errmsg)
+         if (stat /= 0 .or. .not. ok) return
+         allocate (matrix(m + 1, m + 1), rhs(m + 1), pivots(m + 1))
+         matrix(1:m, 1:m) = image%jacobian
+         do j = 1, m
+            matrix(j, j) = matrix(j, j) - 1
+         end do
+         matrix(1:m, m + 1) = derivative
+         matrix(m + 1, :) = base%tangent*base%scale
+         rhs(1:m) = z(1:m) - image%state
+         rhs(m + 1) = -dot_product(base%tangent*base%scale, z - predicted)
+         call dgesv(m + 1, 1, matrix, m + 1, pivots, rhs, m + 1, info)
+         if (info /= 0) then
+            errmsg = 'the bordered system is singular'
+            return
+         end if
+         z = z + rhs
+         deallocate (matrix, rhs, pivots)
+      end do
+   end subroutine correct
+
+   !> ||Phi(x) - x|| relative to max(||x||, ||Phi(x)||), in the start's energy norm.
+   real(dp) function residual(run, x, image)
+      type(continuation_context), intent(in) :: run
+      real(dp), intent(in) :: x(:)
+      type(map_image), intent(in) :: image
+      real(dp) :: scale
+      scale = max(run%map%norm(run%reference, x), run%map%norm(run%reference, image%state))
+      residual = run%map%norm(run%reference, image%state - x)
+      if (scale > 0) residual = residual/scale
+   end function residual
+
+   !> What a converged point carries: multipliers, amplitude, period, its tangent (the
+   !! null vector of [M - I, Phi_lambda], from the bordered system whose last row is
+   !! `previous`, the tangent before in the unscaled variables, so that the branch keeps
+   !! its direction) in its own scaled coordinates, and the test functions.
+   !! point%iterations = -1 and errmsg when the tangent cannot be taken (stat 0).
+   subroutine finish_point(run, image, previous, point, stat, errmsg)
+      type(continuation_context), intent(inout) :: run
+      type(map_image), intent(in) :: image
+      real(dp), intent(in) :: previous(:)   !! (2 J + 1) the previous tangent times its scale
+      type(branch_point), intent(inout) :: point
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp), allocatable :: derivative(:), matrix(:, :), rhs(:)
+      integer, allocatable :: pivots(:)
+      complex(dp) :: product
+      integer :: m, j, info
+      logical :: ok
+      m = size(point%x)
+      call floquet_multipliers(image%jacobian, point%multipliers, stat, errmsg)
+      if (stat /= 0) return
+      point%amplitude = maxval(abs(image%tip(1, :)))
+      point%period = run%map%steps*period_step(omega_at(run, point%parameter), int(run%period_steps))
+      call parameter_derivative(run, point%x, point%parameter, image, derivative, ok, stat, errmsg)
+      if (stat /= 0) return
+      if (.not. ok) then
+         point%iterations = -1
+         return
+      end if
+      allocate (matrix(m + 1, m + 1), rhs(m + 1), pivots(m + 1))
+      matrix(1:m, 1:m) = image%jacobian
+      do j = 1, m
+         matrix(j, j) = matrix(j, j) - 1
+      end do
+      matrix(1:m, m + 1) = derivative
+      matrix(m + 1, :) = previous
+      rhs = 0
+      rhs(m + 1) = 1
+      call dgesv(m + 1, 1, matrix, m + 1, pivots, rhs, m + 1, info)
+      if (info /= 0) then
+         point%iterations = -1
+         errmsg = 'the tangent''s bordered system is singular'
+         return
+      end if
+      call point_scale(run, point)
+      rhs = rhs*point%scale
+      point%tangent = rhs/norm2(rhs)
+      point%tests(1) = point%tangent(m + 1)
+      product = 1
+      do j = 1, size(point%multipliers, 2)
+         product = product*cmplx(1 + point%multipliers(1, j), point%multipliers(2, j), dp)
+      end do
+      point%tests(2) = real(product)
+      point%tests(3) = -1
+      do j = 1, size(point%multipliers, 2)
+         if (point%multipliers(2, j) > 0) then
+            point%tests(3) = point%multipliers(1, j)**2 + point%multipliers(2, j)**2 - 1
+            exit   ! (largest modulus first: the first complex pair is the largest)
+         end if
+      end do
+   end subroutine finish_point
+
+   !> The scaled coordinates of `point`: x by the weights over the point's own size
+   !! ||weights x|| (so that a step is a relative change of the orbit: a resonance peak
+   !! many times the orbit where the branch started takes steps of its own size), floored
+   !! at 1e-6 of the largest size so far (an orbit through zero); lambda by its weight.
+   subroutine point_scale(run, point)
+      type(continuation_context), intent(inout) :: run
+      type(branch_point), intent(inout) :: point
+      real(dp) :: size_of_x
+      integer :: m
+      m = size(point%x)
+      size_of_x = norm2(run%weights(1:m)*point%x)
+      run%largest_size = max(run%largest_size, size_of_x)
+      size_of_x = max(size_of_x, 1e-6_dp*run%largest_size)
+      if (.not. size_of_x > 0) size_of_x = 1
+      point%scale = [run%weights(1:m)/size_of_x, run%weights(m + 1)]
+   end subroutine point_scale
+
+   !> The bifurcation of test function `kind` between branch points `a` (index `before`)
+   !! and `b`: regula falsi (Illinois) on the test function over the arclength s from a,
+   !! each trial a corrector from a along its tangent (from b backwards along its own when
+   !! that fails), until the bracket is below locate_bracket of the step, the test
+   !! function below locate_tolerance, lambda moves by less than locate_lambda between
+   !! two trials, or after locate_iterations; lambda and the amplitude
+   !! interpolated linearly in the last bracket; a trial whose correctors both fail leaves
+   !! that estimate with located = .false.
+   subroutine locate(run, a, b, kind, before, found, stat, errmsg)
+      type(continuation_context), intent(inout) :: run
+      type(branch_point), intent(in) :: a, b
+      integer, intent(in) :: kind, before
+      type(bifurcation_point), allocatable, intent(inout) :: found(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(bifurcation_point) :: located
+      type(branch_point) :: trial
+      real(dp) :: s_low, s_high, f_low, f_high, s, weight
+      real(dp) :: lambda_low, lambda_high, amplitude_low, amplitude_high, previous_lambda
+      integer :: iteration, side, last_side
+      logical :: converged
+      stat = 0
+      errmsg = ''
+      s_low = 0
+      s_high = b%step
+      f_low = a%tests(kind)
+      f_high = b%tests(kind)
+      lambda_low = a%parameter
+      lambda_high = b%parameter
+      amplitude_low = a%amplitude
+      amplitude_high = b%amplitude
+      last_side = 0
+      previous_lambda = huge(1.0_dp)
+      located%kind = kind
+      located%index = before
+      do iteration = 1, locate_iterations
+         s = s_low + f_low*(s_high - s_low)/(f_low - f_high)
+         call correct(run, a, s, trial, converged, stat, errmsg)
+         ! (a corrector from a that fails: the same point from b, backwards along its tangent)
+         if (stat == 0 .and. .not. converged) call correct(run, b, s - b%step, trial, converged, stat, errmsg)
+         if (stat /= 0) return
+         if (.not. converged) exit
+         if (trial%tests(kind)*f_low > 0) then
+            s_low = s
+            f_low = trial%tests(kind)
+            lambda_low = trial%parameter
+            amplitude_low = trial%amplitude
+            side = -1
+         else
+            s_high = s
+            f_high = trial%tests(kind)
+            lambda_high = trial%parameter
+            amplitude_high = trial%amplitude
+            side = 1
+         end if
+         ! Illinois: halve the value at the end that stayed twice
+         if (side == last_side) then
+            if (side < 0) f_high = f_high/2
+            if (side > 0) f_low = f_low/2
+         end if
+         last_side = side
+         if (s_high - s_low <= locate_bracket*b%step .or. abs(trial%tests(kind)) <= locate_tolerance .or. &
+             abs(trial%parameter - previous_lambda) <= locate_lambda*max(abs(trial%parameter), &
+                                                                         1/run%weights(size(run%weights)))) then
+            located%located = .true.
+            exit
+         end if
+         previous_lambda = trial%parameter
+      end do
+      errmsg = ''
+      weight = f_low/(f_low - f_high)
+      located%parameter = lambda_low + weight*(lambda_high - lambda_low)
+      located%amplitude = amplitude_low + weight*(amplitude_high - amplitude_low)
+      found = [found, located]
+   end subroutine locate
+end module vibrobeam_continuation
