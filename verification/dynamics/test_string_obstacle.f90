@@ -157,16 +157,17 @@ contains
 
    !> The velocity scheme against the reference, N = 40 to 320 with dt = h/(2c), 8 s (4
    !! contact intervals). What to expect (measured in studies/string_obstacle/REPORT.md, not
-   !! fitted here): without the obstacle the L2 error of a pluck falls like h
-   !! (verification.plucked_string); the obstacle's node, a mass rho h that e = 1 makes
-   !! bounce through every contact interval instead of resting, adds a slower error, and the
-   !! study measures orders 0.5 to 0.6 for the L2 error and for the cumulative contact
-   !! impulse up to N = 1280. Checked: the RMS nodal error (the largest over samples every
-   !! 0.25 s) and the error of the cumulative impulse (the largest over every step) fall at
-   !! each refinement, their least-squares orders over N = 40..320 are at least 0.35 (the
-   !! study's 0.5 less a margin of 0.15 for the approach to the asymptote: the orders
-   !! measured here are printed, 0.50 to 0.55), and the discrete energy is conserved to
-   !! its round-off bound (e = 1 and theta = 1/2 conserve it exactly: theory §6).
+   !! fitted here): without the obstacle the L2 error of a pluck falls like h and its largest
+   !! error like h^(2/3) (verification.plucked_string); the point obstacle's law is a
+   !! supremum (theory §7), so each contact passes the largest error of the arriving waves
+   !! on to the whole field, and the study measures orders near 2/3 (0.63 to 0.66 fitted
+   !! over N = 160..1280, 20 s) for the L2 error and the cumulative contact impulse, lower
+   !! (about 0.5) over N = 40..320, still pre-asymptotic. Checked: the RMS nodal error (the
+   !! largest over samples every 0.25 s) and the error of the cumulative impulse (the
+   !! largest over every step) fall at each refinement, their least-squares orders over
+   !! N = 40..320 are at least 0.35 (the measured 0.47 to 0.55, printed, less a margin for
+   !! the approach to the asymptote), and the discrete energy is conserved to its round-off
+   !! bound (e = 1 and theta = 1/2 conserve it exactly: theory §6).
    subroutine refine(basis)
       character(len=*), intent(in) :: basis
       integer, parameter :: levels = 4
