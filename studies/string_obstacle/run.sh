@@ -2,7 +2,7 @@
 # Regenerates results.txt of studies/string_obstacle (REPORT.md): the plucked string against
 # a point obstacle at L/4, vibrobeam's velocity scheme against the exact solution by
 # characteristics. Needs a Release build with -DVIBROBEAM_STUDIES=ON in build/ (or give
-# the build directory as $1). About 9 minutes on one core.
+# the build directory as $1). About 10 minutes on one core.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=${1:-$here/../../build}
@@ -26,6 +26,9 @@ study=$build/studies/string_obstacle/string_obstacle_study
   echo
   echo "## F. shorter windows: 3 s (2 contact intervals), 6 s (3), 10 s (6), e = 1"
   for t_end in 3 6 10; do "$study" $t_end 1280 2 1 -0.3 80; done
+  echo
+  echo "## H. N refined with a small time step, dt = h/(16c), e = 1, 20 s"
+  "$study" 20 320 16 1 -0.3 40
   echo
   echo "## G. the conditioning of the exact problem: the pluck's height times 1 + delta"
   "$study" sensitivity
