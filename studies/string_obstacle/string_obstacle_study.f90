@@ -15,6 +15,7 @@ program string_obstacle_study
    character(len=8), parameter :: bases(2) = [character(len=8) :: 'hermite', 'bspline']
    character(len=32) :: argument
    real(dp) :: t_end, courant, restitution, level
+   real(dp), allocatable :: starts(:), ends(:)
    integer :: largest, smallest, elements, b, stat, k
    character(len=512) :: errmsg
    if (command_argument_count() >= 1) then
@@ -34,13 +35,14 @@ program string_obstacle_study
    write (*, '(a,f6.1,a,i0,a,f4.1,a,f4.2)') '# t_end = ', t_end, ' s, landings of the exact solution: ', landings(), &
       ', dt = h/(courant c), courant = ', courant, &
       ', e = ', restitution
+   call ref%contact_intervals(starts, ends)
    write (*, '(a)', advance='no') '# exact contact intervals (s):'
-   do k = 2, ref%points
-      if (ref%w(k) <= ref%level .and. ref%w(k - 1) > ref%level) write (*, '(a,f7.4)', advance='no') ' [', ref%t(k)
-      if (ref%w(k) > ref%level .and. ref%w(k - 1) <= ref%level) write (*, '(a,f7.4,a)', advance='no') ',', ref%t(k - 1), ']'
-   end do
-   write (*, *)
-   write (*, '(a)') '# basis N steps rms largest point away impulse impulse_end energy_drift energy_bound impulse_steps'
+   write (*, '(*(a,f7.4,a,f7.4,a))') (' [', starts(k), ',', ends(k), ']', k=1, size(starts))
+   call ref%contact_intervals(starts, ends, pressed=.true.)
+   write (*, '(a)', advance='no') '# of them, where the obstacle pushes (R > 0):'
+   write (*, '(*(a,f7.4,a,f7.4,a))') (' [', starts(k), ',', ends(k), ']', k=1, size(starts))
+   write (*, '(a)') '# basis N steps rms largest point away impulse impulse_end energy_drift energy_bound '// &
+      'impulse_steps contact_times'
    do b = 1, 2
       elements = smallest
       do while (elements <= largest)
@@ -50,8 +52,9 @@ program string_obstacle_study
             write (*, '(a)') 'error: '//trim(errmsg)
             error stop 1
          end if
-         write (*, '(a8,i6,i8,8es11.3,i8)') bases(b), elements, errors%steps, errors%rms, errors%largest, errors%point, &
-            errors%away, errors%impulse, errors%impulse_end, errors%energy_drift, errors%energy_bound, errors%impulse_steps
+         write (*, '(a8,i6,i8,8es11.3,i8,es11.3)') bases(b), elements, errors%steps, errors%rms, errors%largest, errors%point, &
+            errors%away, errors%impulse, errors%impulse_end, errors%energy_drift, errors%energy_bound, errors%impulse_steps, &
+            errors%contact_times
          flush (6)
          elements = 2*elements
       end do
@@ -101,10 +104,10 @@ contains
       end do
    end subroutine sensitivity
 
+   !> The number of contact intervals of the exact solution.
    integer function landings()
-      landings = 0
-      do k = 2, ref%points
-         if (ref%w(k) <= ref%level .and. ref%w(k - 1) > ref%level) landings = landings + 1
-      end do
+      real(dp), allocatable :: first(:), last(:)
+      call ref%contact_intervals(first, last)
+      landings = size(first)
    end function landings
 end program string_obstacle_study

@@ -94,6 +94,8 @@ contains
       type(string_reference) :: ref
       real(dp), parameter :: v = 1, t_end = 9, period = 1.5_dp*length/c
       real(dp) :: time, x, phase, error, exact, xs
+      real(dp), allocatable :: starts(:), ends(:)
+      real(dp) :: expected_starts(6), expected_ends(6)
       integer :: i, k, wrong_contact
       ref = new_string_reference(length, c, 0.5_dp*length, 0.0_dp, [0.0_dp, length], [0.0_dp, 0.0_dp], [v])
       call ref%build(t_end)
@@ -125,6 +127,17 @@ contains
                          history_bound(ref, t_end, v*length/c))
       call t%check_true('reference: contact exactly on (L/c, 3L/2c) of each period', wrong_contact == 0, &
                         integer_text(wrong_contact)//' sample times wrong')
+      ! the force R = 2TV/c > 0 on the whole of each: the pressed intervals are the same,
+      ! [L/c + k 3L/(2c), 3L/(2c) + k 3L/(2c)], k = 0..5 (the last cut at t_end = 9 L/c)
+      call ref%contact_intervals(starts, ends, pressed=.true.)
+      expected_starts = [(length/c + k*period, k=0, 5)]
+      expected_ends = [(min(1.5_dp*length/c + k*period, t_end), k=0, 5)]
+      call t%check_true('reference: 6 intervals of contact force', size(starts) == 6, integer_text(size(starts)))
+      if (size(starts) == 6) then
+         error = max(maxval(abs(starts - expected_starts)), maxval(abs(ends - expected_ends)))
+         call t%check_close('reference: the intervals of contact force', error, 0.0_dp, 1.0_dp, &
+                            history_bound(ref, t_end, length/c))
+      end if
    end subroutine check_uniform_velocity
 
    !> E(t) from the waves the point emitted (string_reference%energy) against E(0) from the
@@ -164,10 +177,12 @@ contains
    !! over N = 160..1280, 20 s) for the L2 error and the cumulative contact impulse, lower
    !! (about 0.5) over N = 40..320, still pre-asymptotic. Checked: the RMS nodal error (the
    !! largest over samples every 0.25 s) and the error of the cumulative impulse (the
-   !! largest over every step) fall at each refinement, their least-squares orders over
-   !! N = 40..320 are at least 0.35 (the measured 0.47 to 0.55, printed, less a margin for
-   !! the approach to the asymptote), and the discrete energy is conserved to its round-off
-   !! bound (e = 1 and theta = 1/2 conserve it exactly: theory §6).
+   !! largest over every step) and the largest error of the start or end of a contact force
+   !! (the first and last step with an impulse against the exact interval of R > 0) fall at
+   !! each refinement, their least-squares orders over N = 40..320 are at least 0.35 (the
+   !! measured 0.47 to 0.8, printed, less a margin for the approach to the asymptote), and
+   !! the discrete energy is conserved to its round-off bound (e = 1 and theta = 1/2
+   !! conserve it exactly: theory §6).
    subroutine refine(basis)
       character(len=*), intent(in) :: basis
       integer, parameter :: levels = 4
@@ -175,7 +190,7 @@ contains
       type(string_reference) :: ref
       type(string_run_errors) :: errors(levels)
       integer :: level, elements(levels), stat
-      real(dp) :: order_rms, order_impulse, rms(levels), impulse(levels)
+      real(dp) :: order_rms, order_impulse, order_times, rms(levels), impulse(levels), times(levels)
       character(len=512) :: errmsg
       ref = plucked(-0.3_dp*height)
       call ref%build(t_end)
@@ -193,13 +208,19 @@ contains
       end do
       rms = errors%rms
       impulse = errors%impulse
+      times = errors%contact_times
       order_rms = fitted_order(elements, rms, [(.true., level=1, levels)])
       order_impulse = fitted_order(elements, impulse, [(.true., level=1, levels)])
-      write (*, '(a,f5.2,a,f5.2)') basis//' orders (N = 40..320): L2', order_rms, ', cumulative impulse', order_impulse
+      order_times = fitted_order(elements, times, [(.true., level=1, levels)])
+      write (*, '(a,4es10.2)') basis//' largest error of the start or end of a contact force (s), N = 40..320:', times
+      write (*, '(a,f5.2,a,f5.2,a,f5.2)') basis//' orders (N = 40..320): L2', order_rms, ', cumulative impulse', &
+         order_impulse, ', contact times', order_times
       call t%check_true(basis//': the L2 error falls at each refinement', all(rms(2:) < rms(:levels - 1)))
       call t%check_true(basis//': the impulse error falls at each refinement', &
                         all(impulse(2:) < impulse(:levels - 1)))
       call t%check_true(basis//': L2 order >= 0.35', order_rms >= 0.35_dp)
       call t%check_true(basis//': impulse order >= 0.35', order_impulse >= 0.35_dp)
+      call t%check_true(basis//': the contact times'' error falls at each refinement', all(times(2:) < times(:levels - 1)))
+      call t%check_true(basis//': contact times order >= 0.35', order_times >= 0.35_dp)
    end subroutine refine
 end program test_string_obstacle

@@ -35,6 +35,7 @@ module vibrobeam_string_obstacle_reference
       procedure :: in_contact
       procedure :: point_displacement
       procedure :: incoming_at
+      procedure :: contact_intervals
    end type string_reference
 
    public :: new_string_reference
@@ -391,4 +392,25 @@ contains
       a = interpolate(self%t(:self%points), self%a(:self%points), time)
       b = interpolate(self%t(:self%points), self%b(:self%points), time)
    end subroutine incoming_at
+
+   !> The contact intervals of the built history: the point lands at starts(k) and leaves
+   !! at ends(k) (the end of the history if it is still on the obstacle there). With
+   !! `pressed`, only where the obstacle pushes (R > 0: the point rests while the arriving
+   !! waves' sum s decreases); a point can also rest on the obstacle with R = 0, where s
+   !! stays constant.
+   pure subroutine contact_intervals(self, starts, ends, pressed)
+      class(string_reference), intent(in) :: self
+      real(dp), allocatable, intent(out) :: starts(:), ends(:)
+      logical, intent(in), optional :: pressed
+      logical :: on(self%points - 1)
+      integer :: n
+      n = self%points
+      ! piece k is [t(k), t(k + 1)]
+      on = self%w(:n - 1) <= self%level .and. self%w(2:n) <= self%level
+      if (present(pressed)) then
+         if (pressed) on = on .and. self%a(2:n) + self%b(2:n) < self%a(:n - 1) + self%b(:n - 1)
+      end if
+      starts = pack(self%t(:n - 1), on .and. .not. eoshift(on, -1, .false.))
+      ends = pack(self%t(2:n), on .and. .not. eoshift(on, 1, .false.))
+   end subroutine contact_intervals
 end module vibrobeam_string_obstacle_reference

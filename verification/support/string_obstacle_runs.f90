@@ -34,6 +34,10 @@ module vibrobeam_string_obstacle_runs
       real(dp) :: energy_bound = 0   !! round-off bound of energy_drift: 8 n eps cond(W), n steps,
                                      !! cond(W) <= 1 + (dt omega_max/2)^2 (as verification.plucked_string)
       real(dp) :: impulse_end = 0    !! the run's cumulative impulse at the end / the exact one
+      real(dp) :: contact_times = 0  !! largest error of the start or end of a contact force (s): for each
+                                     !! exact interval of R > 0, the first and last step with an impulse
+                                     !! between the midpoints to its neighbours; an interval without one
+                                     !! counts its whole length
       integer :: steps = 0
       integer :: impulse_steps = 0   !! steps whose impulse at the obstacle is not zero
    end type string_run_errors
@@ -81,9 +85,9 @@ contains
       type(run_problem) :: prepared
       class(time_stepper), allocatable :: stepper
       type(band_cholesky) :: factor
-      real(dp), allocatable :: w(:), exact(:), mv(:)
+      real(dp), allocatable :: w(:), exact(:), mv(:), starts(:), ends(:), borders(:), first(:), last(:)
       real(dp) :: bending, inertia, energy_0, omega_max, time, impulse, a, b, exact_impulse, impulse_total
-      integer :: i, n, steps, node, node_away, every
+      integer :: i, n, steps, node, node_away, every, interval
       scene%beam%length = ref%length
       scene%beam%k2 = 1e-10_dp*ref%c**2*ref%length**2
       scene%beam%axial_force = ref%c**2
@@ -117,6 +121,14 @@ contains
       steps = nint(t_end/scene%time%dt)
       call exact_impulse_at(t_end, impulse_total)
       impulse = 0
+      call ref%contact_intervals(starts, ends, pressed=.true.)
+      ! interval k owns the steps between borders(k) and borders(k + 1)
+      allocate (borders(size(starts) + 1))
+      borders(1) = -huge(1.0_dp)
+      borders(2:size(starts)) = 0.5_dp*(ends(:size(ends) - 1) + starts(2:))
+      borders(size(borders)) = huge(1.0_dp)
+      allocate (first(size(starts)), source=huge(1.0_dp))
+      allocate (last(size(starts)), source=-huge(1.0_dp))
       do n = 1, steps
          call stepper%step(stat, errmsg)
          if (stat /= 0) return
@@ -125,6 +137,11 @@ contains
             if (maxval(abs(stepper%report%impulse(:stepper%report%active_count))) > 0) then
                errors%impulse_steps = errors%impulse_steps + 1
                impulse = impulse + sum(stepper%report%impulse(:stepper%report%active_count))
+               interval = count(borders(2:size(borders) - 1) < time) + 1
+               if (interval <= size(starts)) then
+                  first(interval) = min(first(interval), time)
+                  last(interval) = max(last(interval), time)
+               end if
             end if
          end if
          w = nodal_displacement(prepared%model, stepper%u)
@@ -140,6 +157,13 @@ contains
          end if
       end do
       errors%steps = steps
+      do i = 1, size(starts)
+         if (first(i) <= last(i)) then
+            errors%contact_times = max(errors%contact_times, abs(first(i) - starts(i)), abs(last(i) - ends(i)))
+         else
+            errors%contact_times = max(errors%contact_times, ends(i) - starts(i))
+         end if
+      end do
       call highest_frequency(prepared%model, omega_max, stat, errmsg)
       if (stat /= 0) return
       errors%energy_bound = 8*steps*epsilon(1.0_dp)*(1 + (0.5_dp*scene%time%dt*omega_max)**2)
