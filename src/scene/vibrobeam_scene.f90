@@ -689,6 +689,9 @@ contains
       n = 0
       do k = 1, lister%count
          if (lister%entries(k)%name == 'beam.k2') lister%entries(k)%real_value = scene%beam%ei()/scene%beam%rho_s()
+         ! the amplitude of a rotation is its angular velocity (docs/input.md, &initial)
+         if (lister%entries(k)%name == 'initial.velocity_amplitude' .and. scene%initial%velocity == 'rotation') &
+            lister%entries(k)%unit = 'rad/s'
          if (lister%entries(k)%name == 'beam.rayleigh_mass') then
             list(n + 1:n + derived%count) = derived%entries(1:derived%count)
             n = n + derived%count

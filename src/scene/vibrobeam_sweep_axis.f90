@@ -169,8 +169,8 @@ contains
          return
       end select
       if (axis%group == 'periodic') then
-         errmsg = label//' belongs to &analysis kind = ''periodic'', which a sweep does not run (its points are '// &
-                  'dynamics runs)'
+         errmsg = label//' belongs to &periodic, the settings of the periodic analysis itself, which neither a '// &
+                  'sweep (its points are dynamics runs) nor a continuation (its points are orbits of the scene) varies'
          return
       end if
       if (variable%extent > 0 .and. .not. element_given) then

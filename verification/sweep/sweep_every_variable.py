@@ -124,10 +124,10 @@ EXPECTED = {
     'mesh.reduction_frequency_hz': [('B', None)],
     # swept over whole numbers it is an ensemble (verification.random_point_force)
     'forces.realisation': [('A', 'is not a whole number')],
-    'periodic.tolerance': [('A', "belongs to &analysis kind = 'periodic', which a sweep does not run")],
-    'periodic.step': [('A', "belongs to &analysis kind = 'periodic', which a sweep does not run")],
-    'periodic.parameter_min': [('A', "belongs to &analysis kind = 'periodic', which a sweep does not run")],
-    'periodic.parameter_max': [('A', "belongs to &analysis kind = 'periodic', which a sweep does not run")],
+    'periodic.tolerance': [('A', "belongs to &periodic, the settings of the periodic analysis itself")],
+    'periodic.step': [('A', "belongs to &periodic, the settings of the periodic analysis itself")],
+    'periodic.parameter_min': [('A', "belongs to &periodic, the settings of the periodic analysis itself")],
+    'periodic.parameter_max': [('A', "belongs to &periodic, the settings of the periodic analysis itself")],
     # the sections cover the whole beam: the last one ends at L
     'sections.x_to(2)': [('D', 'the last section must end at the end of the beam')],
 }
