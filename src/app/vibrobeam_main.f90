@@ -11,7 +11,8 @@ program vibrobeam_main
                                exit_interrupted, message_length, stat_numerical_failure, outcome_failed, outcome_interrupted, &
                                outcome_exit_status, stat_invalid_input
    use vibrobeam_version, only: version_string
-   use vibrobeam_scene, only: scene_type, validate_scene, format_scene, is_unset
+   use vibrobeam_scene, only: scene_type, format_scene, is_unset
+   use vibrobeam_scene_rules, only: validate_scene
    use vibrobeam_scene_read, only: read_scene, namelist_groups_text
    use vibrobeam_output_target, only: check_output_target
    use vibrobeam_check_report, only: check_report, make_check_report, check_report_text, scene_warnings

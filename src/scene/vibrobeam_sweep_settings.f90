@@ -8,7 +8,8 @@ module vibrobeam_sweep_settings
    use vibrobeam_status, only: stat_failure
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
-   use vibrobeam_scene, only: scene_type, scene_variables, validate_scene, structure_of
+   use vibrobeam_scene, only: scene_type, scene_variables, structure_of
+   use vibrobeam_scene_rules, only: validate_scene
    use vibrobeam_namelist_schema, only: namelist_variable, variable_index, choices_text
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_contact_set, only: contact_set

@@ -30,7 +30,8 @@ program benchmark_kernel
    use vibrobeam_lapack, only: dpbtrf, dpbtrs, dsbmv
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_modes, only: compute_modes
-   use vibrobeam_scene, only: scene_type, obstacle_type, validate_scene
+   use vibrobeam_scene, only: scene_type, obstacle_type
+   use vibrobeam_scene_rules, only: validate_scene
    use vibrobeam_problem, only: run_problem, build_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    implicit none

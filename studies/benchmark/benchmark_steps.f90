@@ -37,7 +37,8 @@
 program benchmark_steps
    use vibrobeam_kinds, only: dp, int64, output_unit, error_unit
    use vibrobeam_sorting, only: median
-   use vibrobeam_scene, only: scene_type, obstacle_type, validate_scene
+   use vibrobeam_scene, only: scene_type, obstacle_type
+   use vibrobeam_scene_rules, only: validate_scene
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_contact_set, only: contact_set
    use vibrobeam_obstacles, only: build_contact_points

@@ -37,7 +37,8 @@ program self_convergence
    use vibrobeam_kinds, only: dp, int64, error_unit, output_unit
    use vibrobeam_text, only: integer_text
    use vibrobeam_status, only: message_length
-   use vibrobeam_scene, only: scene_type, validate_scene
+   use vibrobeam_scene, only: scene_type
+   use vibrobeam_scene_rules, only: validate_scene
    use vibrobeam_scene_read, only: read_scene
    use vibrobeam_convergence_runs, only: event_gap, run_history, run_errors, simulate, compare, tip_error, &
                                field_size, move_alloc_history, fail, sci, fixed, padded, rate, coarsest_dt, &

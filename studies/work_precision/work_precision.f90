@@ -35,7 +35,8 @@
 !! less than 1 % of the tip amplitude.
 program work_precision
    use vibrobeam_kinds, only: dp, int64, output_unit, error_unit
-   use vibrobeam_scene, only: scene_type, validate_scene, unset
+   use vibrobeam_scene, only: scene_type, unset
+   use vibrobeam_scene_rules, only: validate_scene
    use vibrobeam_test_support, only: read_test_scene
    use vibrobeam_problem, only: run_problem, build_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper

@@ -40,7 +40,8 @@
 program check_random_response
    use, intrinsic :: iso_c_binding
    use vibrobeam_kinds, only: dp, output_unit, error_unit
-   use vibrobeam_scene, only: scene_type, validate_scene
+   use vibrobeam_scene, only: scene_type
+   use vibrobeam_scene_rules, only: validate_scene
    use vibrobeam_scene_read, only: read_scene
    use vibrobeam_sweep_settings, only: sweep_settings
    use vibrobeam_problem, only: run_problem

@@ -26,7 +26,8 @@
 program check_bundled_damping
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: real_text
-   use vibrobeam_scene, only: scene_type, validate_scene, structure_of
+   use vibrobeam_scene, only: scene_type, structure_of
+   use vibrobeam_scene_rules, only: validate_scene
    use vibrobeam_scene_read, only: read_scene
    use vibrobeam_sweep_settings, only: sweep_settings
    use vibrobeam_model, only: beam_model, build_model

@@ -6,7 +6,8 @@ module vibrobeam_convergence_runs
    use vibrobeam_kinds, only: dp, int64, error_unit, output_unit
    use vibrobeam_text, only: integer_text
    use vibrobeam_status, only: message_length
-   use vibrobeam_scene, only: scene_type, validate_scene
+   use vibrobeam_scene, only: scene_type
+   use vibrobeam_scene_rules, only: validate_scene
    use vibrobeam_model, only: point_row
    use vibrobeam_contact_set, only: contact_value
    use vibrobeam_problem, only: run_problem, build_problem, new_stepper

@@ -5,7 +5,8 @@
 !! room each tolerance leaves; the CI prints it for every library it runs on).
 module vibrobeam_test_support
    use vibrobeam_kinds, only: dp, int64, error_unit, output_unit
-   use vibrobeam_scene, only: scene_type, validate_scene
+   use vibrobeam_scene, only: scene_type
+   use vibrobeam_scene_rules, only: validate_scene
    use vibrobeam_scene_read, only: read_scene
    use vibrobeam_problem, only: run_problem, build_problem
    use vibrobeam_blas_threads, only: limit_blas_threads

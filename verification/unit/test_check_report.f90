@@ -20,7 +20,8 @@
 !!   closed form's count, 44 (a count from k2 alone, as without tension, gives 102).
 program test_check_report
    use vibrobeam_kinds, only: dp, pi
-   use vibrobeam_scene, only: scene_type, validate_scene
+   use vibrobeam_scene, only: scene_type
+   use vibrobeam_scene_rules, only: validate_scene
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_check_report, only: check_report, make_check_report, scene_warnings, velocity_scale, &
       steps_per_period_wanted

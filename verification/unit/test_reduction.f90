@@ -23,7 +23,8 @@
 !!    tolerance 10 J u lambda_max/lambda_i relative on lambda_i.
 program test_reduction
    use vibrobeam_kinds, only: dp, output_unit
-   use vibrobeam_scene, only: scene_type, obstacle_type, validate_scene
+   use vibrobeam_scene, only: scene_type, obstacle_type
+   use vibrobeam_scene_rules, only: validate_scene
    use vibrobeam_problem, only: run_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_band, only: band_cholesky, band_factor, band_solve, band_to_dense
