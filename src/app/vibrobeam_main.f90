@@ -356,9 +356,9 @@ contains
          call stop_if_interrupted(outcome%text_skipped)
          call finish(outcome_exit_status(outcome%status))
       end select
-      write (output_unit, '(a,i0,a,i0,a,f0.2,a)') 'vibrobeam: branch of ', outcome%branch_points, &
-         ' periodic orbits with ', outcome%bifurcations, ' bifurcations located, ', outcome%wall_seconds, &
-         ' s; written to '//trim(scene%output%file)
+      write (output_unit, '(a,i0,a,i0,a)') 'vibrobeam: branch of ', outcome%branch_points, &
+         ' periodic orbits with ', outcome%bifurcations, ' bifurcations located, '// &
+         fixed_text(outcome%wall_seconds, 2)//' s; written to '//trim(scene%output%file)
       call stop_if_interrupted(outcome%text_skipped)
       call finish(exit_ok)
    end subroutine run_continuation_scene
