@@ -17,6 +17,7 @@
 !! on the obstacle computed in closed form.
 module vibrobeam_string_obstacle_reference
    use vibrobeam_kinds, only: dp
+   use vibrobeam_sorting, only: sorted
    implicit none
    private
 
@@ -208,24 +209,14 @@ contains
       class(string_reference), intent(in) :: self
       real(dp), intent(in) :: start, finish, merge_gap
       real(dp), allocatable :: times(:), all(:)
-      real(dp) :: delays(2), key
-      integer :: k, j, n
+      real(dp) :: delays(2)
+      integer :: k, n
       delays = [2*self%x0, 2*(self%length - self%x0)]/self%c
       all = [abs(self%x0 - self%knots)/self%c, (self%x0 + self%knots)/self%c, &
              (2*self%length - self%x0 - self%knots)/self%c, delays/2, delays, &
              self%t(:self%points) + delays(1), self%t(:self%points) + delays(2), finish]
       all = pack(all, all > start + merge_gap .and. all <= finish)
-      ! insertion sort (a few hundred values per window)
-      do k = 2, size(all)
-         key = all(k)
-         j = k - 1
-         do while (j >= 1)
-            if (all(j) <= key) exit
-            all(j + 1) = all(j)
-            j = j - 1
-         end do
-         all(j + 1) = key
-      end do
+      all = sorted(all)   ! a few hundred values per window
       allocate (times(size(all)))
       n = 0
       do k = 1, size(all)
