@@ -126,8 +126,8 @@ contains
       type(branch_point) :: first, next
       real(dp) :: start, first_step, ds, lambda_scale
       real(dp), allocatable :: seed(:)
-      logical :: converged
-      integer :: halvings, m, before, kind
+      logical :: converged, beyond
+      integer :: halvings, m, before, kind, kept
       call resolve_continuation(scene, branch%axis, start, stat, errmsg)
       if (stat /= 0) return
       run%scene = scene
@@ -211,15 +211,22 @@ contains
             cycle
          end if
          halvings = 0
-         if (outside(scene, next%parameter)) exit
-         ! the point, and each test function's sign change since the point before, located
+         ! the point, and each test function's sign change since the point before, located;
+         ! a point beyond the bounds ends the branch unkept, but a bifurcation between the
+         ! last point and it that lies within them is kept
+         beyond = outside(scene, next%parameter)
          before = size(branch%points)
-         branch%points = [branch%points, next]
+         if (.not. beyond) branch%points = [branch%points, next]
          do kind = 1, 3
             if (.not. (branch%points(before)%tests(kind)*next%tests(kind) < 0)) cycle
+            kept = size(branch%bifurcations)
             call locate(run, branch%points(before), next, kind, before, branch%bifurcations, stat, errmsg)
             if (stat /= 0) return
+            if (beyond) then
+               if (outside(scene, branch%bifurcations(kept + 1)%parameter)) branch%bifurcations = branch%bifurcations(1:kept)
+            end if
          end do
+         if (beyond) exit
          if (next%iterations <= easy_iterations) ds = min(step_growth*ds, largest_step*first_step)
       end do
       branch%steps_taken = run%map%steps_taken
