@@ -10,7 +10,7 @@
 !! Usage: test_continuation_linear SCENE.nml (kind = 'periodic', &periodic parameter =
 !! 'load.point_frequency', parameter_max given, no obstacle reached).
 program test_continuation_linear
-   use vibrobeam_kinds, only: dp, int64, pi
+   use vibrobeam_kinds, only: dp, int64
    use vibrobeam_scene, only: scene_type
    use vibrobeam_problem, only: run_problem
    use vibrobeam_band, only: band_to_dense
