@@ -92,15 +92,20 @@ contains
    !> The periodic orbit of the prepared scene (module documentation) in `orbit`: its
    !! status says whether Newton's method converged ('ok'), did not or met a failing step
    !! ('failed', `failure` says why), or was interrupted. `meter` (optional) reports the
-   !! iterations. stat /= 0 (errmsg): a stepper could not be made, a step could not be
-   !! linearised, or the multipliers could not be computed.
-   subroutine find_periodic_orbit(scene, prepared, orbit, stat, errmsg, meter)
+   !! iterations. `start` (optional, the stepper's (U, V) at phase 0) is Newton's start
+   !! instead of the scene's start and transient: a branch switch at a period doubling
+   !! starts the orbit of 2 periods from the period-1 orbit moved along the eigenvector of
+   !! its multiplier -1 (docs/method.md, "Continuation of periodic orbits"). stat /= 0
+   !! (errmsg): a stepper could not be made, a step could not be linearised, or the
+   !! multipliers could not be computed.
+   subroutine find_periodic_orbit(scene, prepared, orbit, stat, errmsg, meter, start)
       type(scene_type), intent(in) :: scene
       type(run_problem), intent(in) :: prepared
       type(periodic_orbit), intent(out) :: orbit
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(progress_meter), intent(inout), optional :: meter
+      real(dp), intent(in), optional :: start(:)
       type(progress_meter) :: silent
       character(len=:), allocatable :: problem
       integer(int64) :: period_steps
@@ -108,7 +113,7 @@ contains
       orbit%map%steps = period_steps*scene%periodic%period_multiple
       orbit%map%unknowns = prepared%system%model%unknowns
       call forcing_frequency(scene%load, orbit%map%omega, problem)
-      call settle(scene, prepared, period_steps, orbit, stat, errmsg)
+      call settle(scene, prepared, period_steps, orbit, stat, errmsg, start)
       if (stat /= 0) return
       if (orbit%status == outcome_ok) then
          if (present(meter)) then
@@ -126,16 +131,18 @@ contains
       if (orbit%status == outcome_ok .and. .not. orbit%converged) orbit%status = outcome_failed
    end subroutine find_periodic_orbit
 
-   !> The start of Newton's method: the scene's initial state (or the checkpoint it
-   !! continues) stepped to the next whole forcing period and then transient_periods more;
-   !! and which monodromy the analysis takes ('auto': linearised when the scheme can).
-   subroutine settle(scene, prepared, period_steps, newton, stat, errmsg)
+   !> The start of Newton's method: `start` when given, else the scene's initial state (or
+   !! the checkpoint it continues) stepped to the next whole forcing period and then
+   !! transient_periods more; and which monodromy the analysis takes ('auto': linearised
+   !! when the scheme can).
+   subroutine settle(scene, prepared, period_steps, newton, stat, errmsg, start)
       type(scene_type), intent(in) :: scene
       type(run_problem), intent(in) :: prepared
       integer(int64), intent(in) :: period_steps
       type(periodic_orbit), intent(inout) :: newton
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      real(dp), intent(in), optional :: start(:)
       class(time_stepper), allocatable :: stepper
       type(dynamics_recorder) :: recorder
       integer(int64) :: first, last
@@ -143,6 +150,18 @@ contains
       if (stat /= 0) return
       newton%monodromy = trim(scene%periodic%monodromy)
       if (newton%monodromy == 'auto') newton%monodromy = merge('linearised ', 'differences', can_linearise(stepper))
+      if (present(start)) then
+         if (size(start) /= 2*size(stepper%u)) then
+            stat = stat_failure
+            errmsg = 'find_periodic_orbit: the start has '//integer_text(size(start))//' values, not the '// &
+                     integer_text(2*size(stepper%u))//' of the state (U, V)'
+         else
+            newton%x = start
+            allocate (newton%residuals(0))
+         end if
+         call release_stepper(stepper)
+         return
+      end if
       first = stepper%steps
       last = ((first + period_steps - 1)/period_steps + scene%periodic%transient_periods)*period_steps
       if (last > first) then
