@@ -59,15 +59,15 @@ program test_branch_switching
    call t%check_true('the period-1 orbit is found', stat == 0 .and. one%converged, trim(errmsg)//trim(one%failure))
    if (.not. one%converged) call t%finish('test_branch_switching')
    n = size(one%x)
+   allocate (a(n, n), wr(n), wi(n), vr(n, n), w(n))
    a = one%image%jacobian
-   allocate (wr(n), wi(n), vr(n, n))
    call dgeev('N', 'V', n, a, n, wr, wi, unused, 1, vr, n, query, -1, info)
    allocate (work(int(query(1))))
    call dgeev('N', 'V', n, a, n, wr, wi, unused, 1, vr, n, work, size(work), info)
    if (info /= 0) error stop 'dgeev'
    pick = 0
    do i = 1, n
-      if (wi(i) == 0 .and. wr(i) < -1) then
+      if (.not. abs(wi(i)) > 0 .and. wr(i) < -1) then   ! (a real multiplier)
          if (pick == 0) then
             pick = i
          else if (wr(i) < wr(pick)) then
