@@ -32,7 +32,7 @@
 !! the LCP is feasible (Theorem 4.4.12), and for every q when M is positive definite.
 !!
 !! Implementation: a dense tableau B^-1 [I, -M, -d, q] updated by Gauss-Jordan pivots
-!! chooses the basis; the solution of the final basis is then recomputed from the original
+!! (the rank-one updates by BLAS dger) chooses the basis; the solution of the final basis is then recomputed from the original
 !! data by one LU solve (LAPACK dgesv), so the round-off accumulated along the pivoting
 !! path does not reach the result. Cost O(n^2) per pivot, typically O(n) pivots.
 module vibrobeam_lemke
@@ -40,7 +40,7 @@ module vibrobeam_lemke
    use vibrobeam_kinds, only: dp
    use vibrobeam_status, only: stat_invalid_argument, stat_no_convergence, stat_numerical_failure, &
                                stat_linear_solver_failure, stat_residual_check_failed
-   use vibrobeam_lapack, only: dgesv
+   use vibrobeam_lapack, only: dgesv, dger
    implicit none
    private
    public :: solve_lemke
@@ -197,19 +197,18 @@ contains
    end function complement
 
    !> Gauss-Jordan pivot on tableau(row, column): that row divided by the pivot, the
-   !! column eliminated from every other row (a rank-one update).
-   pure subroutine pivot_on(tableau, row, column)
+   !! column eliminated from every other row (a rank-one update, BLAS dger).
+   subroutine pivot_on(tableau, row, column)
       real(dp), intent(inout) :: tableau(:, :)
       integer, intent(in) :: row, column
-      real(dp) :: pivot_row(size(tableau, 2)), factor
-      integer :: i
-      pivot_row = tableau(row, :)/tableau(row, column)
-      do i = 1, size(tableau, 1)
-         if (i == row) cycle
-         factor = tableau(i, column)
-         if (abs(factor) > 0.0_dp) tableau(i, :) = tableau(i, :) - factor*pivot_row
-      end do
-      tableau(row, :) = pivot_row
+      real(dp) :: pivot_column(size(tableau, 1)), pivot_row(size(tableau, 2))
+      pivot_column = tableau(:, column)/tableau(row, column)
+      pivot_column(row) = 0.0_dp
+      pivot_row = tableau(row, :)
+      call dger(size(tableau, 1), size(tableau, 2), -1.0_dp, pivot_column, 1, pivot_row, 1, tableau, &
+                size(tableau, 1))
+      tableau(row, :) = pivot_row/pivot_row(column)
+      tableau(:, column) = 0.0_dp
       tableau(row, column) = 1.0_dp
    end subroutine pivot_on
 

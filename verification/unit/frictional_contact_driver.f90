@@ -13,6 +13,7 @@
 program frictional_contact_driver
    use vibrobeam_kinds, only: dp, error_unit
    use vibrobeam_frictional_contact, only: solve_frictional_contact, frictional_contact_solution
+   use vibrobeam_test_support, only: use_program_blas_threads
    implicit none
    character(len=4096) :: problems_path, results_path
    character(len=512) :: errmsg, io_message
@@ -24,6 +25,7 @@ program frictional_contact_driver
       write (error_unit, '(a)') 'usage: frictional_contact_driver PROBLEMS RESULTS'
       error stop 1
    end if
+   call use_program_blas_threads()
    call get_command_argument(1, problems_path)
    call get_command_argument(2, results_path)
    open (newunit=problems_unit, file=trim(problems_path), status='old', action='read', iostat=io_status, &

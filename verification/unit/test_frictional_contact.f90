@@ -26,7 +26,7 @@ program test_frictional_contact
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use vibrobeam_kinds, only: dp, int64, output_unit
    use vibrobeam_roundoff_bounds, only: gamma_n
-   use vibrobeam_test_support, only: test_counter, same_bits
+   use vibrobeam_test_support, only: test_counter, same_bits, use_program_blas_threads
    use vibrobeam_frictional_contact, only: solve_frictional_contact, frictional_contact_solution, &
                                            coulomb_residual, contact_separating, contact_sticking, contact_slipping
    use vibrobeam_lemke, only: solve_lemke
@@ -40,6 +40,7 @@ program test_frictional_contact
    real(dp) :: worst_conditions, worst_unique, worst_semidefinite
    integer :: most_pivots, states_seen(0:2)
 
+   call use_program_blas_threads()
    rng_state = 20261127_int64
    worst_conditions = 0.0_dp
    worst_unique = 0.0_dp
