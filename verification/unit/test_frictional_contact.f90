@@ -11,7 +11,8 @@
 !!    the solution is unique (mu_max kappa(D) < 1: docs/method.md, "Frictional contact in
 !!    two dimensions: the solver", uniqueness);
 !! 3. positive semidefinite D = H H^T of low rank with q = H v (the structure of the
-!!    scheme's problem): the Coulomb conditions;
+!!    scheme's problem), and degenerate ones (doubled contacts, equal q: the ratio test
+!!    ties and the lexicographic rule decides): the Coulomb conditions;
 !! 4. mu = 0 against `vibrobeam_lcp` (block principal pivoting, another method) on D_NN;
 !! 5. the status paths: bad sizes, mu < 0, NaN, m = 0, a matrix that is not copositive.
 !!
@@ -51,6 +52,7 @@ program test_frictional_contact
    call closed_forms(t)
    call random_built_problems(t, rng_state)
    call semidefinite_problems(t, rng_state)
+   call degenerate_problems(t, rng_state)
    call frictionless_against_lcp(t, rng_state)
    call status_paths(t)
 
@@ -254,6 +256,47 @@ contains
          deallocate (h, v, mu, d, q)   ! gfortran -O2 does not reallocate q = matmul(...) to a new size
       end do
    end subroutine semidefinite_problems
+
+   !> Degenerate problems, where the ratio test ties and the lexicographic rule decides:
+   !! every contact doubled (two identical rows of H, as two obstacles on one point), the
+   !! free velocities of the pairs equal (ties from the first pivot on), D = H H^T
+   !! singular, q = H v; and q_T = 0 exactly (stick and slip tie at r_T = 0).
+   subroutine degenerate_problems(t, state)
+      type(test_counter), intent(inout) :: t
+      integer(int64), intent(inout) :: state
+      integer, parameter :: sizes(*) = [2, 6, 20, 40]
+      real(dp), allocatable :: h(:, :), d(:, :), q(:), mu(:), v(:)
+      integer :: size_index, m, i, j
+      type(frictional_contact_solution) :: s
+      character(len=64) :: name
+      do size_index = 1, size(sizes)
+         m = sizes(size_index)
+         allocate (h(2*m, 2*m), v(2*m), mu(m))
+         do j = 1, 2*m
+            do i = 1, m, 2          ! contacts i and i + 1 share their rows
+               h(2*i - 1, j) = 2.0_dp*uniform(state) - 1.0_dp
+               h(2*i, j) = 2.0_dp*uniform(state) - 1.0_dp
+               h(2*i + 1:2*i + 2, j) = h(2*i - 1:2*i, j)
+            end do
+            v(j) = 2.0_dp*uniform(state) - 1.0_dp
+         end do
+         do i = 1, m, 2
+            mu(i) = 2.0_dp*uniform(state)
+            mu(i + 1) = mu(i)
+         end do
+         d = matmul(h, transpose(h))
+         q = matmul(h, v)
+         write (name, '(a, i0)') 'doubled contacts m = ', m
+         call solve_checked(trim(name), d, q, mu, s, t)
+         call check_coulomb(trim(name), d, q, mu, s, t, worst_semidefinite)
+         q(2:2*m:2) = 0.0_dp
+         q(1:2*m:2) = -1.0_dp
+         write (name, '(a, i0)') 'doubled contacts, q_T = 0, q_N = -1, m = ', m
+         call solve_checked(trim(name), d, q, mu, s, t)
+         call check_coulomb(trim(name), d, q, mu, s, t, worst_semidefinite)
+         deallocate (h, v, mu, d, q)
+      end do
+   end subroutine degenerate_problems
 
    !> mu = 0: the normal impulses are the solution of LCP(D_NN, q_N), which `solve_lcp`
    !! computes by block principal pivoting; the two agree to the forward error of an SPD
