@@ -29,7 +29,7 @@
 !! Termination with a solution (not a ray) holds when M is copositive and q lies in the
 !! dual of SOL(0, M), i.e. z >= 0, M z >= 0, z^T M z = 0 imply z^T q >= 0 (Cottle, Pang &
 !! Stone, Theorem 4.4.13); in particular for every q when M is copositive-plus and
-!! the LCP is feasible (Theorem 4.4.12), and for every q when M is positive definite.
+!! the LCP is feasible (§4.4), and for every q when M is positive definite.
 !!
 !! Implementation: a dense tableau B^-1 [I, -M, -d, q] updated by Gauss-Jordan pivots
 !! (the rank-one updates by BLAS dger) chooses the basis; the solution of the final basis is then recomputed from the original

@@ -176,6 +176,7 @@ contains
       integer, parameter :: sizes(*) = [1, 2, 3, 5, 8, 10, 20, 30, 50]
       integer :: size_index, repeat, m, i, kind
       real(dp), allocatable :: d(:, :), q(:), mu(:), r_star(:), u_star(:)
+      integer, allocatable :: expected_state(:)
       real(dp) :: kappa, bound, difference
       type(frictional_contact_solution) :: s
       character(len=64) :: name
@@ -184,12 +185,16 @@ contains
          do repeat = 1, 8
             write (name, '(a, i0, a, i0)') 'built m = ', m, ', case ', repeat
             call random_spd(2*m, 0.2_dp, state, d, kappa)
-            allocate (mu(m), r_star(2*m), u_star(2*m))
+            allocate (mu(m), r_star(2*m), u_star(2*m), expected_state(m))
             do i = 1, m
                mu(i) = 2.0_dp*uniform(state)
                if (repeat <= 2) mu(i) = 0.1_dp*mu(i)/kappa     ! unique solutions
                if (mod(i, 7) == 0) mu(i) = 0.0_dp               ! some frictionless contacts
                kind = min(3, int(4.0_dp*uniform(state)))
+               ! the state the solver must report (a closed contact with mu = 0 slips)
+               expected_state(i) = contact_slipping
+               if (kind == 0) expected_state(i) = contact_separating
+               if (kind == 1 .and. mu(i) > 0.0_dp) expected_state(i) = contact_sticking
                select case (kind)
                case (0)   ! separating: r = 0, u_N > 0, u_T anything
                   r_star(2*i - 1:2*i) = 0.0_dp
@@ -219,8 +224,9 @@ contains
                difference = maxval(abs(s%impulse - r_star))/maxval(abs(r_star))
                worst_unique = max(worst_unique, difference/bound)
                call t%check_true(trim(name)//': r = r* (unique)', difference <= bound)
+               call t%check_true(trim(name)//': states (unique)', all(s%state == expected_state))
             end if
-            deallocate (mu, r_star, u_star, d, q)
+            deallocate (mu, r_star, u_star, expected_state, d, q)
          end do
       end do
    end subroutine random_built_problems
