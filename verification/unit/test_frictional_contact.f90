@@ -33,7 +33,7 @@ program test_frictional_contact
    use vibrobeam_lemke, only: solve_lemke
    use vibrobeam_lcp, only: solve_lcp
    use vibrobeam_lapack, only: dsyev
-   use vibrobeam_status, only: stat_invalid_argument, stat_numerical_failure
+   use vibrobeam_status, only: stat_invalid_argument, stat_numerical_failure, stat_no_convergence
    implicit none
 
    type(test_counter) :: t
@@ -364,6 +364,18 @@ contains
       call solve_frictional_contact(reshape([-1.0_dp, 0.0_dp, 0.0_dp, -1.0_dp], [2, 2]), [-1.0_dp, 0.5_dp], &
                                     [0.5_dp], s, stat, errmsg)
       call t%check_true('negative definite D: a status, not a stop', stat /= 0, 'stat = 0')
+      ! The pivot limit: LCP(I, (-1, -1)) needs 3 pivots (z0 in, z_2 in, z_1 in for z0).
+      call solve_lemke(reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2]), [-1.0_dp, -1.0_dp], z, w, &
+                       pivots, stat, errmsg, max_pivots=2)
+      call t%check_true('pivot limit reported', stat == stat_no_convergence .and. index(errmsg, 'limit') > 0, &
+                        trim(errmsg))
+      call solve_lemke(reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2]), [-1.0_dp, -1.0_dp], z, w, &
+                       pivots, stat, errmsg)
+      call t%check_true('LCP(I, (-1, -1)): z = (1, 1), w = 0 in 3 pivots', stat == 0 .and. pivots == 3 .and. &
+                        all(abs(z - 1.0_dp) <= 4*epsilon(1.0_dp)) .and. all(abs(w) <= 4*epsilon(1.0_dp)), trim(errmsg))
+      call solve_frictional_contact(reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2]), [-1.0_dp, 0.0_dp], &
+                                    [0.5_dp], s, stat, errmsg, tolerance=-1.0_dp)
+      call t%check_true('tolerance < 0 refused', stat == stat_invalid_argument, trim(errmsg))
    end subroutine status_paths
 
    !> Relative tolerance of every Coulomb condition for m contacts (module documentation):
