@@ -14,6 +14,7 @@ module vibrobeam_lapack
    public :: poison_failed_solve
    public :: dpbtrf, dpbtrs, dpbcon, dpbrfs, dsbmv, dgemv, dsbgvx, dpttrf, dpttrs
    public :: dpotrf, dpotrs, dpotri, dgbtrf, dgbtrs, dgbsv, dgesv, dlamch, dgeqrf, dormqr, dsygv, dgeev
+   public :: dger   ! the rank-one update of vibrobeam_lemke's tableau
    public :: dgetrf, dorgqr, dsyev, dgeevx, zgesv   ! the tests' dense references
 
    interface
@@ -144,6 +145,13 @@ module vibrobeam_lapack
          real(dp), intent(inout) :: ab(ldab, *), b(ldb, *)
          integer, intent(out) :: ipiv(*), info
       end subroutine dgbsv
+      !> Rank-one update A = A + alpha x y^T (BLAS 2).
+      subroutine dger(m, n, alpha, x, incx, y, incy, a, lda)
+         import :: dp
+         integer, intent(in) :: m, n, incx, incy, lda
+         real(dp), intent(in) :: alpha, x(*), y(*)
+         real(dp), intent(inout) :: a(lda, *)
+      end subroutine dger
       !> Dense LU solve.
       subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
          import :: dp
