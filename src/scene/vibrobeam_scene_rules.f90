@@ -9,6 +9,7 @@ module vibrobeam_scene_rules
    use vibrobeam_schema_visitor, only: is_unset
    use vibrobeam_schema_operations, only: schema_checker
    use vibrobeam_boundary, only: boundary_conditions
+   use vibrobeam_beam_settings, only: check_planes
    use vibrobeam_structure, only: beam_structure
    use vibrobeam_section_settings, only: check_sections, max_sections
    use vibrobeam_buckling, only: check_compression
@@ -98,6 +99,7 @@ contains
             call check_given('area', beam%area)
             call check_given('inertia', beam%inertia)
          end if
+         if (stat == 0) call check_planes(beam, stat, errmsg)
          if (mesh%reduction /= 'none' .and. steps_in_time(scene) .and. len_trim(scene%initial%from_file) > 0) &
             call fail(stat, errmsg, '&mesh reduction = '''//trim(mesh%reduction)//''' cannot continue a checkpoint '// &
                       '(&initial from_file): its state is in reduced coordinates; use reduction = ''none''')
