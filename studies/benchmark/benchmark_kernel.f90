@@ -7,6 +7,7 @@
 !!                                                fused | step)
 !!   benchmark_kernel modes METHOD BASIS N COUNT  one compute_modes (lanczos | dense), timed
 !!   benchmark_kernel crossover                   dense against Lanczos for J and count
+!!   benchmark_kernel planes                      the two-plane layouts against a planar step
 !!
 !! Workloads, on the Hermite model of N = J/2 elements (k2 = 1, L = 1 m), W = M + (theta
 !! dt)^2 K with theta = 1/2, dt = 1e-4 s, and a fixed vector x:
@@ -17,7 +18,14 @@
 !!   forward loop (one more subtraction than the two above);
 !! - step: one step of the velocity stepper in free flight (mode-1 velocity, tip 0.1 m/s,
 !!   a stop 1 m below the tip that is never reached), set up as the main program does;
-!! - the solve and the product alone, each way.
+!! - the solve and the product alone, each way;
+!! - stacked: the 'lapack' workload for two bending planes stored as a J x 2 array
+!!   (docs/method.md, "Two bending planes and tube-support contact"): dsbmv on each plane,
+!!   then one dpbtrs with two right-hand sides, the factor shared;
+!! - interleaved: the same with (y_j, z_j) side by side, one band of order 2J and
+!!   half-width 7 (dsbmv and dpbtrs with kd = 7), the layout the design rejects;
+!! - stacked fused: the 'fused' workload on each of the two stacked planes (the kd = 3
+!!   kernel the velocity stepper uses, which has no counterpart of half-width 7).
 !! Timing: each workload runs in batches of at least `min_batch_seconds` (sized once), the
 !! batches of all workloads in turn, `repetitions` times; medians of the time per call, the
 !! spread (max - min)/median and the smallest CPU/wall ratio say how noisy a row was.
@@ -41,10 +49,11 @@ program benchmark_kernel
    real(dp), parameter :: min_batch_seconds = 0.05_dp
    real(dp), parameter :: time_step = 1e-4_dp, theta = 0.5_dp
    integer, parameter :: workload_lapack = 1, workload_kernel = 2, workload_fused = 3, workload_step = 4, &
-                         workload_dpbtrs = 5, workload_solve = 6, workload_dsbmv = 7, workload_matvec = 8
-   character(len=*), parameter :: workload_names(8) = [character(len=14) :: 'dpbtrs+dsbmv', 'solve+matvec', &
-                                                       'fused', 'step', 'dpbtrs', 'solve (kd=3)', 'dsbmv', &
-                                                       'matvec (kd=3)']
+                         workload_dpbtrs = 5, workload_solve = 6, workload_dsbmv = 7, workload_matvec = 8, &
+                         workload_stacked = 9, workload_interleaved = 10, workload_stacked_fused = 11
+   character(len=*), parameter :: workload_names(11) = [character(len=14) :: 'dpbtrs+dsbmv', 'solve+matvec', &
+                                                        'fused', 'step', 'dpbtrs', 'solve (kd=3)', 'dsbmv', &
+                                                        'matvec (kd=3)', 'stacked', 'interleaved', 'stacked fused']
 
    !> Everything a workload works on.
    type :: bench_case
@@ -53,6 +62,9 @@ program benchmark_kernel
       type(band_cholesky) :: kernel_factor              !! band_factor(W)
       real(dp), allocatable :: lapack_factor(:,:)       !! dpbtrf(W)
       real(dp), allocatable :: x(:), y(:), b(:)
+      !> two planes: stacked (J x 2) and interleaved (2J; its K and the dpbtrf factor of
+      !! its W, half-width 7, lower storage)
+      real(dp), allocatable :: x2(:,:), y2(:,:), xi(:), yi(:), stiffness_i(:,:), factor_i(:,:)
       class(time_stepper), allocatable :: stepper
    end type bench_case
 
@@ -67,9 +79,11 @@ program benchmark_kernel
       call time_modes()
    case ('crossover')
       call crossover_table()
+   case ('planes')
+      call planes_table()
    case default
       write (error_unit, '(a)') 'usage: benchmark_kernel kernel | count WORKLOAD J CALLS | '// &
-         'modes METHOD BASIS N COUNT | crossover'
+         'modes METHOD BASIS N COUNT | crossover | planes'
       error stop 2
    end select
 
@@ -126,7 +140,28 @@ contains
       case%x = [(sin(0.01_dp*i), i=1, unknowns)]
       case%b = [(cos(0.02_dp*i), i=1, unknowns)]
       allocate (case%y(unknowns))
+      case%x2 = reshape([case%x, case%b], [unknowns, 2])
+      allocate (case%y2(unknowns, 2), case%yi(2*unknowns))
+      case%xi = reshape(transpose(case%x2), [2*unknowns])
+      case%stiffness_i = interleaved(case%model%stiffness%lower)
+      case%factor_i = interleaved(case%iteration_matrix%lower)
+      call dpbtrf('L', 2*unknowns, 7, case%factor_i, 8, stat)
+      if (stat /= 0) call fail('dpbtrf (interleaved)', stat, '')
    end subroutine set_up
+
+   !> The band (lower storage, half-width 3) of one plane as the band of two planes
+   !! interleaved, (y_j, z_j) side by side with the same matrix in both: entry (i, k) goes
+   !! to (2i-1, 2k-1) and (2i, 2k), half-width 7.
+   pure function interleaved(lower) result(both)
+      real(dp), intent(in) :: lower(:,:)   !! (4, J)
+      real(dp) :: both(8, 2*size(lower, 2))
+      integer :: d
+      both = 0
+      do d = 0, 3
+         both(2*d + 1, 1::2) = lower(d + 1, :)
+         both(2*d + 1, 2::2) = lower(d + 1, :)
+      end do
+   end function interleaved
 
    !> `calls` calls of one workload.
    subroutine run(case, workload, calls)
@@ -161,6 +196,16 @@ contains
             call dsbmv('L', n, 3, 1.0_dp, case%model%stiffness%lower, 4, case%x, 1, 0.0_dp, case%y, 1)
          case (workload_matvec)
             call band_matvec(case%model%stiffness, case%x, case%y)
+         case (workload_stacked)
+            call dsbmv('L', n, 3, 1.0_dp, case%model%stiffness%lower, 4, case%x2(:, 1), 1, 0.0_dp, case%y2(:, 1), 1)
+            call dsbmv('L', n, 3, 1.0_dp, case%model%stiffness%lower, 4, case%x2(:, 2), 1, 0.0_dp, case%y2(:, 2), 1)
+            call dpbtrs('L', n, 3, 2, case%lapack_factor, 4, case%y2, n, info)
+         case (workload_interleaved)
+            call dsbmv('L', 2*n, 7, 1.0_dp, case%stiffness_i, 8, case%xi, 1, 0.0_dp, case%yi, 1)
+            call dpbtrs('L', 2*n, 7, 1, case%factor_i, 8, case%yi, 2*n, info)
+         case (workload_stacked_fused)
+            call band_residual_solve(case%kernel_factor, case%model%stiffness, case%x2(:, 1), case%b, case%y2(:, 1))
+            call band_residual_solve(case%kernel_factor, case%model%stiffness, case%x2(:, 2), case%b, case%y2(:, 2))
          end select
       end do
    end subroutine run
@@ -183,15 +228,43 @@ contains
    end subroutine timed
 
 
+   !> Each workload's batch sized once to at least `min_batch_seconds`, then the batches of
+   !! all workloads in turn, `repetitions` times: the time per call of each (s) and the
+   !! smallest CPU/wall ratio of a batch.
+   subroutine batches(case, workloads, per_call, cpu_fraction)
+      type(bench_case), intent(inout) :: case
+      integer, intent(in) :: workloads(:)
+      real(dp), intent(out) :: per_call(:,:)   !! (repetitions, workloads)
+      real(dp), intent(out) :: cpu_fraction
+      integer(int64) :: calls(size(workloads))
+      real(dp) :: wall, cpu
+      integer :: w, k
+      do w = 1, size(workloads)
+         calls(w) = 1
+         do
+            call timed(case, workloads(w), calls(w), wall, cpu)
+            if (wall >= min_batch_seconds) exit
+            calls(w) = 2*calls(w)
+         end do
+      end do
+      cpu_fraction = 1
+      do k = 1, repetitions
+         do w = 1, size(workloads)
+            call timed(case, workloads(w), calls(w), wall, cpu)
+            per_call(k, w) = wall/calls(w)
+            cpu_fraction = min(cpu_fraction, cpu/wall)
+         end do
+      end do
+   end subroutine batches
+
    !> The wall-clock table: per J, each workload's median time per call, its spread, the
    !! ratios kernel/LAPACK and step/LAPACK.
    subroutine kernel_table()
       integer, parameter :: workloads(*) = [workload_lapack, workload_kernel, workload_fused, workload_step, &
                                             workload_dpbtrs, workload_solve, workload_dsbmv, workload_matvec]
       type(bench_case) :: case
-      real(dp) :: per_call(repetitions, size(workloads)), wall, cpu, cpu_fraction
-      integer(int64) :: calls(size(workloads))
-      integer :: s, w, k
+      real(dp) :: per_call(repetitions, size(workloads)), cpu_fraction
+      integer :: s, w
       write (output_unit, '(a)') '# time per call (microseconds): median of 7 interleaved batches of >= 0.05 s; '// &
          'spread = (max - min)/median'
       write (output_unit, '(a)') '# ratios to dpbtrs+dsbmv of solve+matvec, fused and step: medians of the paired '// &
@@ -200,22 +273,7 @@ contains
          'ratio kernel', 'ratio fused', 'ratio step', 'cpu/wall'
       do s = 1, size(sizes)
          call set_up(sizes(s), case)
-         do w = 1, size(workloads)
-            calls(w) = 1
-            do
-               call timed(case, workloads(w), calls(w), wall, cpu)
-               if (wall >= min_batch_seconds) exit
-               calls(w) = 2*calls(w)
-            end do
-         end do
-         cpu_fraction = 1
-         do k = 1, repetitions
-            do w = 1, size(workloads)
-               call timed(case, workloads(w), calls(w), wall, cpu)
-               per_call(k, w) = wall/calls(w)
-               cpu_fraction = min(cpu_fraction, cpu/wall)
-            end do
-         end do
+         call batches(case, workloads, per_call, cpu_fraction)
          write (output_unit, '(i8,8(f14.3,a2,f5.2,a3),3f14.3,f10.2)') sizes(s), &
             (1e6_dp*median(per_call(:, w)), ' (', (maxval(per_call(:, w)) - minval(per_call(:, w)))/ &
              median(per_call(:, w)), ') ', w=1, size(workloads)), &
@@ -223,6 +281,39 @@ contains
          flush (output_unit)
       end do
    end subroutine kernel_table
+
+   !> The two-plane table (docs/method.md, "Two bending planes and tube-support contact"):
+   !! per J, the medians of the planar LAPACK floor (dpbtrs+dsbmv), of its stacked and
+   !! interleaved two-plane versions, of the planar fused kd = 3 kernel and its stacked
+   !! version, and of a planar free-flight step (microseconds); then, as medians of the
+   !! paired per-repetition ratios (all measured in one run): stacked/planar and
+   !! interleaved/planar with LAPACK, stacked/planar with the fused kernel, and the
+   !! estimated cost of a two-plane step relative to the planar step, the planar step with
+   !! its kernel replaced: (step - fused + stacked fused)/step for the stacked layout,
+   !! (step - fused + interleaved)/step for the interleaved one (LAPACK at half-width 7,
+   !! there being no kd = 7 kernel).
+   subroutine planes_table()
+      integer, parameter :: workloads(*) = [workload_lapack, workload_stacked, workload_interleaved, &
+                                            workload_fused, workload_stacked_fused, workload_step]
+      type(bench_case) :: case
+      real(dp) :: per_call(repetitions, size(workloads)), cpu_fraction
+      integer :: s, w
+      write (output_unit, '(a)') '# time per call (microseconds): median of 7 interleaved batches of >= 0.05 s; '// &
+         'ratios: medians of the paired ratios'
+      write (output_unit, '(a8,6a15,5a15,a10)') 'J', (trim(workload_names(workloads(w))), w=1, size(workloads)), &
+         'stacked/floor', 'interl./floor', 'st.fused/fused', 'step stacked', 'step interl.', 'cpu/wall'
+      do s = 1, size(sizes)
+         call set_up(sizes(s), case)
+         call batches(case, workloads, per_call, cpu_fraction)
+         associate (floor => per_call(:, 1), stacked => per_call(:, 2), interleaved => per_call(:, 3), &
+                    fused => per_call(:, 4), stacked_fused => per_call(:, 5), step => per_call(:, 6))
+            write (output_unit, '(i8,6f15.3,5f15.3,f10.2)') sizes(s), (1e6_dp*median(per_call(:, w)), w=1, 6), &
+               median(stacked/floor), median(interleaved/floor), median(stacked_fused/fused), &
+               median((step - fused + stacked_fused)/step), median((step - fused + interleaved)/step), cpu_fraction
+         end associate
+         flush (output_unit)
+      end do
+   end subroutine planes_table
 
    !> benchmark_kernel count WORKLOAD J CALLS
    subroutine count_calls()
