@@ -75,6 +75,10 @@ plot plot_modes.gp shapes
 plot plot_static.gp static
 plot plot_periodic.gp orbit
 plot plot_branch.gp branch
+# a beam of two bending planes: the tip's orbit in the cross-section (tip.dat's z columns)
+if [ -f "${stem}_tip.dat" ] && head -2 "${stem}_tip.dat" | grep -q -F 'then u_tip in z'; then
+  plot plot_orbit.gp tip
+fi
 for gp in "$here"/plot_dynamics_*.gp; do
   [ -e "$gp" ] || continue
   name=$(basename "$gp" .gp)

@@ -13,6 +13,8 @@ module vibrobeam_problem
    use vibrobeam_scene, only: scene_type, step_count, is_unset, structure_of, steps_in_time
    use vibrobeam_scene_structure, only: off_node_warnings
    use vibrobeam_model, only: beam_model, build_model
+   use vibrobeam_band, only: symmetric_band
+   use vibrobeam_planes, only: direction_shares, spread_planes
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_obstacles, only: build_contact_points
    use vibrobeam_loads, only: load_set, build_loads, add_forces, add_flow
@@ -40,8 +42,12 @@ module vibrobeam_problem
       type(beam_model) :: model        !! the beam on its mesh
       type(contact_set) :: contacts    !! the contact points on the mesh
       type(load_set) :: loads          !! the loads on the mesh
-      real(dp), allocatable :: u0(:)   !! initial displacement unknowns of the mesh (dynamics, periodic)
-      real(dp), allocatable :: v0(:)   !! initial velocity unknowns of the mesh (dynamics, periodic)
+      real(dp), allocatable :: u0(:)   !! initial displacement unknowns of the mesh (dynamics, periodic; y then z)
+      real(dp), allocatable :: v0(:)   !! initial velocity unknowns of the mesh (dynamics, periodic; y then z)
+      !> bending planes: 1, or 2 (u0, v0 and the system's state hold y then z) with the z
+      !! plane's stiffness when it has its own (else unallocated)
+      integer :: planes = 1
+      type(symmetric_band), allocatable :: stiffness_z
       !> what the stepper steps: model, contacts and loads of the mesh, or with &mesh
       !! reduction = 'craig-bampton' (dynamics, periodic) those of the reduced model, whose
       !! coordinates `reduction` maps back to the mesh (the recorder does)
@@ -115,10 +121,46 @@ contains
       if (steps_in_time(scene) .and. scene%mesh%reduction == 'craig-bampton') then
          call reduce_scene(scene, prepared, stat, errmsg)
       else
+         if (scene%beam%plane_count() == 2) call two_planes(scene, prepared, stat, errmsg)
+         if (stat /= 0) return
          call full_system(prepared)
       end if
       if (stat == 0) call modal_damping_of(scene, prepared, stat, errmsg)
    end subroutine build_problem
+
+   !> A beam of two bending planes (docs/method.md, "Two bending planes"): the initial
+   !! fields, computed in y, turned by &initial displacement_direction and direction (the
+   !! velocity's) into 2J unknowns (y then z), and
+   !! the z plane's stiffness, the model of the same scene with E inertia_z, when it has
+   !! one of its own (`beam_settings%own_z_stiffness`). The system's planes and K_z are set
+   !! by `full_system`.
+   subroutine two_planes(scene, prepared, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(run_problem), intent(inout) :: prepared
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(beam_model) :: model_z
+      stat = 0
+      errmsg = ''
+      prepared%u0 = [prepared%u0, spread(0.0_dp, 1, size(prepared%u0))]
+      prepared%v0 = [prepared%v0, spread(0.0_dp, 1, size(prepared%v0))]
+      call spread_planes(shares_of(scene%initial%displacement_direction), prepared%u0)
+      call spread_planes(shares_of(scene%initial%direction), prepared%v0)
+      prepared%planes = 2
+      if (.not. scene%beam%own_z_stiffness()) return
+      call build_model(scene%mesh%basis, scene%mesh%elements, scene%beam%length, scene%beam%rho_s(), &
+                       scene%beam%ei_z(), model_z, stat, errmsg, structure=structure_of(scene))
+      if (stat /= 0) return
+      allocate (prepared%stiffness_z, source=model_z%stiffness)
+   contains
+      !> (cos, sin) of a direction of &initial, (1, 0) when it is not given.
+      pure function shares_of(degrees) result(shares)
+         real(dp), intent(in) :: degrees
+         real(dp) :: shares(2)
+         shares = [1.0_dp, 0.0_dp]
+         if (.not. is_unset(degrees)) shares = direction_shares(degrees)
+      end function shares_of
+   end subroutine two_planes
 
    !> The damping per mode of a dynamics scene (&beam modal_damping, modal_damping_ratios):
    !! on the mesh's modes, every mode below the default cut-off of the reduced model
@@ -150,6 +192,8 @@ contains
    subroutine full_system(prepared)
       type(run_problem), intent(inout) :: prepared
       prepared%system = discrete_system(prepared%model, prepared%contacts, prepared%loads)
+      prepared%system%planes = prepared%planes
+      if (allocated(prepared%stiffness_z)) allocate (prepared%system%stiffness_z, source=prepared%stiffness_z)
       prepared%start%u = prepared%u0
       prepared%start%v = prepared%v0
    end subroutine full_system

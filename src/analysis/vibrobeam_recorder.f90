@@ -82,6 +82,10 @@ module vibrobeam_recorder
       ! a reduced model (&mesh reduction): the stepper's unknowns are q, U = T q
       type(reduced_basis), allocatable :: reduction   !! T, for field snapshots
       real(dp), allocatable :: observed_rows(:, :)   !! (r, 1 + points) u_h at the tip and points = row . q
+      !> bending planes of the stepper; with 2, the tip's deflection and velocity in z at
+      !! the last `observe` (the y plane's are events%observed(1, :))
+      integer :: planes = 1
+      real(dp) :: tip_z(2) = 0
       type(run_spectra) :: spectra                   !! /spectrum: the tip's and the observation points'
       type(forces_psd) :: forces_spectra             !! /forces: the random loads' densities (none without)
       type(episode_tracker) :: episodes
@@ -153,6 +157,7 @@ contains
       if (scene%output%field_every > 0) self%field_every = scene%output%field_every
       self%last_step = last_step
       self%length = model%length
+      self%planes = stepper%planes
       allocate (self%in_contact(contacts), self%touched(contacts), source=.false.)
       allocate (self%contact_time(contacts), source=0.0_dp)
       self%compliant = stepper%contacts%springs%count > 0
@@ -258,6 +263,12 @@ contains
          self%events%observed(p, 1) = combination(self%observed_dofs(:, p), self%observed_weights(:, p), stepper%u)
          self%events%observed(p, 2) = combination(self%observed_dofs(:, p), self%observed_weights(:, p), stepper%v)
       end do
+      if (self%planes == 2) then   ! the z plane: the same row on the second half of the unknowns
+         associate (j => size(stepper%u)/2)
+            self%tip_z(1) = combination(self%observed_dofs(:, 1), self%observed_weights(:, 1), stepper%u(j + 1:))
+            self%tip_z(2) = combination(self%observed_dofs(:, 1), self%observed_weights(:, 1), stepper%v(j + 1:))
+         end associate
+      end if
    end subroutine observe
 
    !> sum_a weights(a) unknowns(dofs(a)) over the dofs /= 0, in order.
@@ -319,7 +330,8 @@ contains
       type(beam_model), intent(in) :: model
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      call self%files%create(writer, self%point_x, stepper%contacts, model%elements + 1, self%compliant, stat, errmsg)
+      call self%files%create(writer, self%point_x, stepper%contacts, model%elements + 1, self%compliant, self%planes, &
+                             stat, errmsg)
       if (stat == 0) call self%spectra%create(writer, stat, errmsg)
       if (stat == 0 .and. allocated(self%forces_spectra%loads)) call self%forces_spectra%create(writer, stat, errmsg)
       if (stat == 0) call self%episodes%create_datasets(writer, stat, errmsg)
@@ -461,7 +473,7 @@ contains
       end if
       row(h_balance) = row(h_total) - row(h_work) + row(h_dissipated)
       row(h_penetration) = penetration(stepper)
-      call self%files%append_sample(row, self%events%observed(2:, 1), self%events%observed(2:, 2), potential, &
+      call self%files%append_sample(row, self%tip_z, self%events%observed(2:, 1), self%events%observed(2:, 2), potential, &
                                     stepper%energy%dissipated_contact_damping, stepper%report%contact_force, stat, errmsg)
       if (stat /= 0) return
       ! the spectrum takes the uniformly spaced rows only (not a last row off the grid)
@@ -487,7 +499,8 @@ contains
          call self%files%append_field(stepper%t, nodal_displacement(model, self%reduction%expand(stepper%u)), stat, &
                                       errmsg)
       else
-         call self%files%append_field(stepper%t, nodal_displacement(model, stepper%u), stat, errmsg)
+         ! the y plane's (the first J unknowns; a beam of two planes has its z after them)
+         call self%files%append_field(stepper%t, nodal_displacement(model, stepper%u(1:model%unknowns)), stat, errmsg)
       end if
       self%last_field_step = stepper%steps
    end subroutine sample_field

@@ -58,6 +58,8 @@ module vibrobeam_beam_settings
       procedure :: sectioned                  !! given by sections?
       procedure :: rho_s                      !! mass per unit length (kg/m)
       procedure :: ei                         !! bending stiffness (N m^2)
+      procedure :: ei_z                       !! bending stiffness in z (N m^2)
+      procedure :: own_z_stiffness            !! does z bend with a stiffness of its own?
       procedure :: tension                    !! the axial force (N; 0 when not given)
       procedure :: supports                   !! the end supports and springs, resolved
       procedure :: modal                      !! is any damping per mode given?
@@ -189,6 +191,25 @@ contains
       end if
    end function ei
 
+   !> Bending stiffness of the z plane (N m^2): E inertia_z when inertia_z is given (a beam
+   !! of the four physical data, `check_planes`), else the y plane's `ei`.
+   pure real(dp) function ei_z(self)
+      class(beam_settings), intent(in) :: self
+      if (self%own_z_stiffness()) then
+         ei_z = self%youngs_modulus*self%inertia_z
+      else
+         ei_z = self%ei()
+      end if
+   end function ei_z
+
+   !> Does the z plane have a stiffness of its own (planes = 2 with an inertia_z that is
+   !! not `inertia`)? Else K_z = K and the two planes share the factor of W.
+   pure logical function own_z_stiffness(self)
+      class(beam_settings), intent(in) :: self
+      own_z_stiffness = self%plane_count() == 2 .and. .not. is_unset(self%inertia_z)
+      if (own_z_stiffness) own_z_stiffness = abs(self%inertia_z - self%inertia) > 0
+   end function own_z_stiffness
+
    !> The mean over [0, L] of a value given per section (section i from the previous
    !! one's end, or 0, to its x_to; the last to L): sum_i value_i (x_i - x_(i-1))/L.
    pure real(dp) function length_mean(beam, values)
@@ -251,8 +272,8 @@ contains
    !> &beam planes and inertia_z (docs/input.md, "&beam"; docs/method.md, "Two bending
    !! planes and tube-support contact"): `inertia_z` belongs to a beam of two planes given
    !! by its four physical data (a beam of k2 or of sections has no z stiffness of its own
-   !! yet); `planes = 2` is refused as a whole until its free flight is built (issue 21),
-   !! so that no run does something the docs do not describe.
+   !! yet). What else a beam of two planes does not take yet is the scene's rule
+   !! (`vibrobeam_scene_rules`, `plane_rules`).
    subroutine check_planes(beam, stat, errmsg)
       type(beam_settings), intent(in) :: beam
       integer, intent(out) :: stat
@@ -269,9 +290,6 @@ contains
                      '&sections); remove inertia_z or give the four'
          end if
       end if
-      if (len_trim(errmsg) == 0 .and. beam%plane_count() == 2) &
-         errmsg = '&beam planes = 2 is not supported yet: the two-plane model (issue 21) is being built and no '// &
-                  'analysis runs it; allowed: 1'
       stat = merge(stat_failure, 0, len_trim(errmsg) > 0)
    end subroutine check_planes
 

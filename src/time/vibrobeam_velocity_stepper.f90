@@ -25,10 +25,11 @@ module vibrobeam_velocity_stepper
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
    use vibrobeam_status, only: stat_not_finite, stat_invalid_argument, stat_linear_solver_failure
-   use vibrobeam_band, only: symmetric_band, band_cholesky, band_matvec, band_residual_solve, band_solve, band_factor
+   use vibrobeam_band, only: symmetric_band, band_cholesky, band_residual_solve, band_solve, band_factor
    use vibrobeam_lapack, only: dpotrf, dpotrs
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
+   use vibrobeam_planes, only: spread_planes
    use vibrobeam_time_stepper, only: time_stepper, stepper_settings, dynamic_state, save_stepper_state, &
       restore_stepper_state
    use vibrobeam_discrete_system, only: discrete_system
@@ -61,6 +62,7 @@ module vibrobeam_velocity_stepper
       procedure :: step
       procedure :: restore_state
       procedure :: tangent
+      procedure, private :: loads_at
       procedure, private :: compliant_step
    end type velocity_stepper
 
@@ -87,8 +89,9 @@ contains
       self%activation_tolerance = 1e-12_dp*system%model%length
       self%u = start%u
       self%v = start%v
-      self%force = system%loads%at(0.0_dp)
       n = size(start%u)
+      allocate (self%force(n))
+      call self%loads_at(0.0_dp, self%force)
       allocate (self%rhs(n), self%work_vector(n), self%damping_vector(n), self%v_free(n), self%v_new(n), &
                 self%u_new(n), self%force_new(n), self%force_theta(n), self%modal_vector(n), source=0.0_dp)
       allocate (self%signs(system%contacts%count), self%offsets(system%contacts%count))
@@ -102,7 +105,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       call restore_stepper_state(self, record, stat, errmsg)
-      self%force = self%loads%at(self%steps*self%dt)
+      call self%loads_at(self%steps*self%dt, self%force)
    end subroutine restore_state
 
    !> Advance from t_n to t_{n+1}. stat: stat_ok; a contact solver failure (its code,
@@ -124,7 +127,12 @@ contains
          ! 1. free velocity V_free = V^n + dt W^-1 (F^{n+theta} - C V^n - K (U^n + theta dt V^n)):
          ! the product with K inside the solve's forward pass (band_residual_solve)
          if (self%loads%present) then
-            call self%loads%evaluate((self%steps + 1)*dt, force_new)   ! t_{n+1} from the global step number
+            if (self%planes == 1) then
+               call self%loads%evaluate((self%steps + 1)*dt, force_new)   ! t_{n+1} from the global step number
+            else   ! the loads given in y, turned by &load direction
+               call self%loads%evaluate((self%steps + 1)*dt, force_new(1:size(force_new)/2))
+               call spread_planes(self%loads%shares, force_new)
+            end if
             force_theta = theta*force_new + (1 - theta)*self%force
          end if                                                        ! (else both stay 0)
          if (self%loads%flow%active) then   ! the fluid-elastic force at V^n (theory §10)
@@ -141,9 +149,9 @@ contains
                damping_vector = damping_vector + self%modal_vector
             end if
             damping_vector = force_theta - damping_vector
-            call band_residual_solve(self%iteration_factor, self%stiffness, rhs, damping_vector, v_free)
+            call self%free_solve(rhs, damping_vector, v_free)
          else
-            call band_residual_solve(self%iteration_factor, self%stiffness, rhs, force_theta, v_free)
+            call self%free_solve(rhs, force_theta, v_free)
          end if
          v_free = self%v + dt*v_free
          ! 2. active set at U~ = U^n + gamma dt V^n
@@ -256,10 +264,10 @@ contains
                                                              dt*dot_product(theta*v_next + (1 - theta)*v, self%modal_vector)
             if (abs(theta - 0.5_dp) > 0) then
                rhs = v_next - v
-               call band_matvec(self%mass, rhs, work_vector)
+               call self%mass_into(rhs, work_vector)
                self%energy%dissipated_numerical = self%energy%dissipated_numerical + (theta - 0.5_dp)*dot_product(rhs, work_vector)
                rhs = u_new - u
-               call band_matvec(self%stiffness, rhs, work_vector)
+               call self%stiffness_into(rhs, work_vector)
                self%energy%dissipated_numerical = self%energy%dissipated_numerical + (theta - 0.5_dp)* &
                                            (dot_product(rhs, work_vector) - impulse_power)
             end if
@@ -453,6 +461,20 @@ contains
    end subroutine compliant_step
 
 
+
+   !> F(t) into f (planes x J values): the loads of the y plane, turned by &load direction
+   !! when the beam bends in two planes.
+   subroutine loads_at(self, t, f)
+      class(velocity_stepper), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp), intent(out) :: f(:)
+      if (self%planes == 1) then
+         f = self%loads%at(t)
+      else
+         f(1:size(f)/2) = self%loads%at(t)
+         call spread_planes(self%loads%shares, f)
+      end if
+   end subroutine loads_at
 
    !> Exchange two allocated vectors of the same size (descriptors only).
    subroutine swap(a, b)

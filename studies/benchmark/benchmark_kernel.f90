@@ -50,10 +50,12 @@ program benchmark_kernel
    real(dp), parameter :: time_step = 1e-4_dp, theta = 0.5_dp
    integer, parameter :: workload_lapack = 1, workload_kernel = 2, workload_fused = 3, workload_step = 4, &
                          workload_dpbtrs = 5, workload_solve = 6, workload_dsbmv = 7, workload_matvec = 8, &
-                         workload_stacked = 9, workload_interleaved = 10, workload_stacked_fused = 11
-   character(len=*), parameter :: workload_names(11) = [character(len=14) :: 'dpbtrs+dsbmv', 'solve+matvec', &
+                         workload_stacked = 9, workload_interleaved = 10, workload_stacked_fused = 11, &
+                         workload_step_two = 12, workload_step_two_own = 13
+   character(len=*), parameter :: workload_names(13) = [character(len=14) :: 'dpbtrs+dsbmv', 'solve+matvec', &
                                                         'fused', 'step', 'dpbtrs', 'solve (kd=3)', 'dsbmv', &
-                                                        'matvec (kd=3)', 'stacked', 'interleaved', 'stacked fused']
+                                                        'matvec (kd=3)', 'stacked', 'interleaved', 'stacked fused', &
+                                                        'step 2 planes', 'step 2, own Kz']
 
    !> Everything a workload works on.
    type :: bench_case
@@ -66,6 +68,9 @@ program benchmark_kernel
       !! its W, half-width 7, lower storage)
       real(dp), allocatable :: x2(:,:), y2(:,:), xi(:), yi(:), stiffness_i(:,:), factor_i(:,:)
       class(time_stepper), allocatable :: stepper
+      !> the free flight of two planes (&beam planes = 2, velocity at 45 degrees: both
+      !! planes move), sharing W, and with a z stiffness of its own (inertia_z = 2 inertia)
+      class(time_stepper), allocatable :: stepper_two, stepper_two_own
    end type bench_case
 
    character(len=32) :: command
@@ -131,6 +136,18 @@ contains
       call new_stepper(scene, prepared, case%stepper, stat, errmsg)
       if (stat /= 0) call fail('start_time_stepper', stat, errmsg)
       case%model = prepared%model
+      ! two planes, no obstacle (not taken yet with planes = 2); the beam by its four data
+      ! with k2 = EI/(rho S) = 1, as above
+      scene%obstacles = [obstacle_type ::]
+      scene%beam%youngs_modulus = 1
+      scene%beam%density = 1
+      scene%beam%area = 1
+      scene%beam%inertia = 1
+      scene%beam%planes = 2
+      scene%initial%direction = 45
+      call two_plane_stepper(scene, case%stepper_two)
+      scene%beam%inertia_z = 2
+      call two_plane_stepper(scene, case%stepper_two_own)
       case%iteration_matrix = band_combination(1.0_dp, case%model%mass, (theta*time_step)**2, case%model%stiffness)
       call band_factor(case%iteration_matrix, case%kernel_factor, stat, errmsg)
       if (stat /= 0) call fail('band_factor', stat, errmsg)
@@ -148,6 +165,23 @@ contains
       call dpbtrf('L', 2*unknowns, 7, case%factor_i, 8, stat)
       if (stat /= 0) call fail('dpbtrf (interleaved)', stat, '')
    end subroutine set_up
+
+   !> The velocity stepper of a scene of two planes (validated and built as the program does).
+   subroutine two_plane_stepper(scene, stepper)
+      type(scene_type), intent(in) :: scene
+      class(time_stepper), allocatable, intent(out) :: stepper
+      type(run_problem) :: prepared
+      character(len=:), allocatable :: warnings
+      character(len=512) :: errmsg
+      integer :: stat
+      call validate_scene(scene, stat, errmsg)
+      if (stat /= 0) call fail('validate_scene (two planes)', stat, errmsg)
+      warnings = ''
+      call build_problem(scene, prepared, warnings, stat, errmsg)
+      if (stat /= 0) call fail('prepare_scene (two planes)', stat, errmsg)
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
+      if (stat /= 0) call fail('start_time_stepper (two planes)', stat, errmsg)
+   end subroutine two_plane_stepper
 
    !> The band (lower storage, half-width 3) of one plane as the band of two planes
    !! interleaved, (y_j, z_j) side by side with the same matrix in both: entry (i, k) goes
@@ -203,6 +237,12 @@ contains
          case (workload_interleaved)
             call dsbmv('L', 2*n, 7, 1.0_dp, case%stiffness_i, 8, case%xi, 1, 0.0_dp, case%yi, 1)
             call dpbtrs('L', 2*n, 7, 1, case%factor_i, 8, case%yi, 2*n, info)
+         case (workload_step_two)
+            call case%stepper_two%step(stat, errmsg)
+            if (stat /= 0) call fail('step (two planes)', stat, errmsg)
+         case (workload_step_two_own)
+            call case%stepper_two_own%step(stat, errmsg)
+            if (stat /= 0) call fail('step (two planes, own K_z)', stat, errmsg)
          case (workload_stacked_fused)
             call band_residual_solve(case%kernel_factor, case%model%stiffness, case%x2(:, 1), case%b, case%y2(:, 1))
             call band_residual_solve(case%kernel_factor, case%model%stiffness, case%x2(:, 2), case%b, case%y2(:, 2))
@@ -285,31 +325,35 @@ contains
    !> The two-plane table (docs/method.md, "Two bending planes and tube-support contact"):
    !! per J, the medians of the planar LAPACK floor (dpbtrs+dsbmv), of its stacked and
    !! interleaved two-plane versions, of the planar fused kd = 3 kernel and its stacked
-   !! version, and of a planar free-flight step (microseconds); then, as medians of the
-   !! paired per-repetition ratios (all measured in one run): stacked/planar and
-   !! interleaved/planar with LAPACK, stacked/planar with the fused kernel, and the
-   !! estimated cost of a two-plane step relative to the planar step, the planar step with
-   !! its kernel replaced: (step - fused + stacked fused)/step for the stacked layout,
-   !! (step - fused + interleaved)/step for the interleaved one (LAPACK at half-width 7,
-   !! there being no kd = 7 kernel).
+   !! version, of a planar free-flight step and of the velocity stepper's two-plane
+   !! free-flight steps (sharing W, and with K_z of its own) (microseconds); then, as
+   !! medians of the paired per-repetition ratios (all measured in one run):
+   !! stacked/planar and interleaved/planar with LAPACK, stacked/planar with the fused
+   !! kernel, the estimated cost of a two-plane step relative to the planar step had the
+   !! layout been interleaved, (step - fused + interleaved)/step (LAPACK at half-width 7,
+   !! there being no kd = 7 kernel), and the measured two-plane steps over the planar
+   !! step (issue 21's bound: 2.5).
    subroutine planes_table()
       integer, parameter :: workloads(*) = [workload_lapack, workload_stacked, workload_interleaved, &
-                                            workload_fused, workload_stacked_fused, workload_step]
+                                            workload_fused, workload_stacked_fused, workload_step, &
+                                            workload_step_two, workload_step_two_own]
       type(bench_case) :: case
       real(dp) :: per_call(repetitions, size(workloads)), cpu_fraction
       integer :: s, w
       write (output_unit, '(a)') '# time per call (microseconds): median of 7 interleaved batches of >= 0.05 s; '// &
          'ratios: medians of the paired ratios'
-      write (output_unit, '(a8,6a15,5a15,a10)') 'J', (trim(workload_names(workloads(w))), w=1, size(workloads)), &
-         'stacked/floor', 'interl./floor', 'st.fused/fused', 'step stacked', 'step interl.', 'cpu/wall'
+      write (output_unit, '(a8,8a15,6a15,a10)') 'J', (trim(workload_names(workloads(w))), w=1, size(workloads)), &
+         'stacked/floor', 'interl./floor', 'st.fused/fused', 'step interl.', '2 planes/step', 'own Kz/step', &
+         'cpu/wall'
       do s = 1, size(sizes)
          call set_up(sizes(s), case)
          call batches(case, workloads, per_call, cpu_fraction)
          associate (floor => per_call(:, 1), stacked => per_call(:, 2), interleaved => per_call(:, 3), &
-                    fused => per_call(:, 4), stacked_fused => per_call(:, 5), step => per_call(:, 6))
-            write (output_unit, '(i8,6f15.3,5f15.3,f10.2)') sizes(s), (1e6_dp*median(per_call(:, w)), w=1, 6), &
+                    fused => per_call(:, 4), stacked_fused => per_call(:, 5), step => per_call(:, 6), &
+                    step_two => per_call(:, 7), step_own => per_call(:, 8))
+            write (output_unit, '(i8,8f15.3,6f15.3,f10.2)') sizes(s), (1e6_dp*median(per_call(:, w)), w=1, 8), &
                median(stacked/floor), median(interleaved/floor), median(stacked_fused/fused), &
-               median((step - fused + stacked_fused)/step), median((step - fused + interleaved)/step), cpu_fraction
+               median((step - fused + interleaved)/step), median(step_two/step), median(step_own/step), cpu_fraction
          end associate
          flush (output_unit)
       end do
