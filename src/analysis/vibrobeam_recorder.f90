@@ -86,6 +86,9 @@ module vibrobeam_recorder
       !! the last `observe` (the y plane's are events%observed(1, :))
       integer :: planes = 1
       real(dp) :: tip_z(2) = 0
+      !> circular holes (two planes): each point received an impulse in the last step (or
+      !! rested on its wall at t = 0)
+      logical, allocatable :: circle_in_contact(:)
       type(run_spectra) :: spectra                   !! /spectrum: the tip's and the observation points'
       type(forces_psd) :: forces_spectra             !! /forces: the random loads' densities (none without)
       type(episode_tracker) :: episodes
@@ -171,6 +174,15 @@ contains
          speed = contact_value(stepper%contacts, c, problem%start%v)
          if ((value <= stepper%contacts%lower(c) + tolerance .and. speed >= 0) .or. &
              (value >= stepper%contacts%upper(c) - tolerance .and. speed <= 0)) self%in_contact(c) = .true.
+      end do
+      allocate (self%circle_in_contact(stepper%circles%count))
+      do c = 1, stepper%circles%count
+         associate (circles => stepper%circles, j => size(stepper%u)/2)
+            ! on its wall (within the activation tolerance) and not moving inwards
+            self%circle_in_contact(c) = circles%radius(c) - norm2(circles%offset(c, stepper%u)) <= tolerance .and. &
+                                        dot_product(circles%offset(c, stepper%u), [problem%start%v(circles%dof(c)), &
+                                                    problem%start%v(j + circles%dof(c))]) >= 0
+         end associate
       end do
       self%max_penetration = penetration(stepper)
       self%max_penetration_time = stepper%t
@@ -353,6 +365,9 @@ contains
          u = contact_value(stepper%contacts, c, stepper%u)
          depth = max(depth, stepper%contacts%lower(c) - u, u - stepper%contacts%upper(c))
       end do
+      do c = 1, stepper%circles%count   ! |r - c| - R beyond a circle's wall
+         depth = max(depth, norm2(stepper%circles%offset(c, stepper%u)) - stepper%circles%radius(c))
+      end do
    end function penetration
 
    !> Bookkeeping after every step (module documentation). An impact is a rigid impulse at
@@ -389,6 +404,8 @@ contains
       end do
       ! the next step's impact test sees the rigid impulses only
       self%in_contact = now
+      call circle_impacts(stat, errmsg)
+      if (stat /= 0) return
       if (self%compliant) then
          ! stepper%report%contact_force holds the true force at every contact point after every
          ! step; the run statistics take their force statistics from it (observe_step).
@@ -421,6 +438,32 @@ contains
          call self%statistics_files%append_poincare(self%statistics%sample_times(1:self%statistics%poincare_found), &
                                                     self%statistics%sample_values(:, 1:self%statistics%poincare_found), &
                                                     stat, errmsg)
+   contains
+      !> The impacts at the circular holes' points, as at the levels: an impulse at a point
+      !! that received none in the previous step and moved towards its wall; its row of
+      !! /impacts holds the normal velocities (positive inwards) before and after.
+      subroutine circle_impacts(stat, errmsg)
+         integer, intent(out) :: stat
+         character(len=*), intent(out) :: errmsg
+         logical :: held(size(self%circle_in_contact))
+         integer :: k, point
+         stat = 0
+         errmsg = ''
+         held = .false.
+         do k = 1, stepper%report%circle_count
+            if (stepper%report%circle_impulse(k) <= 0) cycle
+            point = stepper%report%circle_active(k)
+            held(point) = .true.
+            if (self%circle_in_contact(point) .or. stepper%report%circle_before(k) > 0) cycle
+            self%impacts = self%impacts + 1
+            if (self%write_rows) call self%files%append_impact([stepper%report%impulse_time, stepper%circles%x(point), &
+                                                                stepper%report%circle_impulse(k), &
+                                                                stepper%report%circle_before(k), &
+                                                                stepper%report%circle_after(k)], stat, errmsg)
+            if (stat /= 0) return
+         end do
+         self%circle_in_contact = held
+      end subroutine circle_impacts
    end subroutine after_step
 
    !> True when step n is an output time of the histories.
@@ -465,7 +508,7 @@ contains
       row(h_numerical) = stepper%energy%dissipated_numerical
       row(h_dissipated) = row(h_impacts) + row(h_damping) + row(h_numerical)
       potential = 0
-      if (self%compliant) then
+      if (self%compliant .or. stepper%circles%compliant) then
          ! the stops' stored energy is part of the total, their damping a dissipation
          potential = stepper%contact_potential()
          row(h_total) = row(h_total) + potential

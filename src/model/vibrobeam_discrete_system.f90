@@ -10,6 +10,7 @@ module vibrobeam_discrete_system
    use vibrobeam_contact_set, only: contact_set
    use vibrobeam_loads, only: load_set
    use vibrobeam_band, only: symmetric_band
+   use vibrobeam_circle_set, only: circle_set
    implicit none
    private
    public :: discrete_system
@@ -24,5 +25,7 @@ module vibrobeam_discrete_system
       !> K of the z plane when it differs from the y plane's (E inertia_z); unallocated:
       !! K_z = K
       type(symmetric_band), allocatable :: stiffness_z
+      !> the points of circular holes (two planes only; count 0 otherwise)
+      type(circle_set) :: circles
    end type discrete_system
 end module vibrobeam_discrete_system

@@ -411,18 +411,40 @@ contains
       integer, intent(inout) :: stat
       character(len=*), intent(inout) :: errmsg
       character(len=*), parameter :: planar = ' is not available with &beam planes = 2 yet (issue 21: the two-plane '// &
-                                              'model runs the free flight of the velocity scheme so far); '
+                                              'model runs the velocity scheme, with circular holes, so far); '
+      integer :: i
       if (scene%beam%plane_count() == 1) then
          call no_direction('load', 'direction', scene%load%direction)
          call no_direction('initial', 'direction', scene%initial%direction)
          call no_direction('initial', 'displacement_direction', scene%initial%displacement_direction)
+         do i = 1, size(scene%obstacles)
+            if (scene%obstacles(i)%circle()) &
+               call fail(stat, errmsg, '&obstacles shape('//integer_text(i)//') = ''circle'' needs &beam planes = 2: '// &
+                         'a hole in the cross-section holds both deflections; give planes = 2, or shape = ''level''')
+         end do
          return
       end if
+      do i = 1, size(scene%obstacles)
+         associate (o => scene%obstacles(i))
+            if (.not. o%circle()) &
+               call fail(stat, errmsg, '&obstacles shape('//integer_text(i)//') = ''level'''//planar// &
+                         'give shape('//integer_text(i)//') = ''circle''')
+            ! a compliant circle is a support plate's hole: one node (its stiffness per node)
+            if (o%stiffness > 0 .and. o%x_to > o%x_from) &
+               call fail(stat, errmsg, '&obstacles stiffness('//integer_text(i)//') = '//real_text(o%stiffness)// &
+                         ' N/m with x_to('//integer_text(i)//') > x_from (a compliant circle along the beam)'// &
+                         planar//'a compliant circle acts at one node: give x_to = x_from')
+            if (o%stiffness > 0 .neqv. scene%obstacles(1)%stiffness > 0) &
+               call fail(stat, errmsg, '&obstacles stiffness('//integer_text(i)//') = '//real_text(o%stiffness)// &
+                         ' N/m and stiffness(1) = '//real_text(scene%obstacles(1)%stiffness)//' N/m (rigid and '// &
+                         'compliant circles together)'//planar//'make every circle rigid or every one compliant')
+         end associate
+      end do
+      if (size(scene%obstacles) > 0 .and. scene%mesh%basis /= 'hermite') &
+         call fail(stat, errmsg, '&mesh basis = '''//trim(scene%mesh%basis)//''' with circular obstacles'//planar// &
+                   'allowed: ''hermite''')
       if (scene%analysis%kind /= 'dynamics') &
          call fail(stat, errmsg, '&analysis kind = '''//trim(scene%analysis%kind)//''''//planar//'allowed: ''dynamics''')
-      if (size(scene%obstacles) > 0) &
-         call fail(stat, errmsg, '&obstacles count = '//integer_text(size(scene%obstacles))//planar// &
-                   'remove the obstacles or give planes = 1')
       if (scene%time%scheme /= 'velocity') &
          call fail(stat, errmsg, '&time scheme = '''//trim(scene%time%scheme)//''''//planar//'allowed: ''velocity''')
       if (scene%mesh%reduction /= 'none') &

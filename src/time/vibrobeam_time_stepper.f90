@@ -12,6 +12,7 @@ module vibrobeam_time_stepper
    use vibrobeam_contact_options, only: contact_options
    use vibrobeam_loads, only: load_set
    use vibrobeam_discrete_system, only: discrete_system
+   use vibrobeam_circle_set, only: circle_set
    use vibrobeam_state_record, only: state_record
    use vibrobeam_compliant_law, only: stop_potential, rule_gradient
    use vibrobeam_compliant_solver, only: compliant_solver
@@ -73,6 +74,13 @@ module vibrobeam_time_stepper
       !> force of the compliant stops on each contact point at t (N, positive upwards;
       !! 0 at rigid-only points)
       real(dp), allocatable :: contact_force(:)
+      !> the circular holes' points the step held (two planes): the first circle_count of
+      !! circle_active, each with its impulse (N s, along circle_normal, the inward unit
+      !! normal at the predicted position) and normal velocities before and after (m/s,
+      !! positive inwards)
+      integer :: circle_count = 0
+      integer, allocatable :: circle_active(:)
+      real(dp), allocatable :: circle_impulse(:), circle_normal(:, :), circle_before(:), circle_after(:)
    end type step_report
 
    !> The running sums of the energy balance since t = 0 (each scheme says how it defines
@@ -108,6 +116,7 @@ module vibrobeam_time_stepper
       logical :: own_z = .false.
       type(symmetric_band) :: stiffness_z, iteration_matrix_z
       type(band_cholesky) :: iteration_factor_z
+      type(circle_set) :: circles                  !! the points of circular holes (two planes)
       type(contact_set) :: contacts
       type(contact_projector) :: projector
       type(load_set) :: loads
@@ -210,15 +219,21 @@ contains
       end associate
    end function spring_penetrations
 
-   !> Energy stored in the compliant stops, sum_j Phi_j(p_j) (J).
+   !> Energy stored in the compliant stops, sum_j Phi_j(p_j) (J), the compliant circles' too.
    function contact_potential(self) result(energy)
       class(time_stepper), intent(in) :: self
       real(dp) :: energy
+      integer :: k
       associate (springs => self%contacts%springs)
          energy = 0
          if (springs%count > 0) &
             energy = sum(stop_potential(springs%stiffness, springs%exponent, self%spring_penetrations(self%u)))
       end associate
+      if (.not. self%circles%compliant) return
+      do k = 1, self%circles%count   ! the compliant circles' springs, on the radial penetration
+         energy = energy + stop_potential(self%circles%stiffness(k), self%circles%exponent(k), &
+                                          self%circles%penetration(k, self%u))
+      end do
    end function contact_potential
 
    !> Energy bookkeeping of the compliant stops over a step whose penetrations go from p0
@@ -324,6 +339,10 @@ contains
       call band_factor(self%iteration_matrix, self%iteration_factor, stat, errmsg)
       if (stat /= 0) return
       self%planes = system%planes
+      self%circles = system%circles
+      n = system%circles%count
+      allocate (self%report%circle_active(n), self%report%circle_impulse(n), self%report%circle_normal(2, n), &
+                self%report%circle_before(n), self%report%circle_after(n))
       self%own_z = allocated(system%stiffness_z)
       if (self%own_z) then
          self%stiffness_z = system%stiffness_z
