@@ -75,6 +75,22 @@ plot plot_modes.gp shapes
 plot plot_static.gp static
 plot plot_periodic.gp orbit
 plot plot_branch.gp branch
+# a beam of two bending planes: the tip's orbit in the cross-section (tip.dat's z columns),
+# with the round hole that covers the tip, if any (&obstacles shape = 'circle')
+if [ -f "${stem}_tip.dat" ] && head -2 "${stem}_tip.dat" | grep -q -F 'then u_tip in z'; then
+  hole=''
+  length=$(attribute /beam.length)
+  count=$(attribute /obstacles.count); count=${count:-0}
+  for ((i = 1; i <= count; i++)); do
+    [ "$(attribute "/obstacles.shape($i)")" = '"circle"' ] || continue
+    awk -v a="$(attribute "/obstacles.x_to($i)")" -v l="$length" 'BEGIN {exit !(a >= l - 1e-9 * l)}' || continue
+    cy=$(attribute "/obstacles.center_y($i)" || true); cz=$(attribute "/obstacles.center_z($i)" || true)
+    hole="; radius=$(attribute "/obstacles.radius($i)"); center_y=${cy:-0}; center_z=${cz:-0}"
+    break
+  done
+  gnuplot -e "stem='${stem}'; measure_from=${measure_from}${hole}" "$here/plot_orbit.gp"
+  drawn=$((drawn + 1))
+fi
 for gp in "$here"/plot_dynamics_*.gp; do
   [ -e "$gp" ] || continue
   name=$(basename "$gp" .gp)

@@ -37,6 +37,8 @@ module vibrobeam_histories
    type :: run_histories
       logical :: points = .false.                   !! the scene has observation points
       logical :: compliant = .false.                !! the scene has compliant stops
+      !> bending planes: with 2, /tip/displacement and /tip/velocity have two columns (y, z)
+      integer :: planes = 1
       type(h5_series) :: histories(history_count), point_u, point_v, field_time, field, impact_columns(5)
       type(h5_array) :: fraction
       ! compliant stops: created only when the scene has springs
@@ -58,21 +60,29 @@ contains
 
    !> Create every dataset and attribute of the histories (before the file enters SWMR
    !! mode): `point_x` the observation points (m), `contacts` the contact points, `nodes`
-   !! the field's node count.
-   subroutine create(self, writer, point_x, contacts, nodes, compliant, stat, errmsg)
+   !! the field's node count, `planes` the bending planes (1, or 2: the tip's deflection
+   !! histories in y and z).
+   subroutine create(self, writer, point_x, contacts, nodes, compliant, planes, stat, errmsg)
       class(run_histories), intent(inout) :: self
       type(h5_writer), intent(inout) :: writer
       real(dp), intent(in) :: point_x(:)
       type(contact_set), intent(in) :: contacts
       integer, intent(in) :: nodes
       logical, intent(in) :: compliant
+      integer, intent(in) :: planes
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: k
       self%points = size(point_x) > 0
       self%compliant = compliant
+      self%planes = planes
       do k = 1, history_count
-         call self%histories(k)%create(writer, trim(history_paths(k)), 1, trim(history_units(k)), stat, errmsg)
+         if (planes == 2 .and. (k == h_tip_u .or. k == h_tip_v)) then
+            call self%histories(k)%create(writer, trim(history_paths(k)), 2, trim(history_units(k)), stat, errmsg, &
+                                          matrix=.true.)
+         else
+            call self%histories(k)%create(writer, trim(history_paths(k)), 1, trim(history_units(k)), stat, errmsg)
+         end if
          if (stat /= 0) return
       end do
       do k = 1, 5
@@ -115,11 +125,13 @@ contains
       if (stat == 0) call writer%attr_string('/contact/peak_force', 'unit', 'N', stat, errmsg)
    end subroutine create_compliant
 
-   !> One history row (`row`, indexed by h_*), the observation points' u and v, and with
-   !! compliant stops their stored energy, damping dissipation and forces.
-   subroutine append_sample(self, row, point_u, point_v, potential, contact_damping, contact_force, stat, errmsg)
+   !> One history row (`row`, indexed by h_*, the tip's deflection in y), the tip's
+   !! deflection and velocity in z (`tip_z`, read with two planes), the observation
+   !! points' u and v, and with compliant stops their stored energy, damping dissipation
+   !! and forces.
+   subroutine append_sample(self, row, tip_z, point_u, point_v, potential, contact_damping, contact_force, stat, errmsg)
       class(run_histories), intent(inout) :: self
-      real(dp), intent(in) :: row(history_count), point_u(:), point_v(:)
+      real(dp), intent(in) :: row(history_count), tip_z(2), point_u(:), point_v(:)
       real(dp), intent(in) :: potential, contact_damping, contact_force(:)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
@@ -133,7 +145,13 @@ contains
          if (stat /= 0) return
       end if
       do k = 1, history_count
-         call self%histories(k)%append(row(k:k), stat, errmsg)
+         if (self%planes == 2 .and. k == h_tip_u) then
+            call self%histories(k)%append([row(k), tip_z(1)], stat, errmsg)
+         else if (self%planes == 2 .and. k == h_tip_v) then
+            call self%histories(k)%append([row(k), tip_z(2)], stat, errmsg)
+         else
+            call self%histories(k)%append(row(k:k), stat, errmsg)
+         end if
          if (stat /= 0) return
       end do
       if (self%points) then

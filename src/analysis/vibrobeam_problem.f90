@@ -9,12 +9,15 @@ module vibrobeam_problem
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_status, only: stat_failure, stat_numerical_failure
-   use vibrobeam_text, only: real_text
+   use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type, step_count, is_unset, structure_of, steps_in_time
    use vibrobeam_scene_structure, only: off_node_warnings
    use vibrobeam_model, only: beam_model, build_model
+   use vibrobeam_band, only: symmetric_band
+   use vibrobeam_planes, only: direction_shares, spread_planes
    use vibrobeam_contact_set, only: contact_set, contact_value
-   use vibrobeam_obstacles, only: build_contact_points
+   use vibrobeam_obstacles, only: build_contact_points, build_circle_points
+   use vibrobeam_circle_set, only: circle_set
    use vibrobeam_loads, only: load_set, build_loads, add_forces, add_flow
    use vibrobeam_initial_state, only: mode_field, initial_velocity, read_velocity_profile
    use vibrobeam_table_file, only: linear_table
@@ -40,8 +43,13 @@ module vibrobeam_problem
       type(beam_model) :: model        !! the beam on its mesh
       type(contact_set) :: contacts    !! the contact points on the mesh
       type(load_set) :: loads          !! the loads on the mesh
-      real(dp), allocatable :: u0(:)   !! initial displacement unknowns of the mesh (dynamics, periodic)
-      real(dp), allocatable :: v0(:)   !! initial velocity unknowns of the mesh (dynamics, periodic)
+      real(dp), allocatable :: u0(:)   !! initial displacement unknowns of the mesh (dynamics, periodic; y then z)
+      real(dp), allocatable :: v0(:)   !! initial velocity unknowns of the mesh (dynamics, periodic; y then z)
+      !> bending planes: 1, or 2 (u0, v0 and the system's state hold y then z) with the z
+      !! plane's stiffness when it has its own (else unallocated)
+      integer :: planes = 1
+      type(symmetric_band), allocatable :: stiffness_z
+      type(circle_set) :: circles      !! the points of circular holes (two planes)
       !> what the stepper steps: model, contacts and loads of the mesh, or with &mesh
       !! reduction = 'craig-bampton' (dynamics, periodic) those of the reduced model, whose
       !! coordinates `reduction` maps back to the mesh (the recorder does)
@@ -82,6 +90,10 @@ contains
       warnings = warnings//off_node_warnings(scene, prepared%model)
       call build_contact_points(scene%obstacles, prepared%model, prepared%contacts, warnings, stat, errmsg)
       if (stat /= 0) return
+      if (scene%beam%plane_count() == 2) then
+         call build_circle_points(scene%obstacles, prepared%model, prepared%circles, warnings, stat, errmsg)
+         if (stat /= 0) return
+      end if
       call build_loads(scene%load, prepared%model, scene%beam%rho_s(), prepared%loads)
       call add_forces(prepared%loads, scene%forces, prepared%model, scene%beam%rho_s(), scene%time%dt, stat, errmsg)
       if (stat /= 0) return
@@ -115,10 +127,61 @@ contains
       if (steps_in_time(scene) .and. scene%mesh%reduction == 'craig-bampton') then
          call reduce_scene(scene, prepared, stat, errmsg)
       else
+         if (scene%beam%plane_count() == 2) call two_planes(scene, prepared, stat, errmsg)
+         if (stat /= 0) return
          call full_system(prepared)
       end if
       if (stat == 0) call modal_damping_of(scene, prepared, stat, errmsg)
    end subroutine build_problem
+
+   !> A beam of two bending planes (docs/method.md, "Two bending planes"): the initial
+   !! fields, computed in y, turned by &initial displacement_direction and direction (the
+   !! velocity's) into 2J unknowns (y then z), and
+   !! the z plane's stiffness, the model of the same scene with E inertia_z, when it has
+   !! one of its own (`beam_settings%own_z_stiffness`). The system's planes and K_z are set
+   !! by `full_system`.
+   subroutine two_planes(scene, prepared, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(run_problem), intent(inout) :: prepared
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(beam_model) :: model_z
+      integer :: k
+      stat = 0
+      errmsg = ''
+      prepared%u0 = [prepared%u0, spread(0.0_dp, 1, size(prepared%u0))]
+      prepared%v0 = [prepared%v0, spread(0.0_dp, 1, size(prepared%v0))]
+      call spread_planes(shares_of(scene%initial%displacement_direction), prepared%u0)
+      call spread_planes(shares_of(scene%initial%direction), prepared%v0)
+      prepared%planes = 2
+      ! theory §1: the initial displacement inside every hole (to the activation's 1e-12 L)
+      do k = 1, prepared%circles%count
+         associate (circles => prepared%circles)
+            if (norm2(circles%offset(k, prepared%u0)) > circles%radius(k) + 1e-12_dp*scene%beam%length) then
+               stat = stat_failure
+               errmsg = '&initial: the initial displacement at x = '//real_text(circles%x(k))//' m, ('// &
+                        real_text(prepared%u0(circles%dof(k)))//', '// &
+                        real_text(prepared%u0(size(prepared%u0)/2 + circles%dof(k)))//') m, is outside the circle '// &
+                        'of &obstacles '//integer_text(circles%obstacle(k))//' (radius '// &
+                        real_text(circles%radius(k))//' m)'
+               return
+            end if
+         end associate
+      end do
+      if (.not. scene%beam%own_z_stiffness()) return
+      call build_model(scene%mesh%basis, scene%mesh%elements, scene%beam%length, scene%beam%rho_s(), &
+                       scene%beam%ei_z(), model_z, stat, errmsg, structure=structure_of(scene))
+      if (stat /= 0) return
+      allocate (prepared%stiffness_z, source=model_z%stiffness)
+   contains
+      !> (cos, sin) of a direction of &initial, (1, 0) when it is not given.
+      pure function shares_of(degrees) result(shares)
+         real(dp), intent(in) :: degrees
+         real(dp) :: shares(2)
+         shares = [1.0_dp, 0.0_dp]
+         if (.not. is_unset(degrees)) shares = direction_shares(degrees)
+      end function shares_of
+   end subroutine two_planes
 
    !> The damping per mode of a dynamics scene (&beam modal_damping, modal_damping_ratios):
    !! on the mesh's modes, every mode below the default cut-off of the reduced model
@@ -150,6 +213,9 @@ contains
    subroutine full_system(prepared)
       type(run_problem), intent(inout) :: prepared
       prepared%system = discrete_system(prepared%model, prepared%contacts, prepared%loads)
+      prepared%system%planes = prepared%planes
+      prepared%system%circles = prepared%circles
+      if (allocated(prepared%stiffness_z)) allocate (prepared%system%stiffness_z, source=prepared%stiffness_z)
       prepared%start%u = prepared%u0
       prepared%start%v = prepared%v0
    end subroutine full_system

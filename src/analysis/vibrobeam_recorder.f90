@@ -82,6 +82,13 @@ module vibrobeam_recorder
       ! a reduced model (&mesh reduction): the stepper's unknowns are q, U = T q
       type(reduced_basis), allocatable :: reduction   !! T, for field snapshots
       real(dp), allocatable :: observed_rows(:, :)   !! (r, 1 + points) u_h at the tip and points = row . q
+      !> bending planes of the stepper; with 2, the tip's deflection and velocity in z at
+      !! the last `observe` (the y plane's are events%observed(1, :))
+      integer :: planes = 1
+      real(dp) :: tip_z(2) = 0
+      !> circular holes (two planes): each point received an impulse in the last step (or
+      !! rested on its wall at t = 0)
+      logical, allocatable :: circle_in_contact(:)
       type(run_spectra) :: spectra                   !! /spectrum: the tip's and the observation points'
       type(forces_psd) :: forces_spectra             !! /forces: the random loads' densities (none without)
       type(episode_tracker) :: episodes
@@ -153,6 +160,7 @@ contains
       if (scene%output%field_every > 0) self%field_every = scene%output%field_every
       self%last_step = last_step
       self%length = model%length
+      self%planes = stepper%planes
       allocate (self%in_contact(contacts), self%touched(contacts), source=.false.)
       allocate (self%contact_time(contacts), source=0.0_dp)
       self%compliant = stepper%contacts%springs%count > 0
@@ -166,6 +174,15 @@ contains
          speed = contact_value(stepper%contacts, c, problem%start%v)
          if ((value <= stepper%contacts%lower(c) + tolerance .and. speed >= 0) .or. &
              (value >= stepper%contacts%upper(c) - tolerance .and. speed <= 0)) self%in_contact(c) = .true.
+      end do
+      allocate (self%circle_in_contact(stepper%circles%count))
+      do c = 1, stepper%circles%count
+         associate (circles => stepper%circles, j => size(stepper%u)/2)
+            ! on its wall (within the activation tolerance) and not moving inwards
+            self%circle_in_contact(c) = circles%radius(c) - norm2(circles%offset(c, stepper%u)) <= tolerance .and. &
+                                        dot_product(circles%offset(c, stepper%u), [problem%start%v(circles%dof(c)), &
+                                                    problem%start%v(j + circles%dof(c))]) >= 0
+         end associate
       end do
       self%max_penetration = penetration(stepper)
       self%max_penetration_time = stepper%t
@@ -258,6 +275,12 @@ contains
          self%events%observed(p, 1) = combination(self%observed_dofs(:, p), self%observed_weights(:, p), stepper%u)
          self%events%observed(p, 2) = combination(self%observed_dofs(:, p), self%observed_weights(:, p), stepper%v)
       end do
+      if (self%planes == 2) then   ! the z plane: the same row on the second half of the unknowns
+         associate (j => size(stepper%u)/2)
+            self%tip_z(1) = combination(self%observed_dofs(:, 1), self%observed_weights(:, 1), stepper%u(j + 1:))
+            self%tip_z(2) = combination(self%observed_dofs(:, 1), self%observed_weights(:, 1), stepper%v(j + 1:))
+         end associate
+      end if
    end subroutine observe
 
    !> sum_a weights(a) unknowns(dofs(a)) over the dofs /= 0, in order.
@@ -319,7 +342,8 @@ contains
       type(beam_model), intent(in) :: model
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      call self%files%create(writer, self%point_x, stepper%contacts, model%elements + 1, self%compliant, stat, errmsg)
+      call self%files%create(writer, self%point_x, stepper%contacts, model%elements + 1, self%compliant, self%planes, &
+                             stat, errmsg)
       if (stat == 0) call self%spectra%create(writer, stat, errmsg)
       if (stat == 0 .and. allocated(self%forces_spectra%loads)) call self%forces_spectra%create(writer, stat, errmsg)
       if (stat == 0) call self%episodes%create_datasets(writer, stat, errmsg)
@@ -340,6 +364,9 @@ contains
       do c = 1, stepper%contacts%count
          u = contact_value(stepper%contacts, c, stepper%u)
          depth = max(depth, stepper%contacts%lower(c) - u, u - stepper%contacts%upper(c))
+      end do
+      do c = 1, stepper%circles%count   ! |r - c| - R beyond a circle's wall
+         depth = max(depth, norm2(stepper%circles%offset(c, stepper%u)) - stepper%circles%radius(c))
       end do
    end function penetration
 
@@ -377,6 +404,8 @@ contains
       end do
       ! the next step's impact test sees the rigid impulses only
       self%in_contact = now
+      call circle_impacts(stat, errmsg)
+      if (stat /= 0) return
       if (self%compliant) then
          ! stepper%report%contact_force holds the true force at every contact point after every
          ! step; the run statistics take their force statistics from it (observe_step).
@@ -409,6 +438,32 @@ contains
          call self%statistics_files%append_poincare(self%statistics%sample_times(1:self%statistics%poincare_found), &
                                                     self%statistics%sample_values(:, 1:self%statistics%poincare_found), &
                                                     stat, errmsg)
+   contains
+      !> The impacts at the circular holes' points, as at the levels: an impulse at a point
+      !! that received none in the previous step and moved towards its wall; its row of
+      !! /impacts holds the normal velocities (positive inwards) before and after.
+      subroutine circle_impacts(stat, errmsg)
+         integer, intent(out) :: stat
+         character(len=*), intent(out) :: errmsg
+         logical :: held(size(self%circle_in_contact))
+         integer :: k, point
+         stat = 0
+         errmsg = ''
+         held = .false.
+         do k = 1, stepper%report%circle_count
+            if (stepper%report%circle_impulse(k) <= 0) cycle
+            point = stepper%report%circle_active(k)
+            held(point) = .true.
+            if (self%circle_in_contact(point) .or. stepper%report%circle_before(k) > 0) cycle
+            self%impacts = self%impacts + 1
+            if (self%write_rows) call self%files%append_impact([stepper%report%impulse_time, stepper%circles%x(point), &
+                                                                stepper%report%circle_impulse(k), &
+                                                                stepper%report%circle_before(k), &
+                                                                stepper%report%circle_after(k)], stat, errmsg)
+            if (stat /= 0) return
+         end do
+         self%circle_in_contact = held
+      end subroutine circle_impacts
    end subroutine after_step
 
    !> True when step n is an output time of the histories.
@@ -453,7 +508,7 @@ contains
       row(h_numerical) = stepper%energy%dissipated_numerical
       row(h_dissipated) = row(h_impacts) + row(h_damping) + row(h_numerical)
       potential = 0
-      if (self%compliant) then
+      if (self%compliant .or. stepper%circles%compliant) then
          ! the stops' stored energy is part of the total, their damping a dissipation
          potential = stepper%contact_potential()
          row(h_total) = row(h_total) + potential
@@ -461,7 +516,7 @@ contains
       end if
       row(h_balance) = row(h_total) - row(h_work) + row(h_dissipated)
       row(h_penetration) = penetration(stepper)
-      call self%files%append_sample(row, self%events%observed(2:, 1), self%events%observed(2:, 2), potential, &
+      call self%files%append_sample(row, self%tip_z, self%events%observed(2:, 1), self%events%observed(2:, 2), potential, &
                                     stepper%energy%dissipated_contact_damping, stepper%report%contact_force, stat, errmsg)
       if (stat /= 0) return
       ! the spectrum takes the uniformly spaced rows only (not a last row off the grid)
@@ -487,7 +542,8 @@ contains
          call self%files%append_field(stepper%t, nodal_displacement(model, self%reduction%expand(stepper%u)), stat, &
                                       errmsg)
       else
-         call self%files%append_field(stepper%t, nodal_displacement(model, stepper%u), stat, errmsg)
+         ! the y plane's (the first J unknowns; a beam of two planes has its z after them)
+         call self%files%append_field(stepper%t, nodal_displacement(model, stepper%u(1:model%unknowns)), stat, errmsg)
       end if
       self%last_field_step = stepper%steps
    end subroutine sample_field

@@ -149,7 +149,7 @@ contains
    !> Rows of the datasets `paths` (each 1-d of `rows` values, or 2-d of
    !! widths(k) columns) side by side, `form` per row (`put_row`), a block of rows at a
    !! time; stops early when interrupted (`check_signal`).
-   subroutine stream_rows(self, sink, paths, widths, rows, form, stat, errmsg, integers)
+   subroutine stream_rows(self, sink, paths, widths, rows, form, stat, errmsg, integers, order)
       class(derivation), intent(inout) :: self
       type(text_sink), intent(inout) :: sink
       character(len=*), intent(in) :: paths(:)
@@ -159,6 +159,9 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer, intent(in), optional :: integers
+      !> the columns of a row in the order written (a permutation of 1..sum(widths));
+      !! absent: as read
+      integer, intent(in), optional :: order(:)
       real(dp), allocatable :: block(:, :), part(:, :)
       integer(int64) :: first
       integer :: count, k, column, i
@@ -179,7 +182,11 @@ contains
             deallocate (part)
          end do
          do i = 1, count
-            call sink%put_row(form, block(:, i), stat, errmsg, integers)
+            if (present(order)) then
+               call sink%put_row(form, block(order, i), stat, errmsg, integers)
+            else
+               call sink%put_row(form, block(:, i), stat, errmsg, integers)
+            end if
             if (stat /= 0) return
          end do
          first = first + count

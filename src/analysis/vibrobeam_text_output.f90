@@ -225,16 +225,34 @@ contains
       type(text_sink) :: sink
       integer(int64) :: outputs, impacts, episodes
       real(dp), allocatable :: x(:)
-      integer :: points, k
+      integer(int64), allocatable :: dims(:)
+      integer :: points, k, planes
       call run%rows_of('/time', outputs, stat, errmsg)
       if (stat == 0) call run%rows_of('/impacts/time', impacts, stat, errmsg)
       if (stat == 0) call run%rows_of('/episodes/x', episodes, stat, errmsg)
       if (stat /= 0) return
-      call run%open_sink(sink, 'tip', 't (s)  u_tip (m)  v_tip (m/s)  mean tip contact force over the output '// &
-                         'interval = tip impulse/interval (N)  tip impulse over the interval (N s)', stat, errmsg)
-      if (stat /= 0) return
-      call run%stream_rows(sink, [character(len=40) :: '/time', '/tip/displacement', '/tip/velocity', &
-                                  '/tip/reaction', '/tip/impulse'], [1, 1, 1, 1, 1], outputs, 'wide', stat, errmsg)
+      ! a beam of two planes has two columns (y, z) in /tip/displacement and /tip/velocity
+      planes = 1
+      if (run%file%exists('/tip/displacement')) then
+         call run%file%shape('/tip/displacement', dims, stat, errmsg)
+         if (stat /= 0) return
+         if (size(dims) == 2) planes = int(dims(1))
+      end if
+      if (planes == 1) then
+         call run%open_sink(sink, 'tip', 't (s)  u_tip (m)  v_tip (m/s)  mean tip contact force over the output '// &
+                            'interval = tip impulse/interval (N)  tip impulse over the interval (N s)', stat, errmsg)
+         if (stat /= 0) return
+         call run%stream_rows(sink, [character(len=40) :: '/time', '/tip/displacement', '/tip/velocity', &
+                                     '/tip/reaction', '/tip/impulse'], [1, 1, 1, 1, 1], outputs, 'wide', stat, errmsg)
+      else   ! the planar columns in their places, then the z plane's (read: t, u_y, u_z, v_y, v_z, ...)
+         call run%open_sink(sink, 'tip', 't (s)  u_tip (m)  v_tip (m/s)  mean tip contact force over the output '// &
+                            'interval = tip impulse/interval (N)  tip impulse over the interval (N s), all in y; '// &
+                            'then u_tip in z (m)  v_tip in z (m/s)', stat, errmsg)
+         if (stat /= 0) return
+         call run%stream_rows(sink, [character(len=40) :: '/time', '/tip/displacement', '/tip/velocity', &
+                                     '/tip/reaction', '/tip/impulse'], [1, 2, 2, 1, 1], outputs, 'wide', stat, errmsg, &
+                              order=[1, 2, 4, 6, 7, 3, 5])
+      end if
       call run%close_sink(sink, stat, errmsg)
       if (stat /= 0 .or. run%interrupted) return
       call run%open_sink(sink, 'energy', 't (s)  kinetic  elastic  work of loads  dissipated (impacts + damping + '// &

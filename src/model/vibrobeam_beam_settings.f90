@@ -3,6 +3,8 @@
 !! (`vibrobeam_schema_visitor`), with the quantities the model derives from them.
 module vibrobeam_beam_settings
    use vibrobeam_kinds, only: dp
+   use vibrobeam_status, only: stat_failure
+   use vibrobeam_text, only: real_text
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, unset, is_unset, &
       unset_integer, keyword_length
    use vibrobeam_boundary, only: boundary_conditions, end_names, end_code, end_clamped, end_free
@@ -12,7 +14,7 @@ module vibrobeam_beam_settings
    use vibrobeam_section_settings, only: section_settings
    implicit none
    private
-   public :: beam_settings, mesh_settings, visit_beam, visit_mesh
+   public :: beam_settings, mesh_settings, visit_beam, visit_mesh, check_planes
 
    !> &beam: the beam's length, stiffness and mass (by E, rho, S, I, or by k2 = EI/(rho S)
    !! alone, per unit mass, or section by section: &sections), its end supports and end
@@ -24,6 +26,13 @@ module vibrobeam_beam_settings
       real(dp) :: density = unset             !! rho (kg/m^3)
       real(dp) :: area = unset                !! S (m^2)
       real(dp) :: inertia = unset             !! I (m^4)
+      !> bending planes: 1 (v in y only) or 2 (v in y and w in z; docs/method.md, "Two
+      !! bending planes and tube-support contact"); unset: 1, not listed, so that planar
+      !! results keep their attributes
+      integer :: planes = unset_integer
+      !> second moment of area about the y axis, for bending in z (m^4); unset: `inertia`
+      !! (listed only when given)
+      real(dp) :: inertia_z = unset
       real(dp) :: rayleigh_mass = 0           !! a in C = a M + b K (1/s)
       real(dp) :: rayleigh_stiffness = 0      !! b in C = a M + b K (s)
       !> damping ratio of every mode up to the time step's cut-off (unset: none), and of mode
@@ -49,9 +58,12 @@ module vibrobeam_beam_settings
       procedure :: sectioned                  !! given by sections?
       procedure :: rho_s                      !! mass per unit length (kg/m)
       procedure :: ei                         !! bending stiffness (N m^2)
+      procedure :: ei_z                       !! bending stiffness in z (N m^2)
+      procedure :: own_z_stiffness            !! does z bend with a stiffness of its own?
       procedure :: tension                    !! the axial force (N; 0 when not given)
       procedure :: supports                   !! the end supports and springs, resolved
       procedure :: modal                      !! is any damping per mode given?
+      procedure :: plane_count                !! the bending planes, 1 when not given
    end type beam_settings
 
    !> &mesh: the finite elements, their basis, and the reduced model of dynamics.
@@ -83,6 +95,12 @@ contains
                                      optional=.true.), beam%area)
       call visitor%variable(real_row('beam', 'inertia', 'm^4', 1e-42_dp, 1e8_dp, 'second moment of area I', &
                                      optional=.true.), beam%inertia)
+      call visitor%variable(integer_row('beam', 'planes', 1, 2, &
+                                        'bending planes: 1 (y) or 2 (y and z; default 1)', optional=.true.), &
+                            beam%planes)
+      call visitor%variable(real_row('beam', 'inertia_z', 'm^4', 1e-42_dp, 1e8_dp, &
+                                     'second moment of area for bending in z (default inertia)', optional=.true.), &
+                            beam%inertia_z)
       call visitor%variable(real_row('beam', 'rayleigh_mass', '1/s', 0.0_dp, 1e12_dp, &
                                      'a in the Rayleigh damping C = a M + b K'), beam%rayleigh_mass)
       call visitor%variable(real_row('beam', 'rayleigh_stiffness', 's', 0.0_dp, 1e3_dp, &
@@ -173,6 +191,25 @@ contains
       end if
    end function ei
 
+   !> Bending stiffness of the z plane (N m^2): E inertia_z when inertia_z is given (a beam
+   !! of the four physical data, `check_planes`), else the y plane's `ei`.
+   pure real(dp) function ei_z(self)
+      class(beam_settings), intent(in) :: self
+      if (self%own_z_stiffness()) then
+         ei_z = self%youngs_modulus*self%inertia_z
+      else
+         ei_z = self%ei()
+      end if
+   end function ei_z
+
+   !> Does the z plane have a stiffness of its own (planes = 2 with an inertia_z that is
+   !! not `inertia`)? Else K_z = K and the two planes share the factor of W.
+   pure logical function own_z_stiffness(self)
+      class(beam_settings), intent(in) :: self
+      own_z_stiffness = self%plane_count() == 2 .and. .not. is_unset(self%inertia_z)
+      if (own_z_stiffness) own_z_stiffness = abs(self%inertia_z - self%inertia) > 0
+   end function own_z_stiffness
+
    !> The mean over [0, L] of a value given per section (section i from the previous
    !! one's end, or 0, to its x_to; the last to L): sum_i value_i (x_i - x_(i-1))/L.
    pure real(dp) function length_mean(beam, values)
@@ -224,6 +261,37 @@ contains
       class(beam_settings), intent(in) :: self
       modal = .not. (is_unset(self%modal_damping) .and. all(is_unset(self%modal_damping_ratios)))
    end function modal
+
+   !> The bending planes (docs/input.md, "&beam"): `planes`, 1 when not given.
+   pure integer function plane_count(self)
+      class(beam_settings), intent(in) :: self
+      plane_count = 1
+      if (self%planes /= unset_integer) plane_count = self%planes
+   end function plane_count
+
+   !> &beam planes and inertia_z (docs/input.md, "&beam"; docs/method.md, "Two bending
+   !! planes and tube-support contact"): `inertia_z` belongs to a beam of two planes given
+   !! by its four physical data (a beam of k2 or of sections has no z stiffness of its own
+   !! yet). What else a beam of two planes does not take yet is the scene's rule
+   !! (`vibrobeam_scene_rules`, `plane_rules`).
+   subroutine check_planes(beam, stat, errmsg)
+      type(beam_settings), intent(in) :: beam
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=:), allocatable :: given
+      errmsg = ''
+      if (.not. is_unset(beam%inertia_z)) then
+         given = '&beam inertia_z = '//real_text(beam%inertia_z)//' m^4 '
+         if (beam%plane_count() == 1) then
+            errmsg = given//'is given with planes = 1: a planar beam bends in y only, about inertia; give '// &
+                     'planes = 2 or remove inertia_z'
+         else if (beam%sectioned() .or. .not. beam%physical()) then
+            errmsg = given//'needs a beam given by youngs_modulus, density, area and inertia (not by k2 or '// &
+                     '&sections); remove inertia_z or give the four'
+         end if
+      end if
+      stat = merge(stat_failure, 0, len_trim(errmsg) > 0)
+   end subroutine check_planes
 
    !> Unknowns J of the mesh whose supports impose `held` conditions (a held deflection or
    !! rotation each; `beam_structure%held_count`; 2, the clamp, when absent): its degrees

@@ -27,7 +27,7 @@ module vibrobeam_initial_state
    use vibrobeam_table_file, only: linear_table, read_table, outside_beam
    use vibrobeam_model, only: beam_model, interpolate_field, flexibility_applies
    use vibrobeam_modes, only: compute_modes
-   use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, text_row, &
+   use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, text_row, unset, &
       keyword_length, path_length
    implicit none
    private
@@ -43,6 +43,10 @@ module vibrobeam_initial_state
       real(dp) :: velocity_amplitude = 0   !! m/s ('mode', 'uniform') or rad/s ('rotation')
       character(len=path_length) :: velocity_profile = ''   !! 'profile': file of (x, v) pairs
       character(len=path_length) :: from_file = ''   !! continue from this results file ('' = no)
+      !> with &beam planes = 2: the directions of the initial velocity (`direction`) and of
+      !! the initial displacement, degrees from y towards z (unset: 0, along y; listed only
+      !! when given)
+      real(dp) :: direction = unset, displacement_direction = unset
    end type initial_settings
 
 contains
@@ -72,6 +76,12 @@ contains
       call visitor%variable(text_row('initial', 'from_file', path_length, &
                                      'continue from the final state or last checkpoint of this results file'), &
                             initial%from_file)
+      call visitor%variable(real_row('initial', 'direction', 'deg', -360.0_dp, 360.0_dp, &
+                                     'with &beam planes = 2: direction of the initial velocity, from y towards z '// &
+                                     '(default 0)', optional=.true.), initial%direction)
+      call visitor%variable(real_row('initial', 'displacement_direction', 'deg', -360.0_dp, 360.0_dp, &
+                                     'with &beam planes = 2: direction of the initial displacement, from y towards '// &
+                                     'z (default 0)', optional=.true.), initial%displacement_direction)
    end subroutine visit_initial
 
    !> Unknowns of amplitude * (mode `mode`, 1 at the tip) on the mesh: the closed form of

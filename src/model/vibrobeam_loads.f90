@@ -15,6 +15,7 @@
 !! velocity scheme adds it at V^n.
 module vibrobeam_loads
    use vibrobeam_kinds, only: dp
+   use vibrobeam_planes, only: direction_shares
    use vibrobeam_model, only: beam_model, load_vector, point_load_vector, unit_profile, add_inertial_excess
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, unset, is_unset
    use vibrobeam_namelist_schema, only: namelist_variable
@@ -34,6 +35,9 @@ module vibrobeam_loads
       real(dp) :: base_acceleration = 0       !! amplitude of the support's acceleration (m/s^2), instead of base_amplitude
       !> the frequencies in Hz (`vibrobeam_frequency_twins`): each the rad/s one over 2 pi
       real(dp) :: distributed_frequency_hz = 0, point_frequency_hz = 0, base_frequency_hz = 0
+      !> with &beam planes = 2: the direction of every load of &load, degrees from y towards
+      !! z (unset: 0, along y; listed only when given)
+      real(dp) :: direction = unset
    contains
       procedure :: base_load_amplitude
    end type load_settings
@@ -53,6 +57,9 @@ module vibrobeam_loads
       real(dp), allocatable :: mass_points(:)
       type(force_set) :: forces              !! the loads of &forces
       type(fluid_elastic) :: flow            !! the fluid-elastic force of &flow (flow%active: it acts)
+      !> (cos, sin) of &load direction: a stepper of two planes turns F(t), given in y, by
+      !! them (`spread_planes`); (1, 0) along y
+      real(dp) :: shares(2) = [1.0_dp, 0.0_dp]
    contains
       procedure :: at => load_at
       procedure :: evaluate => load_evaluate
@@ -90,6 +97,9 @@ contains
       call visitor%variable(real_row('load', 'base_acceleration', 'm/s^2', -1e15_dp, 1e15_dp, &
                                      'amplitude of the support''s acceleration, instead of base_amplitude'), &
                             load%base_acceleration)
+      call visitor%variable(real_row('load', 'direction', 'deg', -360.0_dp, 360.0_dp, &
+                                     'with &beam planes = 2: direction of the loads, from y towards z (default 0)', &
+                                     optional=.true.), load%direction)
    end subroutine visit_load
 
    !> Amplitude of the support's acceleration, A Omega_b^2 or &load base_acceleration
@@ -122,6 +132,7 @@ contains
          loads%base_load = rho_s*load%base_amplitude*load%base_frequency**2
       end if
       loads%base_frequency = load%base_frequency
+      if (.not. is_unset(load%direction)) loads%shares = direction_shares(load%direction)
       loads%present = abs(loads%distributed) > 0 .or. abs(loads%point_force) > 0 .or. abs(loads%base_load) > 0
       loads%uniform = load_vector(model, unit_profile)
       ! the base's inertial load acts on the point masses too, -m_k s''(t) at x_k, and on the

@@ -30,13 +30,14 @@ module vibrobeam_obstacles
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, text_row, keyword_length, &
-      path_length
+      path_length, unset, is_unset
    use vibrobeam_table_file, only: linear_table, read_table, outside_beam
    use vibrobeam_model, only: beam_model, node_row
    use vibrobeam_contact_set, only: contact_set, no_bound
+   use vibrobeam_circle_set, only: circle_set
    implicit none
    private
-   public :: obstacle_type, max_obstacles, visit_obstacles, build_contact_points
+   public :: obstacle_type, max_obstacles, visit_obstacles, build_contact_points, build_circle_points
 
    !> most obstacles a scene may hold (a tube through 100 baffles has 200 stops); memory and
    !! cost follow the obstacles given, this bounds only the reading of the input
@@ -56,6 +57,13 @@ module vibrobeam_obstacles
       !> file of (x, level) pairs (m, m), linear in between: the surface instead of
       !! level_from/level_to ('' = none)
       character(len=path_length) :: profile = ''
+      !> 'level' (a flat side, bounds u from below or above: the default, '') | 'circle' (a
+      !! round hole in the cross-section of a beam of two planes: R - |(v, w) - c| >= 0)
+      character(len=keyword_length) :: shape = ''
+      real(dp) :: radius = unset                    !! R of a circle (m)
+      real(dp) :: center_y = unset, center_z = unset   !! its centre (m); unset: 0
+   contains
+      procedure :: circle                           !! is it a circle?
    end type obstacle_type
 
    !> What the obstacles make of the nodes 0..N (0 the clamp) while the contact points
@@ -116,6 +124,15 @@ contains
          call visitor%variable(text_row('obstacles', 'profile', path_length, 'file of (x, level) pairs (m, m), '// &
                                         'linear in between: the surface, instead of level_from and level_to', n, i), &
                                o%profile)
+         call visitor%variable(keyword_row('obstacles', 'shape', 'level|circle', keyword_length, &
+                                           'level: a flat side (default); circle: a round hole in the cross-section '// &
+                                           '(&beam planes = 2)', n, i, optional=.true.), o%shape)
+         call visitor%variable(real_row('obstacles', 'radius', 'm', 1e-12_dp, 1e6_dp, &
+                                        'radius of a circle', n, i, optional=.true.), o%radius)
+         call visitor%variable(real_row('obstacles', 'center_y', 'm', -1e6_dp, 1e6_dp, &
+                                        'centre of a circle in y (default 0)', n, i, optional=.true.), o%center_y)
+         call visitor%variable(real_row('obstacles', 'center_z', 'm', -1e6_dp, 1e6_dp, &
+                                        'centre of a circle in z (default 0)', n, i, optional=.true.), o%center_z)
       end subroutine visit_one
    end subroutine visit_obstacles
 
@@ -137,6 +154,7 @@ contains
       if (stat /= 0) return
       call nodes%init(model%elements, size(obstacles))
       do k = 1, size(obstacles)
+         if (obstacles(k)%circle()) cycle   ! (`build_circle_points`)
          call covered_nodes(obstacles(k), k, model, first, last, warnings)
          call add_obstacle(obstacles(k), k, model, first, last, profiles(k), nodes)
       end do
@@ -145,6 +163,69 @@ contains
       call collect_points(nodes, model, contacts)
       call collect_springs(nodes, obstacles, contacts)
    end subroutine build_contact_points
+
+   !> The contact points of the circular obstacles on `model`'s mesh (a beam of two
+   !! planes, Hermite elements: the deflection at a node is one unknown): every node an
+   !! obstacle covers (`covered_nodes`) whose deflection no support holds. stat =
+   !! stat_failure when two circles cover one node (one hole per node and plane of
+   !! support, for now).
+   subroutine build_circle_points(obstacles, model, circles, warnings, stat, errmsg)
+      type(obstacle_type), intent(in) :: obstacles(:)
+      type(beam_model), intent(in) :: model
+      type(circle_set), intent(out) :: circles
+      character(len=:), allocatable, intent(inout) :: warnings
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: source(0:model%elements), k, i, first, last, dofs(4)
+      real(dp) :: weights(4)
+      stat = 0
+      errmsg = ''
+      source = 0
+      do k = 1, size(obstacles)
+         if (.not. obstacles(k)%circle()) cycle
+         call covered_nodes(obstacles(k), k, model, first, last, warnings)
+         do i = first, last
+            if (model%deflection_held(i)) cycle
+            if (source(i) /= 0) then
+               stat = stat_failure
+               errmsg = '&obstacles shape('//integer_text(k)//') = ''circle'' and shape('//integer_text(source(i))// &
+                        ') = ''circle'' both act at the node x = '//real_text(model%x(i + 1))//' m: give one '// &
+                        'circle per node'
+               return
+            end if
+            source(i) = k
+         end do
+      end do
+      circles%count = count(source > 0)
+      allocate (circles%node(circles%count), circles%x(circles%count), circles%dof(circles%count), &
+                circles%radius(circles%count), circles%center(2, circles%count), circles%obstacle(circles%count), &
+                circles%stiffness(circles%count), circles%exponent(circles%count), circles%damping(circles%count))
+      k = 0
+      do i = 0, model%elements
+         if (source(i) == 0) cycle
+         k = k + 1
+         circles%node(k) = i
+         circles%x(k) = model%x(i + 1)
+         call node_row(model, i, dofs, weights)
+         circles%dof(k) = dofs(1)   ! Hermite: the node's deflection, weight 1 (`plane_rules`)
+         associate (o => obstacles(source(i)))
+            circles%radius(k) = o%radius
+            circles%center(:, k) = [merge(0.0_dp, o%center_y, is_unset(o%center_y)), &
+                                    merge(0.0_dp, o%center_z, is_unset(o%center_z))]
+            circles%stiffness(k) = o%stiffness   ! a punctual circle (`plane_rules`): N/m^a at its node
+            circles%exponent(k) = o%exponent
+            circles%damping(k) = o%damping
+         end associate
+         circles%obstacle(k) = source(i)
+      end do
+      circles%compliant = circles%count > 0 .and. all(circles%stiffness > 0)
+   end subroutine build_circle_points
+
+   !> Is obstacle `self` a circle (&obstacles shape = 'circle')?
+   pure logical function circle(self)
+      class(obstacle_type), intent(in) :: self
+      circle = self%shape == 'circle'
+   end function circle
 
    !> The nodes first..last (0 the clamp) that obstacle k covers: the nearest node of a
    !! punctual one, every node in [x_from, x_to] of a longitudinal one (1e-9 h

@@ -172,6 +172,24 @@ contains
       allocate (scene%obstacles(count))
       do i = 1, count
          number = integer_text(i)
+         if (read(i)%circle()) then
+            ! a circle: its radius and centre, none of a level's variables
+            if (.not. scanned%is_given('obstacles', 'radius', i)) then
+               errmsg = '&obstacles radius('//number//') is missing: shape('//number//') = ''circle'' needs the '// &
+                        'radius (m) of the hole'
+               return
+            end if
+            if (given_of_level(i) /= '') then
+               errmsg = '&obstacles '//given_of_level(i)//'('//number//') is given for shape('//number// &
+                        ') = ''circle'': a circle has radius, center_y and center_z; remove it'
+               return
+            end if
+            scene%obstacles(i) = read(i)
+            scene%obstacles(i)%side = 'below'   ! (unused by a circle)
+            if (.not. scanned%is_given('obstacles', 'x_from', i)) scene%obstacles(i)%x_from = scene%beam%length
+            if (.not. scanned%is_given('obstacles', 'x_to', i)) scene%obstacles(i)%x_to = scene%obstacles(i)%x_from
+            cycle
+         end if
          if (.not. scanned%is_given('obstacles', 'side', i)) then
             errmsg = '&obstacles side('//number//') is missing: give ''below'' or ''above'''
             return
@@ -179,6 +197,12 @@ contains
          if (.not. (scanned%is_given('obstacles', 'level_from', i) .or. scanned%is_given('obstacles', 'profile', i))) then
             errmsg = '&obstacles level_from('//number//') is missing: give the height (m) of the obstacle surface '// &
                      '(or its profile('//number//'))'
+            return
+         end if
+         if (scanned%is_given('obstacles', 'radius', i) .or. scanned%is_given('obstacles', 'center_y', i) .or. &
+             scanned%is_given('obstacles', 'center_z', i)) then
+            errmsg = '&obstacles radius('//number//'), center_y('//number//') or center_z('//number//') is given '// &
+                     'for a level obstacle: give shape('//number//') = ''circle'' or remove them'
             return
          end if
          scene%obstacles(i) = read(i)
@@ -191,6 +215,22 @@ contains
       do i = 1, count
          call beside_input(filename, 'obstacles', 'profile', scene%obstacles(i)%profile, stat, errmsg, i)
       end do
+   contains
+      !> The first variable of a level obstacle given for obstacle i ('' none).
+      function given_of_level(i) result(name)
+         integer, intent(in) :: i
+         character(len=:), allocatable :: name
+         character(len=10), parameter :: names(4) = [character(len=10) :: 'side', 'level_from', 'level_to', &
+                                                     'profile']
+         integer :: k
+         name = ''
+         do k = 1, size(names)
+            if (scanned%is_given('obstacles', trim(names(k)), i)) then
+               name = trim(names(k))
+               return
+            end if
+         end do
+      end function given_of_level
    end subroutine resolve_obstacles
 
    !> The frequencies given in Hz (docs/input.md, "Frequencies in Hz"): a twin and its

@@ -9,6 +9,7 @@ module vibrobeam_scene_rules
    use vibrobeam_schema_visitor, only: is_unset
    use vibrobeam_schema_operations, only: schema_checker
    use vibrobeam_boundary, only: boundary_conditions
+   use vibrobeam_beam_settings, only: check_planes
    use vibrobeam_structure, only: beam_structure
    use vibrobeam_section_settings, only: check_sections, max_sections
    use vibrobeam_buckling, only: check_compression
@@ -82,6 +83,7 @@ contains
          call check_initial(copy%initial, stat, errmsg)
       call output_rules(copy, stat, errmsg)
       if (copy%analysis%kind == 'periodic') call periodic_rules(copy, stat, errmsg)
+      call plane_rules(copy, stat, errmsg)
    end subroutine validate_scene
 
    !> &beam: the four physical data go together; &mesh: a reduced model cannot continue a
@@ -98,6 +100,7 @@ contains
             call check_given('area', beam%area)
             call check_given('inertia', beam%inertia)
          end if
+         if (stat == 0) call check_planes(beam, stat, errmsg)
          if (mesh%reduction /= 'none' .and. steps_in_time(scene) .and. len_trim(scene%initial%from_file) > 0) &
             call fail(stat, errmsg, '&mesh reduction = '''//trim(mesh%reduction)//''' cannot continue a checkpoint '// &
                       '(&initial from_file): its state is in reduced coordinates; use reduction = ''none''')
@@ -397,6 +400,82 @@ contains
          end if
       end associate
    end subroutine output_rules
+
+   !> &beam planes (docs/input.md, "&beam"): a planar beam takes no direction (like
+   !! inertia_z, it would be unused); with planes = 2, what the two-plane model does not
+   !! take yet, each refused by name (issue 21 builds them in turn). Built: the free flight
+   !! of the velocity scheme with the loads of &load and the initial data of &initial, each
+   !! turned by its direction, end supports, &supports, &masses and the axial force.
+   subroutine plane_rules(scene, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      character(len=*), parameter :: planar = ' is not available with &beam planes = 2 yet (issue 21: the two-plane '// &
+                                              'model runs the velocity scheme, with circular holes, so far); '
+      integer :: i
+      if (scene%beam%plane_count() == 1) then
+         call no_direction('load', 'direction', scene%load%direction)
+         call no_direction('initial', 'direction', scene%initial%direction)
+         call no_direction('initial', 'displacement_direction', scene%initial%displacement_direction)
+         do i = 1, size(scene%obstacles)
+            if (scene%obstacles(i)%circle()) &
+               call fail(stat, errmsg, '&obstacles shape('//integer_text(i)//') = ''circle'' needs &beam planes = 2: '// &
+                         'a hole in the cross-section holds both deflections; give planes = 2, or shape = ''level''')
+         end do
+         return
+      end if
+      do i = 1, size(scene%obstacles)
+         associate (o => scene%obstacles(i))
+            if (.not. o%circle()) &
+               call fail(stat, errmsg, '&obstacles shape('//integer_text(i)//') = ''level'''//planar// &
+                         'give shape('//integer_text(i)//') = ''circle''')
+            ! a compliant circle is a support plate's hole: one node (its stiffness per node)
+            if (o%stiffness > 0 .and. o%x_to > o%x_from) &
+               call fail(stat, errmsg, '&obstacles stiffness('//integer_text(i)//') = '//real_text(o%stiffness)// &
+                         ' N/m with x_to('//integer_text(i)//') > x_from (a compliant circle along the beam)'// &
+                         planar//'a compliant circle acts at one node: give x_to = x_from')
+            if (o%stiffness > 0 .neqv. scene%obstacles(1)%stiffness > 0) &
+               call fail(stat, errmsg, '&obstacles stiffness('//integer_text(i)//') = '//real_text(o%stiffness)// &
+                         ' N/m and stiffness(1) = '//real_text(scene%obstacles(1)%stiffness)//' N/m (rigid and '// &
+                         'compliant circles together)'//planar//'make every circle rigid or every one compliant')
+         end associate
+      end do
+      if (size(scene%obstacles) > 0 .and. scene%mesh%basis /= 'hermite') &
+         call fail(stat, errmsg, '&mesh basis = '''//trim(scene%mesh%basis)//''' with circular obstacles'//planar// &
+                   'allowed: ''hermite''')
+      if (scene%analysis%kind /= 'dynamics') &
+         call fail(stat, errmsg, '&analysis kind = '''//trim(scene%analysis%kind)//''''//planar//'allowed: ''dynamics''')
+      if (scene%time%scheme /= 'velocity') &
+         call fail(stat, errmsg, '&time scheme = '''//trim(scene%time%scheme)//''''//planar//'allowed: ''velocity''')
+      if (scene%mesh%reduction /= 'none') &
+         call fail(stat, errmsg, '&mesh reduction = '''//trim(scene%mesh%reduction)//''''//planar//'allowed: ''none''')
+      if (scene%beam%modal()) &
+         call fail(stat, errmsg, '&beam modal_damping (or modal_damping_ratios)'//planar// &
+                   'give Rayleigh damping (rayleigh_mass, rayleigh_stiffness)')
+      if (scene%flow%velocity > 0) &
+         call fail(stat, errmsg, '&flow velocity = '//real_text(scene%flow%velocity)//' m/s'//planar//'allowed: 0')
+      if (allocated(scene%forces%load)) then
+         if (size(scene%forces%load) > 0) &
+            call fail(stat, errmsg, '&forces count = '//integer_text(size(scene%forces%load))//planar// &
+                      'give the loads in &load, with its direction')
+      end if
+      if (len_trim(scene%initial%from_file) > 0) &
+         call fail(stat, errmsg, '&initial from_file = '''//trim(scene%initial%from_file)//''''//planar// &
+                   'a checkpoint does not record its planes yet; start from initial data')
+      if (scene%initial%displacement == 'static') &
+         call fail(stat, errmsg, '&initial displacement = ''static'''//planar//'allowed: ''zero'', ''mode''')
+      if (scene%output%lyapunov) &
+         call fail(stat, errmsg, '&output lyapunov = .true.'//planar//'allowed: .false.')
+   contains
+      !> A direction given to a planar beam.
+      subroutine no_direction(group, name, value)
+         character(len=*), intent(in) :: group, name
+         real(dp), intent(in) :: value
+         if (.not. is_unset(value)) &
+            call fail(stat, errmsg, '&'//group//' '//name//' = '//real_text(value)//' deg is given with &beam planes '// &
+                      '= 1: a planar beam moves in y only; give planes = 2 or remove '//name)
+      end subroutine no_direction
+   end subroutine plane_rules
 
    !> stat = stat_failure and errmsg = message, unless an earlier violation is kept
    !! (stat /= 0).

@@ -42,6 +42,12 @@ contains
          errmsg = '&sweep needs &analysis kind = ''dynamics'' (kind = '''//trim(scene%analysis%kind)//''')'
          return
       end if
+      if (scene%beam%plane_count() == 2) then
+         stat = stat_failure
+         errmsg = '&sweep is not available with &beam planes = 2 yet (issue 21: the two-plane model runs single '// &
+                  'dynamics runs so far); give planes = 1'
+         return
+      end if
       call check_keyword('mode', settings%mode, stat, errmsg)
       if (stat == 0) call check_keyword('spacing', settings%axis(1)%spacing, stat, errmsg)
       if (stat == 0) call check_keyword('spacing2', settings%axis(2)%spacing, stat, errmsg)

@@ -5,12 +5,14 @@
 module vibrobeam_time_stepper
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_status, only: stat_residual_check_failed
-   use vibrobeam_band, only: symmetric_band, band_cholesky, band_matvec, band_combination, band_factor
+   use vibrobeam_band, only: symmetric_band, band_cholesky, band_matvec, band_combination, band_factor, &
+      band_residual_solve
    use vibrobeam_contact_set, only: contact_set
    use vibrobeam_contact_projector, only: contact_projector, contact_method_code
    use vibrobeam_contact_options, only: contact_options
    use vibrobeam_loads, only: load_set
    use vibrobeam_discrete_system, only: discrete_system
+   use vibrobeam_circle_set, only: circle_set
    use vibrobeam_state_record, only: state_record
    use vibrobeam_compliant_law, only: stop_potential, rule_gradient
    use vibrobeam_compliant_solver, only: compliant_solver
@@ -72,6 +74,13 @@ module vibrobeam_time_stepper
       !> force of the compliant stops on each contact point at t (N, positive upwards;
       !! 0 at rigid-only points)
       real(dp), allocatable :: contact_force(:)
+      !> the circular holes' points the step held (two planes): the first circle_count of
+      !! circle_active, each with its impulse (N s, along circle_normal, the inward unit
+      !! normal at the predicted position) and normal velocities before and after (m/s,
+      !! positive inwards)
+      integer :: circle_count = 0
+      integer, allocatable :: circle_active(:)
+      real(dp), allocatable :: circle_impulse(:), circle_normal(:, :), circle_before(:), circle_after(:)
    end type step_report
 
    !> The running sums of the energy balance since t = 0 (each scheme says how it defines
@@ -100,6 +109,14 @@ module vibrobeam_time_stepper
       type(symmetric_band) :: mass, stiffness
       type(symmetric_band) :: iteration_matrix     !! W of the scheme, factored once per run
       type(band_cholesky) :: iteration_factor
+      !> bending planes (docs/method.md, "Two bending planes"): u and v hold planes x J
+      !! unknowns, y then z; M is both planes', K and W the y plane's and, when the z plane
+      !! has a stiffness of its own (own_z), stiffness_z and W_z (else z shares K and W)
+      integer :: planes = 1
+      logical :: own_z = .false.
+      type(symmetric_band) :: stiffness_z, iteration_matrix_z
+      type(band_cholesky) :: iteration_factor_z
+      type(circle_set) :: circles                  !! the points of circular holes (two planes)
       type(contact_set) :: contacts
       type(contact_projector) :: projector
       type(load_set) :: loads
@@ -124,6 +141,9 @@ module vibrobeam_time_stepper
       procedure :: set_up_system
       procedure :: damping_times
       procedure :: damping_into
+      procedure :: mass_into
+      procedure :: stiffness_into
+      procedure :: free_solve
       procedure :: add_modal_damping
       procedure :: save_state => save_stepper_state
       procedure :: restore_state => restore_stepper_state
@@ -153,11 +173,11 @@ module vibrobeam_time_stepper
 
 contains
 
-   !> 1/2 V^T M V (J; per unit mass when the beam is given by k2).
+   !> 1/2 V^T M V (J; per unit mass when the beam is given by k2; both planes').
    function kinetic_energy(self) result(energy)
       class(time_stepper), intent(in) :: self
       real(dp) :: energy, mv(size(self%v))
-      call band_matvec(self%mass, self%v, mv)
+      call self%mass_into(self%v, mv)
       energy = 0.5_dp*dot_product(self%v, mv)
    end function kinetic_energy
 
@@ -178,11 +198,11 @@ contains
       norm = sqrt(max(0.0_dp, norm + dot_product(v, mx)))
    end function energy_norm
 
-   !> 1/2 U^T K U (J).
+   !> 1/2 U^T K U (J; both planes', K_z in z).
    function elastic_energy(self) result(energy)
       class(time_stepper), intent(in) :: self
       real(dp) :: energy, ku(size(self%u))
-      call band_matvec(self%stiffness, self%u, ku)
+      call self%stiffness_into(self%u, ku)
       energy = 0.5_dp*dot_product(self%u, ku)
    end function elastic_energy
 
@@ -199,15 +219,21 @@ contains
       end associate
    end function spring_penetrations
 
-   !> Energy stored in the compliant stops, sum_j Phi_j(p_j) (J).
+   !> Energy stored in the compliant stops, sum_j Phi_j(p_j) (J), the compliant circles' too.
    function contact_potential(self) result(energy)
       class(time_stepper), intent(in) :: self
       real(dp) :: energy
+      integer :: k
       associate (springs => self%contacts%springs)
          energy = 0
          if (springs%count > 0) &
             energy = sum(stop_potential(springs%stiffness, springs%exponent, self%spring_penetrations(self%u)))
       end associate
+      if (.not. self%circles%compliant) return
+      do k = 1, self%circles%count   ! the compliant circles' springs, on the radial penetration
+         energy = energy + stop_potential(self%circles%stiffness(k), self%circles%exponent(k), &
+                                          self%circles%penetration(k, self%u))
+      end do
    end function contact_potential
 
    !> Energy bookkeeping of the compliant stops over a step whose penetrations go from p0
@@ -312,6 +338,19 @@ contains
                                                system%model%stiffness)
       call band_factor(self%iteration_matrix, self%iteration_factor, stat, errmsg)
       if (stat /= 0) return
+      self%planes = system%planes
+      self%circles = system%circles
+      n = system%circles%count
+      allocate (self%report%circle_active(n), self%report%circle_impulse(n), self%report%circle_normal(2, n), &
+                self%report%circle_before(n), self%report%circle_after(n))
+      self%own_z = allocated(system%stiffness_z)
+      if (self%own_z) then
+         self%stiffness_z = system%stiffness_z
+         self%iteration_matrix_z = band_combination(mass_coefficient, system%model%mass, stiffness_coefficient, &
+                                                    system%stiffness_z)
+         call band_factor(self%iteration_matrix_z, self%iteration_factor_z, stat, errmsg)
+         if (stat /= 0) return
+      end if
       associate (contact => settings%contact)
          call self%projector%setup(self%iteration_matrix, self%iteration_factor, system%contacts, contact%contact_solver)
          if (system%contacts%springs%count > 0) &
@@ -407,14 +446,68 @@ contains
       real(dp), intent(out) :: y(:), z(:)
       y = 0
       if (self%rayleigh_mass > 0) then
-         call band_matvec(self%mass, x, z)
+         call self%mass_into(x, z)
          y = self%rayleigh_mass*z
       end if
       if (self%rayleigh_stiffness > 0) then
-         call band_matvec(self%stiffness, x, z)
+         call self%stiffness_into(x, z)
          y = y + self%rayleigh_stiffness*z
       end if
    end subroutine damping_into
+
+   !> y = M x into preallocated y: one band product per plane (the planes share M).
+   subroutine mass_into(self, x, y)
+      class(time_stepper), intent(in) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(out) :: y(:)
+      integer :: j
+      if (self%planes == 1) then
+         call band_matvec(self%mass, x, y)
+      else
+         j = size(x)/2
+         call band_matvec(self%mass, x(1:j), y(1:j))
+         call band_matvec(self%mass, x(j + 1:), y(j + 1:))
+      end if
+   end subroutine mass_into
+
+   !> y = K x into preallocated y: K in y, K_z (or K) in z.
+   subroutine stiffness_into(self, x, y)
+      class(time_stepper), intent(in) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(out) :: y(:)
+      integer :: j
+      if (self%planes == 1) then
+         call band_matvec(self%stiffness, x, y)
+      else
+         j = size(x)/2
+         call band_matvec(self%stiffness, x(1:j), y(1:j))
+         if (self%own_z) then
+            call band_matvec(self%stiffness_z, x(j + 1:), y(j + 1:))
+         else
+            call band_matvec(self%stiffness, x(j + 1:), y(j + 1:))
+         end if
+      end if
+   end subroutine stiffness_into
+
+   !> y = W^-1 (b - K x), plane by plane (`band_residual_solve`: the fused kernel of each
+   !! plane's band; W_z and K_z in z when it has its own, else W and K again).
+   subroutine free_solve(self, x, b, y)
+      class(time_stepper), intent(in) :: self
+      real(dp), intent(in) :: x(:), b(:)
+      real(dp), intent(out) :: y(:)
+      integer :: j
+      if (self%planes == 1) then
+         call band_residual_solve(self%iteration_factor, self%stiffness, x, b, y)
+      else
+         j = size(x)/2
+         call band_residual_solve(self%iteration_factor, self%stiffness, x(1:j), b(1:j), y(1:j))
+         if (self%own_z) then
+            call band_residual_solve(self%iteration_factor_z, self%stiffness_z, x(j + 1:), b(j + 1:), y(j + 1:))
+         else
+            call band_residual_solve(self%iteration_factor, self%stiffness, x(j + 1:), b(j + 1:), y(j + 1:))
+         end if
+      end if
+   end subroutine free_solve
 
    !> y := y + C_m x = y + Y (c * (Y^T x)): the damping per mode (`stepper_settings`), 4 J K
    !! operations (docs/method.md, "Damping per mode").

@@ -7,6 +7,7 @@
 !!                                                fused | step)
 !!   benchmark_kernel modes METHOD BASIS N COUNT  one compute_modes (lanczos | dense), timed
 !!   benchmark_kernel crossover                   dense against Lanczos for J and count
+!!   benchmark_kernel planes                      the two-plane layouts against a planar step
 !!
 !! Workloads, on the Hermite model of N = J/2 elements (k2 = 1, L = 1 m), W = M + (theta
 !! dt)^2 K with theta = 1/2, dt = 1e-4 s, and a fixed vector x:
@@ -17,7 +18,14 @@
 !!   forward loop (one more subtraction than the two above);
 !! - step: one step of the velocity stepper in free flight (mode-1 velocity, tip 0.1 m/s,
 !!   a stop 1 m below the tip that is never reached), set up as the main program does;
-!! - the solve and the product alone, each way.
+!! - the solve and the product alone, each way;
+!! - stacked: the 'lapack' workload for two bending planes stored as a J x 2 array
+!!   (docs/method.md, "Two bending planes and tube-support contact"): dsbmv on each plane,
+!!   then one dpbtrs with two right-hand sides, the factor shared;
+!! - interleaved: the same with (y_j, z_j) side by side, one band of order 2J and
+!!   half-width 7 (dsbmv and dpbtrs with kd = 7), the layout the design rejects;
+!! - stacked fused: the 'fused' workload on each of the two stacked planes (the kd = 3
+!!   kernel the velocity stepper uses, which has no counterpart of half-width 7).
 !! Timing: each workload runs in batches of at least `min_batch_seconds` (sized once), the
 !! batches of all workloads in turn, `repetitions` times; medians of the time per call, the
 !! spread (max - min)/median and the smallest CPU/wall ratio say how noisy a row was.
@@ -41,10 +49,13 @@ program benchmark_kernel
    real(dp), parameter :: min_batch_seconds = 0.05_dp
    real(dp), parameter :: time_step = 1e-4_dp, theta = 0.5_dp
    integer, parameter :: workload_lapack = 1, workload_kernel = 2, workload_fused = 3, workload_step = 4, &
-                         workload_dpbtrs = 5, workload_solve = 6, workload_dsbmv = 7, workload_matvec = 8
-   character(len=*), parameter :: workload_names(8) = [character(len=14) :: 'dpbtrs+dsbmv', 'solve+matvec', &
-                                                       'fused', 'step', 'dpbtrs', 'solve (kd=3)', 'dsbmv', &
-                                                       'matvec (kd=3)']
+                         workload_dpbtrs = 5, workload_solve = 6, workload_dsbmv = 7, workload_matvec = 8, &
+                         workload_stacked = 9, workload_interleaved = 10, workload_stacked_fused = 11, &
+                         workload_step_two = 12, workload_step_two_own = 13
+   character(len=*), parameter :: workload_names(13) = [character(len=14) :: 'dpbtrs+dsbmv', 'solve+matvec', &
+                                                        'fused', 'step', 'dpbtrs', 'solve (kd=3)', 'dsbmv', &
+                                                        'matvec (kd=3)', 'stacked', 'interleaved', 'stacked fused', &
+                                                        'step 2 planes', 'step 2, own Kz']
 
    !> Everything a workload works on.
    type :: bench_case
@@ -53,7 +64,13 @@ program benchmark_kernel
       type(band_cholesky) :: kernel_factor              !! band_factor(W)
       real(dp), allocatable :: lapack_factor(:,:)       !! dpbtrf(W)
       real(dp), allocatable :: x(:), y(:), b(:)
+      !> two planes: stacked (J x 2) and interleaved (2J; its K and the dpbtrf factor of
+      !! its W, half-width 7, lower storage)
+      real(dp), allocatable :: x2(:,:), y2(:,:), xi(:), yi(:), stiffness_i(:,:), factor_i(:,:)
       class(time_stepper), allocatable :: stepper
+      !> the free flight of two planes (&beam planes = 2, velocity at 45 degrees: both
+      !! planes move), sharing W, and with a z stiffness of its own (inertia_z = 2 inertia)
+      class(time_stepper), allocatable :: stepper_two, stepper_two_own
    end type bench_case
 
    character(len=32) :: command
@@ -67,9 +84,11 @@ program benchmark_kernel
       call time_modes()
    case ('crossover')
       call crossover_table()
+   case ('planes')
+      call planes_table()
    case default
       write (error_unit, '(a)') 'usage: benchmark_kernel kernel | count WORKLOAD J CALLS | '// &
-         'modes METHOD BASIS N COUNT | crossover'
+         'modes METHOD BASIS N COUNT | crossover | planes'
       error stop 2
    end select
 
@@ -117,6 +136,18 @@ contains
       call new_stepper(scene, prepared, case%stepper, stat, errmsg)
       if (stat /= 0) call fail('start_time_stepper', stat, errmsg)
       case%model = prepared%model
+      ! two planes, no obstacle (not taken yet with planes = 2); the beam by its four data
+      ! with k2 = EI/(rho S) = 1, as above
+      scene%obstacles = [obstacle_type ::]
+      scene%beam%youngs_modulus = 1
+      scene%beam%density = 1
+      scene%beam%area = 1
+      scene%beam%inertia = 1
+      scene%beam%planes = 2
+      scene%initial%direction = 45
+      call two_plane_stepper(scene, case%stepper_two)
+      scene%beam%inertia_z = 2
+      call two_plane_stepper(scene, case%stepper_two_own)
       case%iteration_matrix = band_combination(1.0_dp, case%model%mass, (theta*time_step)**2, case%model%stiffness)
       call band_factor(case%iteration_matrix, case%kernel_factor, stat, errmsg)
       if (stat /= 0) call fail('band_factor', stat, errmsg)
@@ -126,7 +157,45 @@ contains
       case%x = [(sin(0.01_dp*i), i=1, unknowns)]
       case%b = [(cos(0.02_dp*i), i=1, unknowns)]
       allocate (case%y(unknowns))
+      case%x2 = reshape([case%x, case%b], [unknowns, 2])
+      allocate (case%y2(unknowns, 2), case%yi(2*unknowns))
+      case%xi = reshape(transpose(case%x2), [2*unknowns])
+      case%stiffness_i = interleaved(case%model%stiffness%lower)
+      case%factor_i = interleaved(case%iteration_matrix%lower)
+      call dpbtrf('L', 2*unknowns, 7, case%factor_i, 8, stat)
+      if (stat /= 0) call fail('dpbtrf (interleaved)', stat, '')
    end subroutine set_up
+
+   !> The velocity stepper of a scene of two planes (validated and built as the program does).
+   subroutine two_plane_stepper(scene, stepper)
+      type(scene_type), intent(in) :: scene
+      class(time_stepper), allocatable, intent(out) :: stepper
+      type(run_problem) :: prepared
+      character(len=:), allocatable :: warnings
+      character(len=512) :: errmsg
+      integer :: stat
+      call validate_scene(scene, stat, errmsg)
+      if (stat /= 0) call fail('validate_scene (two planes)', stat, errmsg)
+      warnings = ''
+      call build_problem(scene, prepared, warnings, stat, errmsg)
+      if (stat /= 0) call fail('prepare_scene (two planes)', stat, errmsg)
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
+      if (stat /= 0) call fail('start_time_stepper (two planes)', stat, errmsg)
+   end subroutine two_plane_stepper
+
+   !> The band (lower storage, half-width 3) of one plane as the band of two planes
+   !! interleaved, (y_j, z_j) side by side with the same matrix in both: entry (i, k) goes
+   !! to (2i-1, 2k-1) and (2i, 2k), half-width 7.
+   pure function interleaved(lower) result(both)
+      real(dp), intent(in) :: lower(:,:)   !! (4, J)
+      real(dp) :: both(8, 2*size(lower, 2))
+      integer :: d
+      both = 0
+      do d = 0, 3
+         both(2*d + 1, 1::2) = lower(d + 1, :)
+         both(2*d + 1, 2::2) = lower(d + 1, :)
+      end do
+   end function interleaved
 
    !> `calls` calls of one workload.
    subroutine run(case, workload, calls)
@@ -161,6 +230,22 @@ contains
             call dsbmv('L', n, 3, 1.0_dp, case%model%stiffness%lower, 4, case%x, 1, 0.0_dp, case%y, 1)
          case (workload_matvec)
             call band_matvec(case%model%stiffness, case%x, case%y)
+         case (workload_stacked)
+            call dsbmv('L', n, 3, 1.0_dp, case%model%stiffness%lower, 4, case%x2(:, 1), 1, 0.0_dp, case%y2(:, 1), 1)
+            call dsbmv('L', n, 3, 1.0_dp, case%model%stiffness%lower, 4, case%x2(:, 2), 1, 0.0_dp, case%y2(:, 2), 1)
+            call dpbtrs('L', n, 3, 2, case%lapack_factor, 4, case%y2, n, info)
+         case (workload_interleaved)
+            call dsbmv('L', 2*n, 7, 1.0_dp, case%stiffness_i, 8, case%xi, 1, 0.0_dp, case%yi, 1)
+            call dpbtrs('L', 2*n, 7, 1, case%factor_i, 8, case%yi, 2*n, info)
+         case (workload_step_two)
+            call case%stepper_two%step(stat, errmsg)
+            if (stat /= 0) call fail('step (two planes)', stat, errmsg)
+         case (workload_step_two_own)
+            call case%stepper_two_own%step(stat, errmsg)
+            if (stat /= 0) call fail('step (two planes, own K_z)', stat, errmsg)
+         case (workload_stacked_fused)
+            call band_residual_solve(case%kernel_factor, case%model%stiffness, case%x2(:, 1), case%b, case%y2(:, 1))
+            call band_residual_solve(case%kernel_factor, case%model%stiffness, case%x2(:, 2), case%b, case%y2(:, 2))
          end select
       end do
    end subroutine run
@@ -183,15 +268,43 @@ contains
    end subroutine timed
 
 
+   !> Each workload's batch sized once to at least `min_batch_seconds`, then the batches of
+   !! all workloads in turn, `repetitions` times: the time per call of each (s) and the
+   !! smallest CPU/wall ratio of a batch.
+   subroutine batches(case, workloads, per_call, cpu_fraction)
+      type(bench_case), intent(inout) :: case
+      integer, intent(in) :: workloads(:)
+      real(dp), intent(out) :: per_call(:,:)   !! (repetitions, workloads)
+      real(dp), intent(out) :: cpu_fraction
+      integer(int64) :: calls(size(workloads))
+      real(dp) :: wall, cpu
+      integer :: w, k
+      do w = 1, size(workloads)
+         calls(w) = 1
+         do
+            call timed(case, workloads(w), calls(w), wall, cpu)
+            if (wall >= min_batch_seconds) exit
+            calls(w) = 2*calls(w)
+         end do
+      end do
+      cpu_fraction = 1
+      do k = 1, repetitions
+         do w = 1, size(workloads)
+            call timed(case, workloads(w), calls(w), wall, cpu)
+            per_call(k, w) = wall/calls(w)
+            cpu_fraction = min(cpu_fraction, cpu/wall)
+         end do
+      end do
+   end subroutine batches
+
    !> The wall-clock table: per J, each workload's median time per call, its spread, the
    !! ratios kernel/LAPACK and step/LAPACK.
    subroutine kernel_table()
       integer, parameter :: workloads(*) = [workload_lapack, workload_kernel, workload_fused, workload_step, &
                                             workload_dpbtrs, workload_solve, workload_dsbmv, workload_matvec]
       type(bench_case) :: case
-      real(dp) :: per_call(repetitions, size(workloads)), wall, cpu, cpu_fraction
-      integer(int64) :: calls(size(workloads))
-      integer :: s, w, k
+      real(dp) :: per_call(repetitions, size(workloads)), cpu_fraction
+      integer :: s, w
       write (output_unit, '(a)') '# time per call (microseconds): median of 7 interleaved batches of >= 0.05 s; '// &
          'spread = (max - min)/median'
       write (output_unit, '(a)') '# ratios to dpbtrs+dsbmv of solve+matvec, fused and step: medians of the paired '// &
@@ -200,22 +313,7 @@ contains
          'ratio kernel', 'ratio fused', 'ratio step', 'cpu/wall'
       do s = 1, size(sizes)
          call set_up(sizes(s), case)
-         do w = 1, size(workloads)
-            calls(w) = 1
-            do
-               call timed(case, workloads(w), calls(w), wall, cpu)
-               if (wall >= min_batch_seconds) exit
-               calls(w) = 2*calls(w)
-            end do
-         end do
-         cpu_fraction = 1
-         do k = 1, repetitions
-            do w = 1, size(workloads)
-               call timed(case, workloads(w), calls(w), wall, cpu)
-               per_call(k, w) = wall/calls(w)
-               cpu_fraction = min(cpu_fraction, cpu/wall)
-            end do
-         end do
+         call batches(case, workloads, per_call, cpu_fraction)
          write (output_unit, '(i8,8(f14.3,a2,f5.2,a3),3f14.3,f10.2)') sizes(s), &
             (1e6_dp*median(per_call(:, w)), ' (', (maxval(per_call(:, w)) - minval(per_call(:, w)))/ &
              median(per_call(:, w)), ') ', w=1, size(workloads)), &
@@ -223,6 +321,43 @@ contains
          flush (output_unit)
       end do
    end subroutine kernel_table
+
+   !> The two-plane table (docs/method.md, "Two bending planes and tube-support contact"):
+   !! per J, the medians of the planar LAPACK floor (dpbtrs+dsbmv), of its stacked and
+   !! interleaved two-plane versions, of the planar fused kd = 3 kernel and its stacked
+   !! version, of a planar free-flight step and of the velocity stepper's two-plane
+   !! free-flight steps (sharing W, and with K_z of its own) (microseconds); then, as
+   !! medians of the paired per-repetition ratios (all measured in one run):
+   !! stacked/planar and interleaved/planar with LAPACK, stacked/planar with the fused
+   !! kernel, the estimated cost of a two-plane step relative to the planar step had the
+   !! layout been interleaved, (step - fused + interleaved)/step (LAPACK at half-width 7,
+   !! there being no kd = 7 kernel), and the measured two-plane steps over the planar
+   !! step (issue 21's bound: 2.5).
+   subroutine planes_table()
+      integer, parameter :: workloads(*) = [workload_lapack, workload_stacked, workload_interleaved, &
+                                            workload_fused, workload_stacked_fused, workload_step, &
+                                            workload_step_two, workload_step_two_own]
+      type(bench_case) :: case
+      real(dp) :: per_call(repetitions, size(workloads)), cpu_fraction
+      integer :: s, w
+      write (output_unit, '(a)') '# time per call (microseconds): median of 7 interleaved batches of >= 0.05 s; '// &
+         'ratios: medians of the paired ratios'
+      write (output_unit, '(a8,8a15,6a15,a10)') 'J', (trim(workload_names(workloads(w))), w=1, size(workloads)), &
+         'stacked/floor', 'interl./floor', 'st.fused/fused', 'step interl.', '2 planes/step', 'own Kz/step', &
+         'cpu/wall'
+      do s = 1, size(sizes)
+         call set_up(sizes(s), case)
+         call batches(case, workloads, per_call, cpu_fraction)
+         associate (floor => per_call(:, 1), stacked => per_call(:, 2), interleaved => per_call(:, 3), &
+                    fused => per_call(:, 4), stacked_fused => per_call(:, 5), step => per_call(:, 6), &
+                    step_two => per_call(:, 7), step_own => per_call(:, 8))
+            write (output_unit, '(i8,8f15.3,6f15.3,f10.2)') sizes(s), (1e6_dp*median(per_call(:, w)), w=1, 8), &
+               median(stacked/floor), median(interleaved/floor), median(stacked_fused/fused), &
+               median((step - fused + interleaved)/step), median(step_two/step), median(step_own/step), cpu_fraction
+         end associate
+         flush (output_unit)
+      end do
+   end subroutine planes_table
 
    !> benchmark_kernel count WORKLOAD J CALLS
    subroutine count_calls()

@@ -1,0 +1,215 @@
+!> Verification of circular holes in the cross-section of a beam of two planes (issue 21;
+!! docs/method.md, "Circular obstacles"), on verification/dynamics/circle_planar.nml:
+!! (1) planar reduction: with loads and initial data in y, the beam in a hole of radius R
+!!     equals the planar beam between two levels at -R and +R (its planar twin, made in
+!!     code) at every step: the same points held with the same impulses, y to round-off
+!!     and z exactly 0 (the circle's normal at a point on the y axis is +-e_y);
+!! (2) a tube whirling in a centred frictionless hole, e = 1, theta = 1/2, no damping:
+!!     the discrete energy is conserved to round-off over 1e5 steps (Newton's law with
+!!     e = 1 makes each impulse's work p h.(V^{n+1} + V^n)/2 vanish), and the discrete
+!!     angular momentum about the axis too: the impulses are radial at the step's midpoint
+!!     (the normal's fixed point, docs/method.md), so they leave it unchanged (docs/
+!!     theory.md section 11); the fixed point converges in every step;
+!! (3) the same whirl in a compliant, undamped hole: E + Phi and L conserved to round-off
+!!     over 1e5 steps (the spring's force is the discrete gradient of its potential along
+!!     the midpoint's direction, docs/method.md);
+!! and (1) again with compliant stops (the circle's radial spring against the levels').
+program test_circle_holes
+   use vibrobeam_kinds, only: dp, output_unit
+   use vibrobeam_scene, only: scene_type
+   use vibrobeam_obstacles, only: obstacle_type
+   use vibrobeam_problem, only: run_problem, new_stepper
+   use vibrobeam_time_stepper, only: time_stepper
+   use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
+   implicit none
+   type(test_counter) :: t
+   type(scene_type) :: scene, whirl, compliant
+   type(run_problem) :: prepared
+   class(time_stepper), allocatable :: stepper
+   character(len=512) :: path, errmsg
+   real(dp), parameter :: eps = epsilon(1.0_dp)
+   real(dp) :: energy0, moment0, worst, worst_moment, reach, radius
+   integer :: n, steps, j, stat, held, solves
+   call get_command_argument(1, path)
+   scene = read_test_scene(trim(path))
+   steps = nint(scene%time%t_end/scene%time%dt)
+   radius = scene%obstacles(1)%radius
+
+   ! (1) the planar twin: levels at -R and +R over the same x, rigid and compliant
+   call planar_reduction(scene, 'rigid')
+   compliant = scene
+   compliant%obstacles(1)%stiffness = 1e6_dp
+   call planar_reduction(compliant, 'compliant (1e6 N/m)')
+
+   ! (2) a whirl in the hole: e = 1, theta = 1/2, no damping, no load
+   whirl = scene
+   whirl%impact%restitution = 1
+   whirl%initial%displacement = 'mode'
+   whirl%initial%displacement_amplitude = 0.5_dp*radius
+   whirl%initial%velocity_amplitude = 0.6_dp
+   whirl%initial%direction = 90
+   call prepare_test_scene(whirl, prepared)
+   call start(whirl, prepared, stepper)
+   energy0 = stepper%kinetic_energy() + stepper%elastic_energy()
+   moment0 = angular_momentum(stepper)
+   worst = 0
+   worst_moment = 0
+   held = 0
+   reach = 0
+   solves = 0
+   do n = 1, 100000
+      call advance(stepper)
+      worst = max(worst, abs(stepper%kinetic_energy() + stepper%elastic_energy() - energy0))
+      worst_moment = max(worst_moment, abs(angular_momentum(stepper) - moment0))
+      held = held + count(stepper%report%circle_impulse(1:stepper%report%circle_count) > 0)
+      reach = max(reach, norm2(stepper%circles%offset(1, stepper%u)))
+      solves = max(solves, stepper%report%iterations)
+   end do
+   write (output_unit, '(a,i0,a,es10.3,a,es10.3,a,es10.3)') 'whirl: ', held, ' impulses; largest |E - E0|/E0 ', &
+      worst/energy0, ', |L - L0|/|L0| ', worst_moment/abs(moment0), '; largest |r|/R ', reach/radius
+   call t%check_true('the whirl reaches the wall', held > 100)
+   call t%check_close('energy conserved in the hole (e = 1, theta = 1/2) over 1e5 steps', worst/energy0, 0.0_dp, &
+                      8*1e5_dp*eps, 1.0_dp)
+   ! as the energy: each step rounds L by a few eps of its scale, 8 n eps over n steps
+   call t%check_close('angular momentum about the axis conserved in the hole over 1e5 steps', &
+                      worst_moment/abs(moment0), 0.0_dp, 8*1e5_dp*eps, 1.0_dp)
+   write (output_unit, '(a,i0)') 'largest number of LCP solves of the midpoint normal in a step: ', solves
+   call t%check_true('the midpoint normal''s fixed point converges in every step (fewer than 50 solves)', solves < 50)
+
+   ! (3) the same whirl in a compliant, undamped hole (1e6 N/m, the 'gradient' rule):
+   ! E + Phi and L conserved to round-off over 1e5 steps
+   whirl%obstacles(1)%stiffness = 1e6_dp
+   call prepare_test_scene(whirl, prepared)
+   call start(whirl, prepared, stepper)
+   energy0 = stepper%kinetic_energy() + stepper%elastic_energy() + stepper%contact_potential()
+   moment0 = angular_momentum(stepper)
+   worst = 0
+   worst_moment = 0
+   reach = 0
+   solves = 0
+   do n = 1, 100000
+      call advance(stepper)
+      worst = max(worst, abs(stepper%kinetic_energy() + stepper%elastic_energy() + stepper%contact_potential() - energy0))
+      worst_moment = max(worst_moment, abs(angular_momentum(stepper) - moment0))
+      reach = max(reach, stepper%circles%penetration(1, stepper%u))
+      solves = max(solves, stepper%report%iterations)
+   end do
+   write (output_unit, '(a,es10.3,a,es10.3,a,es10.3,a,i0)') 'compliant whirl: largest |E + Phi - E0|/E0 ', &
+      worst/energy0, ', |L - L0|/|L0| ', worst_moment/abs(moment0), '; largest penetration / R ', reach/radius, &
+      '; Newton iterations at most ', solves
+   call t%check_true('the compliant whirl enters the wall', reach > 0.01_dp*radius)
+   call t%check_close('E + Phi conserved in the compliant hole (theta = 1/2) over 1e5 steps', worst/energy0, 0.0_dp, &
+                      8*1e5_dp*eps, 1.0_dp)
+   call t%check_close('angular momentum conserved in the compliant hole over 1e5 steps', worst_moment/abs(moment0), &
+                      0.0_dp, 8*1e5_dp*eps, 1.0_dp)
+   call t%finish('test_circle_holes')
+
+contains
+
+   !> The beam in the hole of `hole` against its planar twin between levels at -R and +R
+   !! (the same stiffness), every step: z exactly 0, y (U and V) within 10 times how far
+   !! rounding carries on this trajectory, measured on the twin itself: the largest
+   !! difference between the twin and the twin started one ulp faster (its initial
+   !! velocity's amplitude the next number up). The two runs round differently (a dense
+   !! LCP or Newton solve of the circle's rotated row, the planar projection or springs),
+   !! so they differ by their rounding carried on as the twin's own does. Rigid stops: the
+   !! same points held in every step, with the same impulses to that tolerance.
+   subroutine planar_reduction(hole, label)
+      type(scene_type), intent(in) :: hole
+      character(len=*), intent(in) :: label
+      type(scene_type) :: planar, nudged
+      type(run_problem) :: prepared_planar, prepared_nudged, prepared_hole
+      class(time_stepper), allocatable :: reference, perturbed, stepper
+      real(dp) :: deviation, own, scale, impulse_deviation, impulse_scale, tolerance, depth
+      integer :: held, k
+      logical :: same_points, z_zero
+      associate (o => hole%obstacles(1))
+         planar = hole
+         planar%beam%planes = 1
+         planar%obstacles = [obstacle_type(side='below', x_from=o%x_from, x_to=o%x_to, level_from=-o%radius, &
+                                           level_to=-o%radius, stiffness=o%stiffness), &
+                             obstacle_type(side='above', x_from=o%x_from, x_to=o%x_to, level_from=o%radius, &
+                                           level_to=o%radius, stiffness=o%stiffness)]
+      end associate
+      nudged = planar
+      nudged%initial%velocity_amplitude = nearest(planar%initial%velocity_amplitude, 1.0_dp)
+      call prepare_test_scene(planar, prepared_planar)
+      call prepare_test_scene(nudged, prepared_nudged)
+      call prepare_test_scene(hole, prepared_hole)
+      call start(planar, prepared_planar, reference)
+      call start(nudged, prepared_nudged, perturbed)
+      call start(hole, prepared_hole, stepper)
+      j = prepared_hole%model%unknowns
+      deviation = 0
+      own = 0
+      impulse_deviation = 0
+      scale = 0
+      impulse_scale = 0
+      held = 0
+      same_points = .true.
+      z_zero = .true.
+      depth = 0
+      do n = 1, steps
+         call advance(reference)
+         call advance(perturbed)
+         call advance(stepper)
+         deviation = max(deviation, maxval(abs(stepper%u(1:j) - reference%u)), maxval(abs(stepper%v(1:j) - reference%v)))
+         own = max(own, maxval(abs(perturbed%u - reference%u)), maxval(abs(perturbed%v - reference%v)))
+         scale = max(scale, maxval(abs(reference%u)), maxval(abs(reference%v)))
+         z_zero = z_zero .and. all(abs(stepper%u(j + 1:)) <= 0) .and. all(abs(stepper%v(j + 1:)) <= 0)
+         depth = max(depth, stepper%circles%penetration(1, stepper%u))
+         if (hole%obstacles(1)%stiffness > 0) cycle
+         ! rigid: a level's point held from below or above is the circle's, with its impulse
+         ! upwards (+y) from below and the circle's along its inward normal
+         same_points = same_points .and. stepper%report%circle_count == reference%report%active_count
+         if (.not. same_points) cycle
+         do k = 1, reference%report%active_count
+            same_points = same_points .and. stepper%circles%node(stepper%report%circle_active(k)) == &
+                          reference%contacts%node(reference%report%active(k))
+            impulse_deviation = max(impulse_deviation, abs(abs(stepper%report%circle_impulse(k)) - &
+                                                           abs(reference%report%impulse(k))))
+            impulse_scale = max(impulse_scale, abs(reference%report%impulse(k)))
+            if (abs(reference%report%impulse(k)) > 0) held = held + 1
+         end do
+      end do
+      tolerance = 10*max(own, epsilon(1.0_dp)*scale)/scale
+      write (output_unit, '(a,es10.3,a,es10.3,a,es10.3)') 'planar twin, '//label//': largest deviation of U, V / '// &
+         'their largest ', deviation/scale, '; the twin one ulp faster: ', own/scale, '; tolerance ', tolerance
+      call t%check_true(label//': z stays exactly 0', z_zero)
+      call t%check_close(label//': y (U and V) equals the planar twin''s at every step', deviation/scale, 0.0_dp, &
+                         tolerance, 1.0_dp)
+      if (hole%obstacles(1)%stiffness > 0) then
+         write (output_unit, '(a,es10.3,a)') '   largest penetration ', depth, ' m'
+         call t%check_true(label//': the stop is entered (the run is not free flight)', depth > 0.01_dp*hole%obstacles(1)%radius)
+         return
+      end if
+      write (output_unit, '(a,i0,a,es10.3)') '   ', held, ' held steps; largest deviation of the impulses ', &
+         impulse_deviation/impulse_scale
+      call t%check_true(label//': the twin holds points (the test is not free flight)', held > 100)
+      call t%check_true(label//': the circle holds the same points as the two levels at every step', same_points)
+      call t%check_close(label//': the impulses equal the planar twin''s', impulse_deviation/impulse_scale, 0.0_dp, &
+                         tolerance, 1.0_dp)
+   end subroutine planar_reduction
+
+   !> U_y^T M V_z - U_z^T M V_y: the angular momentum about the beam's axis.
+   function angular_momentum(stepper) result(moment)
+      class(time_stepper), intent(in) :: stepper
+      real(dp) :: moment, mv(size(stepper%v))
+      call stepper%mass_into(stepper%v, mv)
+      moment = dot_product(stepper%u(1:j), mv(j + 1:)) - dot_product(stepper%u(j + 1:), mv(1:j))
+   end function angular_momentum
+
+   subroutine start(scene, prepared, stepper)
+      type(scene_type), intent(in) :: scene
+      type(run_problem), intent(in) :: prepared
+      class(time_stepper), allocatable, intent(out) :: stepper
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
+      if (stat /= 0) error stop 'new_stepper failed'
+   end subroutine start
+
+   subroutine advance(stepper)
+      class(time_stepper), intent(inout) :: stepper
+      call stepper%step(stat, errmsg)
+      if (stat /= 0) error stop 'step failed'
+   end subroutine advance
+end program test_circle_holes
