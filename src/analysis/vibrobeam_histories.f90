@@ -39,6 +39,9 @@ module vibrobeam_histories
       logical :: compliant = .false.                !! the scene has compliant stops
       !> bending planes: with 2, /tip/displacement and /tip/velocity have two columns (y, z)
       integer :: planes = 1
+      !> friction at circular holes: /energy/dissipated_friction (created only then)
+      logical :: friction = .false.
+      type(h5_series) :: friction_series
       type(h5_series) :: histories(history_count), point_u, point_v, field_time, field, impact_columns(5)
       type(h5_array) :: fraction
       ! compliant stops: created only when the scene has springs
@@ -62,7 +65,7 @@ contains
    !! mode): `point_x` the observation points (m), `contacts` the contact points, `nodes`
    !! the field's node count, `planes` the bending planes (1, or 2: the tip's deflection
    !! histories in y and z).
-   subroutine create(self, writer, point_x, contacts, nodes, compliant, planes, stat, errmsg)
+   subroutine create(self, writer, point_x, contacts, nodes, compliant, planes, friction, stat, errmsg)
       class(run_histories), intent(inout) :: self
       type(h5_writer), intent(inout) :: writer
       real(dp), intent(in) :: point_x(:)
@@ -70,12 +73,14 @@ contains
       integer, intent(in) :: nodes
       logical, intent(in) :: compliant
       integer, intent(in) :: planes
+      logical, intent(in) :: friction   !! the scene has friction (at circular holes)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: k
       self%points = size(point_x) > 0
       self%compliant = compliant
       self%planes = planes
+      self%friction = friction
       do k = 1, history_count
          if (planes == 2 .and. (k == h_tip_u .or. k == h_tip_v)) then
             call self%histories(k)%create(writer, trim(history_paths(k)), 2, trim(history_units(k)), stat, errmsg, &
@@ -89,6 +94,10 @@ contains
          call self%impact_columns(k)%create(writer, trim(impact_paths(k)), 1, trim(impact_units(k)), stat, errmsg)
          if (stat /= 0) return
       end do
+      if (friction) then
+         call self%friction_series%create(writer, '/energy/dissipated_friction', 1, 'J', stat, errmsg)
+         if (stat /= 0) return
+      end if
       call self%field_time%create(writer, '/field/time', 1, 's', stat, errmsg)
       if (stat == 0) call self%field%create(writer, '/field/displacement', nodes, 'm', stat, errmsg, matrix=.true.)
       if (stat == 0 .and. self%points) then
@@ -126,12 +135,15 @@ contains
    end subroutine create_compliant
 
    !> One history row (`row`, indexed by h_*, the tip's deflection in y), the tip's
-   !! deflection and velocity in z (`tip_z`, read with two planes), the observation
+   !! deflection and velocity in z (`tip_z`, read with two planes), the energy friction
+   !! took (with friction), the observation
    !! points' u and v, and with compliant stops their stored energy, damping dissipation
    !! and forces.
-   subroutine append_sample(self, row, tip_z, point_u, point_v, potential, contact_damping, contact_force, stat, errmsg)
+   subroutine append_sample(self, row, tip_z, friction, point_u, point_v, potential, contact_damping, contact_force, &
+                            stat, errmsg)
       class(run_histories), intent(inout) :: self
       real(dp), intent(in) :: row(history_count), tip_z(2), point_u(:), point_v(:)
+      real(dp), intent(in) :: friction   !! the energy friction has taken (J)
       real(dp), intent(in) :: potential, contact_damping, contact_force(:)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
@@ -154,6 +166,10 @@ contains
          end if
          if (stat /= 0) return
       end do
+      if (self%friction) then
+         call self%friction_series%append([friction], stat, errmsg)
+         if (stat /= 0) return
+      end if
       if (self%points) then
          call self%point_u%append(point_u, stat, errmsg)
          if (stat == 0) call self%point_v%append(point_v, stat, errmsg)
@@ -201,6 +217,7 @@ contains
       if (stat == 0) call self%field%write(stat, errmsg)
       if (stat == 0 .and. self%points) call self%point_u%write(stat, errmsg)
       if (stat == 0 .and. self%points) call self%point_v%write(stat, errmsg)
+      if (stat == 0 .and. self%friction) call self%friction_series%write(stat, errmsg)
    end subroutine write
 
    !> Buffered rows of the compliant stops' datasets to the file (after the episodes').
@@ -249,6 +266,7 @@ contains
       call self%field%close()
       call self%point_u%close()
       call self%point_v%close()
+      if (self%friction) call self%friction_series%close()
       call self%fraction%close()
       if (self%compliant) then
          call self%contact_potential%close()

@@ -175,9 +175,9 @@ contains
          if ((value <= stepper%contacts%lower(c) + tolerance .and. speed >= 0) .or. &
              (value >= stepper%contacts%upper(c) - tolerance .and. speed <= 0)) self%in_contact(c) = .true.
       end do
-      allocate (self%circle_in_contact(stepper%circles%count))
-      do c = 1, stepper%circles%count
-         associate (circles => stepper%circles, j => size(stepper%u)/2)
+      allocate (self%circle_in_contact(stepper%holes%circles%count))
+      do c = 1, stepper%holes%circles%count
+         associate (circles => stepper%holes%circles, j => size(stepper%u)/2)
             ! on its wall (within the activation tolerance) and not moving inwards
             self%circle_in_contact(c) = circles%radius(c) - norm2(circles%offset(c, stepper%u)) <= tolerance .and. &
                                         dot_product(circles%offset(c, stepper%u), [problem%start%v(circles%dof(c)), &
@@ -343,7 +343,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       call self%files%create(writer, self%point_x, stepper%contacts, model%elements + 1, self%compliant, self%planes, &
-                             stat, errmsg)
+                             stepper%holes%circles%frictional(), stat, errmsg)
       if (stat == 0) call self%spectra%create(writer, stat, errmsg)
       if (stat == 0 .and. allocated(self%forces_spectra%loads)) call self%forces_spectra%create(writer, stat, errmsg)
       if (stat == 0) call self%episodes%create_datasets(writer, stat, errmsg)
@@ -365,8 +365,8 @@ contains
          u = contact_value(stepper%contacts, c, stepper%u)
          depth = max(depth, stepper%contacts%lower(c) - u, u - stepper%contacts%upper(c))
       end do
-      do c = 1, stepper%circles%count   ! |r - c| - R beyond a circle's wall
-         depth = max(depth, norm2(stepper%circles%offset(c, stepper%u)) - stepper%circles%radius(c))
+      do c = 1, stepper%holes%circles%count   ! |r - c| - R beyond a circle's wall
+         depth = max(depth, norm2(stepper%holes%circles%offset(c, stepper%u)) - stepper%holes%circles%radius(c))
       end do
    end function penetration
 
@@ -456,7 +456,7 @@ contains
             held(point) = .true.
             if (self%circle_in_contact(point) .or. stepper%report%circle_before(k) > 0) cycle
             self%impacts = self%impacts + 1
-            if (self%write_rows) call self%files%append_impact([stepper%report%impulse_time, stepper%circles%x(point), &
+            if (self%write_rows) call self%files%append_impact([stepper%report%impulse_time, stepper%holes%circles%x(point), &
                                                                 stepper%report%circle_impulse(k), &
                                                                 stepper%report%circle_before(k), &
                                                                 stepper%report%circle_after(k)], stat, errmsg)
@@ -506,9 +506,9 @@ contains
       row(h_impacts) = stepper%energy%dissipated_impacts
       row(h_damping) = stepper%energy%dissipated_damping
       row(h_numerical) = stepper%energy%dissipated_numerical
-      row(h_dissipated) = row(h_impacts) + row(h_damping) + row(h_numerical)
+      row(h_dissipated) = row(h_impacts) + row(h_damping) + row(h_numerical) + stepper%energy%dissipated_friction
       potential = 0
-      if (self%compliant .or. stepper%circles%compliant) then
+      if (self%compliant .or. stepper%holes%circles%compliant) then
          ! the stops' stored energy is part of the total, their damping a dissipation
          potential = stepper%contact_potential()
          row(h_total) = row(h_total) + potential
@@ -516,7 +516,8 @@ contains
       end if
       row(h_balance) = row(h_total) - row(h_work) + row(h_dissipated)
       row(h_penetration) = penetration(stepper)
-      call self%files%append_sample(row, self%tip_z, self%events%observed(2:, 1), self%events%observed(2:, 2), potential, &
+      call self%files%append_sample(row, self%tip_z, stepper%energy%dissipated_friction, self%events%observed(2:, 1), &
+                                    self%events%observed(2:, 2), potential, &
                                     stepper%energy%dissipated_contact_damping, stepper%report%contact_force, stat, errmsg)
       if (stat /= 0) return
       ! the spectrum takes the uniformly spaced rows only (not a last row off the grid)

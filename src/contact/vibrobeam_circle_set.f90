@@ -22,9 +22,11 @@ module vibrobeam_circle_set
       !! p = |r - c| - R): stiffness k (N/m^a; 0: rigid), exponent a, Hunt-Crossley alpha
       real(dp), allocatable :: stiffness(:), exponent(:), damping(:)
       logical :: compliant = .false.           !! every point compliant (none rigid)
+      real(dp), allocatable :: friction(:)     !! Coulomb's mu at the point's wall (0: frictionless)
    contains
       procedure :: offset                      !! r - c of point k in a stacked state
       procedure :: penetration                 !! p = |r - c| - R of point k
+      procedure :: frictional                  !! has any point friction?
    end type circle_set
 
 contains
@@ -47,4 +49,11 @@ contains
       real(dp), intent(in) :: u(:)
       penetration = norm2(self%offset(k, u)) - self%radius(k)
    end function penetration
+
+   !> Has any point a friction coefficient (and so the run a friction ledger)?
+   pure logical function frictional(self)
+      class(circle_set), intent(in) :: self
+      frictional = .false.
+      if (allocated(self%friction)) frictional = any(self%friction > 0)
+   end function frictional
 end module vibrobeam_circle_set

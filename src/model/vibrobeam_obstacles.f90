@@ -62,6 +62,9 @@ module vibrobeam_obstacles
       character(len=keyword_length) :: shape = ''
       real(dp) :: radius = unset                    !! R of a circle (m)
       real(dp) :: center_y = unset, center_z = unset   !! its centre (m); unset: 0
+      !> Coulomb's friction coefficient mu at a circle's wall (unset: 0, frictionless;
+      !! listed only when given)
+      real(dp) :: friction = unset
    contains
       procedure :: circle                           !! is it a circle?
    end type obstacle_type
@@ -133,6 +136,9 @@ contains
                                         'centre of a circle in y (default 0)', n, i, optional=.true.), o%center_y)
          call visitor%variable(real_row('obstacles', 'center_z', 'm', -1e6_dp, 1e6_dp, &
                                         'centre of a circle in z (default 0)', n, i, optional=.true.), o%center_z)
+         call visitor%variable(real_row('obstacles', 'friction', '', 0.0_dp, 10.0_dp, &
+                                        'Coulomb friction coefficient mu at a circle''s wall (default 0)', n, i, &
+                                        optional=.true.), o%friction)
       end subroutine visit_one
    end subroutine visit_obstacles
 
@@ -199,7 +205,8 @@ contains
       circles%count = count(source > 0)
       allocate (circles%node(circles%count), circles%x(circles%count), circles%dof(circles%count), &
                 circles%radius(circles%count), circles%center(2, circles%count), circles%obstacle(circles%count), &
-                circles%stiffness(circles%count), circles%exponent(circles%count), circles%damping(circles%count))
+                circles%stiffness(circles%count), circles%exponent(circles%count), circles%damping(circles%count), &
+                circles%friction(circles%count))
       k = 0
       do i = 0, model%elements
          if (source(i) == 0) cycle
@@ -215,6 +222,7 @@ contains
             circles%stiffness(k) = o%stiffness   ! a punctual circle (`plane_rules`): N/m^a at its node
             circles%exponent(k) = o%exponent
             circles%damping(k) = o%damping
+            circles%friction(k) = merge(0.0_dp, o%friction, is_unset(o%friction))
          end associate
          circles%obstacle(k) = source(i)
       end do

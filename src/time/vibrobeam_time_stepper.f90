@@ -12,7 +12,7 @@ module vibrobeam_time_stepper
    use vibrobeam_contact_options, only: contact_options
    use vibrobeam_loads, only: load_set
    use vibrobeam_discrete_system, only: discrete_system
-   use vibrobeam_circle_set, only: circle_set
+   use vibrobeam_circle_contact, only: circle_contact
    use vibrobeam_state_record, only: state_record
    use vibrobeam_compliant_law, only: stop_potential, rule_gradient
    use vibrobeam_compliant_solver, only: compliant_solver
@@ -81,6 +81,9 @@ module vibrobeam_time_stepper
       integer :: circle_count = 0
       integer, allocatable :: circle_active(:)
       real(dp), allocatable :: circle_impulse(:), circle_normal(:, :), circle_before(:), circle_after(:)
+      !> their friction impulses (N s, along the tangent t = (-n_z, n_y)) and tangential
+      !! velocities before (m/s)
+      real(dp), allocatable :: circle_friction(:), circle_tangential_before(:)
    end type step_report
 
    !> The running sums of the energy balance since t = 0 (each scheme says how it defines
@@ -89,6 +92,7 @@ module vibrobeam_time_stepper
       real(dp) :: work = 0                   !! work of the loads (J)
       real(dp) :: dissipated_impacts = 0     !! energy taken by impacts (J)
       real(dp) :: dissipated_damping = 0     !! energy taken by Rayleigh damping (J)
+      real(dp) :: dissipated_friction = 0    !! energy taken by Coulomb friction at circular holes (J)
       real(dp) :: dissipated_numerical = 0   !! energy taken by the theta-method itself (J): velocity scheme,
                                              !! 0 for theta = 1/2; 0 for the position scheme
       ! compliant stops (docs/theory.md section 8); unused when contacts%springs%count = 0
@@ -116,7 +120,7 @@ module vibrobeam_time_stepper
       logical :: own_z = .false.
       type(symmetric_band) :: stiffness_z, iteration_matrix_z
       type(band_cholesky) :: iteration_factor_z
-      type(circle_set) :: circles                  !! the points of circular holes (two planes)
+      type(circle_contact) :: holes                !! the circular holes' points and contact step (two planes)
       type(contact_set) :: contacts
       type(contact_projector) :: projector
       type(load_set) :: loads
@@ -223,17 +227,12 @@ contains
    function contact_potential(self) result(energy)
       class(time_stepper), intent(in) :: self
       real(dp) :: energy
-      integer :: k
       associate (springs => self%contacts%springs)
          energy = 0
          if (springs%count > 0) &
             energy = sum(stop_potential(springs%stiffness, springs%exponent, self%spring_penetrations(self%u)))
       end associate
-      if (.not. self%circles%compliant) return
-      do k = 1, self%circles%count   ! the compliant circles' springs, on the radial penetration
-         energy = energy + stop_potential(self%circles%stiffness(k), self%circles%exponent(k), &
-                                          self%circles%penetration(k, self%u))
-      end do
+      energy = energy + self%holes%potential(self%u)
    end function contact_potential
 
    !> Energy bookkeeping of the compliant stops over a step whose penetrations go from p0
@@ -339,10 +338,11 @@ contains
       call band_factor(self%iteration_matrix, self%iteration_factor, stat, errmsg)
       if (stat /= 0) return
       self%planes = system%planes
-      self%circles = system%circles
+      self%holes%circles = system%circles
       n = system%circles%count
       allocate (self%report%circle_active(n), self%report%circle_impulse(n), self%report%circle_normal(2, n), &
-                self%report%circle_before(n), self%report%circle_after(n))
+                self%report%circle_before(n), self%report%circle_after(n), self%report%circle_friction(n), &
+                self%report%circle_tangential_before(n))
       self%own_z = allocated(system%stiffness_z)
       if (self%own_z) then
          self%stiffness_z = system%stiffness_z

@@ -24,7 +24,7 @@
 module vibrobeam_velocity_stepper
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
-   use vibrobeam_status, only: stat_not_finite, stat_invalid_argument, stat_linear_solver_failure, stat_no_convergence
+   use vibrobeam_status, only: stat_not_finite, stat_invalid_argument, stat_linear_solver_failure
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_residual_solve, band_solve, band_factor
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
@@ -35,8 +35,7 @@ module vibrobeam_velocity_stepper
    use vibrobeam_state_record, only: state_record
    use vibrobeam_compliant_law, only: end_force, stop_potential, step_force
    use vibrobeam_compliant_solver, only: rigid_active, add_row_product
-   use vibrobeam_lcp, only: solve_lcp
-   use vibrobeam_lapack, only: dpotrf, dpotrs, dgesv
+   use vibrobeam_lapack, only: dpotrf, dpotrs
    implicit none
    private
    public :: velocity_stepper
@@ -53,30 +52,14 @@ module vibrobeam_velocity_stepper
                                force_new(:), force_theta(:), modal_vector(:)
       real(dp), allocatable :: signs(:), offsets(:)   !! (contact points) work space of `step`
       real(dp), allocatable :: spring_start(:)        !! (springs) their penetrations at the last step's start (m)
-      !> circular holes (two planes): the blocks of W_y^-1 and W_z^-1 between their points'
-      !! deflections, G_p(k, l) = e_dof(k)^T W_p^-1 e_dof(l) (circles x circles each; the
-      !! Delassus matrix of a step is made of them), and the right-hand sides of the impulses
-      real(dp), allocatable :: circle_delassus(:, :, :), circle_push(:)
-      integer :: circle_solves = 0                   !! LCP solves of the last step's circles
-      !> compliant circles: the last step's radial penetrations at its start and end (m),
-      !! the force magnitude f of each spring over the step and its elastic part (N), and the
-      !! force vectors F = -f (r0 + r1)/(|r0| + |r1|) on the beam (2, circles)
-      real(dp), allocatable :: circle_p0(:), circle_p1(:), circle_f(:), circle_elastic(:), circle_force(:, :)
-      ! u = U^n, v = V^n; work = sum F^{n+theta}.(U^{n+1} - U^n),
-      ! dissipated_impacts = -sum P.H (V^{n+1} + V^n)/2,
-      ! dissipated_damping = sum dt V^{n+theta}.C V^{n+theta} (+ dt V^{n+theta}.C_m V^n per mode),
-      ! dissipated_numerical = sum (theta - 1/2) (dV.M dV + dU.K dU - P.H dV) + the springs' rule error
-      !                        (`compliant_energy`; the springs take no part in the theta-term)
    contains
       procedure :: init
       procedure :: step
       procedure :: restore_state
       procedure :: tangent
       procedure, private :: loads_at
+      procedure, private :: report_holes
       procedure, private :: compliant_step
-      procedure, private :: circle_step
-      procedure, private :: compliant_circle_step
-      procedure, private :: set_up_circles
    end type velocity_stepper
 
 contains
@@ -109,33 +92,15 @@ contains
                 self%u_new(n), self%force_new(n), self%force_theta(n), self%modal_vector(n), source=0.0_dp)
       allocate (self%signs(system%contacts%count), self%offsets(system%contacts%count))
       allocate (self%spring_start(system%contacts%springs%count), source=0.0_dp)
-      if (self%circles%count > 0) call self%set_up_circles()
+      if (self%holes%circles%count > 0) then   ! W_z is W when z shares K
+         if (self%own_z) then
+            call self%holes%setup(system%circles, self%iteration_factor, self%iteration_factor_z)
+         else
+            call self%holes%setup(system%circles, self%iteration_factor, self%iteration_factor)
+         end if
+      end if
    end subroutine init
 
-   !> The blocks G_y, G_z of W^-1 between the circles' points: one band solve per point and
-   !! plane (per plane when z has its own W), once per run.
-   subroutine set_up_circles(self)
-      class(velocity_stepper), intent(inout) :: self
-      real(dp) :: column(size(self%u)/2)
-      integer :: k, plane
-      associate (circles => self%circles)
-         allocate (self%circle_delassus(circles%count, circles%count, 2), self%circle_push(size(self%u)))
-         allocate (self%circle_p0(circles%count), self%circle_p1(circles%count), self%circle_f(circles%count), &
-                   self%circle_elastic(circles%count), self%circle_force(2, circles%count), source=0.0_dp)
-         do plane = 1, 2
-            do k = 1, circles%count
-               column = 0
-               column(circles%dof(k)) = 1
-               if (plane == 2 .and. self%own_z) then
-                  call band_solve(self%iteration_factor_z, column)
-               else
-                  call band_solve(self%iteration_factor, column)
-               end if
-               self%circle_delassus(:, k, plane) = column(circles%dof)
-            end do
-         end do
-      end associate
-   end subroutine set_up_circles
 
    !> The base type's restore, then F(t_n) from the loads (which a continued run may change).
    subroutine restore_state(self, record, stat, errmsg)
@@ -222,18 +187,21 @@ contains
          call self%compliant_step(self%v_free, self%signs(1:m), self%offsets(1:m), self%v_new, stat, errmsg)
          if (stat /= 0) return
          call complete(self%v_new)
-      else if (self%circles%compliant) then   ! two planes in compliant circular holes
-         call self%compliant_circle_step(stat, errmsg)
-         if (stat /= 0) return
-         self%report%linear_solves = 0
-         self%report%used_fallback = .false.
+      else if (self%holes%circles%compliant) then   ! two planes in compliant circular holes
+         call self%holes%compliant_step(self%u, self%v, self%v_free, self%dt, self%theta, self%compliant_rule, &
+                                        self%v_new, stat, errmsg)
+         if (stat /= 0) then
+            write (errmsg, '(a,es12.5,a)') trim(errmsg)//' at t = ', self%t + self%dt, ' s'
+            return
+         end if
+         call self%report_holes()
          call complete(self%v_new)
-      else if (self%circles%count > 0) then   ! two planes in circular holes (no planar point then)
-         call self%circle_step(stat, errmsg)
+      else if (self%holes%circles%count > 0) then   ! two planes in rigid circular holes (no planar point then)
+         call self%holes%rigid_step(self%u, self%v, self%v_free, self%dt, self%theta, self%gamma, &
+                                    self%activation_tolerance, self%restitution, self%separating_restitution, self%v_new, &
+                                    stat, errmsg)
          if (stat /= 0) return
-         self%report%iterations = self%circle_solves
-         self%report%linear_solves = 0
-         self%report%used_fallback = .false.
+         call self%report_holes()
          call complete(self%v_new)
       else if (m > 0) then
          call self%projector%project(self%v_free, self%report%active(1:m), self%signs(1:m), self%offsets(1:m), self%v_new, &
@@ -255,7 +223,7 @@ contains
          return
       end if
       call swap(self%u, self%u_new)
-      if (m > 0 .or. self%contacts%springs%count > 0 .or. self%circles%count > 0) then
+      if (m > 0 .or. self%contacts%springs%count > 0 .or. self%holes%circles%count > 0) then
          call swap(self%v, self%v_new)
       else
          call swap(self%v, self%v_free)
@@ -306,13 +274,22 @@ contains
                impulse_power = impulse_power + self%report%impulse(k)*(self%report%velocity_after(k) &
                   - self%report%velocity_before(k))
             end do
-            ! the circles' impulses p_k along their inward normals h_k: the same two terms
+            ! the circles' impulses p_k along their inward normals h_k: the same two terms;
+            ! their friction r_k along the tangents t_k takes -r_k t_k.(V^{n+1} + V^n)/2
             do k = 1, self%report%circle_count
-               associate (r => self%report, c => self%circles%dof(self%report%circle_active(k)))
+               associate (r => self%report, c => self%holes%circles%dof(self%report%circle_active(k)))
                   r%circle_after(k) = dot_product(r%circle_normal(:, k), [v_next(c), v_next(size(v_next)/2 + c)])
                   self%energy%dissipated_impacts = self%energy%dissipated_impacts - 0.5_dp*r%circle_impulse(k)* &
                                                    (r%circle_after(k) + r%circle_before(k))
                   impulse_power = impulse_power + r%circle_impulse(k)*(r%circle_after(k) - r%circle_before(k))
+                  if (abs(r%circle_friction(k)) > 0) then
+                     associate (after => dot_product([-r%circle_normal(2, k), r%circle_normal(1, k)], &
+                                                     [v_next(c), v_next(size(v_next)/2 + c)]))
+                        self%energy%dissipated_friction = self%energy%dissipated_friction - 0.5_dp*r%circle_friction(k)* &
+                                                          (after + r%circle_tangential_before(k))
+                        impulse_power = impulse_power + r%circle_friction(k)*(after - r%circle_tangential_before(k))
+                     end associate
+                  end if
                end associate
             end do
             if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) then
@@ -334,7 +311,7 @@ contains
             end if
             if (self%contacts%springs%count > 0) &
                call self%compliant_energy(self%spring_penetrations(u), self%spring_penetrations(u_new))
-            if (self%circles%compliant) call circle_energy()
+            if (self%holes%circles%compliant) call circle_energy()
          end associate
       end subroutine complete
 
@@ -346,13 +323,13 @@ contains
       subroutine circle_energy()
          real(dp) :: work, stored
          integer :: k, c
-         associate (circles => self%circles, j => size(self%u)/2)
+         associate (circles => self%holes%circles, j => size(self%u)/2)
             do k = 1, circles%count
                c = circles%dof(k)
-               work = dot_product(self%circle_force(:, k), [self%u_new(c) - self%u(c), self%u_new(j + c) - self%u(j + c)])
+               work = dot_product(self%holes%force(:, k), [self%u_new(c) - self%u(c), self%u_new(j + c) - self%u(j + c)])
                stored = stop_potential(circles%stiffness(k), circles%exponent(k), circles%penetration(k, self%u_new)) - &
                         stop_potential(circles%stiffness(k), circles%exponent(k), circles%penetration(k, self%u))
-               associate (damping => (self%circle_f(k) - self%circle_elastic(k))*(self%circle_p1(k) - self%circle_p0(k)))
+               associate (damping => (self%holes%f(k) - self%holes%elastic(k))*(self%holes%p1(k) - self%holes%p0(k)))
                   self%energy%dissipated_contact_damping = self%energy%dissipated_contact_damping + damping
                   self%energy%dissipated_numerical = self%energy%dissipated_numerical - work - stored - damping
                end associate
@@ -546,231 +523,26 @@ contains
 
 
 
-   !> Step 3 in circular holes (two planes; docs/method.md, "Circular obstacles"): point k
-   !! is active when R_k - |r~_k| <= 1e-12 L at the predicted position r~ = (v, w) - c of
-   !! U^n + gamma dt V^n. Its constraint row is an inward unit normal h_k, frozen over the
-   !! solve (the tangent half-plane of the circle): Newton's law
-   !! 0 <= p_k _|_ h_k.(V^{n+1} + e_k V^n) >= 0 with V^{n+1} = V_free + W^-1 H^T p is the
-   !! LCP(D, q) of the active points, D = H W^-1 H^T (from G_y, G_z: h_y h_y' G_y + h_z h_z'
-   !! G_z), q = H V_free + E H V^n, solved by `solve_lcp`; e_k as for the levels (e for a
-   !! point moving outwards, else separating_restitution). The normal is that of the
-   !! step's midpoint, h_k = -r_k/|r_k| at r = (U^n + U^{n+1})/2 - c: a fixed point,
-   !! started from the predicted position's normal and iterated (one LCP each) until no
-   !! normal moves by more than `normal_tolerance`. With it the impulses are radial at the
-   !! midpoint, so a hole centred on the axis keeps the discrete angular momentum about it
-   !! exactly (docs/theory.md section 11); on the y axis the two normals are the same and
-   !! the first solve is the last. V^{n+1} into v_new; report%iterations the solves made.
-   subroutine circle_step(self, stat, errmsg)
+
+   !> The holes' last contact step into the step report (its rigid impulses: the recorder's
+   !! impacts, the energy's bookkeeping) and its solves into `iterations`.
+   subroutine report_holes(self)
       class(velocity_stepper), intent(inout) :: self
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      !> a fixed point of the normals to round-off: unit vectors computed from sums of a
-      !! few products, each rounded by a few eps
-      real(dp), parameter :: normal_tolerance = 16*epsilon(1.0_dp)
-      integer, parameter :: max_solves = 50
-      real(dp), allocatable :: delassus(:, :), q(:), p(:), w(:), normal(:, :)
-      real(dp) :: r(2), distance, e_c, moved
-      integer :: k, a, b, m, j, iterations, solve
-      stat = 0
-      errmsg = ''
-      j = size(self%u)/2
-      m = 0
-      associate (circles => self%circles, report => self%report)
-         do k = 1, circles%count
-            r = circles%offset(k, self%u) + self%gamma*self%dt*[self%v(circles%dof(k)), self%v(j + circles%dof(k))]
-            distance = norm2(r)
-            if (circles%radius(k) - distance > self%activation_tolerance) cycle
-            m = m + 1
-            report%circle_active(m) = k
-            report%circle_normal(:, m) = -r/distance
-         end do
-         report%circle_count = m
-         self%circle_solves = 0
-         if (m == 0) then
-            self%v_new = self%v_free
-            return
-         end if
-         allocate (delassus(m, m), q(m), p(m), w(m), normal(2, m))
-         do solve = 1, max_solves
-            do a = 1, m
-               k = report%circle_active(a)
-               do b = 1, m
-                  delassus(a, b) = report%circle_normal(1, a)*report%circle_normal(1, b)* &
-                                   self%circle_delassus(k, report%circle_active(b), 1) + &
-                                   report%circle_normal(2, a)*report%circle_normal(2, b)* &
-                                   self%circle_delassus(k, report%circle_active(b), 2)
-               end do
-               report%circle_before(a) = dot_product(report%circle_normal(:, a), [self%v(circles%dof(k)), &
-                                                                                 self%v(j + circles%dof(k))])
-               e_c = merge(self%restitution, self%separating_restitution, report%circle_before(a) <= 0)
-               q(a) = dot_product(report%circle_normal(:, a), [self%v_free(circles%dof(k)), &
-                                                               self%v_free(j + circles%dof(k))]) + e_c*report%circle_before(a)
-            end do
-            call solve_lcp(delassus, q, p, w, iterations, stat, errmsg)
-            if (stat /= 0) then
-               errmsg = 'the contact problem of the circular obstacles: '//trim(errmsg)
-               return
-            end if
-            self%circle_solves = solve
-            report%circle_impulse(1:m) = p
-            ! V^{n+1} = V_free + W^-1 H^T p, one band solve per plane
-            self%circle_push = 0
-            do a = 1, m
-               k = circles%dof(report%circle_active(a))
-               self%circle_push(k) = self%circle_push(k) + p(a)*report%circle_normal(1, a)
-               self%circle_push(j + k) = self%circle_push(j + k) + p(a)*report%circle_normal(2, a)
-            end do
-            call band_solve(self%iteration_factor, self%circle_push(1:j))
-            if (self%own_z) then
-               call band_solve(self%iteration_factor_z, self%circle_push(j + 1:))
-            else
-               call band_solve(self%iteration_factor, self%circle_push(j + 1:))
-            end if
-            self%v_new = self%v_free + self%circle_push
-            ! the normals at the midpoint r = U^n + dt/2 (theta V^{n+1} + (1 - theta) V^n) - c
-            moved = 0
-            do a = 1, m
-               k = report%circle_active(a)
-               r = circles%offset(k, self%u) + 0.5_dp*self%dt* &
-                   (self%theta*[self%v_new(circles%dof(k)), self%v_new(j + circles%dof(k))] + &
-                    (1 - self%theta)*[self%v(circles%dof(k)), self%v(j + circles%dof(k))])
-               normal(:, a) = -r/norm2(r)
-               moved = max(moved, maxval(abs(normal(:, a) - report%circle_normal(:, a))))
-            end do
-            if (moved <= normal_tolerance) exit
-            report%circle_normal(:, 1:m) = normal
-         end do
+      integer :: m
+      m = self%holes%count
+      associate (r => self%report, holes => self%holes)
+         r%circle_count = m
+         r%circle_active(1:m) = holes%active(1:m)
+         r%circle_normal(:, 1:m) = holes%normal(:, 1:m)
+         r%circle_impulse(1:m) = holes%impulse(1:m)
+         r%circle_friction(1:m) = holes%tangential(1:m)
+         r%circle_before(1:m) = holes%before(1:m)
+         r%circle_tangential_before(1:m) = holes%tangential_before(1:m)
+         r%iterations = holes%solves
+         r%linear_solves = 0
+         r%used_fallback = .false.
       end associate
-   end subroutine circle_step
-
-   !> Step 3 in compliant circular holes (two planes; docs/method.md, "Circular
-   !! obstacles"): each point's spring pushes inwards with the force of
-   !! `vibrobeam_compliant_law` on the radial penetration p = |r| - R (r = (v, w) - c),
-   !! over the step from p0 (U^n) to p1 (U^{n+1}): magnitude f(p0, p1) (the `&time
-   !! compliant_rule`'s, with Hunt-Crossley damping), direction d = (r0 + r1)/(|r0| + |r1|),
-   !! F = -f d. Then F.(r1 - r0) = -f (p1 - p0) exactly (as a level's spring: the
-   !! 'gradient' rule conserves E + Phi), and F is parallel to the midpoint (r0 + r1)/2, so
-   !! a centred hole keeps the angular momentum about the axis. The points' end velocities
-   !! x solve x = V_free + dt G F(x) (G the blocks of W^-1 between the points, per plane),
-   !! by Newton's method with the 2 x 2 derivatives of F (dense, LAPACK dgesv), until the
-   !! residual is 16 eps of the velocities or an update moves no point's position beyond
-   !! 1024 eps of its size; then V^{n+1} = V_free + dt W^-1 H^T F
-   !! (one band solve per plane) into v_new. stat_no_convergence after 50 iterations.
-   subroutine compliant_circle_step(self, stat, errmsg)
-      class(velocity_stepper), intent(inout) :: self
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      integer, parameter :: max_iterations = 50
-      !> an update that moves the points by no more than this share of their distance from
-      !! the centre ends the iteration (as the levels' springs, `vibrobeam_compliant_solver`):
-      !! the residual has a floor there, the forces' discrete gradient losing digits to
-      !! cancellation when p1 is close to p0
-      real(dp), parameter :: converged = 1024*epsilon(1.0_dp)
-      real(dp), dimension(2, self%circles%count) :: x, v0, v_free, r0, step
-      real(dp) :: jacobian(2*self%circles%count, 2*self%circles%count), derivative(2, 2, self%circles%count)
-      real(dp) :: scale
-      integer :: pivots(2*self%circles%count), k, l, c, m, j, iteration, info
-      stat = 0
-      errmsg = ''
-      m = self%circles%count
-      j = size(self%u)/2
-      associate (circles => self%circles, dt => self%dt)
-         do k = 1, m
-            c = circles%dof(k)
-            v0(:, k) = [self%v(c), self%v(j + c)]
-            v_free(:, k) = [self%v_free(c), self%v_free(j + c)]
-            r0(:, k) = circles%offset(k, self%u)
-            self%circle_p0(k) = norm2(r0(:, k)) - circles%radius(k)
-         end do
-         x = v_free
-         do iteration = 1, max_iterations
-            call forces_at(x)
-            ! the residual -(x - V_free - dt G F) and the Jacobian I - dt G dF/dx
-            jacobian = 0
-            do k = 1, m
-               step(:, k) = -(x(:, k) - v_free(:, k))
-               do l = 1, m
-                  step(1, k) = step(1, k) + dt*self%circle_delassus(k, l, 1)*self%circle_force(1, l)
-                  step(2, k) = step(2, k) + dt*self%circle_delassus(k, l, 2)*self%circle_force(2, l)
-                  jacobian(2*k - 1, 2*l - 1:2*l) = -dt*self%circle_delassus(k, l, 1)*derivative(1, :, l)
-                  jacobian(2*k, 2*l - 1:2*l) = -dt*self%circle_delassus(k, l, 2)*derivative(2, :, l)
-               end do
-               jacobian(2*k - 1, 2*k - 1) = jacobian(2*k - 1, 2*k - 1) + 1
-               jacobian(2*k, 2*k) = jacobian(2*k, 2*k) + 1
-            end do
-            scale = max(maxval(abs(x)), maxval(abs(v_free)), tiny(1.0_dp))
-            if (maxval(abs(step)) <= 16*epsilon(1.0_dp)*scale) exit
-            call dgesv(2*m, 1, jacobian, 2*m, pivots, step, 2*m, info)
-            if (info /= 0) then
-               stat = stat_linear_solver_failure
-               errmsg = 'the compliant circular obstacles: the Newton matrix of a step is singular'
-               return
-            end if
-            x = x + step
-            ! the points' positions r1 (and so p1 and the forces) no longer move beyond
-            ! their round-off: |dt theta dx| <= 1024 eps |r| (as the levels' springs' test)
-            if (all(self%dt*self%theta*norm2(step, 1) <= converged*(norm2(r0, 1) + circles%radius))) then
-               call forces_at(x)
-               exit
-            end if
-         end do
-         self%report%iterations = iteration
-         if (iteration > max_iterations) then
-            stat = stat_no_convergence
-            write (errmsg, '(a,i0,a,es12.5,a)') 'the compliant circular obstacles: Newton''s method did not converge in ', &
-               max_iterations, ' iterations at t = ', self%t + dt, ' s (a stop too stiff for dt: reduce dt)'
-            return
-         end if
-         ! V^{n+1} = V_free + dt W^-1 H^T F, one band solve per plane
-         self%circle_push = 0
-         do k = 1, m
-            c = circles%dof(k)
-            self%circle_push(c) = dt*self%circle_force(1, k)
-            self%circle_push(j + c) = dt*self%circle_force(2, k)
-         end do
-         call band_solve(self%iteration_factor, self%circle_push(1:j))
-         if (self%own_z) then
-            call band_solve(self%iteration_factor_z, self%circle_push(j + 1:))
-         else
-            call band_solve(self%iteration_factor, self%circle_push(j + 1:))
-         end if
-         self%v_new = self%v_free + self%circle_push
-         self%report%circle_count = 0   ! no rigid impulse (no impact)
-      end associate
-
-   contains
-
-      !> The forces F at the points' end velocities `x` (circle_force, with p1, f, elastic)
-      !! and their derivatives dF/dx = dt theta dF/dr1 (derivative).
-      subroutine forces_at(x)
-         real(dp), intent(in) :: x(:, :)
-         real(dp) :: r1(2), d(2), n1(2), total, slope
-         integer :: k
-         associate (circles => self%circles, dt => self%dt, theta => self%theta)
-            do k = 1, m
-               r1 = r0(:, k) + dt*(theta*x(:, k) + (1 - theta)*v0(:, k))
-               self%circle_p1(k) = norm2(r1) - circles%radius(k)
-               call step_force(self%compliant_rule, circles%stiffness(k), circles%exponent(k), circles%damping(k), &
-                               theta, dt, self%circle_p0(k), self%circle_p1(k), self%circle_f(k), slope, &
-                               self%circle_elastic(k))
-               if (abs(self%circle_f(k)) <= 0 .and. abs(slope) <= 0) then   ! free over the step
-                  self%circle_force(:, k) = 0
-                  derivative(:, :, k) = 0
-                  cycle
-               end if
-               total = norm2(r0(:, k)) + norm2(r1)
-               d = (r0(:, k) + r1)/total
-               n1 = r1/norm2(r1)
-               self%circle_force(:, k) = -self%circle_f(k)*d
-               ! dF/dr1 = -(slope d n1^T + f (I - d n1^T)/total)
-               derivative(:, :, k) = -(slope - self%circle_f(k)/total)*spread(d, 2, 2)*spread(n1, 1, 2)
-               derivative(1, 1, k) = derivative(1, 1, k) - self%circle_f(k)/total
-               derivative(2, 2, k) = derivative(2, 2, k) - self%circle_f(k)/total
-               derivative(:, :, k) = dt*theta*derivative(:, :, k)
-            end do
-         end associate
-      end subroutine forces_at
-   end subroutine compliant_circle_step
+   end subroutine report_holes
 
    !> F(t) into f (planes x J values): the loads of the y plane, turned by &load direction
    !! when the beam bends in two planes.

@@ -62,7 +62,7 @@ program test_circle_holes
       worst = max(worst, abs(stepper%kinetic_energy() + stepper%elastic_energy() - energy0))
       worst_moment = max(worst_moment, abs(angular_momentum(stepper) - moment0))
       held = held + count(stepper%report%circle_impulse(1:stepper%report%circle_count) > 0)
-      reach = max(reach, norm2(stepper%circles%offset(1, stepper%u)))
+      reach = max(reach, norm2(stepper%holes%circles%offset(1, stepper%u)))
       solves = max(solves, stepper%report%iterations)
    end do
    write (output_unit, '(a,i0,a,es10.3,a,es10.3,a,es10.3)') 'whirl: ', held, ' impulses; largest |E - E0|/E0 ', &
@@ -91,7 +91,7 @@ program test_circle_holes
       call advance(stepper)
       worst = max(worst, abs(stepper%kinetic_energy() + stepper%elastic_energy() + stepper%contact_potential() - energy0))
       worst_moment = max(worst_moment, abs(angular_momentum(stepper) - moment0))
-      reach = max(reach, stepper%circles%penetration(1, stepper%u))
+      reach = max(reach, stepper%holes%circles%penetration(1, stepper%u))
       solves = max(solves, stepper%report%iterations)
    end do
    write (output_unit, '(a,es10.3,a,es10.3,a,es10.3,a,i0)') 'compliant whirl: largest |E + Phi - E0|/E0 ', &
@@ -157,14 +157,14 @@ contains
          own = max(own, maxval(abs(perturbed%u - reference%u)), maxval(abs(perturbed%v - reference%v)))
          scale = max(scale, maxval(abs(reference%u)), maxval(abs(reference%v)))
          z_zero = z_zero .and. all(abs(stepper%u(j + 1:)) <= 0) .and. all(abs(stepper%v(j + 1:)) <= 0)
-         depth = max(depth, stepper%circles%penetration(1, stepper%u))
+         depth = max(depth, stepper%holes%circles%penetration(1, stepper%u))
          if (hole%obstacles(1)%stiffness > 0) cycle
          ! rigid: a level's point held from below or above is the circle's, with its impulse
          ! upwards (+y) from below and the circle's along its inward normal
          same_points = same_points .and. stepper%report%circle_count == reference%report%active_count
          if (.not. same_points) cycle
          do k = 1, reference%report%active_count
-            same_points = same_points .and. stepper%circles%node(stepper%report%circle_active(k)) == &
+            same_points = same_points .and. stepper%holes%circles%node(stepper%report%circle_active(k)) == &
                           reference%contacts%node(reference%report%active(k))
             impulse_deviation = max(impulse_deviation, abs(abs(stepper%report%circle_impulse(k)) - &
                                                            abs(reference%report%impulse(k))))
