@@ -88,12 +88,16 @@ contains
                        prepared%model, stat, errmsg, structure=structure_of(scene))
       if (stat /= 0) return
       warnings = warnings//off_node_warnings(scene, prepared%model)
-      call build_contact_points(scene%obstacles, prepared%model, prepared%contacts, warnings, stat, errmsg)
-      if (stat /= 0) return
+      ! a beam of two planes: every obstacle is a point in the cross-section (a circle, or a
+      ! level's flat point), none a planar contact point
       if (scene%beam%plane_count() == 2) then
-         call build_circle_points(scene%obstacles, prepared%model, prepared%circles, warnings, stat, errmsg)
-         if (stat /= 0) return
+         call build_contact_points(scene%obstacles(1:0), prepared%model, prepared%contacts, warnings, stat, errmsg)
+         if (stat == 0) call build_circle_points(scene%obstacles, prepared%model, prepared%circles, warnings, stat, &
+                                                 errmsg)
+      else
+         call build_contact_points(scene%obstacles, prepared%model, prepared%contacts, warnings, stat, errmsg)
       end if
+      if (stat /= 0) return
       call build_loads(scene%load, prepared%model, scene%beam%rho_s(), prepared%loads)
       call add_forces(prepared%loads, scene%forces, prepared%model, scene%beam%rho_s(), scene%time%dt, stat, errmsg)
       if (stat /= 0) return
@@ -154,16 +158,17 @@ contains
       call spread_planes(shares_of(scene%initial%displacement_direction), prepared%u0)
       call spread_planes(shares_of(scene%initial%direction), prepared%v0)
       prepared%planes = 2
-      ! theory §1: the initial displacement inside every hole (to the activation's 1e-12 L)
+      ! theory §1: the initial displacement inside every hole and on the allowed side of every
+      ! level (to the activation's 1e-12 L)
       do k = 1, prepared%circles%count
          associate (circles => prepared%circles)
-            if (norm2(circles%offset(k, prepared%u0)) > circles%radius(k) + 1e-12_dp*scene%beam%length) then
+            if (circles%penetration(k, prepared%u0) > 1e-12_dp*scene%beam%length) then
                stat = stat_failure
                errmsg = '&initial: the initial displacement at x = '//real_text(circles%x(k))//' m, ('// &
                         real_text(prepared%u0(circles%dof(k)))//', '// &
-                        real_text(prepared%u0(size(prepared%u0)/2 + circles%dof(k)))//') m, is outside the circle '// &
-                        'of &obstacles '//integer_text(circles%obstacle(k))//' (radius '// &
-                        real_text(circles%radius(k))//' m)'
+                        real_text(prepared%u0(size(prepared%u0)/2 + circles%dof(k)))//') m, is outside '// &
+                        trim(merge('the level ', 'the circle', circles%flat(k)))//' of &obstacles '// &
+                        integer_text(circles%obstacle(k))
                return
             end if
          end associate

@@ -177,11 +177,12 @@ contains
       end do
       allocate (self%circle_in_contact(stepper%holes%circles%count))
       do c = 1, stepper%holes%circles%count
-         associate (circles => stepper%holes%circles, j => size(stepper%u)/2)
-            ! on its wall (within the activation tolerance) and not moving inwards
-            self%circle_in_contact(c) = circles%radius(c) - norm2(circles%offset(c, stepper%u)) <= tolerance .and. &
-                                        dot_product(circles%offset(c, stepper%u), [problem%start%v(circles%dof(c)), &
-                                                    problem%start%v(j + circles%dof(c))]) >= 0
+         associate (circles => stepper%holes%circles)
+            ! on its wall (within the activation tolerance) and not moving into it: its inward
+            ! normal velocity >= 0
+            self%circle_in_contact(c) = circles%gap_at(c, circles%position(c, stepper%u)) <= tolerance .and. &
+                                        dot_product(circles%normal_at(c, circles%position(c, stepper%u)), &
+                                                    circles%position(c, problem%start%v)) >= 0
          end associate
       end do
       self%max_penetration = penetration(stepper)
@@ -365,8 +366,8 @@ contains
          u = contact_value(stepper%contacts, c, stepper%u)
          depth = max(depth, stepper%contacts%lower(c) - u, u - stepper%contacts%upper(c))
       end do
-      do c = 1, stepper%holes%circles%count   ! |r - c| - R beyond a circle's wall
-         depth = max(depth, norm2(stepper%holes%circles%offset(c, stepper%u)) - stepper%holes%circles%radius(c))
+      do c = 1, stepper%holes%circles%count   ! beyond a circle's (or a flat point's) wall
+         depth = max(depth, stepper%holes%circles%penetration(c, stepper%u))
       end do
    end function penetration
 

@@ -69,9 +69,10 @@ contains
       end do
    end subroutine setup
 
-   !> Rigid walls: point k is active when R_k - |r~_k| <= `tolerance` at the predicted
-   !! position r~ = (v, w) - c of U^n + gamma dt V^n. Its constraint row is an inward unit
-   !! normal h_k, frozen over each solve (the tangent half-plane of the circle), its
+   !> Rigid walls: point k is active when its gap (R_k - |r~_k - c_k| for a circle, h_k.r~_k -
+   !! b_k for a flat point) is at most `tolerance` at the predicted position r~ = (v, w) of
+   !! U^n + gamma dt V^n. Its constraint row is an inward unit normal h_k, frozen over each
+   !! solve (the tangent half-plane of the circle; a flat point's fixed normal), its
    !! friction row the tangent t_k = (-h_z, h_y). Frictionless, Newton's law
    !! 0 <= p _|_ H (V^{n+1} + E V^n) >= 0 is the LCP(D, q) of the active points,
    !! D = H W^-1 H^T (from G_y, G_z), q = H V_free + E H V^n (`solve_lcp`); with friction
@@ -94,7 +95,7 @@ contains
       integer, parameter :: max_solves = 50
       real(dp), allocatable :: d(:, :), q(:), p(:), w(:), next(:, :), mu(:)
       type(frictional_contact_solution) :: solution
-      real(dp) :: r(2), distance, moved
+      real(dp) :: r(2), moved
       integer :: k, a, m, j, iterations, solve
       logical :: frictional
       stat = 0
@@ -103,12 +104,11 @@ contains
       m = 0
       associate (circles => self%circles)
          do k = 1, circles%count
-            r = circles%offset(k, u) + gamma*dt*point(v, k)
-            distance = norm2(r)
-            if (circles%radius(k) - distance > tolerance) cycle
+            r = circles%position(k, u) + gamma*dt*point(v, k)
+            if (circles%gap_at(k, r) > tolerance) cycle
             m = m + 1
             self%active(m) = k
-            self%normal(:, m) = -r/distance
+            self%normal(:, m) = circles%normal_at(k, r)
          end do
          self%count = m
          self%solves = 0
@@ -147,8 +147,8 @@ contains
             moved = 0
             do a = 1, m
                k = self%active(a)
-               r = circles%offset(k, u) + 0.5_dp*dt*(theta*point(v_new, k) + (1 - theta)*point(v, k))
-               next(:, a) = -r/norm2(r)
+               r = circles%position(k, u) + 0.5_dp*dt*(theta*point(v_new, k) + (1 - theta)*point(v, k))
+               next(:, a) = circles%normal_at(k, r)
                moved = max(moved, maxval(abs(next(:, a) - self%normal(:, a))))
             end do
             if (moved <= normal_tolerance) exit

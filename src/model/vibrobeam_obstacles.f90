@@ -170,11 +170,12 @@ contains
       call collect_springs(nodes, obstacles, contacts)
    end subroutine build_contact_points
 
-   !> The contact points of the circular obstacles on `model`'s mesh (a beam of two
-   !! planes, Hermite elements: the deflection at a node is one unknown): every node an
-   !! obstacle covers (`covered_nodes`) whose deflection no support holds. stat =
-   !! stat_failure when two circles cover one node (one hole per node and plane of
-   !! support, for now).
+   !> The contact points of the obstacles of a beam of two planes on `model`'s mesh
+   !! (Hermite elements: the deflection at a node is one unknown): every node a circle
+   !! covers (`covered_nodes`) whose deflection no support holds, and every node a level
+   !! covers, a flat point (its side's inward normal (+-1, 0), its level at the node as for
+   !! a planar beam, `level_at`). stat = stat_failure when two circles cover one node (one
+   !! hole per node and plane of support, for now).
    subroutine build_circle_points(obstacles, model, circles, warnings, stat, errmsg)
       type(obstacle_type), intent(in) :: obstacles(:)
       type(beam_model), intent(in) :: model
@@ -182,52 +183,86 @@ contains
       character(len=:), allocatable, intent(inout) :: warnings
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      integer :: source(0:model%elements), k, i, first, last, dofs(4)
-      real(dp) :: weights(4)
+      integer :: source(0:model%elements), k, i, first, last, dofs(4), n
+      integer, allocatable :: point_node(:), point_obstacle(:)
+      real(dp) :: weights(4), side
       stat = 0
       errmsg = ''
       source = 0
+      allocate (point_node(0), point_obstacle(0))
       do k = 1, size(obstacles)
-         if (.not. obstacles(k)%circle()) cycle
          call covered_nodes(obstacles(k), k, model, first, last, warnings)
          do i = first, last
             if (model%deflection_held(i)) cycle
-            if (source(i) /= 0) then
-               stat = stat_failure
-               errmsg = '&obstacles shape('//integer_text(k)//') = ''circle'' and shape('//integer_text(source(i))// &
-                        ') = ''circle'' both act at the node x = '//real_text(model%x(i + 1))//' m: give one '// &
-                        'circle per node'
-               return
+            if (obstacles(k)%circle()) then
+               if (source(i) /= 0) then
+                  stat = stat_failure
+                  errmsg = '&obstacles shape('//integer_text(k)//') = ''circle'' and shape('// &
+                           integer_text(source(i))//') = ''circle'' both act at the node x = '// &
+                           real_text(model%x(i + 1))//' m: give one circle per node'
+                  return
+               end if
+               source(i) = k
             end if
-            source(i) = k
+            point_node = [point_node, i]
+            point_obstacle = [point_obstacle, k]
          end do
       end do
-      circles%count = count(source > 0)
-      allocate (circles%node(circles%count), circles%x(circles%count), circles%dof(circles%count), &
-                circles%radius(circles%count), circles%center(2, circles%count), circles%obstacle(circles%count), &
-                circles%stiffness(circles%count), circles%exponent(circles%count), circles%damping(circles%count), &
-                circles%friction(circles%count))
+      ! the points by node, each node's in the obstacles' order
+      n = size(point_node)
+      circles%count = n
+      allocate (circles%node(n), circles%x(n), circles%dof(n), circles%radius(n), circles%center(2, n), &
+                circles%flat(n), circles%normal(2, n), circles%bound(n), circles%obstacle(n), circles%stiffness(n), &
+                circles%exponent(n), circles%damping(n), circles%friction(n))
       k = 0
       do i = 0, model%elements
-         if (source(i) == 0) cycle
-         k = k + 1
-         circles%node(k) = i
-         circles%x(k) = model%x(i + 1)
-         call node_row(model, i, dofs, weights)
-         circles%dof(k) = dofs(1)   ! Hermite: the node's deflection, weight 1 (`plane_rules`)
-         associate (o => obstacles(source(i)))
-            circles%radius(k) = o%radius
-            circles%center(:, k) = [merge(0.0_dp, o%center_y, is_unset(o%center_y)), &
-                                    merge(0.0_dp, o%center_z, is_unset(o%center_z))]
-            circles%stiffness(k) = o%stiffness   ! a punctual circle (`plane_rules`): N/m^a at its node
-            circles%exponent(k) = o%exponent
-            circles%damping(k) = o%damping
-            circles%friction(k) = merge(0.0_dp, o%friction, is_unset(o%friction))
-         end associate
-         circles%obstacle(k) = source(i)
+         do first = 1, n
+            if (point_node(first) /= i) cycle
+            k = k + 1
+            circles%node(k) = i
+            circles%x(k) = model%x(i + 1)
+            call node_row(model, i, dofs, weights)
+            circles%dof(k) = dofs(1)   ! Hermite: the node's deflection, weight 1 (`plane_rules`)
+            circles%obstacle(k) = point_obstacle(first)
+            associate (o => obstacles(point_obstacle(first)))
+               circles%flat(k) = .not. o%circle()
+               circles%radius(k) = 0
+               circles%center(:, k) = 0
+               circles%normal(:, k) = 0
+               circles%bound(k) = 0
+               if (o%circle()) then
+                  circles%radius(k) = o%radius
+                  circles%center(:, k) = [merge(0.0_dp, o%center_y, is_unset(o%center_y)), &
+                                          merge(0.0_dp, o%center_z, is_unset(o%center_z))]
+               else   ! a level: y >= level below (h = (1, 0)), y <= level above (h = (-1, 0))
+                  side = merge(1.0_dp, -1.0_dp, o%side == 'below')
+                  circles%normal(:, k) = [side, 0.0_dp]
+                  circles%bound(k) = side*level_at(o, model, i)
+               end if
+               circles%stiffness(k) = o%stiffness   ! a punctual circle (`plane_rules`): N/m^a at its node
+               circles%exponent(k) = o%exponent
+               circles%damping(k) = o%damping
+               circles%friction(k) = merge(0.0_dp, o%friction, is_unset(o%friction))
+            end associate
+         end do
       end do
       circles%compliant = circles%count > 0 .and. all(circles%stiffness > 0)
    end subroutine build_circle_points
+
+   !> The level of obstacle `o` (without a profile) at node i: level_from, or linear from
+   !! level_from at x_from to level_to at x_to (m).
+   pure real(dp) function level_at(o, model, i)
+      type(obstacle_type), intent(in) :: o
+      type(beam_model), intent(in) :: model
+      integer, intent(in) :: i
+      real(dp) :: xi
+      if (o%x_to - o%x_from <= 1e-9_dp*model%h .or. abs(o%level_to - o%level_from) <= 0) then
+         level_at = o%level_from
+      else
+         xi = min(1.0_dp, max(0.0_dp, (model%x(i + 1) - o%x_from)/(o%x_to - o%x_from)))
+         level_at = (1 - xi)*o%level_from + xi*o%level_to
+      end if
+   end function level_at
 
    !> Is obstacle `self` a circle (&obstacles shape = 'circle')?
    pure logical function circle(self)
@@ -280,17 +315,14 @@ contains
       type(beam_model), intent(in) :: model
       type(linear_table), intent(in) :: profile   !! the obstacle's profile (none: not allocated)
       type(nodal_bounds), intent(inout) :: nodes
-      real(dp) :: level, xi, tolerance
+      real(dp) :: level, tolerance
       integer :: i, j
       tolerance = 1e-9_dp*model%h
       do i = first, last
          if (allocated(profile%x)) then
             level = profile%at(model%x(i + 1))
-         else if (o%x_to - o%x_from <= tolerance .or. abs(o%level_to - o%level_from) <= 0) then
-            level = o%level_from
          else
-            xi = min(1.0_dp, max(0.0_dp, (model%x(i + 1) - o%x_from)/(o%x_to - o%x_from)))
-            level = (1 - xi)*o%level_from + xi*o%level_to
+            level = level_at(o, model, i)
          end if
          if (o%stiffness > 0) then
             ! a spring, never a bound; a held node never moves and gets none

@@ -200,10 +200,9 @@ contains
             return
          end if
          if (scanned%is_given('obstacles', 'radius', i) .or. scanned%is_given('obstacles', 'center_y', i) .or. &
-             scanned%is_given('obstacles', 'center_z', i) .or. scanned%is_given('obstacles', 'friction', i)) then
-            errmsg = '&obstacles radius('//number//'), center_y('//number//'), center_z('//number//') or '// &
-                     'friction('//number//') is given for a level obstacle: give shape('//number//') = ''circle'' '// &
-                     'or remove them'
+             scanned%is_given('obstacles', 'center_z', i)) then
+            errmsg = '&obstacles radius('//number//'), center_y('//number//') or center_z('//number//') is given '// &
+                     'for a level obstacle: give shape('//number//') = ''circle'' or remove them'
             return
          end if
          scene%obstacles(i) = read(i)

@@ -411,7 +411,8 @@ contains
       integer, intent(inout) :: stat
       character(len=*), intent(inout) :: errmsg
       character(len=*), parameter :: planar = ' is not available with &beam planes = 2 yet (issue 21: the two-plane '// &
-                                              'model runs the velocity scheme, with circular holes, so far); '
+                                              'model runs the velocity scheme, with circular holes and rigid levels, '// &
+                                              'so far); '
       integer :: i
       if (scene%beam%plane_count() == 1) then
          call no_direction('load', 'direction', scene%load%direction)
@@ -421,14 +422,22 @@ contains
             if (scene%obstacles(i)%circle()) &
                call fail(stat, errmsg, '&obstacles shape('//integer_text(i)//') = ''circle'' needs &beam planes = 2: '// &
                          'a hole in the cross-section holds both deflections; give planes = 2, or shape = ''level''')
+            if (.not. is_unset(scene%obstacles(i)%friction)) &
+               call fail(stat, errmsg, '&obstacles friction('//integer_text(i)//') = '// &
+                         real_text(scene%obstacles(i)%friction)//' needs &beam planes = 2: a planar beam''s contact '// &
+                         'has no tangent to slide along (the beam has no axial motion); give planes = 2 or remove it')
          end do
          return
       end if
       do i = 1, size(scene%obstacles)
          associate (o => scene%obstacles(i))
-            if (.not. o%circle()) &
-               call fail(stat, errmsg, '&obstacles shape('//integer_text(i)//') = ''level'''//planar// &
-                         'give shape('//integer_text(i)//') = ''circle''')
+            ! a level: a flat point of the cross-section (its normal +-y), rigid, flat
+            if (.not. o%circle() .and. o%stiffness > 0) &
+               call fail(stat, errmsg, '&obstacles stiffness('//integer_text(i)//') = '//real_text(o%stiffness)// &
+                         ' N/m (a compliant level)'//planar//'levels are rigid so far: stiffness = 0')
+            if (.not. o%circle() .and. len_trim(o%profile) > 0) &
+               call fail(stat, errmsg, '&obstacles profile('//integer_text(i)//') = '''//trim(o%profile)//''''// &
+                         planar//'give level_from and level_to')
             if (o%stiffness > 0 .and. .not. is_unset(o%friction)) then
                if (o%friction > 0) &
                   call fail(stat, errmsg, '&obstacles friction('//integer_text(i)//') = '//real_text(o%friction)// &
@@ -447,7 +456,7 @@ contains
          end associate
       end do
       if (size(scene%obstacles) > 0 .and. scene%mesh%basis /= 'hermite') &
-         call fail(stat, errmsg, '&mesh basis = '''//trim(scene%mesh%basis)//''' with circular obstacles'//planar// &
+         call fail(stat, errmsg, '&mesh basis = '''//trim(scene%mesh%basis)//''' with obstacles'//planar// &
                    'allowed: ''hermite''')
       if (scene%analysis%kind /= 'dynamics') &
          call fail(stat, errmsg, '&analysis kind = '''//trim(scene%analysis%kind)//''''//planar//'allowed: ''dynamics''')
