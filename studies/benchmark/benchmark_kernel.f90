@@ -39,6 +39,7 @@ program benchmark_kernel
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_modes, only: compute_modes
    use vibrobeam_scene, only: scene_type, obstacle_type
+   use vibrobeam_schema_visitor, only: unset
    use vibrobeam_scene_rules, only: validate_scene
    use vibrobeam_problem, only: run_problem, build_problem, new_stepper
    use vibrobeam_time_stepper, only: time_stepper
@@ -51,11 +52,13 @@ program benchmark_kernel
    integer, parameter :: workload_lapack = 1, workload_kernel = 2, workload_fused = 3, workload_step = 4, &
                          workload_dpbtrs = 5, workload_solve = 6, workload_dsbmv = 7, workload_matvec = 8, &
                          workload_stacked = 9, workload_interleaved = 10, workload_stacked_fused = 11, &
-                         workload_step_two = 12, workload_step_two_own = 13
-   character(len=*), parameter :: workload_names(13) = [character(len=14) :: 'dpbtrs+dsbmv', 'solve+matvec', &
+                         workload_step_two = 12, workload_step_two_own = 13, workload_pressed = 14, &
+                         workload_pressed_level = 15, workload_pressed_circle = 16
+   character(len=*), parameter :: workload_names(16) = [character(len=14) :: 'dpbtrs+dsbmv', 'solve+matvec', &
                                                         'fused', 'step', 'dpbtrs', 'solve (kd=3)', 'dsbmv', &
                                                         'matvec (kd=3)', 'stacked', 'interleaved', 'stacked fused', &
-                                                        'step 2 planes', 'step 2, own Kz']
+                                                        'step 2 planes', 'step 2, own Kz', 'pressed', &
+                                                        'pressed 2, lvl', 'pressed 2, hole']
 
    !> Everything a workload works on.
    type :: bench_case
@@ -71,6 +74,9 @@ program benchmark_kernel
       !> the free flight of two planes (&beam planes = 2, velocity at 45 degrees: both
       !! planes move), sharing W, and with a z stiffness of its own (inertia_z = 2 inertia)
       class(time_stepper), allocatable :: stepper_two, stepper_two_own
+      !> in contact at every step: the tip pressed by a constant force onto a stop at its rest
+      !! position, planar, two planes on a level, two planes on a circle's wall
+      class(time_stepper), allocatable :: pressed, pressed_level, pressed_circle
    end type bench_case
 
    character(len=32) :: command
@@ -148,6 +154,18 @@ contains
       call two_plane_stepper(scene, case%stepper_two)
       scene%beam%inertia_z = 2
       call two_plane_stepper(scene, case%stepper_two_own)
+      ! in contact: a stop at the tip's rest position, the tip pressed onto it by 1 N
+      scene%beam%inertia_z = unset
+      scene%initial%velocity = 'zero'
+      scene%initial%direction = unset
+      scene%load%point_force = -1
+      scene%obstacles = [obstacle_type(side='below', x_from=1.0_dp, x_to=1.0_dp, level_from=0.0_dp, level_to=0.0_dp)]
+      call two_plane_stepper(scene, case%pressed_level)
+      scene%obstacles = [obstacle_type(shape='circle', x_from=1.0_dp, x_to=1.0_dp, radius=1.0_dp, center_y=1.0_dp)]
+      call two_plane_stepper(scene, case%pressed_circle)
+      scene%obstacles = [obstacle_type(side='below', x_from=1.0_dp, x_to=1.0_dp, level_from=0.0_dp, level_to=0.0_dp)]
+      scene%beam%planes = 1
+      call two_plane_stepper(scene, case%pressed)
       case%iteration_matrix = band_combination(1.0_dp, case%model%mass, (theta*time_step)**2, case%model%stiffness)
       call band_factor(case%iteration_matrix, case%kernel_factor, stat, errmsg)
       if (stat /= 0) call fail('band_factor', stat, errmsg)
@@ -243,12 +261,29 @@ contains
          case (workload_step_two_own)
             call case%stepper_two_own%step(stat, errmsg)
             if (stat /= 0) call fail('step (two planes, own K_z)', stat, errmsg)
+         case (workload_pressed)
+            call pressed_step(case%pressed)
+         case (workload_pressed_level)
+            call pressed_step(case%pressed_level)
+         case (workload_pressed_circle)
+            call pressed_step(case%pressed_circle)
          case (workload_stacked_fused)
             call band_residual_solve(case%kernel_factor, case%model%stiffness, case%x2(:, 1), case%b, case%y2(:, 1))
             call band_residual_solve(case%kernel_factor, case%model%stiffness, case%x2(:, 2), case%b, case%y2(:, 2))
          end select
       end do
    end subroutine run
+
+   !> One step of a stepper pressed onto its stop (which must hold the tip in every step).
+   subroutine pressed_step(stepper)
+      class(time_stepper), intent(inout) :: stepper
+      integer :: stat
+      character(len=256) :: errmsg
+      call stepper%step(stat, errmsg)
+      if (stat /= 0) call fail('step (pressed)', stat, errmsg)
+      if (stepper%report%active_count + stepper%report%circle_count /= 1) &
+         call fail('pressed', 1, 'the tip is not held in every step')
+   end subroutine pressed_step
 
    !> Wall and CPU seconds of `calls` calls.
    subroutine timed(case, workload, calls, wall, cpu)
@@ -331,29 +366,34 @@ contains
    !! stacked/planar and interleaved/planar with LAPACK, stacked/planar with the fused
    !! kernel, the estimated cost of a two-plane step relative to the planar step had the
    !! layout been interleaved, (step - fused + interleaved)/step (LAPACK at half-width 7,
-   !! there being no kd = 7 kernel), and the measured two-plane steps over the planar
-   !! step (issue 21's bound: 2.5).
+   !! there being no kd = 7 kernel), the measured two-plane steps over the planar step
+   !! (issue 21's bound: 2.5), in free flight and in contact (the tip pressed onto a stop
+   !! in every step: two planes on a level and in a circle's wall, against the planar beam
+   !! on the same level).
    subroutine planes_table()
       integer, parameter :: workloads(*) = [workload_lapack, workload_stacked, workload_interleaved, &
                                             workload_fused, workload_stacked_fused, workload_step, &
-                                            workload_step_two, workload_step_two_own]
+                                            workload_step_two, workload_step_two_own, workload_pressed, &
+                                            workload_pressed_level, workload_pressed_circle]
       type(bench_case) :: case
       real(dp) :: per_call(repetitions, size(workloads)), cpu_fraction
       integer :: s, w
       write (output_unit, '(a)') '# time per call (microseconds): median of 7 interleaved batches of >= 0.05 s; '// &
          'ratios: medians of the paired ratios'
-      write (output_unit, '(a8,8a15,6a15,a10)') 'J', (trim(workload_names(workloads(w))), w=1, size(workloads)), &
+      write (output_unit, '(a8,11a15,8a15,a10)') 'J', (trim(workload_names(workloads(w))), w=1, size(workloads)), &
          'stacked/floor', 'interl./floor', 'st.fused/fused', 'step interl.', '2 planes/step', 'own Kz/step', &
-         'cpu/wall'
+         'pressed lvl/1', 'pressed hole/1', 'cpu/wall'
       do s = 1, size(sizes)
          call set_up(sizes(s), case)
          call batches(case, workloads, per_call, cpu_fraction)
          associate (floor => per_call(:, 1), stacked => per_call(:, 2), interleaved => per_call(:, 3), &
                     fused => per_call(:, 4), stacked_fused => per_call(:, 5), step => per_call(:, 6), &
-                    step_two => per_call(:, 7), step_own => per_call(:, 8))
-            write (output_unit, '(i8,8f15.3,6f15.3,f10.2)') sizes(s), (1e6_dp*median(per_call(:, w)), w=1, 8), &
+                    step_two => per_call(:, 7), step_own => per_call(:, 8), pressed => per_call(:, 9), &
+                    pressed_level => per_call(:, 10), pressed_circle => per_call(:, 11))
+            write (output_unit, '(i8,11f15.3,8f15.3,f10.2)') sizes(s), (1e6_dp*median(per_call(:, w)), w=1, 11), &
                median(stacked/floor), median(interleaved/floor), median(stacked_fused/fused), &
-               median((step - fused + interleaved)/step), median(step_two/step), median(step_own/step), cpu_fraction
+               median((step - fused + interleaved)/step), median(step_two/step), median(step_own/step), &
+               median(pressed_level/pressed), median(pressed_circle/pressed), cpu_fraction
          end associate
          flush (output_unit)
       end do
