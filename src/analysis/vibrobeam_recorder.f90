@@ -35,6 +35,7 @@ module vibrobeam_recorder
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_problem, only: run_problem
    use vibrobeam_hdf5, only: h5_writer
+   use vibrobeam_support_wear, only: support_wear
    use vibrobeam_histories, only: run_histories, history_paths, history_count, h_time, h_tip_u, h_tip_v, &
       h_tip_reaction, h_tip_impulse, h_kinetic, h_elastic, h_total, h_work, h_dissipated, h_impacts, h_damping, &
       h_numerical, h_balance, h_penetration
@@ -89,6 +90,7 @@ module vibrobeam_recorder
       !> circular holes (two planes): each point received an impulse in the last step (or
       !! rested on its wall at t = 0)
       logical, allocatable :: circle_in_contact(:)
+      type(support_wear) :: wear                     !! impacts, forces, sliding and wear at those points
       type(run_spectra) :: spectra                   !! /spectrum: the tip's and the observation points'
       type(forces_psd) :: forces_spectra             !! /forces: the random loads' densities (none without)
       type(episode_tracker) :: episodes
@@ -185,6 +187,9 @@ contains
                                                     circles%position(c, problem%start%v)) >= 0
          end associate
       end do
+      if (stepper%holes%circles%count > 0) &
+         call self%wear%init(stepper%holes%circles, window_first_step(scene%output%measure_from, scene%time%dt), &
+                             last_step, scene%time%dt, wear_coefficients(stepper%holes%circles%obstacle))
       self%max_penetration = penetration(stepper)
       self%max_penetration_time = stepper%t
       self%point_x = scene%output%points
@@ -220,6 +225,18 @@ contains
       end if
       end associate
    contains
+      !> Archard's coefficient of each point's obstacle (-1: not given).
+      function wear_coefficients(obstacle) result(k)
+         integer, intent(in) :: obstacle(:)
+         real(dp) :: k(size(obstacle))
+         integer :: i
+         do i = 1, size(obstacle)
+            k(i) = -1
+            if (.not. is_unset(scene%obstacles(obstacle(i))%wear_coefficient)) &
+               k(i) = scene%obstacles(obstacle(i))%wear_coefficient
+         end do
+      end function wear_coefficients
+
       !> The row sum_a weights(a) T(dofs(a), :) of a value of U.
       function reduced_row(dofs, weights) result(row)
          integer, intent(in) :: dofs(4)
@@ -349,6 +366,7 @@ contains
       if (stat == 0 .and. allocated(self%forces_spectra%loads)) call self%forces_spectra%create(writer, stat, errmsg)
       if (stat == 0) call self%episodes%create_datasets(writer, stat, errmsg)
       if (stat == 0 .and. self%compliant) call self%files%create_compliant(writer, stepper%contacts, stat, errmsg)
+      if (stat == 0) call self%wear%create_datasets(writer, stepper%holes%circles, stat, errmsg)
       if (stat == 0 .and. self%statistics%active) &
          call self%statistics_files%create(writer, self%statistics%layout, [self%length, self%point_x], &
                                            stepper%contacts%x, stepper%contacts%lower_obstacle, &
@@ -447,22 +465,44 @@ contains
          integer, intent(out) :: stat
          character(len=*), intent(out) :: errmsg
          logical :: held(size(self%circle_in_contact))
+         real(dp) :: tangent(2), slip, impulse, mu
          integer :: k, point
          stat = 0
          errmsg = ''
          held = .false.
-         do k = 1, stepper%report%circle_count
-            if (stepper%report%circle_impulse(k) <= 0) cycle
-            point = stepper%report%circle_active(k)
-            held(point) = .true.
-            if (self%circle_in_contact(point) .or. stepper%report%circle_before(k) > 0) cycle
-            self%impacts = self%impacts + 1
-            if (self%write_rows) call self%files%append_impact([stepper%report%impulse_time, stepper%holes%circles%x(point), &
-                                                                stepper%report%circle_impulse(k), &
-                                                                stepper%report%circle_before(k), &
-                                                                stepper%report%circle_after(k)], stat, errmsg)
-            if (stat /= 0) return
-         end do
+         associate (circles => stepper%holes%circles, r => stepper%report, holes => stepper%holes)
+            do k = 1, r%circle_count
+               if (r%circle_impulse(k) <= 0) cycle
+               point = r%circle_active(k)
+               held(point) = .true.
+               ! the wear tally: the step's tangential velocity t.V^{n+theta} at the point
+               tangent = [-r%circle_normal(2, k), r%circle_normal(1, k)]
+               slip = stepper%theta*dot_product(tangent, circles%position(point, stepper%v)) + &
+                      (1 - stepper%theta)*r%circle_tangential_before(k)
+               mu = circles%friction(point)
+               call self%wear%observe(stepper%steps, point, r%circle_impulse(k), slip, &
+                                      mu <= 0 .or. abs(r%circle_friction(k)) >= mu*r%circle_impulse(k)*(1 - 1e-9_dp))
+               if (self%circle_in_contact(point) .or. r%circle_before(k) > 0) cycle
+               self%impacts = self%impacts + 1
+               call self%wear%count_impact(stepper%steps, point)
+               if (self%write_rows) call self%files%append_impact([r%impulse_time, circles%x(point), &
+                                                                   r%circle_impulse(k), r%circle_before(k), &
+                                                                   r%circle_after(k)], stat, errmsg)
+               if (stat /= 0) return
+            end do
+            ! compliant walls: the force over the step along its direction, frictionless
+            if (circles%compliant) then
+               do point = 1, circles%count
+                  impulse = holes%f(point)*stepper%dt
+                  if (impulse <= 0) cycle
+                  held(point) = .true.
+                  tangent = [holes%force(2, point), -holes%force(1, point)]/norm2(holes%force(:, point))
+                  slip = dot_product(tangent, stepper%theta*circles%position(point, stepper%v) + &
+                                     (1 - stepper%theta)*holes%start_velocity(:, point))
+                  call self%wear%observe(stepper%steps, point, impulse, slip, .true.)
+               end do
+            end if
+         end associate
          self%circle_in_contact = held
       end subroutine circle_impacts
    end subroutine after_step
@@ -582,6 +622,7 @@ contains
       if (stat /= 0) return
       call self%files%finish(writer, self%contact_time/max(stepper%t, tiny(1.0_dp)), self%max_penetration, &
                              self%max_penetration_time, self%impacts, self%peak_force, stat, errmsg)
+      if (stat == 0) call self%wear%write(stat, errmsg)
       if (stat == 0) call self%spectra%finish(writer, stat, errmsg)
       call self%spectra%close()
       if (allocated(self%forces_spectra%loads)) then

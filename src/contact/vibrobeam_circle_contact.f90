@@ -35,6 +35,7 @@ module vibrobeam_circle_contact
       ! what the last compliant step did, per point: radial penetrations at its start and
       ! end (m), force magnitude and its elastic part (N), force vector on the beam (N)
       real(dp), allocatable :: p0(:), p1(:), f(:), elastic(:), force(:, :)
+      real(dp), allocatable :: start_velocity(:, :)   !! (2, circles) each point's (v, w) rate at the step's start
    contains
       procedure :: setup
       procedure :: rigid_step
@@ -58,7 +59,8 @@ contains
       m = circles%count
       allocate (self%delassus(m, m, 2), self%push(2*factor_y%n), self%active(m), self%normal(2, m), self%impulse(m), &
                 self%tangential(m), self%before(m), self%tangential_before(m))
-      allocate (self%p0(m), self%p1(m), self%f(m), self%elastic(m), self%force(2, m), source=0.0_dp)
+      allocate (self%p0(m), self%p1(m), self%f(m), self%elastic(m), self%force(2, m), self%start_velocity(2, m), &
+                source=0.0_dp)
       do plane = 1, 2
          do k = 1, m
             column = 0
@@ -263,6 +265,7 @@ contains
          do k = 1, m
             c = circles%dof(k)
             v0(:, k) = [v(c), v(j + c)]
+            self%start_velocity(:, k) = v0(:, k)
             x_free(:, k) = [v_free(c), v_free(j + c)]
             r0(:, k) = circles%offset(k, u)
             self%p0(k) = norm2(r0(:, k)) - circles%radius(k)

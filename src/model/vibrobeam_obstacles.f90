@@ -65,6 +65,9 @@ module vibrobeam_obstacles
       !> Coulomb's friction coefficient mu at a circle's wall (unset: 0, frictionless;
       !! listed only when given)
       real(dp) :: friction = unset
+      !> Archard's wear coefficient K (m^3/(N m)) of the obstacle's wall, for the wear
+      !! volume rate K W' (unset: none; a beam of two planes only, listed only when given)
+      real(dp) :: wear_coefficient = unset
    contains
       procedure :: circle                           !! is it a circle?
    end type obstacle_type
@@ -139,6 +142,9 @@ contains
          call visitor%variable(real_row('obstacles', 'friction', '', 0.0_dp, 10.0_dp, &
                                         'Coulomb friction coefficient mu at a circle''s wall (default 0)', n, i, &
                                         optional=.true.), o%friction)
+         call visitor%variable(real_row('obstacles', 'wear_coefficient', 'm^3/(N m)', 0.0_dp, 1.0_dp, &
+                                        'Archard''s wear coefficient K: wear volume rate K times the work rate', n, i, &
+                                        optional=.true.), o%wear_coefficient)
       end subroutine visit_one
    end subroutine visit_obstacles
 

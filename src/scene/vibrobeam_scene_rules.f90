@@ -422,6 +422,10 @@ contains
             if (scene%obstacles(i)%circle()) &
                call fail(stat, errmsg, '&obstacles shape('//integer_text(i)//') = ''circle'' needs &beam planes = 2: '// &
                          'a hole in the cross-section holds both deflections; give planes = 2, or shape = ''level''')
+            if (.not. is_unset(scene%obstacles(i)%wear_coefficient)) &
+               call fail(stat, errmsg, '&obstacles wear_coefficient('//integer_text(i)//') = '// &
+                         real_text(scene%obstacles(i)%wear_coefficient)//' m^3/(N m) needs &beam planes = 2: the '// &
+                         'wear at the supports is a two-plane output (docs/statistics.md); give planes = 2 or remove it')
             if (.not. is_unset(scene%obstacles(i)%friction)) &
                call fail(stat, errmsg, '&obstacles friction('//integer_text(i)//') = '// &
                          real_text(scene%obstacles(i)%friction)//' needs &beam planes = 2: a planar beam''s contact '// &

@@ -117,7 +117,7 @@ SCENE_E = """
            inertia = 1.6666666666666667e-9, inertia_z = 2e-9, planes = 2 /
 &mesh      elements = 4 /
 &obstacles count = 1, shape(1) = 'circle', x_from(1) = 0.5, radius(1) = 1e-3, center_y(1) = 1e-4,
-           center_z(1) = -1e-4, friction(1) = 0.2 /
+           center_z(1) = -1e-4, friction(1) = 0.2, wear_coefficient(1) = 1e-14 /
 &time      dt = 2e-5 @TIME@ /
 &load      point_force = 0.1, point_frequency = 300, direction = 30 /
 &output    file = 'scene.h5', text = .false. @OUTPUT@ /
@@ -149,6 +149,7 @@ EXPECTED = {
     'obstacles.center_y(1)': [('E', '&sweep is not available with &beam planes = 2')],
     'obstacles.center_z(1)': [('E', '&sweep is not available with &beam planes = 2')],
     'obstacles.friction(1)': [('E', '&sweep is not available with &beam planes = 2')],
+    'obstacles.wear_coefficient(1)': [('E', '&sweep is not available with &beam planes = 2')],
     'initial.direction': [('A', 'is given with &beam planes = 1')],
     'initial.displacement_direction': [('A', 'is given with &beam planes = 1')],
     # the sections cover the whole beam: the last one ends at L

@@ -1,0 +1,222 @@
+!> Impacts, forces, sliding and wear at the points of the obstacles of a beam of two planes
+!! (circles and levels; docs/statistics.md, "Wear at the supports"), over the statistics
+!! window (&output measure_from to the end), each with a standard error from batch means.
+!!
+!! Per point, from each step n in the window that the wall held (normal impulse P_n > 0,
+!! rigid walls; the force f dt of a compliant one), the step's tangential velocity
+!! v_t = t.V^{n+theta} at the point (t the tangent of the step's normal) and its length dt:
+!! - normal work rate (wear work rate) W' = (1/T) sum_n P_n |v_t| (W): the impulse form of
+!!   (1/T) int F_n |v_t| dt, F_n = P_n/dt over the step;
+!! - mean normal force (1/T) sum_n P_n and RMS normal force sqrt((1/T) sum_n P_n^2/dt) (N);
+!! - contact fraction (held steps) dt/T, sliding fraction (held steps whose point
+!!   slides: friction at its bound, mu |r_T| >= mu p (1 - 1e-9), or no friction) dt/T;
+!! - impact rate: impacts (an impulse after a free step, towards the wall) per second;
+!! - Archard's wear volume rate K W' (m^3/s) where the obstacle's wear_coefficient K is
+!!   given.
+!! Standard errors: the window cut into `batches` equal batches of steps, each quantity
+!! computed per batch, the standard deviation of the batch values over sqrt(batches)
+!! (independent batches: a window long against the motion's correlation time).
+module vibrobeam_support_wear
+   use vibrobeam_kinds, only: dp, int64
+   use vibrobeam_circle_set, only: circle_set
+   use vibrobeam_hdf5, only: h5_writer
+   use vibrobeam_hdf5_series, only: h5_array
+   implicit none
+   private
+   public :: support_wear, wear_quantities, wear_names, wear_units
+
+   integer, parameter :: wear_quantities = 7
+   character(len=*), parameter :: wear_names(wear_quantities) = [character(len=20) :: 'work_rate', 'mean_force', &
+      'rms_force', 'contact_fraction', 'sliding_fraction', 'impact_rate', 'wear_volume_rate']
+   character(len=*), parameter :: wear_units(wear_quantities) = [character(len=8) :: 'W', 'N', 'N', '1', '1', &
+      '1/s', 'm^3/s']
+   integer, parameter :: batch_count = 16
+
+   type :: support_wear
+      logical :: active = .false.                  !! the scene has such points
+      integer :: points = 0
+      integer(int64) :: first_step = 1, last_step = 0   !! the window's steps
+      integer :: batches = batch_count
+      real(dp) :: dt = 0
+      real(dp), allocatable :: coefficient(:)      !! (points) Archard's K (m^3/(N m)); < 0: not given
+      !> (points, batches) sums over each batch: P |v_t|, P, P^2/dt, held steps, sliding
+      !! steps, impacts
+      real(dp), allocatable :: work(:, :), impulse(:, :), square(:, :), held(:, :), sliding(:, :), impacts(:, :)
+      type(h5_array) :: arrays(2, wear_quantities)   !! /wear/NAME and /wear/NAME_error
+      logical :: volume = .false.                  !! some coefficient given: wear_volume_rate written
+   contains
+      procedure :: create_datasets
+      procedure :: write
+      procedure :: init
+      procedure :: observe
+      procedure :: count_impact
+      procedure :: result
+   end type support_wear
+
+contains
+
+   !> For the points of `circles`, a window of steps first_step..last_step of length dt
+   !! each; `coefficient(k)` Archard's K of point k's obstacle (< 0: not given).
+   subroutine init(self, circles, first_step, last_step, dt, coefficient)
+      class(support_wear), intent(inout) :: self
+      type(circle_set), intent(in) :: circles
+      integer(int64), intent(in) :: first_step, last_step
+      real(dp), intent(in) :: dt, coefficient(:)
+      self%points = circles%count
+      self%active = circles%count > 0
+      self%first_step = max(1_int64, first_step)
+      self%last_step = last_step
+      self%dt = dt
+      self%batches = int(max(1_int64, min(int(batch_count, int64), last_step - self%first_step + 1)))
+      self%coefficient = coefficient
+      self%volume = any(coefficient >= 0)
+      allocate (self%work(self%points, self%batches), self%impulse(self%points, self%batches), &
+                self%square(self%points, self%batches), self%held(self%points, self%batches), &
+                self%sliding(self%points, self%batches), self%impacts(self%points, self%batches), source=0.0_dp)
+   end subroutine init
+
+   !> Batch of step n (0: outside the window).
+   pure integer function batch_of(self, n)
+      class(support_wear), intent(in) :: self
+      integer(int64), intent(in) :: n
+      batch_of = 0
+      if (n < self%first_step .or. n > self%last_step) return
+      batch_of = 1 + int((n - self%first_step)*self%batches/(self%last_step - self%first_step + 1))
+   end function batch_of
+
+   !> Step n's contact at point k: normal impulse `impulse` (N s, > 0 held), tangential
+   !! velocity `slip` (m/s, at V^{n+theta}), `sliding` whether it slid.
+   subroutine observe(self, n, k, impulse, slip, sliding)
+      class(support_wear), intent(inout) :: self
+      integer(int64), intent(in) :: n
+      integer, intent(in) :: k
+      real(dp), intent(in) :: impulse, slip
+      logical, intent(in) :: sliding
+      integer :: b
+      b = batch_of(self, n)
+      if (b == 0 .or. impulse <= 0) return
+      self%work(k, b) = self%work(k, b) + impulse*abs(slip)
+      self%impulse(k, b) = self%impulse(k, b) + impulse
+      self%square(k, b) = self%square(k, b) + impulse**2/self%dt
+      self%held(k, b) = self%held(k, b) + 1
+      if (sliding) self%sliding(k, b) = self%sliding(k, b) + 1
+   end subroutine observe
+
+   !> An impact at point k in step n.
+   subroutine count_impact(self, n, k)
+      class(support_wear), intent(inout) :: self
+      integer(int64), intent(in) :: n
+      integer, intent(in) :: k
+      integer :: b
+      b = batch_of(self, n)
+      if (b > 0) self%impacts(k, b) = self%impacts(k, b) + 1
+   end subroutine count_impact
+
+   !> The quantities of the module documentation (points, wear_quantities) over the whole
+   !! window and their standard errors; the wear volume rate is 0 where no coefficient is
+   !! given.
+   subroutine result(self, value, error)
+      class(support_wear), intent(in) :: self
+      real(dp), intent(out) :: value(:, :), error(:, :)   !! (points, wear_quantities)
+      real(dp) :: per_batch(self%batches), length(self%batches), window
+      integer :: k, q, b
+      integer(int64) :: steps
+      steps = self%last_step - self%first_step + 1
+      do b = 1, self%batches   ! the steps of batch b
+         length(b) = real(count_steps(b), dp)*self%dt
+      end do
+      window = real(steps, dp)*self%dt
+      do k = 1, self%points
+         do q = 1, wear_quantities
+            do b = 1, self%batches
+               per_batch(b) = quantity(q, k, [b], length(b))
+            end do
+            value(k, q) = quantity(q, k, [(b, b=1, self%batches)], window)
+            error(k, q) = 0
+            if (self%batches > 1) error(k, q) = sqrt(sum((per_batch - sum(per_batch)/self%batches)**2)/ &
+                                                     (self%batches - 1)/self%batches)
+         end do
+      end do
+   contains
+      !> Quantity q of point k over the batches `in` of total length `time` (s).
+      pure real(dp) function quantity(q, k, in, time)
+         integer, intent(in) :: q, k, in(:)
+         real(dp), intent(in) :: time
+         select case (q)
+         case (1)
+            quantity = sum(self%work(k, in))/time
+         case (2)
+            quantity = sum(self%impulse(k, in))/time
+         case (3)
+            quantity = sqrt(sum(self%square(k, in))/time)
+         case (4)
+            quantity = sum(self%held(k, in))*self%dt/time
+         case (5)
+            quantity = sum(self%sliding(k, in))*self%dt/time
+         case (6)
+            quantity = sum(self%impacts(k, in))/time
+         case default
+            quantity = max(0.0_dp, self%coefficient(k))*sum(self%work(k, in))/time
+         end select
+      end function quantity
+      !> Steps of batch b: n - first_step in [ceil((b - 1) N/B), ceil(b N/B) - 1].
+      pure integer(int64) function count_steps(b)
+         integer, intent(in) :: b
+         count_steps = ceiling_ratio(b*steps, self%batches) - ceiling_ratio((b - 1)*steps, self%batches)
+      end function count_steps
+      pure integer(int64) function ceiling_ratio(a, d)
+         integer(int64), intent(in) :: a
+         integer, intent(in) :: d
+         ceiling_ratio = (a + d - 1)/d
+      end function ceiling_ratio
+   end subroutine result
+
+   !> /wear/x (m) and /wear/obstacle (the obstacles' indices) of the points, and room for
+   !! each quantity and its standard error, /wear/NAME and /wear/NAME_error (created before
+   !! the file enters SWMR mode; written by `write` at the end).
+   subroutine create_datasets(self, writer, circles, stat, errmsg)
+      class(support_wear), intent(inout) :: self
+      type(h5_writer), intent(inout) :: writer
+      type(circle_set), intent(in) :: circles
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer :: q, e
+      character(len=*), parameter :: suffix(2) = [character(len=6) :: '', '_error']
+      stat = 0
+      errmsg = ''
+      if (.not. self%active) return
+      call writer%write_real_1d('/wear/x', circles%x, 'm', stat, errmsg)
+      if (stat == 0) call writer%write_real_1d('/wear/obstacle', real(circles%obstacle, dp), '1', stat, errmsg)
+      do q = 1, wear_quantities
+         if (q == wear_quantities .and. .not. self%volume) exit
+         do e = 1, 2
+            if (stat /= 0) return
+            call self%arrays(e, q)%create(writer, '/wear/'//trim(wear_names(q))//trim(suffix(e)), self%points, &
+                                          .false., stat, errmsg)
+            if (stat == 0) call writer%attr_string('/wear/'//trim(wear_names(q))//trim(suffix(e)), 'unit', &
+                                                   trim(wear_units(q)), stat, errmsg)
+         end do
+      end do
+   end subroutine create_datasets
+
+   !> The quantities and their standard errors into /wear (end of the run).
+   subroutine write(self, stat, errmsg)
+      class(support_wear), intent(inout) :: self
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp) :: value(self%points, wear_quantities), error(self%points, wear_quantities)
+      integer :: q
+      stat = 0
+      errmsg = ''
+      if (.not. self%active) return
+      call self%result(value, error)
+      do q = 1, wear_quantities
+         if (q == wear_quantities .and. .not. self%volume) exit
+         call self%arrays(1, q)%write_reals(value(:, q), stat, errmsg)
+         if (stat == 0) call self%arrays(2, q)%write_reals(error(:, q), stat, errmsg)
+         call self%arrays(1, q)%close()
+         call self%arrays(2, q)%close()
+         if (stat /= 0) return
+      end do
+   end subroutine write
+end module vibrobeam_support_wear
