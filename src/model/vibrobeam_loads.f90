@@ -15,7 +15,7 @@
 !! velocity scheme adds it at V^n.
 module vibrobeam_loads
    use vibrobeam_kinds, only: dp
-   use vibrobeam_planes, only: direction_shares
+   use vibrobeam_planes, only: direction_shares, spread_planes
    use vibrobeam_model, only: beam_model, load_vector, point_load_vector, unit_profile, add_inertial_excess
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, unset, is_unset
    use vibrobeam_namelist_schema, only: namelist_variable
@@ -38,6 +38,8 @@ module vibrobeam_loads
       !> with &beam planes = 2: the direction of every load of &load, degrees from y towards
       !! z (unset: 0, along y; listed only when given)
       real(dp) :: direction = unset
+      !> with &beam planes = 2: the direction of the point force alone (unset: `direction`)
+      real(dp) :: point_direction = unset
    contains
       procedure :: base_load_amplitude
    end type load_settings
@@ -60,9 +62,14 @@ module vibrobeam_loads
       !> (cos, sin) of &load direction: a stepper of two planes turns F(t), given in y, by
       !! them (`spread_planes`); (1, 0) along y
       real(dp) :: shares(2) = [1.0_dp, 0.0_dp]
+      !> (cos, sin) of the point force's own direction (&load point_direction), else `shares`
+      real(dp) :: point_shares(2) = [1.0_dp, 0.0_dp]
    contains
       procedure :: at => load_at
       procedure :: evaluate => load_evaluate
+      procedure :: planes_at
+      procedure :: evaluate_planes
+      procedure, private :: turn
    end type load_set
 
 contains
@@ -100,6 +107,9 @@ contains
       call visitor%variable(real_row('load', 'direction', 'deg', -360.0_dp, 360.0_dp, &
                                      'with &beam planes = 2: direction of the loads, from y towards z (default 0)', &
                                      optional=.true.), load%direction)
+      call visitor%variable(real_row('load', 'point_direction', 'deg', -360.0_dp, 360.0_dp, &
+                                     'with &beam planes = 2: direction of the point force alone (default direction)', &
+                                     optional=.true.), load%point_direction)
    end subroutine visit_load
 
    !> Amplitude of the support's acceleration, A Omega_b^2 or &load base_acceleration
@@ -133,6 +143,8 @@ contains
       end if
       loads%base_frequency = load%base_frequency
       if (.not. is_unset(load%direction)) loads%shares = direction_shares(load%direction)
+      loads%point_shares = loads%shares
+      if (.not. is_unset(load%point_direction)) loads%point_shares = direction_shares(load%point_direction)
       loads%present = abs(loads%distributed) > 0 .or. abs(loads%point_force) > 0 .or. abs(loads%base_load) > 0
       loads%uniform = load_vector(model, unit_profile)
       ! the base's inertial load acts on the point masses too, -m_k s''(t) at x_k, and on the
@@ -193,6 +205,47 @@ contains
       call add_loads(self, t, f)
       if (self%forces%count > 0) call self%forces%add_to(t, f)
    end subroutine load_evaluate
+
+   !> F(t) of a beam of two planes into f (2J values, y then z; `load_at`'s values): the
+   !! loads given in the y plane turned by &load direction, the point force by its own
+   !! point_direction when it has one.
+   subroutine planes_at(self, t, f)
+      class(load_set), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp), intent(out) :: f(:)
+      f(1:size(f)/2) = self%at(t)
+      call self%turn(t, f)
+   end subroutine planes_at
+
+   !> `planes_at` for the steppers (`evaluate`'s values: no temporary, the tables' and
+   !! random signals' state).
+   subroutine evaluate_planes(self, t, f)
+      class(load_set), intent(inout) :: self
+      real(dp), intent(in) :: t
+      real(dp), intent(out) :: f(:)
+      call self%evaluate(t, f(1:size(f)/2))
+      call self%turn(t, f)
+   end subroutine evaluate_planes
+
+   !> f(1:J) holds F(t) in y: turn it by `shares` into both planes, the point force by
+   !! `point_shares` (taken out of y and put back turned, only when its direction differs).
+   pure subroutine turn(self, t, f)
+      class(load_set), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp), intent(inout) :: f(:)
+      real(dp) :: amplitude
+      integer :: j
+      j = size(f)/2
+      if (all(abs(self%point_shares - self%shares) <= 0) .or. abs(self%point_force) <= 0) then
+         call spread_planes(self%shares, f)
+         return
+      end if
+      amplitude = self%point_force*cos(self%point_frequency*t)
+      f(1:j) = f(1:j) - amplitude*self%point
+      call spread_planes(self%shares, f)
+      f(1:j) = f(1:j) + self%point_shares(1)*amplitude*self%point
+      f(j + 1:) = f(j + 1:) + self%point_shares(2)*amplitude*self%point
+   end subroutine turn
 
    !> The loads of &load at t into f.
    pure subroutine add_loads(self, t, f)

@@ -416,6 +416,7 @@ contains
       integer :: i
       if (scene%beam%plane_count() == 1) then
          call no_direction('load', 'direction', scene%load%direction)
+         call no_direction('load', 'point_direction', scene%load%point_direction)
          call no_direction('initial', 'direction', scene%initial%direction)
          call no_direction('initial', 'displacement_direction', scene%initial%displacement_direction)
          do i = 1, size(scene%obstacles)

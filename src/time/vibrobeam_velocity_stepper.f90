@@ -28,7 +28,6 @@ module vibrobeam_velocity_stepper
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_residual_solve, band_solve, band_factor
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_loads, only: load_set
-   use vibrobeam_planes, only: spread_planes
    use vibrobeam_time_stepper, only: time_stepper, stepper_settings, dynamic_state, save_stepper_state, &
       restore_stepper_state
    use vibrobeam_discrete_system, only: discrete_system
@@ -133,9 +132,8 @@ contains
          if (self%loads%present) then
             if (self%planes == 1) then
                call self%loads%evaluate((self%steps + 1)*dt, force_new)   ! t_{n+1} from the global step number
-            else   ! the loads given in y, turned by &load direction
-               call self%loads%evaluate((self%steps + 1)*dt, force_new(1:size(force_new)/2))
-               call spread_planes(self%loads%shares, force_new)
+            else   ! the loads given in y, turned by &load direction (and point_direction)
+               call self%loads%evaluate_planes((self%steps + 1)*dt, force_new)
             end if
             force_theta = theta*force_new + (1 - theta)*self%force
          end if                                                        ! (else both stay 0)
@@ -553,8 +551,7 @@ contains
       if (self%planes == 1) then
          f = self%loads%at(t)
       else
-         f(1:size(f)/2) = self%loads%at(t)
-         call spread_planes(self%loads%shares, f)
+         call self%loads%planes_at(t, f)
       end if
    end subroutine loads_at
 
