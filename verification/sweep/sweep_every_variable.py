@@ -119,7 +119,7 @@ SCENE_E = """
 &obstacles count = 1, shape(1) = 'circle', x_from(1) = 0.5, radius(1) = 1e-3, center_y(1) = 1e-4,
            center_z(1) = -1e-4, friction(1) = 0.2, wear_coefficient(1) = 1e-14 /
 &time      dt = 2e-5 @TIME@ /
-&load      point_force = 0.1, point_frequency = 300, direction = 30 /
+&load      point_force = 0.1, point_frequency = 300, direction = 30, point_direction = 60 /
 &output    file = 'scene.h5', text = .false. @OUTPUT@ /
 """
 SCENES = {'A': SCENE_A, 'B': SCENE_B, 'C': SCENE_C, 'D': SCENE_D, 'E': SCENE_E}
@@ -145,6 +145,8 @@ EXPECTED = {
     # (issue 21; docs/input.md, "&beam")
     'beam.inertia_z': [('A', 'is given with planes = 1')],
     'load.direction': [('A', 'is given with &beam planes = 1'), ('E', '&sweep is not available with &beam planes = 2')],
+    'load.point_direction': [('A', 'is given with &beam planes = 1'),
+                             ('E', '&sweep is not available with &beam planes = 2')],
     'obstacles.radius(1)': [('E', '&sweep is not available with &beam planes = 2')],
     'obstacles.center_y(1)': [('E', '&sweep is not available with &beam planes = 2')],
     'obstacles.center_z(1)': [('E', '&sweep is not available with &beam planes = 2')],
