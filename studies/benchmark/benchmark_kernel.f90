@@ -58,7 +58,7 @@ program benchmark_kernel
                                                         'fused', 'step', 'dpbtrs', 'solve (kd=3)', 'dsbmv', &
                                                         'matvec (kd=3)', 'stacked', 'interleaved', 'stacked fused', &
                                                         'step 2 planes', 'step 2, own Kz', 'pressed', &
-                                                        'pressed 2, lvl', 'pressed 2, hole']
+                                                        'pressed 2, lvl', 'pressed 2 hole']
 
    !> Everything a workload works on.
    type :: bench_case
