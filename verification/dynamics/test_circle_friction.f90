@@ -15,18 +15,19 @@
 program test_circle_friction
    use vibrobeam_kinds, only: dp, output_unit, pi
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_problem, only: run_problem, new_stepper
+   use vibrobeam_problem, only: run_problem
    use vibrobeam_time_stepper, only: time_stepper
-   use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
+   use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene, &
+      start_test_stepper, advance_test_stepper, angular_momentum
    implicit none
    type(test_counter) :: t
    type(scene_type) :: scene, whirl
    type(run_problem) :: prepared
    class(time_stepper), allocatable :: stepper
-   character(len=512) :: path, errmsg
+   character(len=512) :: path
    real(dp), parameter :: eps = epsilon(1.0_dp)
    real(dp) :: angle, static, moved(2), friction(2), energy0, moment0, worst, scale, ledger
-   integer :: n, steps, j, stat, k
+   integer :: n, steps, k
    call get_command_argument(1, path)
    scene = read_test_scene(trim(path))
    steps = nint(scene%time%t_end/scene%time%dt)
@@ -38,11 +39,10 @@ program test_circle_friction
    do k = 1, 2
       scene%load%direction = angle*merge(1 - 1e-3_dp, 1 + 1e-3_dp, k == 1)
       call prepare_test_scene(scene, prepared)
-      call start(scene, prepared, stepper)
-      j = prepared%model%unknowns
+      call start_test_stepper(scene, prepared, stepper)
       moved(k) = 0
       do n = 1, steps
-         call advance(stepper)
+         call advance_test_stepper(stepper)
          moved(k) = max(moved(k), maxval(abs(stepper%u)))
       end do
       friction(k) = stepper%energy%dissipated_friction
@@ -70,13 +70,13 @@ program test_circle_friction
    whirl%initial%velocity_amplitude = 0.6_dp
    whirl%initial%direction = 90
    call prepare_test_scene(whirl, prepared)
-   call start(whirl, prepared, stepper)
+   call start_test_stepper(whirl, prepared, stepper)
    energy0 = stepper%kinetic_energy() + stepper%elastic_energy()
    moment0 = angular_momentum(stepper)
    worst = 0
    scale = energy0
    do n = 1, 100000
-      call advance(stepper)
+      call advance_test_stepper(stepper)
       associate (e => stepper%energy)
          ledger = stepper%kinetic_energy() + stepper%elastic_energy() - e%work + e%dissipated_impacts + &
                   e%dissipated_friction + e%dissipated_damping + e%dissipated_numerical - energy0
@@ -93,30 +93,4 @@ program test_circle_friction
    call t%check_close('energy ledger with friction over 1e5 steps', worst/energy0, 0.0_dp, 8*1e5_dp*eps, 1.0_dp)
    call t%finish('test_circle_friction')
 
-contains
-
-   !> U_y^T M V_z - U_z^T M V_y: the angular momentum about the beam's axis.
-   function angular_momentum(stepper) result(moment)
-      class(time_stepper), intent(in) :: stepper
-      real(dp) :: moment, mv(size(stepper%v))
-      call stepper%mass_into(stepper%v, mv)
-      moment = dot_product(stepper%u(1:j), mv(j + 1:)) - dot_product(stepper%u(j + 1:), mv(1:j))
-   end function angular_momentum
-
-   subroutine start(scene, prepared, stepper)
-      type(scene_type), intent(in) :: scene
-      type(run_problem), intent(in) :: prepared
-      class(time_stepper), allocatable, intent(out) :: stepper
-      call new_stepper(scene, prepared, stepper, stat, errmsg)
-      if (stat /= 0) error stop 'new_stepper failed'
-   end subroutine start
-
-   subroutine advance(stepper)
-      class(time_stepper), intent(inout) :: stepper
-      call stepper%step(stat, errmsg)
-      if (stat /= 0) then
-         write (output_unit, '(a)') trim(errmsg)
-         error stop 'step failed'
-      end if
-   end subroutine advance
 end program test_circle_friction

@@ -18,18 +18,19 @@ program test_circle_holes
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
    use vibrobeam_obstacles, only: obstacle_type
-   use vibrobeam_problem, only: run_problem, new_stepper
+   use vibrobeam_problem, only: run_problem
    use vibrobeam_time_stepper, only: time_stepper
-   use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
+   use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene, &
+      start_test_stepper, advance_test_stepper, angular_momentum
    implicit none
    type(test_counter) :: t
    type(scene_type) :: scene, whirl, compliant
    type(run_problem) :: prepared
    class(time_stepper), allocatable :: stepper
-   character(len=512) :: path, errmsg
+   character(len=512) :: path
    real(dp), parameter :: eps = epsilon(1.0_dp)
    real(dp) :: energy0, moment0, worst, worst_moment, reach, radius
-   integer :: n, steps, j, stat, held, solves
+   integer :: n, steps, j, held, solves
    call get_command_argument(1, path)
    scene = read_test_scene(trim(path))
    steps = nint(scene%time%t_end/scene%time%dt)
@@ -49,7 +50,7 @@ program test_circle_holes
    whirl%initial%velocity_amplitude = 0.6_dp
    whirl%initial%direction = 90
    call prepare_test_scene(whirl, prepared)
-   call start(whirl, prepared, stepper)
+   call start_test_stepper(whirl, prepared, stepper)
    energy0 = stepper%kinetic_energy() + stepper%elastic_energy()
    moment0 = angular_momentum(stepper)
    worst = 0
@@ -58,7 +59,7 @@ program test_circle_holes
    reach = 0
    solves = 0
    do n = 1, 100000
-      call advance(stepper)
+      call advance_test_stepper(stepper)
       worst = max(worst, abs(stepper%kinetic_energy() + stepper%elastic_energy() - energy0))
       worst_moment = max(worst_moment, abs(angular_momentum(stepper) - moment0))
       held = held + count(stepper%report%circle_impulse(1:stepper%report%circle_count) > 0)
@@ -80,7 +81,7 @@ program test_circle_holes
    ! E + Phi and L conserved to round-off over 1e5 steps
    whirl%obstacles(1)%stiffness = 1e6_dp
    call prepare_test_scene(whirl, prepared)
-   call start(whirl, prepared, stepper)
+   call start_test_stepper(whirl, prepared, stepper)
    energy0 = stepper%kinetic_energy() + stepper%elastic_energy() + stepper%contact_potential()
    moment0 = angular_momentum(stepper)
    worst = 0
@@ -88,7 +89,7 @@ program test_circle_holes
    reach = 0
    solves = 0
    do n = 1, 100000
-      call advance(stepper)
+      call advance_test_stepper(stepper)
       worst = max(worst, abs(stepper%kinetic_energy() + stepper%elastic_energy() + stepper%contact_potential() - energy0))
       worst_moment = max(worst_moment, abs(angular_momentum(stepper) - moment0))
       reach = max(reach, stepper%holes%circles%penetration(1, stepper%u))
@@ -136,9 +137,9 @@ contains
       call prepare_test_scene(planar, prepared_planar)
       call prepare_test_scene(nudged, prepared_nudged)
       call prepare_test_scene(hole, prepared_hole)
-      call start(planar, prepared_planar, reference)
-      call start(nudged, prepared_nudged, perturbed)
-      call start(hole, prepared_hole, stepper)
+      call start_test_stepper(planar, prepared_planar, reference)
+      call start_test_stepper(nudged, prepared_nudged, perturbed)
+      call start_test_stepper(hole, prepared_hole, stepper)
       j = prepared_hole%model%unknowns
       deviation = 0
       own = 0
@@ -150,9 +151,9 @@ contains
       z_zero = .true.
       depth = 0
       do n = 1, steps
-         call advance(reference)
-         call advance(perturbed)
-         call advance(stepper)
+         call advance_test_stepper(reference)
+         call advance_test_stepper(perturbed)
+         call advance_test_stepper(stepper)
          deviation = max(deviation, maxval(abs(stepper%u(1:j) - reference%u)), maxval(abs(stepper%v(1:j) - reference%v)))
          own = max(own, maxval(abs(perturbed%u - reference%u)), maxval(abs(perturbed%v - reference%v)))
          scale = max(scale, maxval(abs(reference%u)), maxval(abs(reference%v)))
@@ -190,26 +191,4 @@ contains
       call t%check_close(label//': the impulses equal the planar twin''s', impulse_deviation/impulse_scale, 0.0_dp, &
                          tolerance, 1.0_dp)
    end subroutine planar_reduction
-
-   !> U_y^T M V_z - U_z^T M V_y: the angular momentum about the beam's axis.
-   function angular_momentum(stepper) result(moment)
-      class(time_stepper), intent(in) :: stepper
-      real(dp) :: moment, mv(size(stepper%v))
-      call stepper%mass_into(stepper%v, mv)
-      moment = dot_product(stepper%u(1:j), mv(j + 1:)) - dot_product(stepper%u(j + 1:), mv(1:j))
-   end function angular_momentum
-
-   subroutine start(scene, prepared, stepper)
-      type(scene_type), intent(in) :: scene
-      type(run_problem), intent(in) :: prepared
-      class(time_stepper), allocatable, intent(out) :: stepper
-      call new_stepper(scene, prepared, stepper, stat, errmsg)
-      if (stat /= 0) error stop 'new_stepper failed'
-   end subroutine start
-
-   subroutine advance(stepper)
-      class(time_stepper), intent(inout) :: stepper
-      call stepper%step(stat, errmsg)
-      if (stat /= 0) error stop 'step failed'
-   end subroutine advance
 end program test_circle_holes

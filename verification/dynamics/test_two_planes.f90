@@ -17,20 +17,21 @@
 program test_two_planes
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_problem, only: run_problem, new_stepper
+   use vibrobeam_problem, only: run_problem
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_cantilever_exact, only: cantilever_frequency
-   use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene, same_bits
+   use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene, same_bits, &
+      start_test_stepper, advance_test_stepper, angular_momentum
    implicit none
    type(test_counter) :: t
    type(scene_type) :: scene, planar, turned
    type(run_problem) :: prepared_planar, prepared
    class(time_stepper), allocatable :: reference, stepper
-   character(len=512) :: path, errmsg
+   character(len=512) :: path
    real(dp), parameter :: eps = epsilon(1.0_dp)
    real(dp) :: shares(2), deviation, scale, tolerance, omega_y, omega_z, amplitude, energy0, worst, tip(2)
    real(dp) :: ledger
-   integer :: n, steps, j, stat
+   integer :: n, steps, j
    logical :: same
    call get_command_argument(1, path)
    scene = read_test_scene(trim(path))
@@ -41,14 +42,14 @@ program test_two_planes
    planar%beam%planes = 1
    call prepare_test_scene(planar, prepared_planar)
    call prepare_test_scene(scene, prepared)
-   call start(planar, prepared_planar, reference)
-   call start(scene, prepared, stepper)
+   call start_test_stepper(planar, prepared_planar, reference)
+   call start_test_stepper(scene, prepared, stepper)
    j = prepared%model%unknowns
    call t%check_true('two planes hold 2J unknowns', size(stepper%u) == 2*j .and. size(reference%u) == j)
    same = .true.
    do n = 1, steps
-      call advance(reference)
-      call advance(stepper)
+      call advance_test_stepper(reference)
+      call advance_test_stepper(stepper)
       same = same .and. all(same_bits(stepper%u(1:j), reference%u)) .and. all(same_bits(stepper%v(1:j), reference%v)) &
              .and. all(abs(stepper%u(j + 1:)) <= 0) .and. all(abs(stepper%v(j + 1:)) <= 0) .and. &
              same_bits(stepper%kinetic_energy(), reference%kinetic_energy()) .and. &
@@ -62,12 +63,12 @@ program test_two_planes
    turned%initial%direction = 90
    turned%initial%displacement_direction = 90
    call prepare_test_scene(turned, prepared)
-   call start(planar, prepared_planar, reference)
-   call start(turned, prepared, stepper)
+   call start_test_stepper(planar, prepared_planar, reference)
+   call start_test_stepper(turned, prepared, stepper)
    same = .true.
    do n = 1, steps
-      call advance(reference)
-      call advance(stepper)
+      call advance_test_stepper(reference)
+      call advance_test_stepper(stepper)
       same = same .and. all(same_bits(stepper%u(j + 1:), reference%u)) .and. &
              all(same_bits(stepper%v(j + 1:), reference%v)) .and. all(abs(stepper%u(1:j)) <= 0) .and. &
              all(abs(stepper%v(1:j)) <= 0)
@@ -79,13 +80,13 @@ program test_two_planes
    turned%initial%direction = 30
    shares = [cos(30*acos(-1.0_dp)/180), sin(30*acos(-1.0_dp)/180)]
    call prepare_test_scene(turned, prepared)
-   call start(planar, prepared_planar, reference)
-   call start(turned, prepared, stepper)
+   call start_test_stepper(planar, prepared_planar, reference)
+   call start_test_stepper(turned, prepared, stepper)
    deviation = 0
    scale = 0
    do n = 1, steps
-      call advance(reference)
-      call advance(stepper)
+      call advance_test_stepper(reference)
+      call advance_test_stepper(stepper)
       deviation = max(deviation, maxval(abs(stepper%u(1:j) - shares(1)*reference%u)), &
                       maxval(abs(stepper%u(j + 1:) - shares(2)*reference%u)))
       scale = max(scale, maxval(abs(reference%u)))
@@ -112,11 +113,11 @@ program test_two_planes
    turned%initial%displacement_amplitude = amplitude
    turned%initial%displacement_direction = 45
    call prepare_test_scene(turned, prepared)
-   call start(turned, prepared, stepper)
+   call start_test_stepper(turned, prepared, stepper)
    energy0 = stepper%kinetic_energy() + stepper%elastic_energy()
    worst = 0
    do n = 1, steps
-      call advance(stepper)
+      call advance_test_stepper(stepper)
       worst = max(worst, abs(stepper%kinetic_energy() + stepper%elastic_energy() - energy0))
    end do
    omega_y = cantilever_frequency(1, scene%beam%length, scene%beam%ei()/scene%beam%rho_s())
@@ -147,12 +148,12 @@ program test_two_planes
    turned%initial%direction = -20
    turned%time%theta = 0.6_dp
    call prepare_test_scene(turned, prepared)
-   call start(turned, prepared, stepper)
+   call start_test_stepper(turned, prepared, stepper)
    energy0 = stepper%kinetic_energy() + stepper%elastic_energy()
    worst = 0
    scale = energy0
    do n = 1, steps
-      call advance(stepper)
+      call advance_test_stepper(stepper)
       associate (e => stepper%energy)
          ledger = stepper%kinetic_energy() + stepper%elastic_energy() - e%work + e%dissipated_damping + &
                   e%dissipated_numerical - energy0
@@ -180,11 +181,11 @@ program test_two_planes
    turned%initial%direction = 90
    turned%time%t_end = 1e5_dp*scene%time%dt
    call prepare_test_scene(turned, prepared)
-   call start(turned, prepared, stepper)
+   call start_test_stepper(turned, prepared, stepper)
    energy0 = angular_momentum(stepper)
    worst = 0
    do n = 1, 100000
-      call advance(stepper)
+      call advance_test_stepper(stepper)
       worst = max(worst, abs(angular_momentum(stepper) - energy0))
    end do
    write (output_unit, '(a,es22.14,a,es10.3,a,es10.3)') 'angular momentum ', energy0, ', largest change relative ', &
@@ -195,27 +196,4 @@ program test_two_planes
                      maxval(abs(stepper%u(j + 1:))) > 0.5_dp*amplitude)
    call t%finish('test_two_planes')
 
-contains
-
-   !> U_y^T M V_z - U_z^T M V_y (kg m^2/s): the angular momentum about the beam's axis.
-   function angular_momentum(stepper) result(moment)
-      class(time_stepper), intent(in) :: stepper
-      real(dp) :: moment, mv(size(stepper%v))
-      call stepper%mass_into(stepper%v, mv)
-      moment = dot_product(stepper%u(1:j), mv(j + 1:)) - dot_product(stepper%u(j + 1:), mv(1:j))
-   end function angular_momentum
-
-   subroutine start(scene, prepared, stepper)
-      type(scene_type), intent(in) :: scene
-      type(run_problem), intent(in) :: prepared
-      class(time_stepper), allocatable, intent(out) :: stepper
-      call new_stepper(scene, prepared, stepper, stat, errmsg)
-      if (stat /= 0) error stop 'new_stepper failed'
-   end subroutine start
-
-   subroutine advance(stepper)
-      class(time_stepper), intent(inout) :: stepper
-      call stepper%step(stat, errmsg)
-      if (stat /= 0) error stop 'step failed'
-   end subroutine advance
 end program test_two_planes

@@ -8,7 +8,8 @@ module vibrobeam_test_support
    use vibrobeam_scene, only: scene_type
    use vibrobeam_scene_rules, only: validate_scene
    use vibrobeam_scene_read, only: read_scene
-   use vibrobeam_problem, only: run_problem, build_problem
+   use vibrobeam_problem, only: run_problem, build_problem, new_stepper
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_blas_threads, only: limit_blas_threads
    use vibrobeam_band, only: symmetric_band, band_cholesky, band_entry, band_factor, band_solve
    use vibrobeam_lapack, only: dpbcon, dpbtrf, dpotrf, dpotrs, dgetrf
@@ -23,6 +24,7 @@ module vibrobeam_test_support
    public :: band_condition, abs_factor_times
    public :: dense_lcp_reference, same_bits
    public :: wave_row, lu_determinant, static_deflection, scanned_roots, real_function
+   public :: start_test_stepper, advance_test_stepper, angular_momentum
 
    type, public :: test_counter
       integer :: passed = 0
@@ -388,4 +390,41 @@ contains
       end do
       error stop 'scanned_roots: fewer roots than asked below the limit'
    end function scanned_roots
+
+   !> The stepper of a prepared scene (`new_stepper`), stopping the test on failure.
+   subroutine start_test_stepper(scene, prepared, stepper)
+      type(scene_type), intent(in) :: scene
+      type(run_problem), intent(in) :: prepared
+      class(time_stepper), allocatable, intent(out) :: stepper
+      integer :: stat
+      character(len=512) :: errmsg
+      call new_stepper(scene, prepared, stepper, stat, errmsg)
+      if (stat /= 0) then
+         write (error_unit, '(a)') 'FAIL starting the stepper: '//trim(errmsg)
+         error stop 1
+      end if
+   end subroutine start_test_stepper
+
+   !> One step, stopping the test on failure.
+   subroutine advance_test_stepper(stepper)
+      class(time_stepper), intent(inout) :: stepper
+      integer :: stat
+      character(len=512) :: errmsg
+      call stepper%step(stat, errmsg)
+      if (stat /= 0) then
+         write (error_unit, '(a)') 'FAIL stepping: '//trim(errmsg)
+         error stop 1
+      end if
+   end subroutine advance_test_stepper
+
+   !> U_y^T M V_z - U_z^T M V_y of a beam of two planes (its state stacked y then z): the
+   !! discrete angular momentum about the beam's axis (docs/theory.md section 11).
+   function angular_momentum(stepper) result(moment)
+      class(time_stepper), intent(in) :: stepper
+      real(dp) :: moment, mv(size(stepper%v))
+      integer :: j
+      j = size(stepper%u)/2
+      call stepper%mass_into(stepper%v, mv)
+      moment = dot_product(stepper%u(1:j), mv(j + 1:)) - dot_product(stepper%u(j + 1:), mv(1:j))
+   end function angular_momentum
 end module vibrobeam_test_support
