@@ -30,11 +30,12 @@ module vibrobeam_obstacles
    use vibrobeam_kinds, only: dp
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, text_row, keyword_length, &
-      path_length, unset, is_unset
+      path_length, unset, is_unset, unset_integer
    use vibrobeam_table_file, only: linear_table, read_table, outside_beam
    use vibrobeam_model, only: beam_model, node_row
    use vibrobeam_contact_set, only: contact_set, no_bound
    use vibrobeam_circle_set, only: circle_set
+   use vibrobeam_planes, only: direction_shares
    implicit none
    private
    public :: obstacle_type, max_obstacles, visit_obstacles, build_contact_points, build_circle_points
@@ -62,6 +63,11 @@ module vibrobeam_obstacles
       character(len=keyword_length) :: shape = ''
       real(dp) :: radius = unset                    !! R of a circle (m)
       real(dp) :: center_y = unset, center_z = unset   !! its centre (m); unset: 0
+      !> a polygon (shape = 'polygon': a broached hole, a bar support): its number of
+      !! faces, `radius` the inscribed circle's, the first face's outward normal at
+      !! `orientation` degrees from y towards z (unset: 0), the others every 360/sides
+      integer :: sides = unset_integer
+      real(dp) :: orientation = unset
       !> Coulomb's friction coefficient mu at a circle's wall (unset: 0, frictionless;
       !! listed only when given)
       real(dp) :: friction = unset
@@ -70,6 +76,7 @@ module vibrobeam_obstacles
       real(dp) :: wear_coefficient = unset
    contains
       procedure :: circle                           !! is it a circle?
+      procedure :: hole                             !! a circle or a polygon (radius, centre)?
    end type obstacle_type
 
    !> What the obstacles make of the nodes 0..N (0 the clamp) while the contact points
@@ -130,9 +137,14 @@ contains
          call visitor%variable(text_row('obstacles', 'profile', path_length, 'file of (x, level) pairs (m, m), '// &
                                         'linear in between: the surface, instead of level_from and level_to', n, i), &
                                o%profile)
-         call visitor%variable(keyword_row('obstacles', 'shape', 'level|circle', keyword_length, &
-                                           'level: a flat side (default); circle: a round hole in the cross-section '// &
-                                           '(&beam planes = 2)', n, i, optional=.true.), o%shape)
+         call visitor%variable(keyword_row('obstacles', 'shape', 'level|circle|polygon', keyword_length, &
+                                           'level: a flat side (default); circle, polygon: a round or polygonal hole '// &
+                                           'in the cross-section (&beam planes = 2)', n, i, optional=.true.), o%shape)
+         call visitor%variable(integer_row('obstacles', 'sides', 3, 64, 'number of faces of a polygon', &
+                                           optional=.true., extent=n, element=i), o%sides)
+         call visitor%variable(real_row('obstacles', 'orientation', 'deg', -360.0_dp, 360.0_dp, &
+                                        'direction of a polygon''s first face normal, from y towards z (default 0)', &
+                                        n, i, optional=.true.), o%orientation)
          call visitor%variable(real_row('obstacles', 'radius', 'm', 1e-12_dp, 1e6_dp, &
                                         'radius of a circle', n, i, optional=.true.), o%radius)
          call visitor%variable(real_row('obstacles', 'center_y', 'm', -1e6_dp, 1e6_dp, &
@@ -166,7 +178,7 @@ contains
       if (stat /= 0) return
       call nodes%init(model%elements, size(obstacles))
       do k = 1, size(obstacles)
-         if (obstacles(k)%circle()) cycle   ! (`build_circle_points`)
+         if (obstacles(k)%hole()) cycle   ! (`build_circle_points`)
          call covered_nodes(obstacles(k), k, model, first, last, warnings)
          call add_obstacle(obstacles(k), k, model, first, last, profiles(k), nodes)
       end do
@@ -190,28 +202,33 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: source(0:model%elements), k, i, first, last, dofs(4), n
-      integer, allocatable :: point_node(:), point_obstacle(:)
-      real(dp) :: weights(4), side
+      integer, allocatable :: point_node(:), point_obstacle(:), point_face(:)
+      real(dp) :: weights(4), side, outward(2), turn
+      integer :: face
       stat = 0
       errmsg = ''
       source = 0
-      allocate (point_node(0), point_obstacle(0))
+      allocate (point_node(0), point_obstacle(0), point_face(0))
       do k = 1, size(obstacles)
          call covered_nodes(obstacles(k), k, model, first, last, warnings)
          do i = first, last
             if (model%deflection_held(i)) cycle
-            if (obstacles(k)%circle()) then
+            if (obstacles(k)%hole()) then
                if (source(i) /= 0) then
                   stat = stat_failure
-                  errmsg = '&obstacles shape('//integer_text(k)//') = ''circle'' and shape('// &
-                           integer_text(source(i))//') = ''circle'' both act at the node x = '// &
-                           real_text(model%x(i + 1))//' m: give one circle per node'
+                  errmsg = '&obstacles shape('//integer_text(k)//') = '''//trim(obstacles(k)%shape)//''' and shape('// &
+                           integer_text(source(i))//') = '''//trim(obstacles(source(i))%shape)//''' both act at '// &
+                           'the node x = '//real_text(model%x(i + 1))//' m: give one hole per node'
                   return
                end if
                source(i) = k
             end if
-            point_node = [point_node, i]
-            point_obstacle = [point_obstacle, k]
+            ! a polygon: one flat point per face
+            do face = 1, merge(obstacles(k)%sides, 1, obstacles(k)%shape == 'polygon')
+               point_node = [point_node, i]
+               point_obstacle = [point_obstacle, k]
+               point_face = [point_face, face]
+            end do
          end do
       end do
       ! the points by node, each node's in the obstacles' order
@@ -236,11 +253,20 @@ contains
                circles%center(:, k) = 0
                circles%normal(:, k) = 0
                circles%bound(k) = 0
-               if (o%circle()) then
+               if (o%hole()) then
                   circles%radius(k) = o%radius
                   circles%center(:, k) = [merge(0.0_dp, o%center_y, is_unset(o%center_y)), &
                                           merge(0.0_dp, o%center_z, is_unset(o%center_z))]
-               else   ! a level: y >= level below (h = (1, 0)), y <= level above (h = (-1, 0))
+               end if
+               if (o%shape == 'polygon') then
+                  ! face f: o_f.(r - c) <= R, o_f its outward normal at orientation +
+                  ! 360 (f - 1)/sides degrees; inward h = -o_f, bound -R - o_f.c
+                  turn = merge(0.0_dp, o%orientation, is_unset(o%orientation)) + &
+                         360.0_dp*(point_face(first) - 1)/o%sides
+                  outward = direction_shares(turn)
+                  circles%normal(:, k) = -outward
+                  circles%bound(k) = -o%radius - dot_product(outward, circles%center(:, k))
+               else if (.not. o%circle()) then   ! a level: y >= level below (h = (1, 0)), y <= level above (h = (-1, 0))
                   side = merge(1.0_dp, -1.0_dp, o%side == 'below')
                   circles%normal(:, k) = [side, 0.0_dp]
                   circles%bound(k) = side*level_at(o, model, i)
@@ -275,6 +301,12 @@ contains
       class(obstacle_type), intent(in) :: self
       circle = self%shape == 'circle'
    end function circle
+
+   !> Is obstacle `self` a hole in the cross-section, a circle or a polygon (radius, centre)?
+   pure logical function hole(self)
+      class(obstacle_type), intent(in) :: self
+      hole = self%shape == 'circle' .or. self%shape == 'polygon'
+   end function hole
 
    !> The nodes first..last (0 the clamp) that obstacle k covers: the nearest node of a
    !! punctual one, every node in [x_from, x_to] of a longitudinal one (1e-9 h

@@ -172,20 +172,32 @@ contains
       allocate (scene%obstacles(count))
       do i = 1, count
          number = integer_text(i)
-         if (read(i)%circle()) then
-            ! a circle: its radius and centre, none of a level's variables
+         if (read(i)%hole()) then
+            ! a circle or a polygon: its radius and centre (and a polygon's sides), none of a
+            ! level's variables
             if (.not. scanned%is_given('obstacles', 'radius', i)) then
-               errmsg = '&obstacles radius('//number//') is missing: shape('//number//') = ''circle'' needs the '// &
-                        'radius (m) of the hole'
+               errmsg = '&obstacles radius('//number//') is missing: shape('//number//') = '''// &
+                        trim(read(i)%shape)//''' needs the radius (m) of the hole'
+               return
+            end if
+            if (read(i)%shape == 'polygon' .and. .not. scanned%is_given('obstacles', 'sides', i)) then
+               errmsg = '&obstacles sides('//number//') is missing: shape('//number//') = ''polygon'' needs its '// &
+                        'number of faces (3 to 64)'
+               return
+            end if
+            if (read(i)%shape == 'circle' .and. (scanned%is_given('obstacles', 'sides', i) .or. &
+                                                 scanned%is_given('obstacles', 'orientation', i))) then
+               errmsg = '&obstacles sides('//number//') or orientation('//number//') is given for shape('//number// &
+                        ') = ''circle'': they describe a polygon; remove them or give shape = ''polygon'''
                return
             end if
             if (given_of_level(i) /= '') then
-               errmsg = '&obstacles '//given_of_level(i)//'('//number//') is given for shape('//number// &
-                        ') = ''circle'': a circle has radius, center_y and center_z; remove it'
+               errmsg = '&obstacles '//given_of_level(i)//'('//number//') is given for shape('//number//') = '''// &
+                        trim(read(i)%shape)//''': a hole has radius, center_y and center_z; remove it'
                return
             end if
             scene%obstacles(i) = read(i)
-            scene%obstacles(i)%side = 'below'   ! (unused by a circle)
+            scene%obstacles(i)%side = 'below'   ! (unused by a hole)
             if (.not. scanned%is_given('obstacles', 'x_from', i)) scene%obstacles(i)%x_from = scene%beam%length
             if (.not. scanned%is_given('obstacles', 'x_to', i)) scene%obstacles(i)%x_to = scene%obstacles(i)%x_from
             cycle
@@ -200,9 +212,11 @@ contains
             return
          end if
          if (scanned%is_given('obstacles', 'radius', i) .or. scanned%is_given('obstacles', 'center_y', i) .or. &
-             scanned%is_given('obstacles', 'center_z', i)) then
-            errmsg = '&obstacles radius('//number//'), center_y('//number//') or center_z('//number//') is given '// &
-                     'for a level obstacle: give shape('//number//') = ''circle'' or remove them'
+             scanned%is_given('obstacles', 'center_z', i) .or. scanned%is_given('obstacles', 'sides', i) .or. &
+             scanned%is_given('obstacles', 'orientation', i)) then
+            errmsg = '&obstacles radius('//number//'), center_y('//number//'), center_z('//number//'), sides('// &
+                     number//') or orientation('//number//') is given for a level obstacle: give shape('//number// &
+                     ') = ''circle'' or ''polygon'', or remove them'
             return
          end if
          scene%obstacles(i) = read(i)

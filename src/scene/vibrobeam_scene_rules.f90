@@ -411,8 +411,8 @@ contains
       integer, intent(inout) :: stat
       character(len=*), intent(inout) :: errmsg
       character(len=*), parameter :: planar = ' is not available with &beam planes = 2 yet (issue 21: the two-plane '// &
-                                              'model runs the velocity scheme, with circular holes and rigid levels, '// &
-                                              'so far); '
+                                              'model runs the velocity scheme with circular and polygonal holes and '// &
+                                              'rigid levels, so far); '
       integer :: i
       if (scene%beam%plane_count() == 1) then
          call no_direction('load', 'direction', scene%load%direction)
@@ -420,9 +420,10 @@ contains
          call no_direction('initial', 'direction', scene%initial%direction)
          call no_direction('initial', 'displacement_direction', scene%initial%displacement_direction)
          do i = 1, size(scene%obstacles)
-            if (scene%obstacles(i)%circle()) &
-               call fail(stat, errmsg, '&obstacles shape('//integer_text(i)//') = ''circle'' needs &beam planes = 2: '// &
-                         'a hole in the cross-section holds both deflections; give planes = 2, or shape = ''level''')
+            if (scene%obstacles(i)%hole()) &
+               call fail(stat, errmsg, '&obstacles shape('//integer_text(i)//') = '''// &
+                         trim(scene%obstacles(i)%shape)//''' needs &beam planes = 2: a hole in the cross-section '// &
+                         'holds both deflections; give planes = 2, or shape = ''level''')
             if (.not. is_unset(scene%obstacles(i)%wear_coefficient)) &
                call fail(stat, errmsg, '&obstacles wear_coefficient('//integer_text(i)//') = '// &
                          real_text(scene%obstacles(i)%wear_coefficient)//' m^3/(N m) needs &beam planes = 2: the '// &
@@ -439,7 +440,8 @@ contains
             ! a level: a flat point of the cross-section (its normal +-y), rigid, flat
             if (.not. o%circle() .and. o%stiffness > 0) &
                call fail(stat, errmsg, '&obstacles stiffness('//integer_text(i)//') = '//real_text(o%stiffness)// &
-                         ' N/m (a compliant level)'//planar//'levels are rigid so far: stiffness = 0')
+                         ' N/m (a compliant '//trim(merge('polygon', 'level  ', o%shape == 'polygon'))//')'//planar// &
+                         'levels and polygons are rigid so far: stiffness = 0')
             if (.not. o%circle() .and. len_trim(o%profile) > 0) &
                call fail(stat, errmsg, '&obstacles profile('//integer_text(i)//') = '''//trim(o%profile)//''''// &
                          planar//'give level_from and level_to')

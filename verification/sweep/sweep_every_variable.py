@@ -116,8 +116,9 @@ SCENE_E = """
 &beam      length = 0.5, youngs_modulus = 210e9, density = 7850, area = 2e-4,
            inertia = 1.6666666666666667e-9, inertia_z = 2e-9, planes = 2 /
 &mesh      elements = 4 /
-&obstacles count = 1, shape(1) = 'circle', x_from(1) = 0.5, radius(1) = 1e-3, center_y(1) = 1e-4,
-           center_z(1) = -1e-4, friction(1) = 0.2, wear_coefficient(1) = 1e-14 /
+&obstacles count = 2, shape(1) = 'circle', x_from(1) = 0.5, radius(1) = 1e-3, center_y(1) = 1e-4,
+           center_z(1) = -1e-4, friction(1) = 0.2, wear_coefficient(1) = 1e-14,
+           shape(2) = 'polygon', sides(2) = 6, orientation(2) = 10, x_from(2) = 0.25, radius(2) = 1e-3 /
 &time      dt = 2e-5 @TIME@ /
 &load      point_force = 0.1, point_frequency = 300, direction = 30, point_direction = 60 /
 &output    file = 'scene.h5', text = .false. @OUTPUT@ /
@@ -152,6 +153,8 @@ EXPECTED = {
     'obstacles.center_z(1)': [('E', '&sweep is not available with &beam planes = 2')],
     'obstacles.friction(1)': [('E', '&sweep is not available with &beam planes = 2')],
     'obstacles.wear_coefficient(1)': [('E', '&sweep is not available with &beam planes = 2')],
+    'obstacles.radius(2)': [('E', '&sweep is not available with &beam planes = 2')],
+    'obstacles.orientation(2)': [('E', '&sweep is not available with &beam planes = 2')],
     'initial.direction': [('A', 'is given with &beam planes = 1')],
     'initial.displacement_direction': [('A', 'is given with &beam planes = 1')],
     # the sections cover the whole beam: the last one ends at L
