@@ -21,6 +21,7 @@ module vibrobeam_forces
    use vibrobeam_namelist_schema, only: namelist_variable
    use vibrobeam_frequency_twins, only: hertz_twin
    use vibrobeam_random, only: random_key
+   use vibrobeam_planes, only: direction_shares
    use vibrobeam_random_signal, only: spectrum_shape, random_signal
    implicit none
    private
@@ -52,6 +53,9 @@ module vibrobeam_forces
       character(len=path_length) :: psd_table = ''           !! random: file of (f, S) pairs instead
       integer :: seed = unset_integer                        !! random: seed (default the load's number)
       real(dp) :: correlation_length = 0                     !! random distributed: l of exp(-|dx|/l) (m); 0: fully correlated
+      !> with &beam planes = 2: the load's direction, degrees from y towards z (unset: 0,
+      !! along y; listed only when given)
+      real(dp) :: direction = unset
    end type force_settings
 
    !> &forces: the loads and the realisation of their random signals.
@@ -80,6 +84,9 @@ module vibrobeam_forces
       type(random_signal) :: random               !! random: the signal of each channel
       type(load_slice), allocatable :: channel(:)
       real(dp), allocatable :: values(:)          !! (channels) work space: signal values at t
+      !> (cos, sin) of its direction (&forces direction): a beam of two planes takes the
+      !! load in y times the first and in z times the second (`add_to_planes`)
+      real(dp) :: shares(2) = [1.0_dp, 0.0_dp]
    end type force_term
 
    !> The loads of &forces on the mesh (or on the reduced coordinates, `project`).
@@ -89,6 +96,8 @@ module vibrobeam_forces
    contains
       procedure :: add_to => forces_add_to
       procedure :: add_uncached => forces_add_uncached
+      procedure :: add_to_planes => forces_add_to_planes
+      procedure :: add_uncached_planes => forces_add_uncached_planes
       procedure :: project => forces_project
       procedure :: frequencies => forces_frequencies
       procedure :: signal_values => forces_signal_values
@@ -163,6 +172,9 @@ contains
          call visitor%variable(real_row('forces', 'correlation_length', 'm', 0.0_dp, 1e6_dp, &
                                         'random distributed: length l of the coherence exp(-|x - y|/l) (0: fully '// &
                                         'correlated)', n, i), f%correlation_length)
+         call visitor%variable(real_row('forces', 'direction', 'deg', -360.0_dp, 360.0_dp, &
+                                        'with &beam planes = 2: direction of the load, from y towards z (default 0)', &
+                                        n, i, optional=.true.), f%direction)
       end subroutine visit_one
    end subroutine visit_forces
 
@@ -320,6 +332,7 @@ contains
       allocate (forces%term(forces%count))
       do i = 1, forces%count
          call build_term(settings%load(i), i, forces%term(i))
+         if (.not. is_unset(settings%load(i)%direction)) forces%term(i)%shares = direction_shares(settings%load(i)%direction)
          if (stat /= 0) return
       end do
    contains
@@ -501,6 +514,49 @@ contains
    !> `add_to` for a caller that keeps no state: the same values (a copy of each load
    !! evaluates them: a table's hint only speeds up its search, a random signal computes
    !! the block of t).
+   !> `add_to` for a beam of two planes: each load into y and z (f of 2J values, stacked)
+   !! times the shares of its direction.
+   subroutine forces_add_to_planes(self, t, f)
+      class(force_set), intent(inout) :: self
+      real(dp), intent(in) :: t   !! time (s)
+      real(dp), intent(inout) :: f(:)
+      integer :: i
+      do i = 1, self%count
+         call term_values(self%term(i), t)
+         call add_turned(self%term(i), f)
+      end do
+   end subroutine forces_add_to_planes
+
+   !> `add_uncached` for a beam of two planes (`add_to_planes`).
+   subroutine forces_add_uncached_planes(self, t, f)
+      class(force_set), intent(in) :: self
+      real(dp), intent(in) :: t   !! time (s)
+      real(dp), intent(inout) :: f(:)
+      type(force_term) :: term
+      integer :: i
+      do i = 1, self%count
+         term = self%term(i)
+         call term_values(term, t)
+         call add_turned(term, f)
+      end do
+   end subroutine forces_add_uncached_planes
+
+   !> One load's channels into the y plane (f(1:J)) and, when its direction has a share in
+   !! z, into the z plane (f(J+1:2J)), each times its share (a load along y: the planar
+   !! sum unchanged, nothing in z).
+   pure subroutine add_turned(term, f)
+      type(force_term), intent(in) :: term
+      real(dp), intent(inout) :: f(:)
+      integer :: j
+      j = size(f)/2
+      if (abs(term%shares(1) - 1) <= 0) then
+         call add_channels(term, f(1:j))
+      else if (abs(term%shares(1)) > 0) then
+         call add_channels(term, f(1:j), term%shares(1))
+      end if
+      if (abs(term%shares(2)) > 0) call add_channels(term, f(j + 1:), term%shares(2))
+   end subroutine add_turned
+
    subroutine forces_add_uncached(self, t, f)
       class(force_set), intent(in) :: self
       real(dp), intent(in) :: t   !! time (s)
@@ -515,14 +571,19 @@ contains
    end subroutine forces_add_uncached
 
    !> f += load_factor s_c F_c over the channels of a term (its values at t).
-   pure subroutine add_channels(term, f)
+   pure subroutine add_channels(term, f, share)
       type(force_term), intent(in) :: term
       real(dp), intent(inout) :: f(:)
+      real(dp), intent(in), optional :: share   !! a factor on every value (a direction's share)
       integer :: c, last
       do c = 1, size(term%channel)
          associate (slice => term%channel(c))
             last = slice%first + size(slice%values) - 1
-            f(slice%first:last) = f(slice%first:last) + term%load_factor*term%values(c)*slice%values
+            if (present(share)) then
+               f(slice%first:last) = f(slice%first:last) + term%load_factor*(share*term%values(c))*slice%values
+            else
+               f(slice%first:last) = f(slice%first:last) + term%load_factor*term%values(c)*slice%values
+            end if
          end associate
       end do
    end subroutine add_channels

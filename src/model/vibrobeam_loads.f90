@@ -207,14 +207,15 @@ contains
    end subroutine load_evaluate
 
    !> F(t) of a beam of two planes into f (2J values, y then z; `load_at`'s values): the
-   !! loads given in the y plane turned by &load direction, the point force by its own
-   !! point_direction when it has one.
+   !! loads of &load given in the y plane turned by &load direction, the point force by its
+   !! own point_direction when it has one, and each load of &forces by its direction.
    subroutine planes_at(self, t, f)
       class(load_set), intent(in) :: self
       real(dp), intent(in) :: t
       real(dp), intent(out) :: f(:)
-      f(1:size(f)/2) = self%at(t)
+      call add_loads(self, t, f(1:size(f)/2))
       call self%turn(t, f)
+      if (self%forces%count > 0) call self%forces%add_uncached_planes(t, f)
    end subroutine planes_at
 
    !> `planes_at` for the steppers (`evaluate`'s values: no temporary, the tables' and
@@ -223,8 +224,9 @@ contains
       class(load_set), intent(inout) :: self
       real(dp), intent(in) :: t
       real(dp), intent(out) :: f(:)
-      call self%evaluate(t, f(1:size(f)/2))
+      call add_loads(self, t, f(1:size(f)/2))
       call self%turn(t, f)
+      if (self%forces%count > 0) call self%forces%add_to_planes(t, f)
    end subroutine evaluate_planes
 
    !> f(1:J) holds F(t) in y: turn it by `shares` into both planes, the point force by

@@ -419,6 +419,11 @@ contains
          call no_direction('load', 'point_direction', scene%load%point_direction)
          call no_direction('initial', 'direction', scene%initial%direction)
          call no_direction('initial', 'displacement_direction', scene%initial%displacement_direction)
+         if (allocated(scene%forces%load)) then
+            do i = 1, size(scene%forces%load)
+               call no_direction('forces', 'direction('//integer_text(i)//')', scene%forces%load(i)%direction)
+            end do
+         end if
          do i = 1, size(scene%obstacles)
             if (scene%obstacles(i)%hole()) &
                call fail(stat, errmsg, '&obstacles shape('//integer_text(i)//') = '''// &
@@ -476,11 +481,6 @@ contains
                    'give Rayleigh damping (rayleigh_mass, rayleigh_stiffness)')
       if (scene%flow%velocity > 0) &
          call fail(stat, errmsg, '&flow velocity = '//real_text(scene%flow%velocity)//' m/s'//planar//'allowed: 0')
-      if (allocated(scene%forces%load)) then
-         if (size(scene%forces%load) > 0) &
-            call fail(stat, errmsg, '&forces count = '//integer_text(size(scene%forces%load))//planar// &
-                      'give the loads in &load, with its direction')
-      end if
       if (len_trim(scene%initial%from_file) > 0) &
          call fail(stat, errmsg, '&initial from_file = '''//trim(scene%initial%from_file)//''''//planar// &
                    'a checkpoint does not record its planes yet; start from initial data')

@@ -5,7 +5,9 @@
 !!     planar y bit for bit and y is exactly 0 (the stacked layout does the same operations
 !!     in the same order on each plane, and direction_shares is exact at 90 degrees);
 !! (2) rotation invariance (I_z = I): turned by 30 degrees, y = cos 30 u and z = sin 30 u
-!!     of the planar u to round-off, at every step;
+!!     of the planar u to round-off, at every step; likewise for the loads of &forces (a
+!!     random distributed load and a harmonic point force), each turned by its direction,
+!!     and bit for bit along z;
 !! (3) a section whose inertias differ (I_z = 2.5 I), no damping, no load, mode-1 initial
 !!     displacement at 45 degrees: the tip moves in y and z at the closed-form cantilever
 !!     frequencies (beta_1 L)^2 sqrt(E I/(rho S L^4)) and the same with I_z, within the
@@ -17,6 +19,7 @@
 program test_two_planes
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
+   use vibrobeam_forces, only: force_settings
    use vibrobeam_problem, only: run_problem
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_cantilever_exact, only: cantilever_frequency
@@ -101,8 +104,54 @@ program test_two_planes
    call t%check_close('direction 30: y = cos 30 u, z = sin 30 u of the planar run', deviation/scale, 0.0_dp, &
                       tolerance, 1.0_dp)
 
+   ! (2b) the loads of &forces, each turned by its own direction: a random distributed load
+   ! and a harmonic point force, both along z (90 degrees), equal the planar run bit for
+   ! bit in z (y exactly 0); both at 30 degrees, the planar run times the shares
+   planar = scene
+   planar%beam%planes = 1
+   planar%load%point_force = 0
+   planar%forces%load = [force_settings(kind='distributed', signal='random', psd_level=0.5_dp, band_from=20.0_dp, &
+                                        band_to=2000.0_dp, correlation_length=0.1_dp), &
+                         force_settings(kind='point', position=0.5_dp, signal='harmonic', amplitude=2.0_dp, &
+                                        frequency=250.0_dp)]
+   call prepare_test_scene(planar, prepared_planar)
+   turned = planar
+   turned%beam%planes = 2
+   turned%initial%direction = 90
+   turned%forces%load(:)%direction = 90
+   call prepare_test_scene(turned, prepared)
+   call start_test_stepper(planar, prepared_planar, reference)
+   call start_test_stepper(turned, prepared, stepper)
+   same = .true.
+   do n = 1, steps
+      call advance_test_stepper(reference)
+      call advance_test_stepper(stepper)
+      same = same .and. all(same_bits(stepper%u(j + 1:), reference%u)) .and. &
+             all(same_bits(stepper%v(j + 1:), reference%v)) .and. all(abs(stepper%u(1:j)) <= 0)
+   end do
+   call t%check_true('&forces along z: z equals the planar run bit for bit at every step, y exactly 0', same)
+   turned%initial%direction = 30
+   turned%forces%load(:)%direction = 30
+   call prepare_test_scene(turned, prepared)
+   call start_test_stepper(planar, prepared_planar, reference)
+   call start_test_stepper(turned, prepared, stepper)
+   deviation = 0
+   scale = 0
+   do n = 1, steps
+      call advance_test_stepper(reference)
+      call advance_test_stepper(stepper)
+      deviation = max(deviation, maxval(abs(stepper%u(1:j) - shares(1)*reference%u)), &
+                      maxval(abs(stepper%u(j + 1:) - shares(2)*reference%u)))
+      scale = max(scale, maxval(abs(reference%u)))
+   end do
+   write (output_unit, '(a,es10.3)') '&forces at 30 degrees: largest deviation / largest |u| ', deviation/scale
+   ! as (2): 8 n eps
+   call t%check_close('&forces at 30 degrees: y = cos 30 u, z = sin 30 u of the planar run', deviation/scale, 0.0_dp, &
+                      tolerance, 1.0_dp)
+
    ! (3) I_z = 2.5 I: two frequencies, against the closed form; energy conserved
    turned = scene
+   turned%forces = scene%forces
    turned%beam%inertia_z = 2.5_dp*scene%beam%inertia
    turned%beam%rayleigh_mass = 0
    turned%load%point_force = 0

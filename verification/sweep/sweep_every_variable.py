@@ -121,6 +121,8 @@ SCENE_E = """
            shape(2) = 'polygon', sides(2) = 6, orientation(2) = 10, x_from(2) = 0.25, radius(2) = 1e-3 /
 &time      dt = 2e-5 @TIME@ /
 &load      point_force = 0.1, point_frequency = 300, direction = 30, point_direction = 60 /
+&forces    count = 1, kind(1) = 'distributed', x_from(1) = 0.1, x_to(1) = 0.45, signal(1) = 'random',
+           psd_level(1) = 0.5, band_from(1) = 50.0, band_to(1) = 5000.0, direction(1) = 45 /
 &output    file = 'scene.h5', text = .false. @OUTPUT@ /
 """
 SCENES = {'A': SCENE_A, 'B': SCENE_B, 'C': SCENE_C, 'D': SCENE_D, 'E': SCENE_E}
@@ -154,6 +156,7 @@ EXPECTED = {
     'obstacles.friction(1)': [('E', '&sweep is not available with &beam planes = 2')],
     'obstacles.wear_coefficient(1)': [('E', '&sweep is not available with &beam planes = 2')],
     'obstacles.radius(2)': [('E', '&sweep is not available with &beam planes = 2')],
+    'forces.direction(1)': [('E', '&sweep is not available with &beam planes = 2')],
     'obstacles.orientation(2)': [('E', '&sweep is not available with &beam planes = 2')],
     'initial.direction': [('A', 'is given with &beam planes = 1')],
     'initial.displacement_direction': [('A', 'is given with &beam planes = 1')],
