@@ -87,9 +87,6 @@ module vibrobeam_recorder
       !! the last `observe` (the y plane's are events%observed(1, :))
       integer :: planes = 1
       real(dp) :: tip_z(2) = 0
-      !> circular holes (two planes): each point received an impulse in the last step (or
-      !! rested on its wall at t = 0)
-      logical, allocatable :: circle_in_contact(:)
       type(support_wear) :: wear                     !! impacts, forces, sliding and wear at those points
       type(run_spectra) :: spectra                   !! /spectrum: the tip's and the observation points'
       type(forces_psd) :: forces_spectra             !! /forces: the random loads' densities (none without)
@@ -177,19 +174,10 @@ contains
          if ((value <= stepper%contacts%lower(c) + tolerance .and. speed >= 0) .or. &
              (value >= stepper%contacts%upper(c) - tolerance .and. speed <= 0)) self%in_contact(c) = .true.
       end do
-      allocate (self%circle_in_contact(stepper%holes%circles%count))
-      do c = 1, stepper%holes%circles%count
-         associate (circles => stepper%holes%circles)
-            ! on its wall (within the activation tolerance) and not moving into it: its inward
-            ! normal velocity >= 0
-            self%circle_in_contact(c) = circles%gap_at(c, circles%position(c, stepper%u)) <= tolerance .and. &
-                                        dot_product(circles%normal_at(c, circles%position(c, stepper%u)), &
-                                                    circles%position(c, problem%start%v)) >= 0
-         end associate
-      end do
       if (stepper%holes%circles%count > 0) &
-         call self%wear%init(stepper%holes%circles, window_first_step(scene%output%measure_from, scene%time%dt), &
-                             last_step, scene%time%dt, wear_coefficients(stepper%holes%circles%obstacle))
+         call self%wear%init(stepper, problem%start%v, tolerance, &
+                             window_first_step(scene%output%measure_from, scene%time%dt), last_step, &
+                             wear_coefficients(stepper%holes%circles%obstacle))
       self%max_penetration = penetration(stepper)
       self%max_penetration_time = stepper%t
       self%point_x = scene%output%points
@@ -458,52 +446,27 @@ contains
                                                     self%statistics%sample_values(:, 1:self%statistics%poincare_found), &
                                                     stat, errmsg)
    contains
-      !> The impacts at the circular holes' points, as at the levels: an impulse at a point
-      !! that received none in the previous step and moved towards its wall; its row of
-      !! /impacts holds the normal velocities (positive inwards) before and after.
+      !> The impacts at the points of a beam of two planes' obstacles (`support_wear`
+      !! decides them, as at the levels of a planar beam): their rows of /impacts, with the
+      !! normal velocities (positive inwards) before and after.
       subroutine circle_impacts(stat, errmsg)
          integer, intent(out) :: stat
          character(len=*), intent(out) :: errmsg
-         logical :: held(size(self%circle_in_contact))
-         real(dp) :: tangent(2), slip, impulse, mu
-         integer :: k, point
+         integer :: new(stepper%report%circle_count), count, i
          stat = 0
          errmsg = ''
-         held = .false.
-         associate (circles => stepper%holes%circles, r => stepper%report, holes => stepper%holes)
-            do k = 1, r%circle_count
-               if (r%circle_impulse(k) <= 0) cycle
-               point = r%circle_active(k)
-               held(point) = .true.
-               ! the wear tally: the step's tangential velocity t.V^{n+theta} at the point
-               tangent = [-r%circle_normal(2, k), r%circle_normal(1, k)]
-               slip = stepper%theta*dot_product(tangent, circles%position(point, stepper%v)) + &
-                      (1 - stepper%theta)*r%circle_tangential_before(k)
-               mu = circles%friction(point)
-               call self%wear%observe(stepper%steps, point, r%circle_impulse(k), slip, &
-                                      mu <= 0 .or. abs(r%circle_friction(k)) >= mu*r%circle_impulse(k)*(1 - 1e-9_dp))
-               if (self%circle_in_contact(point) .or. r%circle_before(k) > 0) cycle
-               self%impacts = self%impacts + 1
-               call self%wear%count_impact(stepper%steps, point)
-               if (self%write_rows) call self%files%append_impact([r%impulse_time, circles%x(point), &
-                                                                   r%circle_impulse(k), r%circle_before(k), &
-                                                                   r%circle_after(k)], stat, errmsg)
+         if (.not. self%wear%active) return
+         call self%wear%observe_step(stepper, new, count)
+         self%impacts = self%impacts + count
+         if (.not. self%write_rows) return
+         associate (r => stepper%report)
+            do i = 1, count
+               call self%files%append_impact([r%impulse_time, stepper%holes%circles%x(r%circle_active(new(i))), &
+                                              r%circle_impulse(new(i)), r%circle_before(new(i)), &
+                                              r%circle_after(new(i))], stat, errmsg)
                if (stat /= 0) return
             end do
-            ! compliant walls: the force over the step along its direction, frictionless
-            if (circles%compliant) then
-               do point = 1, circles%count
-                  impulse = holes%f(point)*stepper%dt
-                  if (impulse <= 0) cycle
-                  held(point) = .true.
-                  tangent = [holes%force(2, point), -holes%force(1, point)]/norm2(holes%force(:, point))
-                  slip = dot_product(tangent, stepper%theta*circles%position(point, stepper%v) + &
-                                     (1 - stepper%theta)*holes%start_velocity(:, point))
-                  call self%wear%observe(stepper%steps, point, impulse, slip, .true.)
-               end do
-            end if
          end associate
-         self%circle_in_contact = held
       end subroutine circle_impacts
    end subroutine after_step
 

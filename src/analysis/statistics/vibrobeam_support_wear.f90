@@ -19,6 +19,7 @@
 module vibrobeam_support_wear
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_circle_set, only: circle_set
+   use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_hdf5_series, only: h5_array
    implicit none
@@ -42,12 +43,16 @@ module vibrobeam_support_wear
       !> (points, batches) sums over each batch: P |v_t|, P, P^2/dt, held steps, sliding
       !! steps, impacts
       real(dp), allocatable :: work(:, :), impulse(:, :), square(:, :), held(:, :), sliding(:, :), impacts(:, :)
+      !> each point received an impulse in the last step (or rested on its wall at t = 0):
+      !! the next impulse there is not an impact
+      logical, allocatable :: in_contact(:)
       type(h5_array) :: arrays(2, wear_quantities)   !! /wear/NAME and /wear/NAME_error
       logical :: volume = .false.                  !! some coefficient given: wear_volume_rate written
    contains
       procedure :: create_datasets
       procedure :: write
       procedure :: init
+      procedure :: observe_step
       procedure :: observe
       procedure :: count_impact
       procedure :: result
@@ -55,18 +60,31 @@ module vibrobeam_support_wear
 
 contains
 
-   !> For the points of `circles`, a window of steps first_step..last_step of length dt
-   !! each; `coefficient(k)` Archard's K of point k's obstacle (< 0: not given).
-   subroutine init(self, circles, first_step, last_step, dt, coefficient)
+   !> For the points of the stepper's obstacles (`stepper%holes%circles`, at its start,
+   !! with the initial velocity `v0`), a window of steps first_step..last_step; each
+   !! point's `coefficient`, Archard's K of its obstacle (< 0: not given). A point on its
+   !! wall (within `tolerance`) and not moving into it is in contact from t = 0, so its
+   !! first impulse is not an impact.
+   subroutine init(self, stepper, v0, tolerance, first_step, last_step, coefficient)
       class(support_wear), intent(inout) :: self
-      type(circle_set), intent(in) :: circles
+      class(time_stepper), intent(in) :: stepper
+      real(dp), intent(in) :: v0(:), tolerance
       integer(int64), intent(in) :: first_step, last_step
-      real(dp), intent(in) :: dt, coefficient(:)
-      self%points = circles%count
-      self%active = circles%count > 0
+      real(dp), intent(in) :: coefficient(:)
+      integer :: c
+      associate (circles => stepper%holes%circles)
+         self%points = circles%count
+         self%active = circles%count > 0
+         allocate (self%in_contact(circles%count))
+         do c = 1, circles%count
+            self%in_contact(c) = circles%gap_at(c, circles%position(c, stepper%u)) <= tolerance .and. &
+                                 dot_product(circles%normal_at(c, circles%position(c, stepper%u)), &
+                                             circles%position(c, v0)) >= 0
+         end do
+      end associate
       self%first_step = max(1_int64, first_step)
       self%last_step = last_step
-      self%dt = dt
+      self%dt = stepper%dt
       self%batches = int(max(1_int64, min(int(batch_count, int64), last_step - self%first_step + 1)))
       self%coefficient = coefficient
       self%volume = any(coefficient >= 0)
@@ -74,6 +92,52 @@ contains
                 self%square(self%points, self%batches), self%held(self%points, self%batches), &
                 self%sliding(self%points, self%batches), self%impacts(self%points, self%batches), source=0.0_dp)
    end subroutine init
+
+   !> The last step of `stepper` at its points: each held point's impulse, tangential
+   !! velocity t.V^{n+theta} and sliding (rigid walls: the friction at its bound, or no
+   !! friction), each compliant wall's force over the step along its direction; `new(1:count)`
+   !! the entries of the step report (k of report%circle_*) that are impacts: an impulse at
+   !! a point that received none in the previous step, moving towards its wall.
+   subroutine observe_step(self, stepper, new, count)
+      class(support_wear), intent(inout) :: self
+      class(time_stepper), intent(in) :: stepper
+      integer, intent(out) :: new(:), count
+      logical :: held(self%points)
+      real(dp) :: tangent(2), slip, impulse, mu
+      integer :: k, point
+      count = 0
+      held = .false.
+      associate (circles => stepper%holes%circles, r => stepper%report, holes => stepper%holes)
+         do k = 1, r%circle_count
+            if (r%circle_impulse(k) <= 0) cycle
+            point = r%circle_active(k)
+            held(point) = .true.
+            tangent = [-r%circle_normal(2, k), r%circle_normal(1, k)]
+            slip = stepper%theta*dot_product(tangent, circles%position(point, stepper%v)) + &
+                   (1 - stepper%theta)*r%circle_tangential_before(k)
+            mu = circles%friction(point)
+            call self%observe(stepper%steps, point, r%circle_impulse(k), slip, &
+                              mu <= 0 .or. abs(r%circle_friction(k)) >= mu*r%circle_impulse(k)*(1 - 1e-9_dp))
+            if (self%in_contact(point) .or. r%circle_before(k) > 0) cycle
+            count = count + 1
+            new(count) = k
+            call self%count_impact(stepper%steps, point)
+         end do
+         ! compliant walls: the force over the step along its direction, frictionless
+         if (circles%compliant) then
+            do point = 1, circles%count
+               impulse = holes%f(point)*stepper%dt
+               if (impulse <= 0) cycle
+               held(point) = .true.
+               tangent = [holes%force(2, point), -holes%force(1, point)]/norm2(holes%force(:, point))
+               slip = dot_product(tangent, stepper%theta*circles%position(point, stepper%v) + &
+                                  (1 - stepper%theta)*holes%start_velocity(:, point))
+               call self%observe(stepper%steps, point, impulse, slip, .true.)
+            end do
+         end if
+      end associate
+      self%in_contact = held
+   end subroutine observe_step
 
    !> Batch of step n (0: outside the window).
    pure integer function batch_of(self, n)
