@@ -15,7 +15,7 @@ module vibrobeam_text_output
    use vibrobeam_sweep_text, only: sweep_files
    use vibrobeam_branch_text, only: branch_files
    use vibrobeam_text, only: integer_text
-   use vibrobeam_forces, only: max_forces
+   use vibrobeam_force_settings, only: max_forces
    use vibrobeam_progress, only: progress_meter
    implicit none
    private

@@ -20,7 +20,8 @@ module vibrobeam_loads
    use vibrobeam_schema_visitor, only: schema_visitor, real_row, unset, is_unset
    use vibrobeam_namelist_schema, only: namelist_variable
    use vibrobeam_frequency_twins, only: hertz_twin
-   use vibrobeam_forces, only: force_set, forces_settings, build_forces
+   use vibrobeam_force_settings, only: forces_settings
+   use vibrobeam_forces, only: force_set, build_forces
    use vibrobeam_flow, only: fluid_elastic, flow_settings, build_flow
    implicit none
    private

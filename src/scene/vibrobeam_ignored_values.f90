@@ -15,7 +15,7 @@ module vibrobeam_ignored_values
    use vibrobeam_namelist_schema, only: namelist_variable, variable_index
    use vibrobeam_scene_values, only: real_input
    use vibrobeam_frequency_twins, only: twin_name
-   use vibrobeam_forces, only: ignored_forces
+   use vibrobeam_force_settings, only: ignored_forces
    use vibrobeam_flow, only: ignored_flow
    implicit none
    private

@@ -39,7 +39,7 @@ module vibrobeam_scene
    use vibrobeam_buckling, only: check_compression
    use vibrobeam_initial_state, only: initial_settings, visit_initial, check_initial
    use vibrobeam_loads, only: load_settings, visit_load
-   use vibrobeam_forces, only: forces_settings, visit_forces, check_forces, max_forces
+   use vibrobeam_force_settings, only: forces_settings, visit_forces, check_forces, max_forces
    use vibrobeam_flow, only: flow_settings, visit_flow, check_flow
    use vibrobeam_time_settings, only: time_settings, impact_settings, visit_time, visit_impact
    use vibrobeam_contact_options, only: contact_options, visit_solver

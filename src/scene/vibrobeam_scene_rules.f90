@@ -14,7 +14,7 @@ module vibrobeam_scene_rules
    use vibrobeam_section_settings, only: check_sections, max_sections
    use vibrobeam_buckling, only: check_compression
    use vibrobeam_initial_state, only: check_initial
-   use vibrobeam_forces, only: check_forces
+   use vibrobeam_force_settings, only: check_forces
    use vibrobeam_flow, only: check_flow
    use vibrobeam_periodic_settings, only: forcing_frequency, whole_step_tolerance
    use vibrobeam_scene, only: scene_type, visit_scene, sync_frequency_twins, steps_in_time, forcing_of, &

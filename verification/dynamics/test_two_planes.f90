@@ -19,7 +19,7 @@
 program test_two_planes
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_forces, only: force_settings
+   use vibrobeam_force_settings, only: force_settings
    use vibrobeam_problem, only: run_problem
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_cantilever_exact, only: cantilever_frequency

@@ -122,6 +122,7 @@ program test_periodic_linear
    ! ---- Floquet multipliers against lambda_k^P ----
    allocate (wr(m), wi(m), rconde(m), vectors(m, m))
    call eigenvalues_with_conditions(a, wr, wi, rconde, vectors)
+   allocate (mu_ref(size(wr)))   ! (first: see tip_ref)
    mu_ref = cmplx(wr, wi, dp)**steps
    call t%check_true('as many multipliers as unknowns of the map (2 J)', size(orbit%multipliers, 2) == m)
    ! Bounds, to first order (a factor 4 beside them): an error E of a matrix moves its

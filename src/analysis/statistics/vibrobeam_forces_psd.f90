@@ -39,7 +39,8 @@ module vibrobeam_forces_psd
    use vibrobeam_welch, only: welch_estimator
    use vibrobeam_quantiles, only: chi_square_quantile
    use vibrobeam_schema_visitor, only: unset_integer
-   use vibrobeam_forces, only: force_set, forces_settings
+   use vibrobeam_force_settings, only: forces_settings
+   use vibrobeam_forces, only: force_set
    use vibrobeam_random_signal, only: random_signal
    implicit none
    private
