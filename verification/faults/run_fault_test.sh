@@ -217,6 +217,13 @@ sigkill_stepping)
     scene out/run.h5 run 100 0.8 .true. 0.1
     "$vibrobeam" run.nml > run.out 2> run.err &
     pid=$!
+    # the moment counts from the run's temporary file (it exists once the run has read and
+    # checked its input and created its datasets): on a loaded machine 0.3 s after the
+    # start the run may not have got that far, and a kill then tests nothing (no file)
+    for _ in $(seq 200); do
+      compgen -G 'out/run.h5.*.tmp' > /dev/null && break
+      sleep 0.05
+    done
     sleep "$kill_after"
     kill -KILL $pid
     wait $pid 2> /dev/null
