@@ -76,9 +76,11 @@ contains
          self%points = circles%count
          self%active = circles%count > 0
          allocate (self%in_contact(circles%count))
+         self%in_contact = .false.
          do c = 1, circles%count
-            self%in_contact(c) = circles%gap_at(c, circles%position(c, stepper%u)) <= tolerance .and. &
-                                 dot_product(circles%normal_at(c, circles%position(c, stepper%u)), &
+            ! (the normal only on the wall: a circle's is undefined at its centre)
+            if (circles%gap_at(c, circles%position(c, stepper%u)) > tolerance) cycle
+            self%in_contact(c) = dot_product(circles%normal_at(c, circles%position(c, stepper%u)), &
                                              circles%position(c, v0)) >= 0
          end do
       end associate
