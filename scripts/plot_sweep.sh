@@ -2,8 +2,9 @@
 # Draw the plots of a sweep file, as PNG beside it (docs/sweeps.md, "Plots"): the
 # frequency response (STEM_response.png), the bifurcation diagram (STEM_bifurcation.png)
 # with, below it, the period, the 0-1 test and the Lyapunov exponent of each point's
-# Poincare samples (STEM_chaos.png) and, for a sweep with two parameters, the map
-# (STEM_map.png).
+# Poincare samples (STEM_chaos.png), for a sweep with two parameters the map
+# (STEM_map.png) and, for a beam of two planes with obstacles, the wear at each of their
+# points against the parameter (STEM_wear.png).
 # usage: plot_sweep.sh SWEEP.h5 [--normalise [REFERENCE]]
 #   --normalise            the parameter axis over the first natural frequency of the
 #                          clamped-free beam (continuum closed form, docs/theory.md section 7,
@@ -40,7 +41,9 @@ grep -q ' /sweep/parameter$' <<< "$listing" || {
 
 run_id=$(h5dump -a /run/run_id "$result" 2> /dev/null | sed -n 's/.*(0): *"\([^"]*\)".*/\1/p')
 stale=0
-for kind in sweep poincare; do
+# a beam of two planes with obstacles: STEM_wear.dat too
+wear=""; if grep -q ' /sweep/statistics/wear/x$' <<< "$listing"; then wear=wear; fi
+for kind in sweep poincare $wear; do
   file="${stem}_${kind}.dat"
   if [ ! -f "$file" ] || ! head -1 "$file" | grep -q -F "# vibrobeam run $run_id "; then stale=1; fi
 done
@@ -109,5 +112,10 @@ fi
 if [ -n "$label2" ]; then
   gnuplot -e "$settings" "$here/plot_sweep_map.gp"
   drawn="$drawn ${stem}_map.png"
+fi
+# a beam of two planes with obstacles
+if [ -n "$wear" ]; then
+  gnuplot -e "$settings" "$here/plot_sweep_wear.gp"
+  drawn="$drawn ${stem}_wear.png"
 fi
 echo "plot_sweep: drew $drawn"

@@ -114,6 +114,7 @@ module vibrobeam_recorder
       procedure :: observe
       procedure :: start_statistics
       procedure :: restart_statistics
+      procedure :: restart_wear
       procedure :: window_statistics
    end type dynamics_recorder
 
@@ -203,7 +204,8 @@ contains
       call self%statistics%init(window_first_step(scene%output%measure_from, scene%time%dt), last_step, scene%time%dt, &
                                 1 + size(self%point_x), stepper%contacts%lower_obstacle, &
                                 stepper%contacts%upper_obstacle, size(scene%obstacles), omega, phase, &
-                                scene%output%lyapunov, stepper)
+                                scene%output%lyapunov, stepper, stepper%holes%circles%count, self%wear%volume, &
+                                self%planes == 2 .and. any(.not. is_unset(scene%obstacles%friction)))
       if (problem%reduced) then
          self%reduction = problem%reduction
          allocate (self%observed_rows(problem%reduction%boundary + problem%reduction%modes, size(self%observed_dofs, 2)))
@@ -331,12 +333,21 @@ contains
       call self%statistics%observe_start(stepper, self%events%observed)
    end subroutine restart_statistics
 
+   !> The wear's window (`vibrobeam_support_wear`: a sweep measures window after window)
+   !! from the state of step `first_step` to that of `last_step`.
+   subroutine restart_wear(self, first_step, last_step)
+      class(dynamics_recorder), intent(inout) :: self
+      integer(int64), intent(in) :: first_step, last_step
+      if (self%wear%active) call self%wear%begin_window(first_step, last_step)
+   end subroutine restart_wear
+
    !> The statistics of the window so far (docs/statistics.md).
    function window_statistics(self, stepper) result(outcome)
       class(dynamics_recorder), intent(in) :: self
       class(time_stepper), intent(in) :: stepper
       type(statistics_result) :: outcome
       outcome = self%statistics%result(stepper, self%episodes%open, self%episodes%impulse)
+      if (outcome%present .and. self%wear%active) call self%wear%into_statistics(outcome)
    end function window_statistics
 
    !> Create every dataset of the run (before the file enters SWMR mode) and write what is
@@ -358,7 +369,8 @@ contains
       if (stat == 0 .and. self%statistics%active) &
          call self%statistics_files%create(writer, self%statistics%layout, [self%length, self%point_x], &
                                            stepper%contacts%x, stepper%contacts%lower_obstacle, &
-                                           stepper%contacts%upper_obstacle, self%measure_from, trim(self%forcing), &
+                                           stepper%contacts%upper_obstacle, stepper%holes%circles%x, &
+                                           stepper%holes%circles%obstacle, self%measure_from, trim(self%forcing), &
                                            self%statistics%poincare%omega, self%statistics%poincare%phase, stat, errmsg)
    end subroutine create_datasets
 

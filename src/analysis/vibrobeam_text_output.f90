@@ -13,6 +13,7 @@ module vibrobeam_text_output
    use vibrobeam_text_derivation, only: derivation, text_sink, derived_file, discard_derived, text_file_name, &
       path_length, block_values
    use vibrobeam_sweep_text, only: sweep_files
+   use vibrobeam_sweep_wear_text, only: sweep_wear_file
    use vibrobeam_branch_text, only: branch_files
    use vibrobeam_text, only: integer_text
    use vibrobeam_force_settings, only: max_forces
@@ -86,6 +87,8 @@ contains
          if (run%file%exists('/time')) call dynamics_files(run, stat, errmsg)
          if (stat /= 0 .or. run%interrupted) exit derive
          if (run%file%exists('/sweep/parameter')) call sweep_files(run, stat, errmsg)
+         if (stat /= 0 .or. run%interrupted) exit derive
+         if (run%file%exists('/sweep/parameter')) call sweep_wear_file(run, stat, errmsg)
       end block derive
       call run%file%close()
       meter = run%meter

@@ -13,7 +13,8 @@ module vibrobeam_sweep_settings
    use vibrobeam_namelist_schema, only: namelist_variable, variable_index, choices_text
    use vibrobeam_model, only: beam_model, build_model
    use vibrobeam_contact_set, only: contact_set
-   use vibrobeam_obstacles, only: build_contact_points
+   use vibrobeam_circle_set, only: circle_set
+   use vibrobeam_obstacles, only: build_contact_points, build_circle_points
    use vibrobeam_sweep_axis, only: sweep_axis, resolve_axis
    use vibrobeam_sweep_points, only: sweep_settings, sweep_point, sweep_points, point_scene, point_windows, &
       point_label, max_settle_windows, max_sweep_points, task_count
@@ -40,12 +41,6 @@ contains
       if (scene%analysis%kind /= 'dynamics') then
          stat = stat_failure
          errmsg = '&sweep needs &analysis kind = ''dynamics'' (kind = '''//trim(scene%analysis%kind)//''')'
-         return
-      end if
-      if (scene%beam%plane_count() == 2) then
-         stat = stat_failure
-         errmsg = '&sweep is not available with &beam planes = 2 yet (issue 21: the two-plane model runs single '// &
-                  'dynamics runs so far); give planes = 1'
          return
       end if
       call check_keyword('mode', settings%mode, stat, errmsg)
@@ -169,7 +164,8 @@ contains
       type(contact_set) :: contacts
       character(len=:), allocatable :: warnings
       integer(int64) :: settle_steps, measure_steps
-      integer :: k, contact_count
+      type(circle_set) :: circles
+      integer :: k, contact_count, point_count
       logical :: same_model, same_contacts
       stat = 0
       errmsg = ''
@@ -187,11 +183,17 @@ contains
                              trial%beam%ei(), model, stat, errmsg, structure=structure_of(trial))
          if (stat == 0 .and. (k == 1 .or. .not. same_contacts)) then
             warnings = ''
-            call build_contact_points(trial%obstacles, model, contacts, warnings, stat, errmsg)
+            if (trial%beam%plane_count() == 2) then   ! the points of the cross-section's obstacles
+               call build_circle_points(trial%obstacles, model, circles, warnings, stat, errmsg)
+               point_count = circles%count
+            else
+               call build_contact_points(trial%obstacles, model, contacts, warnings, stat, errmsg)
+               point_count = contacts%count
+            end if
          end if
-         if (stat == 0 .and. contact_count >= 0 .and. contacts%count /= contact_count) then
+         if (stat == 0 .and. contact_count >= 0 .and. point_count /= contact_count) then
             stat = stat_failure
-            errmsg = 'the point has '//integer_text(contacts%count)//' contact points and point 1 has '// &
+            errmsg = 'the point has '//integer_text(point_count)//' contact points and point 1 has '// &
                      integer_text(contact_count)//': a sweep keeps the same contact points (move obstacles '// &
                      'between nodes, not across them)'
          end if
@@ -199,7 +201,7 @@ contains
             errmsg = '&sweep point '//integer_text(k)//' ('//point_label(settings, points(k))//'): '//trim(errmsg)
             return
          end if
-         contact_count = contacts%count
+         contact_count = point_count
       end do
    end subroutine check_points
 end module vibrobeam_sweep_settings

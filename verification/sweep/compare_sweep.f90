@@ -12,8 +12,8 @@
 program compare_sweep
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: integer_text
-   use vibrobeam_hdf5_file_reads, only: read_real_1d, read_real_2d, read_int_1d, read_attr_int
-   use vibrobeam_statistics_layout, only: statistics_layout
+   use vibrobeam_hdf5_file_reads, only: read_real_1d, read_real_2d, read_int_1d, read_attr_int, h5_path_exists
+   use vibrobeam_statistics_layout, only: statistics_layout, group_wear
    use vibrobeam_test_support, only: test_counter
    implicit none
    type(test_counter) :: t
@@ -41,17 +41,24 @@ program compare_sweep
 
 contains
 
-   !> The layout of the sweep file's statistics.
+   !> The layout of the sweep file's statistics (a beam of two planes: its obstacles'
+   !! points, /sweep/statistics/wear/x, and what the file holds of the wear volume rate and
+   !! the power of friction).
    subroutine layout_of(file)
       character(len=*), intent(in) :: file
-      real(dp), allocatable :: x(:), c(:)
+      real(dp), allocatable :: x(:), c(:), w(:)
       integer :: obstacles
+      allocate (w(0))
       call read_real_1d(file, '/sweep/statistics/points/x', x, stat, errmsg)
       if (stat == 0) call read_real_1d(file, '/sweep/statistics/contacts/x', c, stat, errmsg)
       if (stat == 0) call read_attr_int(file, '/', 'obstacles.count', obstacles, stat, errmsg)
+      if (stat == 0 .and. h5_path_exists(file, '/sweep/statistics/wear/x')) &
+         call read_real_1d(file, '/sweep/statistics/wear/x', w, stat, errmsg)
       call t%check_true('read the layout of '//file, stat == 0, errmsg)
       if (stat /= 0) call t%finish('compare_sweep')
-      call layout%init(size(x), size(c), obstacles)
+      call layout%init(size(x), size(c), obstacles, size(w), &
+                       h5_path_exists(file, '/sweep/statistics/wear/wear_volume_rate'), &
+                       h5_path_exists(file, '/sweep/statistics/energy/power_friction'))
    end subroutine layout_of
 
    !> Row `point` of a /sweep/statistics dataset (1-d or 2-d).
@@ -82,6 +89,17 @@ contains
             call t%check_true('read run '//layout%path(e, k == 1), stat == 0, errmsg)
             if (stat == 0) call t%check_true(layout%path(e, k == 1)//' of point '//integer_text(point)// &
                                              ' equals the single run', same_bits(a, b), 'differs')
+         end do
+      end do
+      ! a beam of two planes: the run's /wear holds the same numbers as its /statistics/wear
+      do e = 1, size(layout%entries)
+         if (layout%entries(e)%group /= group_wear) cycle
+         do k = 0, 1
+            call read_real_1d(trim(second), '/statistics/'//layout%path(e, k == 1), a, stat, errmsg)
+            if (stat == 0) call read_real_1d(trim(second), '/'//layout%path(e, k == 1), b, stat, errmsg)
+            call t%check_true('read run /'//layout%path(e, k == 1), stat == 0, errmsg)
+            if (stat == 0) call t%check_true('/'//layout%path(e, k == 1)//' of the run equals its /statistics/'// &
+                                             layout%path(e, k == 1), same_bits(a, b), 'differs')
          end do
       end do
       ! the kept Poincare samples: the last ones of the run

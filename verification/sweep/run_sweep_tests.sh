@@ -13,6 +13,11 @@
 #   interrupt SIGINT during a sweep: exit status 4, the sweep file published with /run
 #            status 'interrupted' and the points not finished marked, the points done
 #            kept in the partial directory
+#   planes   a beam of two planes in a round hole with friction and a wear coefficient:
+#            every point of an 'independent' sweep equals the single run (its wear and
+#            friction power with the rest), also with steady-state detection (the window
+#            after the transient it found), and keep_runs with steady-state detection and
+#            continuation ('up') holds each point's statistics in its file
 set -uo pipefail
 mode=$1; vibrobeam=$2; compare=$3; mpirun=${4:-mpirun}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -61,6 +66,57 @@ files)
   for k in 1 2 3; do
     echo "point $k: sweep_point000$k.h5"
     "$compare" point sweep.h5 $k sweep_point000$k.h5 || failed=1
+  done
+  ;;
+planes)
+  # tube_in_round_hole.nml, coarser: 8 elements, a frictional hole (mu = 0.3) with a wear
+  # coefficient; the sweep's windows of 0.05 s, the single runs' the same
+  tube() {
+    cat > "$1.nml" <<END
+&beam      length = 0.5, youngs_modulus = 210e9, density = 7850, area = 6.938018879893839e-05,
+           inertia = 2.7642255353230253e-09, rayleigh_mass = 7.9193, rayleigh_stiffness = 5.9941e-06,
+           planes = 2 /
+&mesh      elements = 8 /
+&obstacles count = 1, shape(1) = 'circle', x_from(1) = 0.5, radius(1) = 0.5e-3, friction(1) = 0.3,
+           wear_coefficient(1) = 1e-14 /
+&impact    restitution = 0.7 /
+&time      dt = 2e-5 $3 /
+&load      base_acceleration = 30.0, base_frequency = $2, direction = 45 /
+&initial   velocity = 'mode', velocity_mode = 1, velocity_amplitude = 0.3, direction = -45 /
+&output    file = '$1.h5', text = .false. $4 /
+$5
+END
+  }
+  tube sweep 413.0 "" "" "&sweep parameter = 'load.base_frequency', values = 300.0, 413.0, 500.0, settle = 0.05, measure = 0.05 /"
+  run sweep
+  k=0
+  for frequency in 300.0 413.0 500.0; do
+    k=$((k + 1))
+    tube single$k $frequency ", t_end = 0.1" ", measure_from = 0.05" ""
+    run single$k
+    echo "two planes, point $k ($frequency rad/s):"
+    "$compare" point sweep.h5 $k single$k.h5 || failed=1
+  done
+  # steady-state detection without keep_runs: the statistics (the wear's too) are those of
+  # the last window, from the transient the point found; the single run measures the same
+  tube steady 413.0 "" "" "&sweep parameter = 'load.base_frequency', values = 380.0, 420.0, settle = 0.02, measure = 0.03, steady_tolerance = 0.05 /"
+  run steady
+  transients=$(h5dump -A 0 -m '%.17g' -d /sweep/transient -y -w 0 steady.h5 | sed -n '/DATA {/,/}/{/DATA {/d;/}/d;p;}' | tr -d ' \n')
+  k=0
+  for frequency in 380.0 420.0; do
+    k=$((k + 1))
+    transient=$(cut -d, -f$k <<< "$transients")
+    tube steady_single$k $frequency ", t_end = $(awk -v t="$transient" 'BEGIN { printf "%.17g", t + 0.03 }')" \
+      ", measure_from = $transient" ""
+    run steady_single$k
+    echo "two planes, steady point $k ($frequency rad/s, transient $transient s):"
+    "$compare" point steady.h5 $k steady_single$k.h5 || failed=1
+  done
+  tube kept 413.0 "" "" "&sweep parameter = 'load.base_frequency', from = 380, to = 420, count = 3, mode = 'up', settle = 0.02, measure = 0.03, steady_tolerance = 0.05, keep_runs = .true. /"
+  run kept
+  for k in 1 2 3; do
+    echo "two planes, kept point $k: kept_point000$k.h5"
+    "$compare" point kept.h5 $k kept_point000$k.h5 || failed=1
   done
   ;;
 threads|mpi)

@@ -110,8 +110,8 @@ SCENE_D = """
 &load      base_acceleration = 2.0, base_frequency = 200 /
 &output    file = 'scene.h5', text = .false. @OUTPUT@ /
 """
-# The fifth scene: a beam of two bending planes in a round hole (issue 21), whose variables
-# a sweep refuses for now (a sweep takes planar beams only).
+# The fifth scene: a beam of two bending planes in a round hole and a hexagonal one
+# (issue 21), with friction, wear and loads turned from y.
 SCENE_E = """
 &beam      length = 0.5, youngs_modulus = 210e9, density = 7850, area = 2e-4,
            inertia = 1.6666666666666667e-9, inertia_z = 2e-9, planes = 2 /
@@ -143,21 +143,20 @@ EXPECTED = {
     'periodic.step': [('A', "belongs to &periodic, the settings of the periodic analysis itself")],
     'periodic.parameter_min': [('A', "belongs to &periodic, the settings of the periodic analysis itself")],
     'periodic.parameter_max': [('A', "belongs to &periodic, the settings of the periodic analysis itself")],
-    # a second moment for bending in z and the directions need two bending planes, the sweep's
-    # scenes are planar
-    # (issue 21; docs/input.md, "&beam")
-    'beam.inertia_z': [('A', 'is given with planes = 1')],
-    'load.direction': [('A', 'is given with &beam planes = 1'), ('E', '&sweep is not available with &beam planes = 2')],
+    # a second moment for bending in z and the directions need two bending planes (issue 21;
+    # docs/input.md, "&beam"): refused in the planar scene A, swept in scene E
+    'beam.inertia_z': [('A', 'is given with planes = 1'), ('E', None)],
+    'load.direction': [('A', 'is given with &beam planes = 1'), ('E', None)],
     'load.point_direction': [('A', 'is given with &beam planes = 1'),
-                             ('E', '&sweep is not available with &beam planes = 2')],
-    'obstacles.radius(1)': [('E', '&sweep is not available with &beam planes = 2')],
-    'obstacles.center_y(1)': [('E', '&sweep is not available with &beam planes = 2')],
-    'obstacles.center_z(1)': [('E', '&sweep is not available with &beam planes = 2')],
-    'obstacles.friction(1)': [('E', '&sweep is not available with &beam planes = 2')],
-    'obstacles.wear_coefficient(1)': [('E', '&sweep is not available with &beam planes = 2')],
-    'obstacles.radius(2)': [('E', '&sweep is not available with &beam planes = 2')],
-    'forces.direction(1)': [('E', '&sweep is not available with &beam planes = 2')],
-    'obstacles.orientation(2)': [('E', '&sweep is not available with &beam planes = 2')],
+                             ('E', None)],
+    'obstacles.radius(1)': [('E', None)],
+    'obstacles.center_y(1)': [('E', None)],
+    'obstacles.center_z(1)': [('E', None)],
+    'obstacles.friction(1)': [('E', None)],
+    'obstacles.wear_coefficient(1)': [('E', None)],
+    'obstacles.radius(2)': [('E', None)],
+    'forces.direction(1)': [('E', None)],
+    'obstacles.orientation(2)': [('E', None)],
     'initial.direction': [('A', 'is given with &beam planes = 1')],
     'initial.displacement_direction': [('A', 'is given with &beam planes = 1')],
     # the sections cover the whole beam: the last one ends at L

@@ -27,7 +27,8 @@ module vibrobeam_statistics
 
    !> Levels recorded at block boundaries: the running sums of the stepper and the balance.
    integer, parameter :: level_work = 1, level_impacts = 2, level_damping = 3, level_numerical = 4, &
-                         level_contact_damping = 5, level_total = 6, level_balance = 7, level_count = 7
+                         level_contact_damping = 5, level_total = 6, level_balance = 7, level_count = 7, &
+                         level_friction = 8   ! only with friction (after the planar levels)
    !> Sum quantities per contact target (a contact point, an obstacle or the beam).
    integer, parameter :: s_impacts = 1, s_episodes = 2, s_impulse = 3, s_impulse_square = 4, s_contact_steps = 5, &
                          s_force = 6, per_target = 6
@@ -105,9 +106,13 @@ contains
    !> Statistics from step `first_step` to `last_step` (none when first_step >= last_step)
    !! of `points` observation points, the contact points with their obstacles, and
    !! Poincare samples at phase 0 of the forcing omega t + phase (omega = 0: none), with
-   !! their diagnostics (the Lyapunov exponent when `lyapunov`, on the unknowns of `stepper`).
+   !! their diagnostics (the Lyapunov exponent when `lyapunov`, on the unknowns of `stepper`);
+   !! for a beam of two planes with obstacles, the layout's 'wear' group (`wear_points`,
+   !! `wear_volume`: filled by the recorder from `vibrobeam_support_wear`) and, with
+   !! `friction` (the scene gives a friction coefficient, 0 too: the layout of every point
+   !! of a sweep over it is the same), the power friction takes.
    subroutine init(self, first_step, last_step, dt, points, lower_obstacle, upper_obstacle, obstacles, omega, phase, &
-                   lyapunov, stepper)
+                   lyapunov, stepper, wear_points, wear_volume, friction)
       class(run_statistics), intent(inout) :: self
       integer(int64), intent(in) :: first_step, last_step
       real(dp), intent(in) :: dt, omega, phase
@@ -115,6 +120,8 @@ contains
       integer, intent(in) :: lower_obstacle(:), upper_obstacle(:)
       logical, intent(in) :: lyapunov
       class(time_stepper), intent(in) :: stepper
+      integer, intent(in), optional :: wear_points
+      logical, intent(in), optional :: wear_volume, friction
       integer :: capacity
       self%active = first_step < last_step
       self%dt = dt
@@ -123,7 +130,7 @@ contains
       self%obstacles = obstacles
       self%lower_obstacle = lower_obstacle
       self%upper_obstacle = upper_obstacle
-      call self%layout%init(points, self%contacts, obstacles)
+      call self%layout%init(points, self%contacts, obstacles, wear_points, wear_volume, friction)
       allocate (self%episode_offset(self%contacts), self%force_offset(self%contacts), source=-1_int64)
       allocate (self%force_touching(self%contacts), source=.false.)
       call self%poincare%init(omega, phase, dt, 2*points)
@@ -133,7 +140,8 @@ contains
       allocate (self%sample_times(capacity), self%sample_values(2*points, capacity))
       self%expected_samples = max(1_int64, last_step - first_step)
       ! every item of the checkpoint exists from the start, with its size for the run
-      call self%blocks%init(sum_count(self), extreme_count(self), spread(0.0_dp, 1, level_count))
+      call self%blocks%init(sum_count(self), extreme_count(self), &
+                            spread(0.0_dp, 1, level_count + merge(1, 0, self%layout%friction)))
       call self%begin_window(first_step)
    end subroutine init
 
@@ -164,7 +172,7 @@ contains
       type(run_statistics), intent(inout) :: self
       class(time_stepper), intent(in) :: stepper
       real(dp), intent(in) :: observed(:, :)
-      call self%blocks%init(sum_count(self), extreme_count(self), levels_of(stepper))
+      call self%blocks%init(sum_count(self), extreme_count(self), levels_of(stepper, self%layout%friction))
       call self%poincare%start(stepper%t, reshape(observed, [2*self%points]))
       call self%diagnostics%start(reshape(observed, [2*self%points]))
       self%started = .true.
@@ -206,19 +214,23 @@ contains
 
    !> Work, impact, damping, numerical and contact damping sums of the stepper, the total
    !! energy (with the compliant stops' potential) and the balance total - work +
-   !! dissipated, as /energy writes them (docs/theory.md section 8, "Energy").
-   function levels_of(stepper) result(levels)
+   !! dissipated, as /energy writes them (docs/theory.md section 8, "Energy"), and with
+   !! `friction` the energy Coulomb friction took (a beam of two planes; in the balance).
+   function levels_of(stepper, friction) result(levels)
       class(time_stepper), intent(in) :: stepper
-      real(dp) :: levels(level_count), total, dissipated
+      logical, intent(in) :: friction
+      real(dp) :: levels(level_count + merge(1, 0, friction)), total, dissipated
       total = stepper%kinetic_energy() + stepper%elastic_energy()
       dissipated = stepper%energy%dissipated_impacts + stepper%energy%dissipated_damping + stepper%energy%dissipated_numerical
-      if (stepper%contacts%springs%count > 0) then
+      if (friction) dissipated = dissipated + stepper%energy%dissipated_friction
+      if (stepper%contacts%springs%count > 0 .or. stepper%holes%circles%compliant) then
          total = total + stepper%contact_potential()
          dissipated = dissipated + stepper%energy%dissipated_contact_damping
       end if
-      levels = [stepper%energy%work, stepper%energy%dissipated_impacts, stepper%energy%dissipated_damping, &
-         stepper%energy%dissipated_numerical, &
-                stepper%energy%dissipated_contact_damping, total, total - stepper%energy%work + dissipated]
+      levels(1:level_count) = [stepper%energy%work, stepper%energy%dissipated_impacts, &
+                               stepper%energy%dissipated_damping, stepper%energy%dissipated_numerical, &
+                               stepper%energy%dissipated_contact_damping, total, total - stepper%energy%work + dissipated]
+      if (friction) levels(level_friction) = stepper%energy%dissipated_friction
    end function levels_of
 
    !> After every step: the recorder's events carry the impacts, the episodes that opened
@@ -292,7 +304,7 @@ contains
       call self%spectrum%add(events%observed(1, 1), stat, errmsg)
       ! the levels (an energy evaluation) only where a block ends
       if (self%blocks%completes_block()) then
-         call self%blocks%close_sample(levels_of(stepper))
+         call self%blocks%close_sample(levels_of(stepper, self%layout%friction))
       else
          call self%blocks%close_sample()
       end if
@@ -402,7 +414,7 @@ contains
       type(statistics_result) :: outcome
       type(run_statistics) :: copy
       real(dp), allocatable :: batch(:, :), frequency(:), amplitude(:)
-      real(dp) :: levels_end(level_count), duration, block_duration
+      real(dp) :: levels_end(level_count + merge(1, 0, self%layout%friction)), duration, block_duration
       integer :: c, k, e, b, batches, stat
       integer(int64) :: segments
       character(len=256) :: errmsg
@@ -432,7 +444,7 @@ contains
          outcome%window_end = stepper%t
          duration = blocks%samples*self%dt
          block_duration = blocks%block_steps*self%dt
-         levels_end = levels_of(stepper)
+         levels_end = levels_of(stepper, self%layout%friction)
          allocate (batch(self%layout%size, batches), source=0.0_dp)
          ! observation points
          do k = 1, self%points
@@ -465,6 +477,15 @@ contains
                      [(blocks%levels(level_total, b + 1) - blocks%levels(level_total, b), b = 0, batches - 1)])
          call powers(e + 8, levels_end(level_balance) - blocks%levels(level_balance, 0), &
                      [(blocks%levels(level_balance, b + 1) - blocks%levels(level_balance, b), b = 0, batches - 1)])
+         if (self%layout%friction) then   ! the power friction takes, also in the power dissipated
+            e = self%layout%entries(self%layout%find(group_energy, 'power_friction'))%offset
+            call powers(e + 1, levels_end(level_friction) - blocks%levels(level_friction, 0), &
+                        [(blocks%levels(level_friction, b + 1) - blocks%levels(level_friction, b), b = 0, batches - 1)])
+            associate (dissipated => self%layout%entries(self%layout%find(group_energy, 'power_dissipated'))%offset + 1)
+               outcome%values(dissipated) = outcome%values(dissipated) + outcome%values(e + 1)
+               batch(dissipated, :) = batch(dissipated, :) + batch(e + 1, :)
+            end associate
+         end if
       end associate
       do k = 1, self%layout%size
          outcome%errors(k) = standard_error(batch(k, :))

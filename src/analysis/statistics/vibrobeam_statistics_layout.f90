@@ -8,20 +8,30 @@
 !! together; 1; the contact points also have the force statistics of the compliant
 !! stops), 'energy' (1), 'spectrum' (the `peak_count` largest peaks), 'poincare' (1: the
 !! period of the Poincare sequence, the 0-1 test and the Lyapunov exponent,
-!! `vibrobeam_poincare_diagnostics`). Every statistic has a standard error beside it
-!! (`<name>_error`) except the spectrum's and the 'poincare' group's, where only the
-!! Lyapunov exponent has one.
+!! `vibrobeam_poincare_diagnostics`) and, for a beam of two planes with obstacles, 'wear'
+!! (the points of its obstacles: `vibrobeam_support_wear`'s quantities, the wear volume
+!! rate where a wear_coefficient is given) and the energy's 'power_friction' (with
+!! friction). Every statistic has a standard error beside it (`<name>_error`) except the
+!! spectrum's and the 'poincare' group's, where only the Lyapunov exponent has one.
 module vibrobeam_statistics_layout
    implicit none
    private
    public :: statistics_layout, statistic_entry, peak_count
    public :: group_points, group_contacts, group_obstacles, group_beam, group_energy, group_spectrum, group_poincare
+   public :: group_wear, wear_quantities, wear_names, wear_units
 
    integer, parameter :: peak_count = 3   !! dominant response frequencies reported
    integer, parameter :: group_points = 1, group_contacts = 2, group_obstacles = 3, group_beam = 4, &
-                         group_energy = 5, group_spectrum = 6, group_poincare = 7
-   character(len=*), parameter :: group_names(7) = [character(len=9) :: 'points', 'contacts', 'obstacles', &
-                                                    'beam', 'energy', 'spectrum', 'poincare']
+                         group_energy = 5, group_spectrum = 6, group_poincare = 7, group_wear = 8
+   character(len=*), parameter :: group_names(8) = [character(len=9) :: 'points', 'contacts', 'obstacles', &
+                                                    'beam', 'energy', 'spectrum', 'poincare', 'wear']
+   !> The wear quantities of each point of a beam of two planes' obstacles
+   !! (`vibrobeam_support_wear`; the last only where a wear_coefficient is given).
+   integer, parameter :: wear_quantities = 7
+   character(len=*), parameter :: wear_names(wear_quantities) = [character(len=20) :: 'work_rate', 'mean_force', &
+      'rms_force', 'contact_fraction', 'sliding_fraction', 'impact_rate', 'wear_volume_rate']
+   character(len=*), parameter :: wear_units(wear_quantities) = [character(len=8) :: 'W', 'N', 'N', '1', '1', &
+      '1/s', 'm^3/s']
 
    !> One statistic: a vector of `length` values.
    type :: statistic_entry
@@ -34,9 +44,13 @@ module vibrobeam_statistics_layout
    end type statistic_entry
 
    !> Every statistic of a scene with the given numbers of observation points, contact
-   !! points and obstacles.
+   !! points and obstacles (and, for a beam of two planes, its obstacles' points, whether
+   !! a wear coefficient is given and whether friction acts).
    type :: statistics_layout
       integer :: observation_points = 0, contact_points = 0, obstacles = 0
+      integer :: wear_points = 0                  !! points of a beam of two planes' obstacles (0: none)
+      logical :: wear_volume = .false.            !! some wear_coefficient given: wear_volume_rate
+      logical :: friction = .false.               !! Coulomb friction acts: energy/power_friction
       integer :: size = 0                         !! length of the flat vector
       type(statistic_entry), allocatable :: entries(:)
    contains
@@ -70,13 +84,21 @@ module vibrobeam_statistics_layout
 
 contains
 
-   subroutine init(self, observation_points, contact_points, obstacles)
+   subroutine init(self, observation_points, contact_points, obstacles, wear_points, wear_volume, friction)
       class(statistics_layout), intent(inout) :: self
       integer, intent(in) :: observation_points, contact_points, obstacles
+      integer, intent(in), optional :: wear_points
+      logical, intent(in), optional :: wear_volume, friction
       integer :: k, group, lengths(3)
       self%observation_points = observation_points
       self%contact_points = contact_points
       self%obstacles = obstacles
+      self%wear_points = 0
+      if (present(wear_points)) self%wear_points = wear_points
+      self%wear_volume = .false.
+      if (present(wear_volume)) self%wear_volume = wear_volume .and. self%wear_points > 0
+      self%friction = .false.
+      if (present(friction)) self%friction = friction
       self%size = 0
       if (allocated(self%entries)) deallocate (self%entries)
       allocate (self%entries(0))
@@ -101,6 +123,14 @@ contains
       do k = 1, size(poincare_names)
          call add(poincare_names(k), poincare_units(k), group_poincare, 1, index(poincare_names(k), 'lyapunov_exponent') == 1)
       end do
+      ! a beam of two planes: after the planar entries, so a planar layout is unchanged
+      if (self%friction) call add('power_friction', 'W', group_energy, 1, .true.)
+      if (self%wear_points > 0) then
+         do k = 1, wear_quantities
+            if (k < wear_quantities .or. self%wear_volume) &
+               call add(wear_names(k), wear_units(k), group_wear, self%wear_points, .true.)
+         end do
+      end if
    contains
       subroutine add(name, unit, group, length, has_error)
          character(len=*), intent(in) :: name, unit

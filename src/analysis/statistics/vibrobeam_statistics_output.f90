@@ -4,7 +4,9 @@
 !!
 !! Layout: /statistics/<group>/<name> and <name>_error for every statistic of
 !! `vibrobeam_statistics_layout`; /statistics/points/x (the tip, then &output points),
-!! /statistics/contacts/x, lower_obstacle, upper_obstacle; /statistics/poincare/time,
+!! /statistics/contacts/x, lower_obstacle, upper_obstacle (`statistics_points`, also the
+!! sweep file's), /statistics/wear/x and obstacle (a beam of two planes' obstacles' points,
+!! only when it has such points); /statistics/poincare/time,
 !! displacement, velocity (samples x observation points). Attributes of /statistics:
 !! measure_from, window_start, window_end (s), window_steps, batches, batch_steps;
 !! poincare_load, poincare_frequency (rad/s) and poincare_frequency_hz (Hz),
@@ -17,7 +19,7 @@ module vibrobeam_statistics_output
    use vibrobeam_statistics, only: statistics_result
    implicit none
    private
-   public :: statistics_datasets
+   public :: statistics_datasets, statistics_points
 
    type :: statistics_datasets
       logical :: created = .false.
@@ -35,23 +37,23 @@ module vibrobeam_statistics_output
 contains
 
    !> Create every dataset and attribute of /statistics (values written at `finish`).
-   subroutine create(self, writer, layout, point_x, contact_x, lower_obstacle, upper_obstacle, measure_from, &
-                     forcing, omega, phase, stat, errmsg)
+   subroutine create(self, writer, layout, point_x, contact_x, lower_obstacle, upper_obstacle, wear_x, wear_obstacle, &
+                     measure_from, forcing, omega, phase, stat, errmsg)
       class(statistics_datasets), intent(inout) :: self
       type(h5_writer), intent(inout) :: writer
       type(statistics_layout), intent(in) :: layout
       real(dp), intent(in) :: point_x(:), contact_x(:), measure_from, omega, phase
       integer, intent(in) :: lower_obstacle(:), upper_obstacle(:)
+      real(dp), intent(in), optional :: wear_x(:)          !! absent (or unallocated): a planar beam
+      integer, intent(in), optional :: wear_obstacle(:)
       character(len=*), intent(in) :: forcing
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: k
       self%layout = layout
       allocate (self%values(size(layout%entries)), self%errors(size(layout%entries)))
-      call writer%write_real_1d('/statistics/points/x', point_x, 'm', stat, errmsg)
-      if (stat == 0) call writer%write_real_1d('/statistics/contacts/x', contact_x, 'm', stat, errmsg)
-      if (stat == 0) call writer%write_int_1d('/statistics/contacts/lower_obstacle', lower_obstacle, stat, errmsg)
-      if (stat == 0) call writer%write_int_1d('/statistics/contacts/upper_obstacle', upper_obstacle, stat, errmsg)
+      call statistics_points(writer, '/statistics', point_x, contact_x, lower_obstacle, upper_obstacle, wear_x, &
+                             wear_obstacle, stat, errmsg)
       do k = 1, size(layout%entries)
          if (stat /= 0) return
          associate (item => layout%entries(k))
@@ -86,6 +88,30 @@ contains
       if (stat == 0) call writer%attr_real('/statistics/spectrum', 'bin_width_rad_s', 0.0_dp, stat, errmsg)
       self%created = stat == 0
    end subroutine create
+
+   !> Where the statistics were taken, under `prefix` ('/statistics', '/sweep/statistics'):
+   !! points/x (m), contacts/x (m), lower_obstacle and upper_obstacle, and, where a beam of
+   !! two planes has obstacles' points (`wear_x` present, an unallocated actual argument
+   !! is absent), wear/x (m) and wear/obstacle (each point's obstacle).
+   subroutine statistics_points(writer, prefix, point_x, contact_x, lower_obstacle, upper_obstacle, wear_x, &
+                                wear_obstacle, stat, errmsg)
+      type(h5_writer), intent(inout) :: writer
+      character(len=*), intent(in) :: prefix
+      real(dp), intent(in) :: point_x(:), contact_x(:)
+      integer, intent(in) :: lower_obstacle(:), upper_obstacle(:)
+      real(dp), intent(in), optional :: wear_x(:)
+      integer, intent(in), optional :: wear_obstacle(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      call writer%write_real_1d(prefix//'/points/x', point_x, 'm', stat, errmsg)
+      if (stat == 0) call writer%write_real_1d(prefix//'/contacts/x', contact_x, 'm', stat, errmsg)
+      if (stat == 0) call writer%write_int_1d(prefix//'/contacts/lower_obstacle', lower_obstacle, stat=stat, errmsg=errmsg)
+      if (stat == 0) call writer%write_int_1d(prefix//'/contacts/upper_obstacle', upper_obstacle, stat=stat, errmsg=errmsg)
+      if (.not. (present(wear_x) .and. present(wear_obstacle))) return
+      if (size(wear_x) == 0) return
+      if (stat == 0) call writer%write_real_1d(prefix//'/wear/x', wear_x, 'm', stat, errmsg)
+      if (stat == 0) call writer%write_int_1d(prefix//'/wear/obstacle', wear_obstacle, stat=stat, errmsg=errmsg)
+   end subroutine statistics_points
 
    !> Stream Poincare samples: times(k), values(:, k) = u at each point, then v.
    subroutine append_poincare(self, times, values, stat, errmsg)

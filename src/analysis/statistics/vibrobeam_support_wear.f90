@@ -22,21 +22,18 @@ module vibrobeam_support_wear
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_hdf5_series, only: h5_array
+   use vibrobeam_statistics_layout, only: wear_quantities, wear_names, wear_units, group_wear
+   use vibrobeam_statistics, only: statistics_result
    implicit none
    private
-   public :: support_wear, wear_quantities, wear_names, wear_units
+   public :: support_wear
 
-   integer, parameter :: wear_quantities = 7
-   character(len=*), parameter :: wear_names(wear_quantities) = [character(len=20) :: 'work_rate', 'mean_force', &
-      'rms_force', 'contact_fraction', 'sliding_fraction', 'impact_rate', 'wear_volume_rate']
-   character(len=*), parameter :: wear_units(wear_quantities) = [character(len=8) :: 'W', 'N', 'N', '1', '1', &
-      '1/s', 'm^3/s']
    integer, parameter :: batch_count = 16
 
    type :: support_wear
       logical :: active = .false.                  !! the scene has such points
       integer :: points = 0
-      integer(int64) :: first_step = 1, last_step = 0   !! the window's steps
+      integer(int64) :: first_step = 1, last_step = 0   !! the window's first and last steps
       integer :: batches = batch_count
       real(dp) :: dt = 0
       real(dp), allocatable :: coefficient(:)      !! (points) Archard's K (m^3/(N m)); < 0: not given
@@ -52,16 +49,18 @@ module vibrobeam_support_wear
       procedure :: create_datasets
       procedure :: write
       procedure :: init
+      procedure :: begin_window
       procedure :: observe_step
       procedure :: observe
       procedure :: count_impact
       procedure :: result
+      procedure :: into_statistics
    end type support_wear
 
 contains
 
    !> For the points of the stepper's obstacles (`stepper%holes%circles`, at its start,
-   !! with the initial velocity `v0`), a window of steps first_step..last_step; each
+   !! with the initial velocity `v0`), a window from step first_step to last_step; each
    !! point's `coefficient`, Archard's K of its obstacle (< 0: not given). A point on its
    !! wall (within `tolerance`) and not moving into it is in contact from t = 0, so its
    !! first impulse is not an impact.
@@ -84,16 +83,26 @@ contains
                                              circles%position(c, v0)) >= 0
          end do
       end associate
-      self%first_step = max(1_int64, first_step)
-      self%last_step = last_step
       self%dt = stepper%dt
-      self%batches = int(max(1_int64, min(int(batch_count, int64), last_step - self%first_step + 1)))
       self%coefficient = coefficient
       self%volume = any(coefficient >= 0)
+      call self%begin_window(first_step, last_step)
+   end subroutine init
+
+   !> The window from the state of step `first_step` (n0) to that of `last_step` (N): the
+   !! steps n0 + 1 .. N, as the statistics' window (`vibrobeam_statistics`), its tallies
+   !! empty (a sweep measures window after window); the points' contact state carries on.
+   subroutine begin_window(self, first_step, last_step)
+      class(support_wear), intent(inout) :: self
+      integer(int64), intent(in) :: first_step, last_step
+      self%first_step = first_step + 1
+      self%last_step = last_step
+      self%batches = int(max(1_int64, min(int(batch_count, int64), last_step - self%first_step + 1)))
+      if (allocated(self%work)) deallocate (self%work, self%impulse, self%square, self%held, self%sliding, self%impacts)
       allocate (self%work(self%points, self%batches), self%impulse(self%points, self%batches), &
                 self%square(self%points, self%batches), self%held(self%points, self%batches), &
                 self%sliding(self%points, self%batches), self%impacts(self%points, self%batches), source=0.0_dp)
-   end subroutine init
+   end subroutine begin_window
 
    !> The last step of `stepper` at its points: each held point's impulse, tangential
    !! velocity t.V^{n+theta} and sliding (rigid walls: the friction at its bound, or no
@@ -188,6 +197,9 @@ contains
       integer :: k, q, b
       integer(int64) :: steps
       steps = self%last_step - self%first_step + 1
+      value = 0
+      error = 0
+      if (steps < 1 .or. self%points == 0) return   ! no window
       do b = 1, self%batches   ! the steps of batch b
          length(b) = real(count_steps(b), dp)*self%dt
       end do
@@ -236,6 +248,25 @@ contains
          ceiling_ratio = (a + d - 1)/d
       end function ceiling_ratio
    end subroutine result
+
+   !> The quantities and their standard errors into the 'wear' group of `outcome` (the
+   !! statistics of the same window, whose layout has that group: the sweep file and
+   !! /statistics hold them there).
+   subroutine into_statistics(self, outcome)
+      class(support_wear), intent(in) :: self
+      type(statistics_result), intent(inout) :: outcome
+      real(dp) :: value(self%points, wear_quantities), error(self%points, wear_quantities)
+      integer :: q, e
+      call self%result(value, error)
+      do q = 1, wear_quantities
+         e = outcome%layout%find(group_wear, wear_names(q))
+         if (e == 0) cycle   ! the wear volume rate without a coefficient
+         associate (first => outcome%layout%entries(e)%offset + 1, last => outcome%layout%entries(e)%offset + self%points)
+            outcome%values(first:last) = value(:, q)
+            outcome%errors(first:last) = error(:, q)
+         end associate
+      end do
+   end subroutine into_statistics
 
    !> /wear/x (m) and /wear/obstacle (the obstacles' indices) of the points, and room for
    !! each quantity and its standard error, /wear/NAME and /wear/NAME_error (created before

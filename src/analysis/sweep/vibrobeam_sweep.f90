@@ -17,7 +17,7 @@ module vibrobeam_sweep
    use vibrobeam_kinds, only: dp, error_unit
    use vibrobeam_status, only: outcome_ok, outcome_interrupted, outcome_name, stat_failure, stat_invalid_input
    use vibrobeam_text, only: real_text, integer_text
-   use vibrobeam_scene, only: scene_type
+   use vibrobeam_scene, only: scene_type, is_unset
    use vibrobeam_problem, only: run_problem, build_problem
    use vibrobeam_checkpoint, only: read_checkpoint
    use vibrobeam_restart_check, only: check_compatible
@@ -111,7 +111,9 @@ contains
       first_of = task_first_points(points)
       call sweep_start_state(scene, settings, first_scene, first, base, stat, errmsg)
       if (stat /= 0) return
-      call layout%init(1 + size(first_scene%output%points), first%contacts%count, size(first_scene%obstacles))
+      call layout%init(1 + size(first_scene%output%points), first%contacts%count, size(first_scene%obstacles), &
+                       first%circles%count, any(.not. is_unset(first_scene%obstacles%wear_coefficient)), &
+                       first_scene%beam%plane_count() == 2 .and. any(.not. is_unset(first_scene%obstacles%friction)))
       fingerprint = sweep_fingerprint(scene, settings, base)
       ! the partial directory: rank 0 makes and locks it, then every rank reads it
       if (rank == 0) then
@@ -132,7 +134,7 @@ contains
       generation = transport_max(partial%generation) + 1
       call transport_barrier()   ! every rank has read the journals before new ones appear
       state_length = 0
-      if (settings%mode /= 'independent') state_length = 2 + 3*first%model%unknowns
+      if (settings%mode /= 'independent') state_length = 2 + 3*first%model%unknowns*first_scene%beam%plane_count()
       call sink%journal%create(partial%directory, fingerprint, generation, n, tasks, layout%size, &
                                1 + size(first_scene%output%points), state_length, stat, errmsg)
       if (stat /= 0) call sink%journal%h5%discard()
@@ -265,7 +267,8 @@ contains
          if (interrupted .and. .not. complete) outcome%status = outcome_interrupted
          call write_sweep_file(scene, first%model, settings, points, partial, owner, layout, &
                                [first_scene%beam%length, first_scene%output%points], first%contacts%x, &
-                               first%contacts%lower_obstacle, first%contacts%upper_obstacle, outcome%status, &
+                               first%contacts%lower_obstacle, first%contacts%upper_obstacle, first%circles%x, &
+                               first%circles%obstacle, outcome%status, &
                                outcome%wall_seconds, outcome%threads, ranks, .not. complete, sink%meter, counts, &
                                outcome%text_skipped, stat, errmsg)
          call sink%meter%end_line()

@@ -32,6 +32,7 @@ module vibrobeam_sweep_file
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_hdf5_series, only: h5_table
    use vibrobeam_statistics_layout, only: statistics_layout, group_beam, group_energy
+   use vibrobeam_statistics_output, only: statistics_points
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, task_count
    use vibrobeam_sweep_runner, only: status_ok, status_failed, status_interrupted, status_not_run, status_names
    use vibrobeam_sweep_journal, only: record_length, record_head, r_status, r_settled, r_start_point, &
@@ -92,8 +93,8 @@ contains
    !! directory stays after publication (the sweep is not complete). stat /= 0: nothing is
    !! published.
    subroutine write_sweep_file(scene, model, settings, points, partial, owner, layout, point_x, contact_x, &
-                               lower_obstacle, upper_obstacle, status, wall_seconds, threads, ranks, keep_partial, &
-                               meter, counts, text_skipped, stat, errmsg)
+                               lower_obstacle, upper_obstacle, wear_x, wear_obstacle, status, wall_seconds, threads, &
+                               ranks, keep_partial, meter, counts, text_skipped, stat, errmsg)
       type(scene_type), intent(in) :: scene
       type(beam_model), intent(in) :: model
       type(sweep_settings), intent(in) :: settings
@@ -103,6 +104,8 @@ contains
       type(statistics_layout), intent(in) :: layout
       real(dp), intent(in) :: point_x(:), contact_x(:), wall_seconds
       integer, intent(in) :: lower_obstacle(:), upper_obstacle(:), threads, ranks
+      real(dp), intent(in), optional :: wear_x(:)      !! a beam of two planes' obstacles' points (m)
+      integer, intent(in), optional :: wear_obstacle(:)   !! and their obstacles
       integer, intent(in) :: status   !! the sweep's run outcome (core/vibrobeam_status)
       logical, intent(in) :: keep_partial
       type(progress_meter), intent(inout) :: meter
@@ -124,8 +127,8 @@ contains
       end if
       write_all: block
          call create_point_tables(files%h5, settings, size(points), tables, stat, errmsg)
-         if (stat == 0) call write_contact_points(files%h5, point_x, contact_x, lower_obstacle, upper_obstacle, stat, &
-                                                  errmsg)
+         if (stat == 0) call statistics_points(files%h5, '/sweep/statistics', point_x, contact_x, lower_obstacle, &
+                                               upper_obstacle, wear_x, wear_obstacle, stat, errmsg)
          if (stat == 0) call create_statistics_tables(files%h5, layout, size(points), tables, stat, errmsg)
          if (stat /= 0) exit write_all
          call ensemble%init(settings, points, layout%size)
@@ -247,22 +250,6 @@ contains
          if (stat /= 0) return
       end do
    end subroutine create_statistics_tables
-
-   !> The positions of the observation and contact points and the obstacles at each
-   !! contact point (/sweep/statistics/points/x, contacts/x, lower_obstacle, upper_obstacle).
-   subroutine write_contact_points(h5, point_x, contact_x, lower_obstacle, upper_obstacle, stat, errmsg)
-      type(h5_writer), intent(inout) :: h5
-      real(dp), intent(in) :: point_x(:), contact_x(:)
-      integer, intent(in) :: lower_obstacle(:), upper_obstacle(:)
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      call h5%write_real_1d('/sweep/statistics/points/x', point_x, 'm', stat, errmsg)
-      if (stat == 0) call h5%write_real_1d('/sweep/statistics/contacts/x', contact_x, 'm', stat, errmsg)
-      if (stat == 0) call h5%write_int_1d('/sweep/statistics/contacts/lower_obstacle', lower_obstacle, &
-                                          stat=stat, errmsg=errmsg)
-      if (stat == 0) call h5%write_int_1d('/sweep/statistics/contacts/upper_obstacle', upper_obstacle, &
-                                          stat=stat, errmsg=errmsg)
-   end subroutine write_contact_points
 
    !> The rows of every point, a block of `block_points` at a time, from the journals;
    !! what each point left (`outcomes`: its Poincare samples, its file, the counts and

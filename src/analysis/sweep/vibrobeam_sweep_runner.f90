@@ -295,17 +295,24 @@ contains
       !! obstacle moved by the sweep): then from the scene's initial state, as noted.
       subroutine take_start()
          real(dp) :: value, tolerance
+         logical :: outside
          integer :: c
          tolerance = 1e-12_dp*prepared%model%length
+         outside = .false.
          do c = 1, prepared%contacts%count
             value = contact_value(prepared%contacts, c, start%u)
-            if (value + tolerance < prepared%contacts%lower(c) .or. value - tolerance > prepared%contacts%upper(c)) then
-               result%start_point = 0
-               result%message = 'started from the scene''s initial state: the state of point '// &
-                                integer_text(start_point)//' violates this point''s obstacles'
-               return
-            end if
+            outside = outside .or. value + tolerance < prepared%contacts%lower(c) .or. &
+                      value - tolerance > prepared%contacts%upper(c)
          end do
+         do c = 1, prepared%circles%count   ! a beam of two planes: the walls of its holes and levels
+            outside = outside .or. prepared%circles%penetration(c, start%u) > tolerance
+         end do
+         if (outside) then
+            result%start_point = 0
+            result%message = 'started from the scene''s initial state: the state of point '// &
+                             integer_text(start_point)//' violates this point''s obstacles'
+            return
+         end if
          ! the stepper starts there (the scheme's extra with it: the scheme is the sweep's)
          prepared%start%u = start%u
          prepared%start%v = start%v
@@ -388,6 +395,7 @@ contains
          do windows = 1, max_settle_windows
             transient = result%settle_steps + (windows - 1)*result%measure_steps
             if (windows > 1) call recorder%restart_statistics(stepper, transient)
+            call recorder%restart_wear(transient, transient + result%measure_steps)
             call step_to(stepper, recorder, transient + result%measure_steps)
             current = recorder%window_statistics(stepper)
             if (result%status /= status_ok) exit
