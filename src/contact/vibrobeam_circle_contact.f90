@@ -1,7 +1,8 @@
 !> The contact step of a beam of two planes in circular holes (docs/method.md, "Circular
 !! obstacles"): given the free velocity V_free of a step of the velocity scheme, the
 !! velocity V^{n+1} = V_free + W^-1 H^T (impulses) that the holes' walls allow, for rigid
-!! walls (Newton's law, Coulomb friction) or compliant ones (a radial spring). The
+!! walls (Newton's law, Coulomb friction) or compliant ones (a radial spring, Coulomb
+!! friction). The
 !! state is stacked, y in 1:J and z in J+1:2J, and W is block diagonal (W_y, W_z), so
 !! the blocks G_p of W_p^-1 between the points' deflections, computed once, make every
 !! Delassus matrix of the step. The points: `vibrobeam_circle_set`; the time stepper
@@ -27,7 +28,8 @@ module vibrobeam_circle_contact
       real(dp), allocatable :: push(:)             !! (2J) work space: W^-1 H^T (impulses)
       ! what the last rigid step did: its active points (the first `count` of `active`),
       ! each with its inward unit normal, normal impulse (N s), tangential impulse (N s,
-      ! along the tangent t = (-n_z, n_y)) and normal and tangential velocities before (m/s)
+      ! along the tangent t = (-n_z, n_y)) and normal and tangential velocities before (m/s);
+      ! of a compliant step, the points with a friction force (normal impulse 0)
       integer :: count = 0
       integer, allocatable :: active(:)
       real(dp), allocatable :: normal(:, :), impulse(:), tangential(:), before(:), tangential_before(:)
@@ -36,6 +38,7 @@ module vibrobeam_circle_contact
       ! end (m), force magnitude and its elastic part (N), force vector on the beam (N)
       real(dp), allocatable :: p0(:), p1(:), f(:), elastic(:), force(:, :)
       real(dp), allocatable :: start_velocity(:, :)   !! (2, circles) each point's (v, w) rate at the step's start
+      real(dp), allocatable :: friction_force(:)      !! (circles) phi (N): the tangential force along t (0: frictionless)
    contains
       procedure :: setup
       procedure :: rigid_step
@@ -60,7 +63,7 @@ contains
       allocate (self%delassus(m, m, 2), self%push(2*factor_y%n), self%active(m), self%normal(2, m), self%impulse(m), &
                 self%tangential(m), self%before(m), self%tangential_before(m))
       allocate (self%p0(m), self%p1(m), self%f(m), self%elastic(m), self%force(2, m), self%start_velocity(2, m), &
-                source=0.0_dp)
+                self%friction_force(m), source=0.0_dp)
       do plane = 1, 2
          do k = 1, m
             column = 0
@@ -243,6 +246,19 @@ contains
    !! point beyond 1024 eps of its distance from the centre (as the levels' springs: the
    !! discrete gradient loses digits when p1 is close to p0); then V^{n+1} = V_free + dt
    !! W^-1 H^T F into v_new. stat_no_convergence after 50 iterations.
+   !! With friction (some point's mu > 0; docs/method.md, "Coulomb friction at compliant
+   !! circles"): each point also carries a tangential force phi t (N) along the tangent
+   !! t = (-h_z, h_y) of the midpoint's inward normal h = -(r0 + r1)/|r0 + r1|, exact
+   !! Coulomb at V^{n+1} as the rigid step: t.x = 0 and |phi| <= mu f (stick) or
+   !! phi = -mu f sign(t.x) (slip), written as Alart and Curnier's equation
+   !! phi = proj[-mu f, mu f](phi - t.x/(dt g)), g = max(G_y(k, k), G_z(k, k)), and solved
+   !! with x by the same Newton iteration (semismooth: the branch of the projection taken
+   !! at the present iterate); it stops on the same residual (the friction rows in m/s)
+   !! or on the same small update when, besides, no point changed between stick and slip
+   !! and no phi's update moved its point by more than the same 1024 eps of its distance
+   !! from the centre (dt theta dt g |d phi|: phi = mu f inherits f's floor). The
+   !! tangential impulses dt phi t are the step's `tangential` entries (impulse 0) for the
+   !! energy ledger, as the rigid step's.
    subroutine compliant_step(self, u, v, v_free, dt, theta, rule, v_new, stat, errmsg)
       class(circle_contact), intent(inout) :: self
       real(dp), intent(in) :: u(:), v(:), v_free(:)   !! U^n, V^n, V_free (2J)
@@ -253,15 +269,25 @@ contains
       character(len=*), intent(out) :: errmsg
       integer, parameter :: max_iterations = 50
       real(dp), parameter :: converged = 1024*epsilon(1.0_dp)
-      real(dp), dimension(2, self%circles%count) :: x, v0, x_free, r0, step
-      real(dp) :: jacobian(2*self%circles%count, 2*self%circles%count), derivative(2, 2, self%circles%count)
-      real(dp) :: scale
-      integer :: pivots(2*self%circles%count), k, l, c, m, j, iteration, info
+      real(dp), dimension(2, self%circles%count) :: x, v0, x_free, r0, total_force
+      real(dp), allocatable :: jacobian(:, :), step(:)
+      real(dp) :: derivative(2, 2, self%circles%count), scale
+      ! friction, per point: the tangent t and dt/dx, df/dx, phi (N), the weight dt g (m/(N s))
+      real(dp), dimension(2, self%circles%count) :: tangent, force_slope
+      real(dp) :: tangent_slope(2, 2, self%circles%count)
+      real(dp), dimension(self%circles%count) :: phi, weight
+      logical, dimension(self%circles%count) :: sticks, stuck
+      logical :: frictional, settled
+      integer, allocatable :: pivots(:)
+      integer :: k, l, c, m, j, n, iteration, info
       stat = 0
       errmsg = ''
       m = self%circles%count
       j = size(u)/2
       associate (circles => self%circles)
+         frictional = circles%frictional()
+         n = merge(3*m, 2*m, frictional)
+         allocate (jacobian(n, n), step(n), pivots(n))
          do k = 1, m
             c = circles%dof(k)
             v0(:, k) = [v(c), v(j + c)]
@@ -269,35 +295,47 @@ contains
             x_free(:, k) = [v_free(c), v_free(j + c)]
             r0(:, k) = circles%offset(k, u)
             self%p0(k) = norm2(r0(:, k)) - circles%radius(k)
+            weight(k) = dt*max(self%delassus(k, k, 1), self%delassus(k, k, 2))
          end do
+         phi = 0
+         sticks = .false.
          x = x_free
          do iteration = 1, max_iterations
             call forces_at(x)
             ! the residual -(x - V_free - dt G F) and the Jacobian I - dt G dF/dx
             jacobian = 0
             do k = 1, m
-               step(:, k) = -(x(:, k) - x_free(:, k))
+               step(2*k - 1:2*k) = -(x(:, k) - x_free(:, k))
                do l = 1, m
-                  step(1, k) = step(1, k) + dt*self%delassus(k, l, 1)*self%force(1, l)
-                  step(2, k) = step(2, k) + dt*self%delassus(k, l, 2)*self%force(2, l)
+                  step(2*k - 1) = step(2*k - 1) + dt*self%delassus(k, l, 1)*total_force(1, l)
+                  step(2*k) = step(2*k) + dt*self%delassus(k, l, 2)*total_force(2, l)
                   jacobian(2*k - 1, 2*l - 1:2*l) = -dt*self%delassus(k, l, 1)*derivative(1, :, l)
                   jacobian(2*k, 2*l - 1:2*l) = -dt*self%delassus(k, l, 2)*derivative(2, :, l)
                end do
                jacobian(2*k - 1, 2*k - 1) = jacobian(2*k - 1, 2*k - 1) + 1
                jacobian(2*k, 2*k) = jacobian(2*k, 2*k) + 1
             end do
+            stuck = sticks
+            if (frictional) call friction_rows()
             scale = max(maxval(abs(x)), maxval(abs(x_free)), tiny(1.0_dp))
             if (maxval(abs(step)) <= 16*epsilon(1.0_dp)*scale) exit
-            call dgesv(2*m, 1, jacobian, 2*m, pivots, step, 2*m, info)
+            call dgesv(n, 1, jacobian, n, pivots, step, n, info)
             if (info /= 0) then
                stat = stat_linear_solver_failure
                errmsg = 'the compliant circular obstacles: the Newton matrix of a step is singular'
                return
             end if
-            x = x + step
+            x = x + reshape(step(1:2*m), [2, m])
+            settled = .true.
+            if (frictional) then
+               phi = phi + step(2*m + 1:)
+               settled = all(sticks .eqv. stuck) .and. &
+                         all(dt*theta*weight*abs(step(2*m + 1:)) <= converged*(norm2(r0, 1) + circles%radius))
+            end if
             ! the points' positions r1 (and so p1 and the forces) no longer move beyond
             ! their round-off: |dt theta dx| <= 1024 eps |r|
-            if (all(dt*theta*norm2(step, 1) <= converged*(norm2(r0, 1) + circles%radius))) then
+            if (settled .and. all(dt*theta*norm2(reshape(step(1:2*m), [2, m]), 1) <= &
+                                  converged*(norm2(r0, 1) + circles%radius))) then
                call forces_at(x)
                exit
             end if
@@ -306,30 +344,50 @@ contains
          if (iteration > max_iterations) then
             stat = stat_no_convergence
             write (errmsg, '(a,i0,a)') 'the compliant circular obstacles: Newton''s method did not converge in ', &
-               max_iterations, ' iterations (a stop too stiff for dt: reduce dt)'
+               max_iterations, ' iterations (a stop too stiff for dt, or stick and slip alternating at a '// &
+               'frictional wall: reduce dt)'
             return
          end if
          ! V^{n+1} = V_free + dt W^-1 H^T F, one band solve per plane
          self%push = 0
          do k = 1, m
             c = circles%dof(k)
-            self%push(c) = dt*self%force(1, k)
-            self%push(j + c) = dt*self%force(2, k)
+            self%push(c) = dt*total_force(1, k)
+            self%push(j + c) = dt*total_force(2, k)
          end do
          call band_solve(self%factor(1), self%push(1:j))
          call band_solve(self%factor(2), self%push(j + 1:))
          v_new = v_free + self%push
-         self%count = 0   ! no rigid impulse (no impact)
+         ! no rigid impulse (no impact); the friction's impulses for the ledger and wear
+         self%count = 0
+         self%friction_force = phi
+         if (frictional) then
+            do k = 1, m
+               if (abs(phi(k)) <= 0) cycle
+               self%count = self%count + 1
+               associate (a => self%count)
+                  self%active(a) = k
+                  self%normal(:, a) = [tangent(2, k), -tangent(1, k)]
+                  self%impulse(a) = 0
+                  self%tangential(a) = dt*phi(k)
+                  self%before(a) = dot_product(self%normal(:, a), v0(:, k))
+                  self%tangential_before(a) = dot_product(tangent(:, k), v0(:, k))
+               end associate
+            end do
+         end if
       end associate
 
    contains
 
-      !> The forces F at the points' end velocities `x` (force, with p1, f, elastic) and
-      !! their derivatives dF/dx = dt theta dF/dr1 (derivative),
-      !! dF/dr1 = -(f' d n1^T + f (I - d n1^T)/(|r0| + |r1|)), n1 = r1/|r1|.
+      !> The forces F at the points' end velocities `x` (force, with p1, f, elastic; and
+      !! total_force, with the friction phi t) and their derivatives dF/dx = dt theta dF/dr1
+      !! (derivative), dF/dr1 = -(f' d n1^T + f (I - d n1^T)/(|r0| + |r1|)), n1 = r1/|r1|;
+      !! with friction the tangent t, dt/dx = dt theta P (I - o o^T)/|r0 + r1| (o the
+      !! outward unit midpoint, P the quarter turn t = P o), df/dx = f' dt theta n1^T, and
+      !! phi dt/dx in the derivative.
       subroutine forces_at(x)
          real(dp), intent(in) :: x(:, :)
-         real(dp) :: r1(2), d(2), n1(2), total, slope
+         real(dp) :: r1(2), d(2), n1(2), total, slope, outward(2), turn(2, 2)
          integer :: k
          associate (circles => self%circles)
             do k = 1, m
@@ -337,8 +395,12 @@ contains
                self%p1(k) = norm2(r1) - circles%radius(k)
                call step_force(rule, circles%stiffness(k), circles%exponent(k), circles%damping(k), theta, dt, &
                                self%p0(k), self%p1(k), self%f(k), slope, self%elastic(k))
+               tangent(:, k) = 0
+               tangent_slope(:, :, k) = 0
+               force_slope(:, k) = 0
                if (abs(self%f(k)) <= 0 .and. abs(slope) <= 0) then   ! free over the step
                   self%force(:, k) = 0
+                  total_force(:, k) = 0
                   derivative(:, :, k) = 0
                   cycle
                end if
@@ -350,9 +412,53 @@ contains
                derivative(1, 1, k) = derivative(1, 1, k) - self%f(k)/total
                derivative(2, 2, k) = derivative(2, 2, k) - self%f(k)/total
                derivative(:, :, k) = dt*theta*derivative(:, :, k)
+               total_force(:, k) = self%force(:, k)
+               if (.not. frictional) cycle
+               outward = (r0(:, k) + r1)/norm2(r0(:, k) + r1)
+               tangent(:, k) = [outward(2), -outward(1)]
+               turn = -spread(outward, 2, 2)*spread(outward, 1, 2)
+               turn(1, 1) = turn(1, 1) + 1
+               turn(2, 2) = turn(2, 2) + 1
+               turn = dt*theta*turn/norm2(r0(:, k) + r1)
+               tangent_slope(1, :, k) = turn(2, :)
+               tangent_slope(2, :, k) = -turn(1, :)
+               force_slope(:, k) = slope*dt*theta*n1
+               total_force(:, k) = total_force(:, k) + phi(k)*tangent(:, k)
+               derivative(:, :, k) = derivative(:, :, k) + phi(k)*tangent_slope(:, :, k)
             end do
          end associate
       end subroutine forces_at
+
+      !> The friction's rows of the residual (`step`, 2m + k: m/s) and of the Jacobian, and
+      !! the phi columns of the velocity rows: -dt G(k, l) t_l. With the trial force
+      !! phi - t.x/(dt g) and the bound mu f: inside it the point sticks, t.x = 0 (row
+      !! t^T + x^T dt/dx); at or beyond it, it slides, dt g (phi - s mu f) = 0 with
+      !! s = sign(trial) (row -dt g s mu df/dx, dt g on phi).
+      subroutine friction_rows()
+         real(dp) :: slip, bound, trial, s
+         integer :: k, l
+         do l = 1, m
+            do k = 1, m
+               jacobian(2*k - 1, 2*m + l) = -dt*self%delassus(k, l, 1)*tangent(1, l)
+               jacobian(2*k, 2*m + l) = -dt*self%delassus(k, l, 2)*tangent(2, l)
+            end do
+         end do
+         do k = 1, m
+            slip = dot_product(tangent(:, k), x(:, k))
+            bound = self%circles%friction(k)*self%f(k)
+            trial = phi(k) - slip/weight(k)
+            sticks(k) = abs(trial) < bound
+            if (sticks(k)) then
+               step(2*m + k) = -slip
+               jacobian(2*m + k, 2*k - 1:2*k) = tangent(:, k) + matmul(x(:, k), tangent_slope(:, :, k))
+            else
+               s = sign(1.0_dp, trial)
+               step(2*m + k) = -weight(k)*(phi(k) - s*bound)
+               jacobian(2*m + k, 2*k - 1:2*k) = -weight(k)*s*self%circles%friction(k)*force_slope(:, k)
+               jacobian(2*m + k, 2*m + k) = weight(k)
+            end if
+         end do
+      end subroutine friction_rows
    end subroutine compliant_step
 
    !> The energy stored in the compliant walls at the stacked state `u` (J): sum_k

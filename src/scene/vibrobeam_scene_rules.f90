@@ -450,12 +450,6 @@ contains
             if (.not. o%circle() .and. len_trim(o%profile) > 0) &
                call fail(stat, errmsg, '&obstacles profile('//integer_text(i)//') = '''//trim(o%profile)//''''// &
                          planar//'give level_from and level_to')
-            if (o%stiffness > 0 .and. .not. is_unset(o%friction)) then
-               if (o%friction > 0) &
-                  call fail(stat, errmsg, '&obstacles friction('//integer_text(i)//') = '//real_text(o%friction)// &
-                            ' at a compliant circle (stiffness('//integer_text(i)//') > 0)'//planar// &
-                            'friction acts at rigid circles so far')
-            end if
             ! a compliant circle is a support plate's hole: one node (its stiffness per node)
             if (o%stiffness > 0 .and. o%x_to > o%x_from) &
                call fail(stat, errmsg, '&obstacles stiffness('//integer_text(i)//') = '//real_text(o%stiffness)// &

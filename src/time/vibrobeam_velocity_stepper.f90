@@ -273,7 +273,9 @@ contains
                   - self%report%velocity_before(k))
             end do
             ! the circles' impulses p_k along their inward normals h_k: the same two terms;
-            ! their friction r_k along the tangents t_k takes -r_k t_k.(V^{n+1} + V^n)/2
+            ! their friction r_k along the tangents t_k takes -r_k t_k.(V^{n+1} + V^n)/2, at
+            ! rigid and at compliant circles (there p_k = 0: the spring's force is booked by
+            ! `circle_energy`, its friction dt phi_k here)
             do k = 1, self%report%circle_count
                associate (r => self%report, c => self%holes%circles%dof(self%report%circle_active(k)))
                   r%circle_after(k) = dot_product(r%circle_normal(:, k), [v_next(c), v_next(size(v_next)/2 + c)])

@@ -9,7 +9,8 @@
 !!   (1/T) int F_n |v_t| dt, F_n = P_n/dt over the step;
 !! - mean normal force (1/T) sum_n P_n and RMS normal force sqrt((1/T) sum_n P_n^2/dt) (N);
 !! - contact fraction (held steps) dt/T, sliding fraction (held steps whose point
-!!   slides: friction at its bound, mu |r_T| >= mu p (1 - 1e-9), or no friction) dt/T;
+!!   slides: friction at its bound, |r_T| >= mu p (1 - 1e-9) at a rigid wall and
+!!   |phi| >= mu f (1 - 1e-9) at a compliant one, or no friction) dt/T;
 !! - impact rate: impacts (an impulse after a free step, towards the wall) per second;
 !! - Archard's wear volume rate K W' (m^3/s) where the obstacle's wear_coefficient K is
 !!   given.
@@ -105,8 +106,8 @@ contains
    end subroutine begin_window
 
    !> The last step of `stepper` at its points: each held point's impulse, tangential
-   !! velocity t.V^{n+theta} and sliding (rigid walls: the friction at its bound, or no
-   !! friction), each compliant wall's force over the step along its direction; `new(1:count)`
+   !! velocity t.V^{n+theta} and sliding (the friction at its bound, or no friction), each
+   !! compliant wall's force over the step along its direction; `new(1:count)`
    !! the entries of the step report (k of report%circle_*) that are impacts: an impulse at
    !! a point that received none in the previous step, moving towards its wall.
    subroutine observe_step(self, stepper, new, count)
@@ -134,7 +135,8 @@ contains
             new(count) = k
             call self%count_impact(stepper%steps, point)
          end do
-         ! compliant walls: the force over the step along its direction, frictionless
+         ! compliant walls: the force over the step along its direction; a point slides when
+         ! its wall is frictionless or its friction force is at the bound mu f
          if (circles%compliant) then
             do point = 1, circles%count
                impulse = holes%f(point)*stepper%dt
@@ -143,7 +145,9 @@ contains
                tangent = [holes%force(2, point), -holes%force(1, point)]/norm2(holes%force(:, point))
                slip = dot_product(tangent, stepper%theta*circles%position(point, stepper%v) + &
                                   (1 - stepper%theta)*holes%start_velocity(:, point))
-               call self%observe(stepper%steps, point, impulse, slip, .true.)
+               mu = circles%friction(point)
+               call self%observe(stepper%steps, point, impulse, slip, &
+                                 mu <= 0 .or. abs(holes%friction_force(point)) >= mu*holes%f(point)*(1 - 1e-9_dp))
             end do
          end if
       end associate
