@@ -29,7 +29,8 @@ program test_compliant_friction
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_schema_visitor, only: unset
    use vibrobeam_kinds, only: int64
-   use vibrobeam_support_wear, only: support_wear, wear_quantities
+   use vibrobeam_support_wear, only: support_wear
+   use vibrobeam_statistics_layout, only: wear_quantities
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene, &
       start_test_stepper, advance_test_stepper, same_bits
    implicit none
@@ -65,9 +66,10 @@ program test_compliant_friction
          call start_test_stepper(scene, prepared, stepper)
          j = size(stepper%u)/2
          tip = stepper%holes%circles%dof(1)
-         ! the wear window: from the ramp's start (0.02 s) to the end
+         ! the wear window: from the ramp's start (0.02 s) to the end, the steps first..steps
+         ! (the window from the state of step first - 1)
          first = nint(0.02_dp/scene%time%dt) + 1
-         call wear(case)%init(stepper, stepper%v, 1e-12_dp, int(first, int64), int(steps, int64), [-1.0_dp])
+         call wear(case)%init(stepper, stepper%v, 1e-12_dp, int(first - 1, int64), int(steps, int64), [-1.0_dp])
          slid = 0
          at_bound = 0
          work_rate = 0
