@@ -31,7 +31,7 @@
 module vibrobeam_frictional_contact
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
-   use vibrobeam_status, only: stat_invalid_argument, stat_residual_check_failed
+   use vibrobeam_status, only: fail => set_failure, stat_invalid_argument, stat_residual_check_failed
    use vibrobeam_lemke, only: solve_lemke
    implicit none
    private
@@ -243,14 +243,5 @@ contains
       residual = violation/scale
    end function coulomb_residual
 
-   !> Set the status and copy the message (truncated to the length of errmsg).
-   pure subroutine fail(code, message, stat, errmsg)
-      integer, intent(in) :: code
-      character(len=*), intent(in) :: message
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      stat = code
-      errmsg = message
-   end subroutine fail
 
 end module vibrobeam_frictional_contact

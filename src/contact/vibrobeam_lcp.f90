@@ -32,7 +32,8 @@
 module vibrobeam_lcp
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
-   use vibrobeam_status, only: stat_invalid_argument, stat_no_convergence, stat_residual_check_failed, stat_linear_solver_failure
+   use vibrobeam_status, only: fail => set_failure, stat_invalid_argument, stat_no_convergence, &
+      stat_residual_check_failed, stat_linear_solver_failure
    use vibrobeam_lapack, only: dpotrf, dpotrs
    implicit none
    private
@@ -338,14 +339,5 @@ contains
       where (in_set) w = 0.0_dp
    end subroutine complementary_solution
 
-   !> Set the status and copy the message (truncated to the length of errmsg).
-   pure subroutine fail(code, message, stat, errmsg)
-      integer, intent(in) :: code
-      character(len=*), intent(in) :: message
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      stat = code
-      errmsg = message
-   end subroutine fail
 
 end module vibrobeam_lcp

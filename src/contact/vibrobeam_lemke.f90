@@ -38,7 +38,7 @@
 module vibrobeam_lemke
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use vibrobeam_kinds, only: dp
-   use vibrobeam_status, only: stat_invalid_argument, stat_no_convergence, stat_numerical_failure, &
+   use vibrobeam_status, only: fail => set_failure, stat_invalid_argument, stat_no_convergence, stat_numerical_failure, &
                                stat_linear_solver_failure, stat_residual_check_failed
    use vibrobeam_lapack, only: dgesv, dger
    implicit none
@@ -310,14 +310,5 @@ contains
       end if
    end subroutine basis_solution
 
-   !> Set the status and copy the message (truncated to the length of errmsg).
-   pure subroutine fail(code, message, stat, errmsg)
-      integer, intent(in) :: code
-      character(len=*), intent(in) :: message
-      integer, intent(out) :: stat
-      character(len=*), intent(inout) :: errmsg
-      stat = code
-      errmsg = message
-   end subroutine fail
 
 end module vibrobeam_lemke

@@ -11,7 +11,7 @@ module vibrobeam_status
    public :: exit_ok, exit_other_error, exit_invalid_input, exit_numerical_failure, exit_interrupted
    public :: stat_ok, stat_failure, stat_linear_solver_failure, stat_residual_check_failed
    public :: stat_invalid_argument, stat_no_convergence, stat_not_finite, stat_numerical_failure, stat_invalid_input
-   public :: message_length
+   public :: message_length, set_failure
    public :: outcome_ok, outcome_failed, outcome_interrupted, outcome_not_run, outcome_name, outcome_exit_status
 
    ! exit statuses of the executable (public: scripts and batch systems rely on them)
@@ -84,4 +84,15 @@ contains
          outcome_exit_status = exit_interrupted
       end select
    end function outcome_exit_status
+
+   !> stat = `code` (one of the names above) and errmsg = `message`: a library procedure's
+   !! failure, in one statement (the contact solvers').
+   pure subroutine set_failure(code, message, stat, errmsg)
+      integer, intent(in) :: code
+      character(len=*), intent(in) :: message
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: errmsg
+      stat = code
+      errmsg = message
+   end subroutine set_failure
 end module vibrobeam_status
