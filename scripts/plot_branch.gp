@@ -1,8 +1,8 @@
 # A continued branch of periodic orbits (&periodic parameter, docs/method.md
 # "Continuation of periodic orbits"): the tip's amplitude (largest |u| over the orbit)
 # against the parameter, stable points joined by a solid line, unstable ones by a dashed
-# line, the folds, period doublings and Neimark-Sacker points located on it marked; and
-# the largest Floquet multiplier's modulus along the branch against |mu| = 1. With
+# line, the folds, period doublings, Neimark-Sacker and grazing points located on it
+# marked; and the largest Floquet multiplier's modulus along the branch against |mu| = 1. With
 # -e "sweep='STEM2'" the points of a time-marching sweep of the same scene
 # (STEM2_sweep.dat, its tip_displacement_max, up and down branches apart) are drawn over
 # the branch: they lie on its stable parts and jump at its folds.
@@ -39,7 +39,8 @@ if (have_found) {
    fa = col(found, 'amplitude')
    plot_cmd = plot_cmd.", found using (column(fp)):(column(k) == 1 ? column(fa)*1e3 : NaN) with points pt 7 ps 1.6 lc rgb 'black' title 'fold', ".\
               "found using (column(fp)):(column(k) == 2 ? column(fa)*1e3 : NaN) with points pt 5 ps 1.6 lc rgb '#2ca02c' title 'period doubling', ".\
-              "found using (column(fp)):(column(k) == 3 ? column(fa)*1e3 : NaN) with points pt 9 ps 1.8 lc rgb '#9467bd' title 'Neimark-Sacker'"
+              "found using (column(fp)):(column(k) == 3 ? column(fa)*1e3 : NaN) with points pt 9 ps 1.8 lc rgb '#9467bd' title 'Neimark-Sacker', ".\
+              "found using (column(fp)):(column(k) == 4 ? column(fa)*1e3 : NaN) with points pt 13 ps 1.6 lc rgb '#e377c2' title 'grazing'"
 }
 if (exists("sweep")) {
    swept = sweep.'_sweep.dat'

@@ -7,6 +7,7 @@
 module vibrobeam_branch_output
    use vibrobeam_kinds, only: dp
    use vibrobeam_status, only: stat_ok, outcome_interrupted
+   use vibrobeam_text, only: integer_text
    use vibrobeam_scene, only: scene_type
    use vibrobeam_problem, only: run_problem
    use vibrobeam_continuation, only: continuation_branch, continue_branch, bifurcation_names
@@ -73,10 +74,11 @@ contains
          if (stat == 0) call files%h5%write_real_1d(group//'/largest_multiplier', [(largest(k), k=1, size(points))], &
                                                     '1', stat, errmsg)
          if (stat == 0) call files%h5%write_int_1d(group//'/newton_iterations', points%iterations, stat, errmsg)
+         ! (a scene without obstacles has no clearance: huge at every point, not written)
+         if (stat == 0 .and. any(points%minimum_gap < huge(1.0_dp))) &
+            call files%h5%write_real_1d(group//'/minimum_gap', points%minimum_gap, 'm', stat, errmsg)
          if (stat == 0) call files%h5%write_int_1d(found//'/kind', bifurcations%kind, stat, errmsg)
-         if (stat == 0) call files%h5%attr_string(found, 'kinds', '1 '//trim(bifurcation_names(1))//', 2 '// &
-                                                  trim(bifurcation_names(2))//', 3 '//trim(bifurcation_names(3)), &
-                                                  stat, errmsg)
+         if (stat == 0) call files%h5%attr_string(found, 'kinds', kinds_text(), stat, errmsg)
          if (stat == 0) call files%h5%write_real_1d(found//'/parameter', bifurcations%parameter, &
                                                     trim(branch%axis%unit), stat, errmsg)
          if (stat == 0) call files%h5%write_real_1d(found//'/amplitude', bifurcations%amplitude, 'm', stat, errmsg)
@@ -89,6 +91,15 @@ contains
       if (stat == 0 .and. len_trim(branch%failure) > 0) &
          call files%h5%attr_string('/periodic', 'failure', trim(branch%failure), stat, errmsg)
    contains
+      !> '1 fold, 2 period-doubling, 3 neimark-sacker, 4 grazing'.
+      function kinds_text() result(text)
+         character(len=:), allocatable :: text
+         text = '1 '//trim(bifurcation_names(1))
+         do k = 2, size(bifurcation_names)
+            text = text//', '//integer_text(k)//' '//trim(bifurcation_names(k))
+         end do
+      end function kinds_text
+
       !> The largest modulus of point k's multipliers.
       real(dp) function largest(k)
          integer, intent(in) :: k

@@ -5,8 +5,9 @@
 !! [M - I, dPhi/dlambda], and corrected by Newton's method on the bordered system
 !! (Phi(x, lambda) - x = 0 and the arclength condition; LAPACK dgesv); the step halves
 !! when the corrector fails and grows when it converges easily. Along the branch: the
-!! Floquet multipliers, stability, and the sign changes of three test functions (fold,
-!! period doubling, Neimark-Sacker), each located by regula falsi on the arclength.
+!! Floquet multipliers, stability, and the sign changes of four test functions (fold,
+!! period doubling, Neimark-Sacker, grazing; `vibrobeam_branch_point`), each located by
+!! regula falsi on the arclength.
 !!
 !! lambda is any input a sweep may vary (`vibrobeam_continuation_axis`), set through the
 !! sweep's setter (`set_real_input`); each evaluation at a new lambda builds its problem
@@ -27,6 +28,8 @@ module vibrobeam_continuation
       difference_fraction
    use vibrobeam_periodic_analysis, only: find_periodic_orbit, periodic_orbit, floquet_multipliers
    use vibrobeam_signals, only: interrupt_requested
+   use vibrobeam_branch_point, only: branch_point, bifurcation_point, bifurcation_names, test_count, &
+      set_test_functions, changes_sign
    use vibrobeam_lapack, only: dgesv
    implicit none
    private
@@ -45,42 +48,14 @@ module vibrobeam_continuation
    !> Regula falsi iterations that locate a bifurcation between two branch points, and
    !! when it stops: the bracket below locate_bracket of the arclength step (lambda at a
    !! fold is stationary in s: its error is of the bracket's square), or a test function
-   !! within locate_tolerance of 0 (the unit tangent's component, det(M + I), |mu|^2 - 1).
+   !! within locate_tolerance of 0 (the unit tangent's component, det(M + I), |mu|^2 - 1;
+   !! the smallest clearance, in m).
    integer, parameter :: locate_iterations = 12
    !! Or when two trials in a row give lambda within locate_lambda of each other,
    !! relative: at a fold, where the test function's zero is no sharper than the noise of
    !! a monodromy by differences (measured: the bracket of the bundled scene's upper fold
    !! stalls at 2e-3 of the step while lambda no longer moves in its 7th digit).
    real(dp), parameter :: locate_bracket = 1e-4_dp, locate_tolerance = 1e-10_dp, locate_lambda = 1e-9_dp
-   !> The kinds of bifurcation, in the order of the test functions.
-   character(len=*), parameter :: bifurcation_names(3) = [character(len=15) :: 'fold', 'period-doubling', &
-                                                          'neimark-sacker']
-
-   !> One point of the branch: a converged orbit.
-   type :: branch_point
-      real(dp) :: parameter = 0                   !! lambda
-      real(dp), allocatable :: x(:)               !! (U, V) at phase 0
-      real(dp), allocatable :: tangent(:)         !! unit tangent in the point's scaled coordinates (2 J + 1)
-      real(dp), allocatable :: scale(:)           !! (2 J + 1) the point's scaled coordinates z = scale * (x, lambda)
-      real(dp), allocatable :: multipliers(:, :)  !! (2, 2 J) Floquet multipliers, largest modulus first
-      real(dp) :: amplitude = 0                   !! largest |u| of the tip over the orbit (m)
-      real(dp) :: period = 0                      !! the orbit's period, k P dt (s)
-      real(dp) :: step = 0                        !! the arclength step that reached it (scaled)
-      integer :: iterations = 0                   !! corrector's Newton iterations
-      !> the test functions: the tangent's lambda component (fold), det(M + I) (period
-      !! doubling), the largest |mu|^2 - 1 of a complex pair, -1 without one (Neimark-Sacker)
-      real(dp) :: tests(3) = 0
-   end type branch_point
-
-   !> A bifurcation located between two branch points.
-   type :: bifurcation_point
-      integer :: kind = 0                  !! 1 fold, 2 period doubling, 3 Neimark-Sacker (`bifurcation_names`)
-      real(dp) :: parameter = 0            !! lambda where the test function vanishes
-      real(dp) :: amplitude = 0            !! the tip's amplitude there (m)
-      integer :: index = 0                 !! the branch point before it (1-based)
-      logical :: located = .false.         !! regula falsi converged (else the linear estimate between the points)
-   end type bifurcation_point
-
    !> The branch and how its computation went.
    type :: continuation_branch
       type(sweep_axis) :: axis                         !! the parameter
@@ -217,8 +192,8 @@ contains
          beyond = outside(scene, next%parameter)
          before = size(branch%points)
          if (.not. beyond) branch%points = [branch%points, next]
-         do kind = 1, 3
-            if (.not. (branch%points(before)%tests(kind)*next%tests(kind) < 0)) cycle
+         do kind = 1, test_count
+            if (.not. changes_sign(branch%points(before)%tests(kind), next%tests(kind))) cycle
             kept = size(branch%bifurcations)
             call locate(run, branch%points(before), next, kind, before, branch%bifurcations, stat, errmsg)
             if (stat /= 0) return
@@ -406,10 +381,11 @@ contains
       if (scale > 0) residual = residual/scale
    end function residual
 
-   !> What a converged point carries: multipliers, amplitude, period, its tangent (the
-   !! null vector of [M - I, Phi_lambda], from the bordered system whose last row is
-   !! `previous`, the tangent before in the unscaled variables, so that the branch keeps
-   !! its direction) in its own scaled coordinates, and the test functions.
+   !> What a converged point carries: multipliers, amplitude, smallest clearance, period,
+   !! its tangent (the null vector of [M - I, Phi_lambda], from the bordered system whose
+   !! last row is `previous`, the tangent before in the unscaled variables, so that the
+   !! branch keeps its direction) in its own scaled coordinates, and the test functions
+   !! (`set_test_functions`).
    !! point%iterations = -1 and errmsg when the tangent cannot be taken (stat 0).
    subroutine finish_point(run, image, previous, point, stat, errmsg)
       type(continuation_context), intent(inout) :: run
@@ -420,13 +396,13 @@ contains
       character(len=*), intent(out) :: errmsg
       real(dp), allocatable :: derivative(:), matrix(:, :), rhs(:)
       integer, allocatable :: pivots(:)
-      complex(dp) :: product
       integer :: m, j, info
       logical :: ok
       m = size(point%x)
       call floquet_multipliers(image%jacobian, point%multipliers, stat, errmsg)
       if (stat /= 0) return
       point%amplitude = maxval(abs(image%tip(1, :)))
+      point%minimum_gap = image%minimum_gap
       point%period = run%map%steps*period_step(omega_at(run, point%parameter), int(run%period_steps))
       call parameter_derivative(run, point%x, point%parameter, image, derivative, ok, stat, errmsg)
       if (stat /= 0) return
@@ -452,19 +428,7 @@ contains
       call point_scale(run, point)
       rhs = rhs*point%scale
       point%tangent = rhs/norm2(rhs)
-      point%tests(1) = point%tangent(m + 1)
-      product = 1
-      do j = 1, size(point%multipliers, 2)
-         product = product*cmplx(1 + point%multipliers(1, j), point%multipliers(2, j), dp)
-      end do
-      point%tests(2) = real(product)
-      point%tests(3) = -1
-      do j = 1, size(point%multipliers, 2)
-         if (point%multipliers(2, j) > 0) then
-            point%tests(3) = point%multipliers(1, j)**2 + point%multipliers(2, j)**2 - 1
-            exit   ! (largest modulus first: the first complex pair is the largest)
-         end if
-      end do
+      call set_test_functions(point)
    end subroutine finish_point
 
    !> The scaled coordinates of `point`: x by the weights over the point's own size

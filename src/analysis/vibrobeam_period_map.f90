@@ -47,16 +47,21 @@ module vibrobeam_period_map
       real(dp), allocatable :: state(:)          !! Phi(x) = (U, V) after the orbit's steps (2 unknowns)
       real(dp), allocatable :: jacobian(:, :)    !! (2 unknowns, 2 unknowns) when asked: dPhi/dx
       real(dp), allocatable :: tip(:, :)         !! (2, 0:steps) u (m) and v (m/s) at the tip after each step
+      !> the smallest clearance to the obstacles over the start and every step
+      !! (`smallest_clearance`, m; huge without obstacles): a sampled minimum
+      real(dp) :: minimum_gap = huge(1.0_dp)
       integer :: status = outcome_ok             !! how the run loop ended (outcome_ok, _failed, _interrupted)
       character(len=512) :: failure = ''         !! why it failed ('step n (t = ...): reason')
    end type map_image
 
-   !> What the run loop does after each step of an evaluation: keep the tip's u and v, and
-   !! carry the perturbations (du, dv) through the step's derivative.
+   !> What the run loop does after each step of an evaluation: keep the tip's u and v and
+   !! the smallest clearance to the obstacles so far, and carry the perturbations (du, dv)
+   !! through the step's derivative.
    type, extends(run_hooks) :: orbit_tracker
       logical :: linearised = .false.
       real(dp), allocatable :: du(:, :), dv(:, :)   !! (unknowns, 2 unknowns)
       real(dp), allocatable :: tip(:, :)            !! (2, 0:steps)
+      real(dp) :: minimum_gap = huge(1.0_dp)        !! (m) over the steps so far
    contains
       procedure :: after_step => track_step
    end type orbit_tracker
@@ -91,6 +96,7 @@ contains
       allocate (tracker%tip(2, 0:self%steps))
       call recorder%observe(stepper)
       tracker%tip(:, 0) = recorder%events%observed(1, :)
+      tracker%minimum_gap = stepper%smallest_clearance(stepper%u)
       tracker%linearised = jacobian == jacobian_linearised
       if (tracker%linearised) then
          allocate (tracker%du(n, 2*n), tracker%dv(n, 2*n), source=0.0_dp)
@@ -103,6 +109,7 @@ contains
       self%steps_taken = self%steps_taken + stepper%steps
       image%state = [stepper%u, stepper%v]
       call move_alloc(tracker%tip, image%tip)
+      image%minimum_gap = tracker%minimum_gap
       call release_stepper(stepper)
       if (stat /= 0 .or. image%status /= outcome_ok) return
       select case (jacobian)
@@ -142,7 +149,8 @@ contains
       end subroutine differences
    end subroutine evaluate
 
-   !> After each step: the tip's u and v, and the perturbations through the step.
+   !> After each step: the tip's u and v, the smallest clearance, and the perturbations
+   !! through the step.
    subroutine track_step(self, stepper, recorder, step, stat, errmsg)
       class(orbit_tracker), intent(inout) :: self
       class(time_stepper), intent(in) :: stepper
@@ -153,6 +161,7 @@ contains
       stat = 0
       errmsg = ''
       self%tip(:, step) = recorder%events%observed(1, :)
+      self%minimum_gap = min(self%minimum_gap, stepper%smallest_clearance(stepper%u))
       if (self%linearised) call linearise_step(stepper, self%du, self%dv, stat, errmsg)
    end subroutine track_step
 

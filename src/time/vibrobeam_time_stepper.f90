@@ -16,7 +16,7 @@ module vibrobeam_time_stepper
    use vibrobeam_state_record, only: state_record
    use vibrobeam_compliant_law, only: stop_potential, rule_gradient
    use vibrobeam_compliant_solver, only: compliant_solver
-   use vibrobeam_contact_set, only: contact_value
+   use vibrobeam_contact_set, only: contact_value, no_bound
    implicit none
    private
    public :: time_stepper, stepper_settings, dynamic_state, step_report, energy_ledger
@@ -142,6 +142,7 @@ module vibrobeam_time_stepper
       procedure :: compliant_energy
       procedure :: check_compliant_work
       procedure :: spring_penetrations
+      procedure :: smallest_clearance
       procedure :: set_up_system
       procedure :: damping_times
       procedure :: damping_into
@@ -222,6 +223,30 @@ contains
          end do
       end associate
    end function spring_penetrations
+
+   !> The smallest clearance of the beam to its obstacles at the displacement `u` (m): over
+   !! the contact points, the distance H_c U - lower(c) and upper(c) - H_c U to a rigid
+   !! bound, -p_j of every compliant stop (`spring_penetrations`), and the distance to the
+   !! wall of every cross-section point of a beam of two planes (`circle_set`'s gap);
+   !! positive while every point is free, negative when one is beyond its obstacle (a
+   !! compliant stop's penetration). huge(1.0_dp) without obstacles. The grazing test
+   !! function of a continued branch (docs/method.md, "Continuation of periodic orbits").
+   function smallest_clearance(self, u) result(gap)
+      class(time_stepper), intent(in) :: self
+      real(dp), intent(in) :: u(:)
+      real(dp) :: gap, value
+      integer :: c
+      gap = huge(1.0_dp)
+      do c = 1, self%contacts%count
+         value = contact_value(self%contacts, c, u)
+         if (self%contacts%lower(c) > -no_bound) gap = min(gap, value - self%contacts%lower(c))
+         if (self%contacts%upper(c) < no_bound) gap = min(gap, self%contacts%upper(c) - value)
+      end do
+      if (self%contacts%springs%count > 0) gap = min(gap, -maxval(self%spring_penetrations(u)))
+      do c = 1, self%holes%circles%count
+         gap = min(gap, -self%holes%circles%penetration(c, u))
+      end do
+   end function smallest_clearance
 
    !> Energy stored in the compliant stops, sum_j Phi_j(p_j) (J), the compliant circles' too.
    function contact_potential(self) result(energy)

@@ -5,7 +5,11 @@
 # compliant stops, a hardening response) is continued in its forcing frequency; the same
 # scene is swept up and down in time (continuation_fold_sweep.nml, spacing h = 2.5 rad/s).
 # Checked:
-# - the branch holds exactly two bifurcations, both folds, both located;
+# - the branch holds two folds and two grazings (the tip's smallest clearance to the
+#   stops through zero), all located, in this order along it: a grazing where the orbit
+#   first reaches the stops, the upper fold, the lower fold, and the grazing where the
+#   lower branch leaves them just beyond it (the unstable middle branch and the stable
+#   lower one between the lower fold and that grazing press into the stops);
 # - the upper fold lies where the up sweep drops off the upper branch (its largest drop
 #   of the tip's largest displacement between two consecutive points, Omega_i to
 #   Omega_i+1) and the lower fold where the down sweep jumps up onto it (its largest
@@ -31,11 +35,18 @@ branch=${stem}_branch.dat; found=${stem}_bifurcations.dat; swept=${sweep_stem}_s
 failed=0
 fail() { echo "FAIL: $*"; failed=1; }
 kinds=$(awk -v k="$(col "$found" kind)" -v l="$(col "$found" located)" '!/^#/ && NF {printf "%d%d ", $k, $l}' "$found")
-[ "$kinds" = "11 11 " ] || fail "the branch's bifurcations (kind, located) are '$kinds', not two located folds ('11 11 ')"
-read -r upper lower upper_index lower_index <<< "$(awk -v p="$(col "$found" parameter)" -v i="$(col "$found" index)" '
-  BEGIN {n = 0} !/^#/ && NF {v[n] = $p + 0; j[n] = $i + 0; n++}
+[ "$kinds" = "41 11 11 41 " ] ||
+  fail "the branch's bifurcations (kind, located) are '$kinds', not a grazing, two folds and a grazing, located ('41 11 11 41 ')"
+read -r upper lower upper_index lower_index <<< "$(awk -v p="$(col "$found" parameter)" -v i="$(col "$found" index)" \
+  -v k="$(col "$found" kind)" '
+  BEGIN {n = 0} !/^#/ && NF && $k == 1 {v[n] = $p + 0; j[n] = $i + 0; n++}
   END {if (v[0] > v[1]) print v[0], v[1], j[0], j[1]; else print v[1], v[0], j[1], j[0]}' "$found")"
 echo "folds of the branch: upper ${upper} rad/s (after point ${upper_index}), lower ${lower} rad/s (after point ${lower_index})"
+read -r first_grazing last_grazing <<< "$(awk -v p="$(col "$found" parameter)" -v k="$(col "$found" kind)" '
+  !/^#/ && NF && $k == 4 {v[n++] = $p} END {print v[0], v[n - 1]}' "$found")"
+echo "grazings of the branch: ${first_grazing} and ${last_grazing} rad/s"
+awk -v a="$first_grazing" -v b="$lower" -v c="$last_grazing" -v d="$upper" 'BEGIN {exit !(a < b && b < c && c < d)}' ||
+  fail "the grazings ${first_grazing} and ${last_grazing} rad/s do not bound the contact on both sides of the lower fold"
 # the sweep's jumps: the largest drop going up, the largest rise going down
 jump() {  # jump DIRECTION -> Omega_i Omega_i+1 h
   awk -v d="$1" -v c="$(col "$swept" direction)" -v p="$(col "$swept" parameter)" \

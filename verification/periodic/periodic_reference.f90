@@ -7,10 +7,14 @@ module vibrobeam_periodic_reference
    use vibrobeam_band, only: band_to_dense
    use vibrobeam_problem, only: run_problem
    use vibrobeam_lapack, only: dgesv, dpotrf, dgeevx, zgesv
+   use vibrobeam_scene, only: scene_type
+   use vibrobeam_continuation, only: continuation_branch, continue_branch
+   use vibrobeam_test_support, only: test_counter
    implicit none
    private
    public :: identity, solve_dense, energy_gram, energy_norm, cancellation, fixed_point_condition
    public :: amplification_matrix, eigenvalues_with_conditions, harmonic_steady_state, matrix_power
+   public :: continue_test_branch
 
 contains
 
@@ -184,4 +188,25 @@ contains
       call solve_dense(scaled, work)
       fixed_point_condition = sqrt(sum(work**2))
    end function fixed_point_condition
+
+   !> The branch of `scene` (`continue_branch`) for the continuation tests: it must run
+   !! (else the test `program` ends, failed) and reach its end without failure; prints
+   !! its number of points, its span in Omega and its steps.
+   subroutine continue_test_branch(t, program, scene, prepared, branch)
+      type(test_counter), intent(inout) :: t
+      character(len=*), intent(in) :: program
+      type(scene_type), intent(in) :: scene
+      type(run_problem), intent(in) :: prepared
+      type(continuation_branch), intent(out) :: branch
+      integer :: stat
+      character(len=512) :: errmsg
+      call continue_branch(scene, prepared, branch, stat, errmsg)
+      call t%check_true('continue_branch runs', stat == 0, trim(errmsg))
+      if (stat /= 0) call t%finish(program)
+      call t%check_true('the branch reached its end without failure', len_trim(branch%failure) == 0, &
+                        trim(branch%failure))
+      write (*, '(a,i0,a,f0.3,a,f0.3,a,i0,a)') 'branch: ', size(branch%points), ' points, Omega from ', &
+         branch%points(1)%parameter, ' to ', branch%points(size(branch%points))%parameter, ' rad/s, ', &
+         branch%steps_taken, ' steps'
+   end subroutine continue_test_branch
 end module vibrobeam_periodic_reference

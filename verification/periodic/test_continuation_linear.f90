@@ -16,31 +16,25 @@ program test_continuation_linear
    use vibrobeam_band, only: band_to_dense
    use vibrobeam_periodic_settings, only: period_step
    use vibrobeam_periodic_reference, only: energy_gram, energy_norm, cancellation, fixed_point_condition, &
-      amplification_matrix, harmonic_steady_state, matrix_power
-   use vibrobeam_continuation, only: continuation_branch, continue_branch
+      amplification_matrix, harmonic_steady_state, matrix_power, continue_test_branch
+   use vibrobeam_continuation, only: continuation_branch
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
    implicit none
    type(test_counter) :: t
    type(scene_type) :: scene, local
    type(run_problem) :: prepared, at_point
    type(continuation_branch) :: branch
-   character(len=512) :: path, errmsg
+   character(len=512) :: path
    real(dp), allocatable :: mass(:, :), stiffness(:, :), damping(:, :), gram(:, :), x_ref(:), a(:, :)
    complex(dp), allocatable :: harmonic(:)
    real(dp) :: omega, omega0, dt, error, bound, noise, worst, norm_ratio, largest_bound
-   integer :: stat, k, n, info, steps_per_period
+   integer :: k, n, info, steps_per_period
    integer(int64) :: steps
 
    call get_command_argument(1, path)
    scene = read_test_scene(trim(path))
    call prepare_test_scene(scene, prepared)
-   call continue_branch(scene, prepared, branch, stat, errmsg)
-   call t%check_true('continue_branch runs', stat == 0, trim(errmsg))
-   if (stat /= 0) call t%finish('test_continuation_linear')
-   call t%check_true('the branch reached its end without failure', len_trim(branch%failure) == 0, trim(branch%failure))
-   write (*, '(a,i0,a,f0.3,a,f0.3,a,i0,a)') 'branch: ', size(branch%points), ' points, Omega from ', &
-      branch%points(1)%parameter, ' to ', branch%points(size(branch%points))%parameter, ' rad/s, ', &
-      branch%steps_taken, ' steps'
+   call continue_test_branch(t, 'test_continuation_linear', scene, prepared, branch)
    call t%check_true('more than 10 points', size(branch%points) > 10)
    call t%check_true('no bifurcation on a linear response curve', size(branch%bifurcations) == 0)
    call t%check_true('Omega increases monotonically along the branch (no fold)', &
