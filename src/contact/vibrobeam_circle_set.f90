@@ -24,8 +24,9 @@ module vibrobeam_circle_set
       real(dp), allocatable :: normal(:, :)    !! (2, count) a flat point's inward unit normal h
       real(dp), allocatable :: bound(:)        !! a flat point's b (m): h.(v, w) >= b
       integer, allocatable :: obstacle(:)      !! the obstacle (index in &obstacles)
-      !> compliant circles (docs/theory.md section 8 on the radial penetration
-      !! p = |r - c| - R): stiffness k (N/m^a; 0: rigid), exponent a, Hunt-Crossley alpha
+      !> compliant points (docs/theory.md section 8 on the penetration `penetration`: the
+      !! radial |r - c| - R of a circle, b - h.(v, w) of a flat point): stiffness k (N/m^a
+      !! at the point; 0: rigid), exponent a, Hunt-Crossley alpha
       real(dp), allocatable :: stiffness(:), exponent(:), damping(:)
       logical :: compliant = .false.           !! every point compliant (none rigid)
       real(dp), allocatable :: friction(:)     !! Coulomb's mu at the point's wall (0: frictionless)
@@ -87,7 +88,7 @@ contains
    end function normal_at
 
    !> How far point k is beyond its wall in a stacked state `u` (m, > 0 beyond): the
-   !! radial penetration |r - c| - R of a circle.
+   !! radial penetration |r - c| - R of a circle, b - h.(v, w) of a flat point.
    pure real(dp) function penetration(self, k, u)
       class(circle_set), intent(in) :: self
       integer, intent(in) :: k

@@ -202,13 +202,13 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer :: source(0:model%elements), k, i, first, last, dofs(4), n
-      integer, allocatable :: point_node(:), point_obstacle(:), point_face(:)
+      integer, allocatable :: point_node(:), point_obstacle(:), point_face(:), point_first(:), point_last(:)
       real(dp) :: weights(4), side, outward(2), turn
       integer :: face
       stat = 0
       errmsg = ''
       source = 0
-      allocate (point_node(0), point_obstacle(0), point_face(0))
+      allocate (point_node(0), point_obstacle(0), point_face(0), point_first(0), point_last(0))
       do k = 1, size(obstacles)
          call covered_nodes(obstacles(k), k, model, first, last, warnings)
          do i = first, last
@@ -228,6 +228,8 @@ contains
                point_node = [point_node, i]
                point_obstacle = [point_obstacle, k]
                point_face = [point_face, face]
+               point_first = [point_first, first]
+               point_last = [point_last, last]
             end do
          end do
       end do
@@ -271,7 +273,12 @@ contains
                   circles%normal(:, k) = [side, 0.0_dp]
                   circles%bound(k) = side*level_at(o, model, i)
                end if
-               circles%stiffness(k) = o%stiffness   ! a punctual circle (`plane_rules`): N/m^a at its node
+               ! a circle is punctual (`plane_rules`): N/m^a at its node; a compliant level or
+               ! polygon along the beam gives each node its tributary share, as a planar level
+               circles%stiffness(k) = o%stiffness
+               if (o%stiffness > 0 .and. .not. o%circle()) &
+                  circles%stiffness(k) = o%stiffness*spring_length(o, model, point_node(first), point_first(first) == &
+                                                                   point_last(first))
                circles%exponent(k) = o%exponent
                circles%damping(k) = o%damping
                circles%friction(k) = merge(0.0_dp, o%friction, is_unset(o%friction))
@@ -280,6 +287,24 @@ contains
       end do
       circles%compliant = circles%count > 0 .and. all(circles%stiffness > 0)
    end subroutine build_circle_points
+
+   !> The length (m) whose stiffness a compliant obstacle `o` gives node i (its spring
+   !! k times it, N/m^a): 1 for a punctual one (the stiffness itself), x_to - x_from for
+   !! one covering a single node (`alone`), else node i's tributary length inside [x_from,
+   !! x_to] (h inside, h/2 at an end node).
+   pure real(dp) function spring_length(o, model, i, alone)
+      type(obstacle_type), intent(in) :: o
+      type(beam_model), intent(in) :: model
+      integer, intent(in) :: i
+      logical, intent(in) :: alone
+      if (alone) then
+         spring_length = max(o%x_to - o%x_from, 0.0_dp)
+         if (spring_length <= 1e-9_dp*model%h) spring_length = 1   ! punctual: the stiffness itself
+      else
+         spring_length = max(0.0_dp, min(o%x_to, model%x(i + 1) + 0.5_dp*model%h, model%length) - &
+                             max(o%x_from, model%x(i + 1) - 0.5_dp*model%h))
+      end if
+   end function spring_length
 
    !> The level of obstacle `o` (without a profile) at node i: level_from, or linear from
    !! level_from at x_from to level_to at x_to (m).
@@ -353,9 +378,8 @@ contains
       type(beam_model), intent(in) :: model
       type(linear_table), intent(in) :: profile   !! the obstacle's profile (none: not allocated)
       type(nodal_bounds), intent(inout) :: nodes
-      real(dp) :: level, tolerance
+      real(dp) :: level
       integer :: i, j
-      tolerance = 1e-9_dp*model%h
       do i = first, last
          if (allocated(profile%x)) then
             level = profile%at(model%x(i + 1))
@@ -371,14 +395,7 @@ contains
             nodes%spring_node(j) = i
             nodes%spring_obstacle(j) = k
             nodes%spring_level(j) = level
-            if (first == last) then
-               nodes%spring_length(j) = max(o%x_to - o%x_from, 0.0_dp)
-               if (nodes%spring_length(j) <= tolerance) nodes%spring_length(j) = 1   ! punctual: the stiffness itself
-            else
-               ! tributary length of node i inside [x_from, x_to]
-               nodes%spring_length(j) = max(0.0_dp, min(o%x_to, model%x(i + 1) + 0.5_dp*model%h, model%length) - &
-                                            max(o%x_from, model%x(i + 1) - 0.5_dp*model%h))
-            end if
+            nodes%spring_length(j) = spring_length(o, model, i, first == last)
             cycle
          end if
          if (o%side == 'below') then

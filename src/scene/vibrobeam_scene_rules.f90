@@ -412,7 +412,7 @@ contains
       character(len=*), intent(inout) :: errmsg
       character(len=*), parameter :: planar = ' is not available with &beam planes = 2 yet (issue 21: the two-plane '// &
                                               'model runs the velocity scheme with circular and polygonal holes and '// &
-                                              'rigid levels, so far); '
+                                              'levels, so far); '
       integer :: i
       if (scene%beam%plane_count() == 1) then
          call no_direction('load', 'direction', scene%load%direction)
@@ -442,23 +442,21 @@ contains
       end if
       do i = 1, size(scene%obstacles)
          associate (o => scene%obstacles(i))
-            ! a level: a flat point of the cross-section (its normal +-y), rigid, flat
-            if (.not. o%circle() .and. o%stiffness > 0) &
-               call fail(stat, errmsg, '&obstacles stiffness('//integer_text(i)//') = '//real_text(o%stiffness)// &
-                         ' N/m (a compliant '//trim(merge('polygon', 'level  ', o%shape == 'polygon'))//')'//planar// &
-                         'levels and polygons are rigid so far: stiffness = 0')
+            ! a level: a flat point of the cross-section (its normal +-y), rigid or compliant
             if (.not. o%circle() .and. len_trim(o%profile) > 0) &
                call fail(stat, errmsg, '&obstacles profile('//integer_text(i)//') = '''//trim(o%profile)//''''// &
                          planar//'give level_from and level_to')
-            ! a compliant circle is a support plate's hole: one node (its stiffness per node)
-            if (o%stiffness > 0 .and. o%x_to > o%x_from) &
+            ! a compliant circle is a support plate's hole: one node (its stiffness per node);
+            ! a compliant level or polygon along the beam shares its stiffness per length
+            ! among its nodes, as a planar level (docs/input.md, "&obstacles")
+            if (o%circle() .and. o%stiffness > 0 .and. o%x_to > o%x_from) &
                call fail(stat, errmsg, '&obstacles stiffness('//integer_text(i)//') = '//real_text(o%stiffness)// &
                          ' N/m with x_to('//integer_text(i)//') > x_from (a compliant circle along the beam)'// &
                          planar//'a compliant circle acts at one node: give x_to = x_from')
             if (o%stiffness > 0 .neqv. scene%obstacles(1)%stiffness > 0) &
                call fail(stat, errmsg, '&obstacles stiffness('//integer_text(i)//') = '//real_text(o%stiffness)// &
                          ' N/m and stiffness(1) = '//real_text(scene%obstacles(1)%stiffness)//' N/m (rigid and '// &
-                         'compliant circles together)'//planar//'make every circle rigid or every one compliant')
+                         'compliant obstacles together)'//planar//'make every obstacle rigid or every one compliant')
          end associate
       end do
       if (size(scene%obstacles) > 0 .and. scene%mesh%basis /= 'hermite') &

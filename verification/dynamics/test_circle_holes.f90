@@ -19,13 +19,12 @@
 program test_circle_holes
    use vibrobeam_kinds, only: dp, output_unit
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_obstacles, only: obstacle_type
    use vibrobeam_planes, only: direction_shares
-   use vibrobeam_schema_visitor, only: unset
    use vibrobeam_problem, only: run_problem
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene, &
-      start_test_stepper, advance_test_stepper, angular_momentum
+      start_test_stepper, advance_test_stepper, angular_momentum, start_planar_twins, hole_levels, &
+      advance_planar_twins
    implicit none
    type(test_counter) :: t
    type(scene_type) :: scene, whirl, compliant, square
@@ -134,34 +133,13 @@ contains
       !> the direction (degrees) of the hole scene's data, when not along y: then y and z
       !! are compared with cos(angle) and sin(angle) times the twin's y
       real(dp), intent(in), optional :: angle
-      type(scene_type) :: planar, nudged
-      type(run_problem) :: prepared_planar, prepared_nudged, prepared_hole
       class(time_stepper), allocatable :: reference, perturbed, stepper
       real(dp) :: deviation, own, scale, impulse_deviation, impulse_scale, tolerance, depth, shares(2)
       integer :: held, k
       logical :: same_points, z_zero
       shares = [1.0_dp, 0.0_dp]
       if (present(angle)) shares = direction_shares(angle)
-      associate (o => hole%obstacles(1))
-         planar = hole
-         planar%beam%planes = 1
-         planar%initial%direction = unset
-         planar%initial%displacement_direction = unset
-         planar%load%direction = unset
-         planar%obstacles = [obstacle_type(side='below', x_from=o%x_from, x_to=o%x_to, level_from=-o%radius, &
-                                           level_to=-o%radius, stiffness=o%stiffness), &
-                             obstacle_type(side='above', x_from=o%x_from, x_to=o%x_to, level_from=o%radius, &
-                                           level_to=o%radius, stiffness=o%stiffness)]
-      end associate
-      nudged = planar
-      nudged%initial%velocity_amplitude = nearest(planar%initial%velocity_amplitude, 1.0_dp)
-      call prepare_test_scene(planar, prepared_planar)
-      call prepare_test_scene(nudged, prepared_nudged)
-      call prepare_test_scene(hole, prepared_hole)
-      call start_test_stepper(planar, prepared_planar, reference)
-      call start_test_stepper(nudged, prepared_nudged, perturbed)
-      call start_test_stepper(hole, prepared_hole, stepper)
-      j = prepared_hole%model%unknowns
+      call start_planar_twins(hole, hole_levels(hole%obstacles(1)), stepper, reference, perturbed, j)
       deviation = 0
       own = 0
       impulse_deviation = 0
@@ -172,15 +150,7 @@ contains
       z_zero = .true.
       depth = 0
       do n = 1, steps
-         call advance_test_stepper(reference)
-         call advance_test_stepper(perturbed)
-         call advance_test_stepper(stepper)
-         deviation = max(deviation, maxval(abs(stepper%u(1:j) - shares(1)*reference%u)), &
-                         maxval(abs(stepper%v(1:j) - shares(1)*reference%v)))
-         if (present(angle)) deviation = max(deviation, maxval(abs(stepper%u(j + 1:) - shares(2)*reference%u)), &
-                                             maxval(abs(stepper%v(j + 1:) - shares(2)*reference%v)))
-         own = max(own, maxval(abs(perturbed%u - reference%u)), maxval(abs(perturbed%v - reference%v)))
-         scale = max(scale, maxval(abs(reference%u)), maxval(abs(reference%v)))
+         call advance_planar_twins(stepper, reference, perturbed, shares, deviation, own, scale)
          if (.not. present(angle)) z_zero = z_zero .and. all(abs(stepper%u(j + 1:)) <= 0) .and. &
                                             all(abs(stepper%v(j + 1:)) <= 0)
          depth = max(depth, stepper%holes%circles%penetration(1, stepper%u))

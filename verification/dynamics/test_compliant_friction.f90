@@ -32,7 +32,7 @@ program test_compliant_friction
    use vibrobeam_support_wear, only: support_wear
    use vibrobeam_statistics_layout, only: wear_quantities
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene, &
-      start_test_stepper, advance_test_stepper, same_bits
+      start_test_stepper, advance_test_stepper, same_bits, start_friction_case
    implicit none
    type(test_counter) :: t
    type(scene_type) :: scene, whirl, other
@@ -40,7 +40,7 @@ program test_compliant_friction
    class(time_stepper), allocatable :: stepper, twin
    character(len=512) :: path
    real(dp), parameter :: eps = epsilon(1.0_dp)
-   real(dp) :: k_beam, k_wall, normal, critical, angle, pull, moved(2), slide, phi(2), v_max, bound, ratio(2)
+   real(dp) :: k_beam, k_wall, normal, angle, pull, moved(2), slide, phi(2), v_max, bound, ratio(2)
    real(dp) :: energy0, worst, ledger, sum_friction, sum_abs, largest, difference
    integer :: n, steps, case, tip, j, iterations, whirl_steps, new(1), count
    logical :: same
@@ -53,17 +53,10 @@ program test_compliant_friction
    steps = nint(scene%time%t_end/scene%time%dt)
 
    ! (1) below and above the friction angle of the compliant wall
-   associate (b => scene%beam, o => scene%obstacles(1))
-      k_beam = 3*b%youngs_modulus*b%inertia/b%length**3
+   associate (o => scene%obstacles(1))
       k_wall = o%stiffness
-      normal = scene%load%point_force*k_wall/(k_wall + k_beam)
-      critical = atan(o%friction*normal/scene%load%point_force)
       do case = 1, 2
-         angle = critical*merge(1 - 1e-3_dp, 1 + 1e-3_dp, case == 1)
-         pull = scene%load%point_force*tan(angle)
-         scene%forces%load(1)%amplitude = pull
-         call prepare_test_scene(scene, prepared)
-         call start_test_stepper(scene, prepared, stepper)
+         call start_friction_case(scene, case, stepper, k_beam, normal, angle, pull)
          j = size(stepper%u)/2
          tip = stepper%holes%circles%dof(1)
          ! the wear window: from the ramp's start (0.02 s) to the end, the steps first..steps

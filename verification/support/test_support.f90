@@ -18,13 +18,16 @@ module vibrobeam_test_support
    use vibrobeam_band_kernel, only: kernel_bandwidth
    use vibrobeam_contact_set, only: contact_set, contact_value, no_bound
    use vibrobeam_lcp, only: solve_lcp
+   use vibrobeam_obstacles, only: obstacle_type
+   use vibrobeam_schema_visitor, only: unset
    implicit none
    private
    public :: test_counter, read_test_scene, prepare_test_scene, use_program_blas_threads, fitted_order, band_abs_times
    public :: band_condition, abs_factor_times
    public :: dense_lcp_reference, same_bits
    public :: wave_row, lu_determinant, static_deflection, scanned_roots, real_function
-   public :: start_test_stepper, advance_test_stepper, angular_momentum
+   public :: start_test_stepper, advance_test_stepper, angular_momentum, start_planar_twins, hole_levels, start_friction_case
+   public :: advance_planar_twins
 
    type, public :: test_counter
       integer :: passed = 0
@@ -404,6 +407,91 @@ contains
          error stop 1
       end if
    end subroutine start_test_stepper
+
+   !> A beam of two planes (`two_planes`) and its planar twins, started: `reference` the same
+   !! scene with planes = 1, no directions and the obstacles `planar_obstacles` (levels),
+   !! `perturbed` that twin with its initial velocity's amplitude one ulp larger (how far
+   !! rounding carries on the trajectory: the derived tolerance of the planar reductions,
+   !! test_circle_holes and test_compliant_faces), `stepper` the two-plane scene itself;
+   !! j its unknowns per plane.
+   subroutine start_planar_twins(two_planes, planar_obstacles, stepper, reference, perturbed, j)
+      type(scene_type), intent(in) :: two_planes
+      type(obstacle_type), intent(in) :: planar_obstacles(:)
+      class(time_stepper), allocatable, intent(out) :: stepper, reference, perturbed
+      integer, intent(out) :: j
+      type(scene_type) :: planar, nudged
+      type(run_problem) :: prepared_planar, prepared_nudged, prepared
+      planar = two_planes
+      planar%beam%planes = 1
+      planar%initial%direction = unset
+      planar%initial%displacement_direction = unset
+      planar%load%direction = unset
+      planar%obstacles = planar_obstacles
+      nudged = planar
+      nudged%initial%velocity_amplitude = nearest(planar%initial%velocity_amplitude, 1.0_dp)
+      call prepare_test_scene(planar, prepared_planar)
+      call prepare_test_scene(nudged, prepared_nudged)
+      call prepare_test_scene(two_planes, prepared)
+      call start_test_stepper(planar, prepared_planar, reference)
+      call start_test_stepper(nudged, prepared_nudged, perturbed)
+      call start_test_stepper(two_planes, prepared, stepper)
+      j = prepared%model%unknowns
+   end subroutine start_planar_twins
+
+   !> One step of a beam of two planes and its planar twins (`start_planar_twins`), with the
+   !! largest values so far: `deviation` of the two-plane U and V from the twin's times
+   !! `shares` (y from shares(1), z from shares(2) times the twin's y), `own` the twin one
+   !! ulp faster's from the twin, `scale` the twin's largest |U|, |V|.
+   subroutine advance_planar_twins(stepper, reference, perturbed, shares, deviation, own, scale)
+      class(time_stepper), intent(inout) :: stepper, reference, perturbed
+      real(dp), intent(in) :: shares(2)
+      real(dp), intent(inout) :: deviation, own, scale
+      integer :: j
+      j = size(stepper%u)/2
+      call advance_test_stepper(reference)
+      call advance_test_stepper(perturbed)
+      call advance_test_stepper(stepper)
+      deviation = max(deviation, maxval(abs(stepper%u(1:j) - shares(1)*reference%u)), &
+                      maxval(abs(stepper%v(1:j) - shares(1)*reference%v)), &
+                      maxval(abs(stepper%u(j + 1:) - shares(2)*reference%u)), &
+                      maxval(abs(stepper%v(j + 1:) - shares(2)*reference%v)))
+      own = max(own, maxval(abs(perturbed%u - reference%u)), maxval(abs(perturbed%v - reference%v)))
+      scale = max(scale, maxval(abs(reference%u)), maxval(abs(reference%v)))
+   end subroutine advance_planar_twins
+
+   !> The planar twin's obstacles of a hole `o` (a circle or a square of orientation 0):
+   !! levels at -R (below) and +R (above) over the same x with the same stiffness.
+   function hole_levels(o) result(levels)
+      type(obstacle_type), intent(in) :: o
+      type(obstacle_type) :: levels(2)
+      levels = [obstacle_type(side='below', x_from=o%x_from, x_to=o%x_to, level_from=-o%radius, level_to=-o%radius, &
+                              stiffness=o%stiffness), &
+                obstacle_type(side='above', x_from=o%x_from, x_to=o%x_to, level_from=o%radius, level_to=o%radius, &
+                              stiffness=o%stiffness)]
+   end function hole_levels
+
+   !> A tube's tip pressed on a compliant wall (obstacle 1, stiffness k, friction mu) by
+   !! `&load point_force` F_n and pulled along it by `&forces` load 1, started just below
+   !! (case 1) or above (case 2) the friction angle's closed form: at rest the wall carries
+   !! `normal` f = F_n k/(k + k_b) (k_b = `tip_stiffness` 3 E I/L^3, the cantilever's, exact
+   !! on Hermite elements), so tan a* = mu f/F_n; `angle` = a* (1 -+ 1e-3), `pull` F_t =
+   !! F_n tan(angle), set as the load's amplitude (test_compliant_friction, test_compliant_faces).
+   subroutine start_friction_case(scene, case, stepper, tip_stiffness, normal, angle, pull)
+      type(scene_type), intent(inout) :: scene
+      integer, intent(in) :: case
+      class(time_stepper), allocatable, intent(out) :: stepper
+      real(dp), intent(out) :: tip_stiffness, normal, angle, pull
+      type(run_problem) :: prepared
+      associate (b => scene%beam, k => scene%obstacles(1)%stiffness)
+         tip_stiffness = 3*b%youngs_modulus*b%inertia/b%length**3
+         normal = scene%load%point_force*k/(k + tip_stiffness)
+      end associate
+      angle = atan(scene%obstacles(1)%friction*normal/scene%load%point_force)*merge(1 - 1e-3_dp, 1 + 1e-3_dp, case == 1)
+      pull = scene%load%point_force*tan(angle)
+      scene%forces%load(1)%amplitude = pull
+      call prepare_test_scene(scene, prepared)
+      call start_test_stepper(scene, prepared, stepper)
+   end subroutine start_friction_case
 
    !> One step, stopping the test on failure.
    subroutine advance_test_stepper(stepper)
