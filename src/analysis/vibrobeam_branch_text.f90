@@ -22,23 +22,27 @@ contains
       type(table_column) :: bifurcations(5)
       type(table_column), allocatable :: points(:)
       character(len=:), allocatable :: parameter, gap
+      integer :: integers
       call run%file%attr_string(group, 'parameter', parameter, stat, errmsg)
       if (stat /= 0) return
       points = [table_column('parameter', group//'/parameter', note=parameter), &
                 table_column('amplitude', group//'/amplitude'), table_column('period', group//'/period'), &
                 table_column('largest_multiplier', group//'/largest_multiplier')]
-      ! the smallest clearance when the scene has obstacles, before the integer columns
-      gap = ''
-      if (run%file%exists(group//'/minimum_gap')) then
-         points = [points, table_column('minimum_gap', group//'/minimum_gap')]
-         gap = ', the smallest clearance of the contact points to their obstacles over the orbit'
-      end if
       points = [points, table_column('stable', group//'/stable'), &
                 table_column('newton_iterations', group//'/newton_iterations')]
+      ! the smallest clearance when the scene has obstacles: last, so that the columns before
+      ! it keep their places (the two integer columns then written as reals)
+      gap = ''
+      integers = 2
+      if (run%file%exists(group//'/minimum_gap')) then
+         points = [points, table_column('minimum_gap', group//'/minimum_gap')]
+         gap = ', the smallest clearance of the contact points to their obstacles over the orbit (m)'
+         integers = 0
+      end if
       call write_table('branch', 'one row per point of the continued branch, in its order: the parameter, the '// &
-                       'largest |u| of the tip over the orbit, the period, the largest |mu|'//gap//', 1 stable '// &
-                       '(every |mu| < 1) or 0, the corrector''s Newton iterations', points, group//'/parameter', 2, &
-                       stat, errmsg)
+                       'largest |u| of the tip over the orbit, the period, the largest |mu|, 1 stable '// &
+                       '(every |mu| < 1) or 0, the corrector''s Newton iterations'//gap, points, group//'/parameter', &
+                       integers, stat, errmsg)
       if (stat /= 0) return
       bifurcations = [table_column('parameter', found//'/parameter', note=parameter), &
                       table_column('amplitude', found//'/amplitude'), &
