@@ -102,10 +102,11 @@ contains
       if (stat == 0) call self%field%create(writer, '/field/displacement', nodes, 'm', stat, errmsg, matrix=.true.)
       if (stat == 0 .and. self%points) then
          call writer%write_real_1d('/points/x', point_x, 'm', stat, errmsg)
-         if (stat == 0) call self%point_u%create(writer, '/points/displacement', size(point_x), 'm', &
-                                                 stat, errmsg, matrix=.true.)
-         if (stat == 0) call self%point_v%create(writer, '/points/velocity', size(point_x), 'm/s', &
-                                                 stat, errmsg, matrix=.true.)
+         ! (outputs, points), with two planes (outputs, points, 2): y, z
+         if (stat == 0) call self%point_u%create(writer, '/points/displacement', planes*size(point_x), 'm', &
+                                                 stat, errmsg, matrix=.true., layers=planes)
+         if (stat == 0) call self%point_v%create(writer, '/points/velocity', planes*size(point_x), 'm/s', &
+                                                 stat, errmsg, matrix=.true., layers=planes)
       end if
       if (stat == 0) call writer%write_real_1d('/contact/x', contacts%x, 'm', stat, errmsg)
       if (stat == 0) call writer%write_real_1d('/contact/lower', contacts%lower, 'm', stat, errmsg)
@@ -139,10 +140,11 @@ contains
    !! took (with friction), the observation
    !! points' u and v, and with compliant stops their stored energy, damping dissipation
    !! and forces.
-   subroutine append_sample(self, row, tip_z, friction, point_u, point_v, potential, contact_damping, contact_force, &
-                            stat, errmsg)
+   subroutine append_sample(self, row, tip_z, friction, point_u, point_v, point_uz, point_vz, potential, &
+                            contact_damping, contact_force, stat, errmsg)
       class(run_histories), intent(inout) :: self
       real(dp), intent(in) :: row(history_count), tip_z(2), point_u(:), point_v(:)
+      real(dp), intent(in) :: point_uz(:), point_vz(:)   !! a beam of two planes: u and v in z at the points
       real(dp), intent(in) :: friction   !! the energy friction has taken (J)
       real(dp), intent(in) :: potential, contact_damping, contact_force(:)
       integer, intent(out) :: stat
@@ -170,7 +172,12 @@ contains
          call self%friction_series%append([friction], stat, errmsg)
          if (stat /= 0) return
       end if
-      if (self%points) then
+      if (self%points .and. self%planes == 2) then   ! (points, 2): y and z of each point side by side
+         call self%point_u%append(reshape(transpose(reshape([point_u, point_uz], [size(point_u), 2])), &
+                                          [2*size(point_u)]), stat, errmsg)
+         if (stat == 0) call self%point_v%append(reshape(transpose(reshape([point_v, point_vz], [size(point_v), 2])), &
+                                                         [2*size(point_v)]), stat, errmsg)
+      else if (self%points) then
          call self%point_u%append(point_u, stat, errmsg)
          if (stat == 0) call self%point_v%append(point_v, stat, errmsg)
       end if

@@ -83,10 +83,11 @@ module vibrobeam_recorder
       ! a reduced model (&mesh reduction): the stepper's unknowns are q, U = T q
       type(reduced_basis), allocatable :: reduction   !! T, for field snapshots
       real(dp), allocatable :: observed_rows(:, :)   !! (r, 1 + points) u_h at the tip and points = row . q
-      !> bending planes of the stepper; with 2, the tip's deflection and velocity in z at
-      !! the last `observe` (the y plane's are events%observed(1, :))
+      !> bending planes of the stepper; with 2, the deflection and velocity in z at the tip
+      !! and the observation points at the last `observe`, (1 + points, 2) (the y plane's
+      !! are events%observed)
       integer :: planes = 1
-      real(dp) :: tip_z(2) = 0
+      real(dp), allocatable :: observed_z(:, :)
       type(support_wear) :: wear                     !! impacts, forces, sliding and wear at those points
       type(run_spectra) :: spectra                   !! /spectrum: the tip's and the observation points'
       type(forces_psd) :: forces_spectra             !! /forces: the random loads' densities (none without)
@@ -192,6 +193,7 @@ contains
       self%observed_dofs(:, 2:) = self%point_dofs
       self%observed_weights(:, 2:) = self%point_weights
       allocate (self%events%observed(1 + size(self%point_x), 2))
+      allocate (self%observed_z(1 + size(self%point_x), 2), source=0.0_dp)
       call self%spectra%init(self%every*scene%time%dt, last_step/self%every + 1, self%point_x)
       if (self%write_rows) call self%forces_spectra%init(scene%forces, problem%loads%forces, last_step)
       gap = scene%output%episode_gap
@@ -283,10 +285,14 @@ contains
          self%events%observed(p, 1) = combination(self%observed_dofs(:, p), self%observed_weights(:, p), stepper%u)
          self%events%observed(p, 2) = combination(self%observed_dofs(:, p), self%observed_weights(:, p), stepper%v)
       end do
-      if (self%planes == 2) then   ! the z plane: the same row on the second half of the unknowns
+      if (self%planes == 2) then   ! the z plane: the same rows on the second half of the unknowns
          associate (j => size(stepper%u)/2)
-            self%tip_z(1) = combination(self%observed_dofs(:, 1), self%observed_weights(:, 1), stepper%u(j + 1:))
-            self%tip_z(2) = combination(self%observed_dofs(:, 1), self%observed_weights(:, 1), stepper%v(j + 1:))
+            do p = 1, size(self%observed_dofs, 2)
+               self%observed_z(p, 1) = combination(self%observed_dofs(:, p), self%observed_weights(:, p), &
+                                                   stepper%u(j + 1:))
+               self%observed_z(p, 2) = combination(self%observed_dofs(:, p), self%observed_weights(:, p), &
+                                                   stepper%v(j + 1:))
+            end do
          end associate
       end if
    end subroutine observe
@@ -532,8 +538,9 @@ contains
       end if
       row(h_balance) = row(h_total) - row(h_work) + row(h_dissipated)
       row(h_penetration) = penetration(stepper)
-      call self%files%append_sample(row, self%tip_z, stepper%energy%dissipated_friction, self%events%observed(2:, 1), &
-                                    self%events%observed(2:, 2), potential, &
+      call self%files%append_sample(row, self%observed_z(1, :), stepper%energy%dissipated_friction, &
+                                    self%events%observed(2:, 1), self%events%observed(2:, 2), self%observed_z(2:, 1), &
+                                    self%observed_z(2:, 2), potential, &
                                     stepper%energy%dissipated_contact_damping, stepper%report%contact_force, stat, errmsg)
       if (stat /= 0) return
       ! the spectrum takes the uniformly spaced rows only (not a last row off the grid)

@@ -288,11 +288,22 @@ contains
          call run%file%read_reals('/points/x', x, stat, errmsg)
          if (stat /= 0) return
          points = size(x)
-         call run%open_sink(sink, 'points', 't (s)  then u (m) at each observation point x = '// &
-                            points_text(x)//' m, then v (m/s) at each', stat, errmsg)
-         if (stat /= 0) return
-         call run%stream_rows(sink, [character(len=40) :: '/time', '/points/displacement', '/points/velocity'], &
-                              [1, points, points], outputs, 'wide', stat, errmsg)
+         if (planes == 1) then
+            call run%open_sink(sink, 'points', 't (s)  then u (m) at each observation point x = '// &
+                               points_text(x)//' m, then v (m/s) at each', stat, errmsg)
+            if (stat /= 0) return
+            call run%stream_rows(sink, [character(len=40) :: '/time', '/points/displacement', '/points/velocity'], &
+                                 [1, points, points], outputs, 'wide', stat, errmsg)
+         else   ! the planar columns in their places, then the z plane's (read: t, (u_y, u_z) at each point, ...)
+            call run%open_sink(sink, 'points', 't (s)  then u (m) at each observation point x = '// &
+                               points_text(x)//' m, then v (m/s) at each, all in y; then u in z (m) at each, then '// &
+                               'v in z (m/s) at each', stat, errmsg)
+            if (stat /= 0) return
+            call run%stream_rows(sink, [character(len=40) :: '/time', '/points/displacement', '/points/velocity'], &
+                                 [1, 2*points, 2*points], outputs, 'wide', stat, errmsg, &
+                                 order=[1, [(2*k, k = 1, points)], [(2*points + 2*k, k = 1, points)], &
+                                        [(2*k + 1, k = 1, points)], [(2*points + 2*k + 1, k = 1, points)]])
+         end if
          call run%close_sink(sink, stat, errmsg)
          if (stat /= 0 .or. run%interrupted) return
       end if

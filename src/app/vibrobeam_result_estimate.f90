@@ -112,9 +112,10 @@ contains
       type(scene_type), intent(in) :: scene
       integer, intent(in), optional :: contact_points
       type(result_size) :: estimate
-      integer :: field_every, points, contacts, nodes, unknowns, histories
+      integer :: field_every, points, contacts, nodes, unknowns, histories, planes
       real(dp) :: samples, bins, window, periods, omega, buffer, power
       logical :: compliant, obstacles
+      planes = scene%beam%plane_count()   ! a beam of two planes: the tip and points in z too
       points = 0
       if (allocated(scene%output%points)) points = size(scene%output%points)
       obstacles = .false.
@@ -188,11 +189,11 @@ contains
       periods = 0
       if (forcing_of(scene, omega) /= 'none') periods = aint(window*scene%time%dt*omega/(2*pi))
       histories = size(history_paths) + merge(2, 0, compliant)   ! (+ the springs' potential and damping)
-      estimate%values_per_output = histories + 2*points + merge(contacts, 0, compliant)
+      estimate%values_per_output = histories + 2*(planes - 1) + 2*planes*points + merge(contacts, 0, compliant)
       associate (h => estimate%hdf5_bytes)
-         h = metadata_bytes + histories*chunked(estimate%outputs, 1)
+         h = metadata_bytes + histories*chunked(estimate%outputs, 1) + 2*(planes - 1)*chunked(estimate%outputs, 1)
          if (compliant) h = h + chunked(estimate%outputs, contacts)
-         if (points > 0) h = h + 2*chunked(estimate%outputs, points)
+         if (points > 0) h = h + 2*chunked(estimate%outputs, planes*points)
          h = h + chunked(estimate%snapshots, 1) + chunked(estimate%snapshots, nodes)
          if (obstacles) h = h + (impact_columns + episode_columns)*chunked(1.0_dp, 1)
          h = h + 3*chunked(bins, 1)
@@ -212,8 +213,8 @@ contains
       if (scene%output%text) then
          associate (t => estimate%text_bytes)
             ! tip (5 numbers) and energy (11) rows, points (1 + 2 P), the springs' force
-            t = estimate%outputs*((5 + 11)*wide + 2)
-            if (points > 0) t = t + estimate%outputs*((1 + 2*points)*wide + 1)
+            t = estimate%outputs*((5 + 2*(planes - 1) + 11)*wide + 2)
+            if (points > 0) t = t + estimate%outputs*((1 + 2*planes*points)*wide + 1)
             if (compliant) t = t + estimate%outputs*((1 + contacts)*wide + 1)
             t = t + estimate%snapshots*(nodes*(3*narrow + 1) + 1) + bins*((3 + points)*wide + 1)
             if (periods > 0) t = t + periods*((1 + 2*(1 + points))*wide + 1)

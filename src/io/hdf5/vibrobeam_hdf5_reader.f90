@@ -128,7 +128,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer(hid_t) :: dataset_id, file_space, memory_space
-      integer(hsize_t) :: offset(2), count(2), memory_dims(2)
+      integer(hsize_t) :: offset(3), count(3), memory_dims(2), file_dims(3), file_max(3)
       integer :: hdferr, rank, close_error
       values = 0
       if (size(values) == 0) then
@@ -147,10 +147,15 @@ contains
             offset(1) = int(first_row - 1, hsize_t)
             count(1) = memory_dims(2)
             call h5sselect_hyperslab_f(file_space, H5S_SELECT_SET_F, offset(1:1), count(1:1), hdferr)
-         else
-            offset = [0_hsize_t, int(first_row - 1, hsize_t)]
-            count = memory_dims
-            call h5sselect_hyperslab_f(file_space, H5S_SELECT_SET_F, offset, count, hdferr)
+         else if (rank == 2) then
+            offset(1:2) = [0_hsize_t, int(first_row - 1, hsize_t)]
+            count(1:2) = memory_dims
+            call h5sselect_hyperslab_f(file_space, H5S_SELECT_SET_F, offset(1:2), count(1:2), hdferr)
+         else   ! 3-d (rows, columns, layers): a row is every value of its two inner dimensions
+            call h5sget_simple_extent_dims_f(file_space, file_dims, file_max, hdferr)
+            offset = [0_hsize_t, 0_hsize_t, int(first_row - 1, hsize_t)]
+            count = [file_dims(1), file_dims(2), memory_dims(2)]
+            if (hdferr >= 0) call h5sselect_hyperslab_f(file_space, H5S_SELECT_SET_F, offset, count, hdferr)
          end if
       end if
       if (hdferr >= 0) call h5screate_simple_f(2, memory_dims, memory_space, hdferr)

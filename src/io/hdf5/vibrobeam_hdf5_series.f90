@@ -39,6 +39,7 @@ module vibrobeam_hdf5_series
       integer(hid_t) :: dataset = no_id
       integer :: columns = 1
       logical :: matrix = .false.            !! 2-d dataset (also for one column)
+      integer :: layers = 1                  !! > 1: a 3-d dataset (rows, columns/layers, layers)
       logical :: integers = .false.          !! stored as 64-bit integers
       integer(int64) :: written = 0          !! rows in the file
       integer :: buffered = 0                !! rows waiting in the buffer
@@ -91,8 +92,11 @@ contains
    end function series_buffer_rows
 
    !> Create the empty extendible dataset `path` with `columns` values per row, chunks of
-   !! `series_buffer_rows(columns)` rows, and its 'unit' attribute.
-   subroutine series_create(self, writer, path, columns, unit, stat, errmsg, integers, matrix)
+   !! `series_buffer_rows(columns)` rows, and its 'unit' attribute. With `layers` > 1 a row
+   !! is columns/layers values of each of `layers` layers, the layer fastest, and the
+   !! dataset is 3-d: (rows, columns/layers, layers) in HDF5's order (a beam of two planes'
+   !! histories of a deflection at several points: their last dimension y, z).
+   subroutine series_create(self, writer, path, columns, unit, stat, errmsg, integers, matrix, layers)
       class(h5_series), intent(inout) :: self
       type(h5_writer), intent(in) :: writer
       character(len=*), intent(in) :: path, unit
@@ -101,8 +105,9 @@ contains
       character(len=*), intent(out) :: errmsg
       logical, intent(in), optional :: integers   !! store 64-bit integers (default: reals)
       logical, intent(in), optional :: matrix     !! 2-d even with one column (default: columns > 1)
+      integer, intent(in), optional :: layers     !! a 3-d dataset of `layers` layers (columns a multiple)
       integer(hid_t) :: space_id, properties, access
-      integer(hsize_t) :: dims(2), max_dims(2), chunk(2)
+      integer(hsize_t) :: dims(3), max_dims(3), chunk(3)
       character(len=:), allocatable :: failed_step, reason
       integer :: hdferr, rank, capacity, allocation_stat
       stat = 0
@@ -112,6 +117,8 @@ contains
       if (present(integers)) self%integers = integers
       self%matrix = columns > 1
       if (present(matrix)) self%matrix = matrix .or. columns > 1
+      self%layers = 1
+      if (present(layers)) self%layers = max(1, layers)
       self%path = trim(path)
       self%file = writer%temporary_file()
       self%written = 0
@@ -128,16 +135,21 @@ contains
             ': the path already exists')
          return
       end if
-      if (self%matrix) then
+      if (self%layers > 1) then
+         rank = 3
+         dims = [int(self%layers, hsize_t), int(columns/self%layers, hsize_t), 0_hsize_t]
+         max_dims = [int(self%layers, hsize_t), int(columns/self%layers, hsize_t), H5S_UNLIMITED_F]
+         chunk = [int(self%layers, hsize_t), int(columns/self%layers, hsize_t), int(capacity, hsize_t)]
+      else if (self%matrix) then
          rank = 2
-         dims = [int(columns, hsize_t), 0_hsize_t]
-         max_dims = [int(columns, hsize_t), H5S_UNLIMITED_F]
-         chunk = [int(columns, hsize_t), int(capacity, hsize_t)]
+         dims(1:2) = [int(columns, hsize_t), 0_hsize_t]
+         max_dims(1:2) = [int(columns, hsize_t), H5S_UNLIMITED_F]
+         chunk(1:2) = [int(columns, hsize_t), int(capacity, hsize_t)]
       else
          rank = 1
-         dims = 0
-         max_dims = H5S_UNLIMITED_F
-         chunk = int(capacity, hsize_t)
+         dims(1) = 0
+         max_dims(1) = H5S_UNLIMITED_F
+         chunk(1) = int(capacity, hsize_t)
       end if
       properties = no_id
       access = no_id
@@ -188,7 +200,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer(hid_t) :: file_space, memory_space
-      integer(hsize_t) :: offset(2), count(2), extent(2)
+      integer(hsize_t) :: offset(3), count(3), extent(3)
       integer(int64), allocatable :: counts(:, :)
       character(len=:), allocatable :: reason
       integer :: hdferr, rank
@@ -199,11 +211,17 @@ contains
          call fail(stat, errmsg, 'cannot write ' // describe(self%path, self%file) // ': the dataset is not open')
          return
       end if
-      if (self%matrix) then
+      if (self%layers > 1) then
+         rank = 3
+         extent = [int(self%layers, hsize_t), int(self%columns/self%layers, hsize_t), &
+                   int(self%written + self%buffered, hsize_t)]
+         offset = [0_hsize_t, 0_hsize_t, int(self%written, hsize_t)]
+         count = [int(self%layers, hsize_t), int(self%columns/self%layers, hsize_t), int(self%buffered, hsize_t)]
+      else if (self%matrix) then
          rank = 2
-         extent = [int(self%columns, hsize_t), int(self%written + self%buffered, hsize_t)]
-         offset = [0_hsize_t, int(self%written, hsize_t)]
-         count = [int(self%columns, hsize_t), int(self%buffered, hsize_t)]
+         extent(1:2) = [int(self%columns, hsize_t), int(self%written + self%buffered, hsize_t)]
+         offset(1:2) = [0_hsize_t, int(self%written, hsize_t)]
+         count(1:2) = [int(self%columns, hsize_t), int(self%buffered, hsize_t)]
       else
          rank = 1
          extent(1) = int(self%written + self%buffered, hsize_t)

@@ -1,0 +1,100 @@
+#!/usr/bin/env python3
+"""The histories of a beam of two planes at the tip and at the observation points
+(docs/output.md: /tip/displacement and /tip/velocity (outputs, 2), /points/displacement and
+/points/velocity (outputs, points, 2), y then z; STEM_tip.dat and STEM_points.dat with the
+z columns after the planar ones), against the planar run of the same beam.
+
+usage: check_planes_points.py VIBROBEAM
+
+A forced cantilever with two observation points, free of obstacles, runs planar, then with
+&beam planes = 2 and its load and initial velocity along y (direction 0) and along z
+(direction 90): directions that are multiples of 90 degrees are exact (docs/input.md,
+"&beam"), so the plane that carries the data equals the planar run bit for bit and the other
+holds exact zeros, in the HDF5 histories and in the text files' columns.
+Exit status 0 when every check holds, 1 otherwise (one line per failure), 77 without h5py.
+"""
+import os
+import subprocess
+import sys
+import tempfile
+
+try:
+    import numpy as np
+    import h5py
+except ImportError:
+    print('SKIP: no python3 with h5py (Debian package python3-h5py)')
+    sys.exit(77)
+
+SCENE = """
+&beam      length = 0.5, youngs_modulus = 210e9, density = 7850, area = 6.938018879893839e-05,
+           inertia = 2.7642255353230253e-09, rayleigh_mass = 7.9193, rayleigh_stiffness = 5.9941e-06 {planes} /
+&mesh      elements = 8 /
+&time      t_end = 0.02, dt = 2e-5 /
+&load      point_force = 5.0, point_frequency = 300.0 {direction} /
+&initial   velocity = 'mode', velocity_mode = 1, velocity_amplitude = 0.3 {direction} /
+&output    file = '{name}.h5', text = .true., points = 0.2, 0.35 /
+"""
+failures = []
+
+
+def check(what, holds):
+    print(('ok   ' if holds else 'FAIL ') + what)
+    if not holds:
+        failures.append(what)
+
+
+def run(vibrobeam, folder, name, planes='', direction=''):
+    with open(os.path.join(folder, name + '.nml'), 'w') as handle:
+        handle.write(SCENE.format(planes=planes, direction=direction, name=name))
+    done = subprocess.run([vibrobeam, name + '.nml'], cwd=folder, capture_output=True, text=True, timeout=120)
+    if done.returncode != 0:
+        sys.exit(f'vibrobeam {name}.nml exited {done.returncode}: {done.stderr}')
+    with h5py.File(os.path.join(folder, name + '.h5'), 'r') as result:
+        histories = {path: result[path][...] for path in
+                     ['tip/displacement', 'tip/velocity', 'points/displacement', 'points/velocity']}
+    text = {kind: np.loadtxt(os.path.join(folder, f'{name}_{kind}.dat'), comments='#', ndmin=2)
+            for kind in ['tip', 'points']}
+    return histories, text
+
+
+def main():
+    vibrobeam = sys.argv[1]
+    with tempfile.TemporaryDirectory() as folder:
+        planar, planar_text = run(vibrobeam, folder, 'planar')
+        points = planar['points/displacement'].shape[1]
+        check('the planar run has 2 observation points and moves', points == 2 and
+              np.abs(planar['points/displacement']).max() > 0)
+        for name, direction, carrier in [('along_y', ', direction = 0', 0), ('along_z', ', direction = 90', 1)]:
+            turned, turned_text = run(vibrobeam, folder, name, ', planes = 2', direction)
+            for path in ['tip/displacement', 'tip/velocity', 'points/displacement', 'points/velocity']:
+                values = turned[path]
+                shape = planar[path].shape + (2,)
+                check(f'{name}: /{path} has the shape {shape} (y, z last)', values.shape == shape)
+                if values.shape != shape:
+                    continue
+                check(f'{name}: /{path} in the plane of the data equals the planar run bit for bit',
+                      np.array_equal(values[..., carrier], planar[path]))
+                check(f'{name}: /{path} in the other plane is exactly 0',
+                      not np.any(values[..., 1 - carrier]))
+            # the text files: the planar columns in their places, the z plane's after them
+            for kind, planar_columns in [('tip', planar_text['tip'].shape[1]),
+                                         ('points', planar_text['points'].shape[1])]:
+                table = turned_text[kind]
+                moving = 2 if kind == 'tip' else 2 * points
+                check(f'{name}: {name}_{kind}.dat has {planar_columns} + {moving} columns',
+                      table.shape == (planar_text[kind].shape[0], planar_columns + moving))
+                if table.shape[1] != planar_columns + moving:
+                    continue
+                reference = planar_text[kind][:, 1:1 + moving]   # u then v, planar
+                y_columns = table[:, 1:1 + moving]
+                z_columns = table[:, planar_columns:]
+                data, other = (y_columns, z_columns) if carrier == 0 else (z_columns, y_columns)
+                check(f'{name}: {name}_{kind}.dat, the plane of the data equals the planar columns',
+                      np.array_equal(data, reference))
+                check(f'{name}: {name}_{kind}.dat, the other plane is 0', not np.any(other))
+    print(f'check_planes_points: {len(failures)} failure(s)')
+    return 1 if failures else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
