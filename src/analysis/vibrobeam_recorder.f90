@@ -48,7 +48,7 @@ module vibrobeam_recorder
    use vibrobeam_statistics_output, only: statistics_datasets
    implicit none
    private
-   public :: dynamics_recorder, default_episode_gap, history_paths
+   public :: dynamics_recorder, default_episode_gap, history_paths, statistics_options
 
    type :: dynamics_recorder
       integer(int64) :: every = 1, field_every = 1   !! output intervals (steps)
@@ -120,6 +120,23 @@ module vibrobeam_recorder
    end type dynamics_recorder
 
 contains
+
+   !> What the statistics of `scene` hold beyond the planar ones (`vibrobeam_statistics_layout`),
+   !! `option` 'wear_volume' (some obstacle of a beam of two planes gives a wear_coefficient)
+   !! or 'friction' (some gives a friction coefficient, 0 too): one rule for a run's layout
+   !! and a sweep's, whose every point must hold the same.
+   pure logical function statistics_options(scene, option)
+      type(scene_type), intent(in) :: scene
+      character(len=*), intent(in) :: option
+      statistics_options = .false.
+      if (scene%beam%plane_count() /= 2) return
+      select case (option)
+      case ('wear_volume')
+         statistics_options = any(.not. is_unset(scene%obstacles%wear_coefficient))
+      case ('friction')
+         statistics_options = any(.not. is_unset(scene%obstacles%friction))
+      end select
+   end function statistics_options
 
    !> The default of &output episode_gap: 0.05 of the period 2 pi/omega of the first
    !! flexible mode of the beam on the model's supports (`reference_frequencies`: the
@@ -206,8 +223,8 @@ contains
       call self%statistics%init(window_first_step(scene%output%measure_from, scene%time%dt), last_step, scene%time%dt, &
                                 1 + size(self%point_x), stepper%contacts%lower_obstacle, &
                                 stepper%contacts%upper_obstacle, size(scene%obstacles), omega, phase, &
-                                scene%output%lyapunov, stepper, stepper%holes%circles%count, self%wear%volume, &
-                                self%planes == 2 .and. any(.not. is_unset(scene%obstacles%friction)))
+                                scene%output%lyapunov, stepper, stepper%holes%circles%count, &
+                                statistics_options(scene, 'wear_volume'), statistics_options(scene, 'friction'))
       if (problem%reduced) then
          self%reduction = problem%reduction
          allocate (self%observed_rows(problem%reduction%boundary + problem%reduction%modes, size(self%observed_dofs, 2)))

@@ -17,8 +17,9 @@ module vibrobeam_sweep
    use vibrobeam_kinds, only: dp, error_unit
    use vibrobeam_status, only: outcome_ok, outcome_interrupted, outcome_name, stat_failure, stat_invalid_input
    use vibrobeam_text, only: real_text, integer_text
-   use vibrobeam_scene, only: scene_type, is_unset
+   use vibrobeam_scene, only: scene_type
    use vibrobeam_problem, only: run_problem, build_problem
+   use vibrobeam_recorder, only: statistics_options
    use vibrobeam_checkpoint, only: read_checkpoint
    use vibrobeam_restart_check, only: check_compatible
    use vibrobeam_state_record, only: state_record
@@ -112,8 +113,8 @@ contains
       call sweep_start_state(scene, settings, first_scene, first, base, stat, errmsg)
       if (stat /= 0) return
       call layout%init(1 + size(first_scene%output%points), first%contacts%count, size(first_scene%obstacles), &
-                       first%circles%count, any(.not. is_unset(first_scene%obstacles%wear_coefficient)), &
-                       first_scene%beam%plane_count() == 2 .and. any(.not. is_unset(first_scene%obstacles%friction)))
+                       first%circles%count, statistics_options(first_scene, 'wear_volume'), &
+                       statistics_options(first_scene, 'friction'))
       fingerprint = sweep_fingerprint(scene, settings, base)
       ! the partial directory: rank 0 makes and locks it, then every rank reads it
       if (rank == 0) then

@@ -11,7 +11,7 @@ module vibrobeam_sweep_text
    use vibrobeam_text_derivation, only: derivation, text_sink
    implicit none
    private
-   public :: sweep_files, table_column, column_lines, read_table, axis_label
+   public :: sweep_files, table_column, column_lines, read_table, axis_label, sweep_block
 
    !> Points (samples) read at a time.
    integer, parameter :: sweep_block = 4096

@@ -10,12 +10,10 @@ module vibrobeam_sweep_wear_text
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_text_derivation, only: derivation, text_sink
    use vibrobeam_statistics_layout, only: wear_names
-   use vibrobeam_sweep_text, only: table_column, column_lines, read_table, axis_label
+   use vibrobeam_sweep_text, only: table_column, column_lines, read_table, axis_label, sweep_block
    implicit none
    private
    public :: sweep_wear_file
-
-   integer, parameter :: sweep_block = 4096   !! sweep points read at a time
 
 contains
 
