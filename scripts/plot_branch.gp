@@ -1,14 +1,18 @@
 # A continued branch of periodic orbits (&periodic parameter, docs/method.md
 # "Continuation of periodic orbits"): the tip's amplitude (largest |u| over the orbit)
 # against the parameter, stable points joined by a solid line, unstable ones by a dashed
-# line, the folds, period doublings, Neimark-Sacker and grazing points located on it
-# marked; and the largest Floquet multiplier's modulus along the branch against |mu| = 1. With
+# line, the folds, period doublings, Neimark-Sacker, grazing and branch points located on it
+# marked; with &periodic switch_branch the branch of twice the period (stem_branch_2.dat,
+# stem_bifurcations_2.dat) on the same axes, green stable and orange dashed unstable, its
+# branch points marked; and the largest Floquet multiplier's modulus along the branches
+# against |mu| = 1. With
 # -e "sweep='STEM2'" the points of a time-marching sweep of the same scene
 # (STEM2_sweep.dat, its tip_displacement_max, up and down branches apart) are drawn over
 # the branch: they lie on its stable parts and jump at its folds.
 # usage: gnuplot -e "stem='results/compliant_stop_branch'" scripts/plot_branch.gp
 # needs: branch
-# reads  stem_branch.dat and stem_bifurcations.dat (docs/output.md, "Text files");
+# reads  stem_branch.dat and stem_bifurcations.dat (docs/output.md, "Text files"), and
+#        stem_branch_2.dat and stem_bifurcations_2.dat when they exist;
 # writes stem_branch.png
 if (!exists("stem")) stem = 'results/vibrobeam'
 branch = stem.'_branch.dat'
@@ -21,6 +25,10 @@ s = col(branch, 'stable')
 m = col(branch, 'largest_multiplier')
 xlabel = system("sed -n 's/^# [0-9]*: parameter (\\([^)]*\\)) \\(.*\\)$/\\2 (\\1)/p' '".branch."'")
 have_found = int(system("awk '!/^#/ && NF {n++} END {print n + 0}' '".found."' 2> /dev/null")) > 0
+branch2 = stem.'_branch_2.dat'
+found2 = stem.'_bifurcations_2.dat'
+have_branch2 = int(system("awk '!/^#/ && NF {n++} END {print n + 0}' '".branch2."' 2> /dev/null")) > 0
+have_found2 = int(system("awk '!/^#/ && NF {n++} END {print n + 0}' '".found2."' 2> /dev/null")) > 0
 set terminal pngcairo size 1200,1000 noenhanced
 set output stem.'_branch.png'
 set multiplot layout 2,1 title 'Continued branch: '.stem
@@ -42,6 +50,16 @@ if (have_found) {
               "found using (column(fp)):(column(k) == 3 ? column(fa)*1e3 : NaN) with points pt 9 ps 1.8 lc rgb '#9467bd' title 'Neimark-Sacker', ".\
               "found using (column(fp)):(column(k) == 4 ? column(fa)*1e3 : NaN) with points pt 13 ps 1.6 lc rgb '#e377c2' title 'grazing'"
 }
+if (have_branch2) {
+   plot_cmd = plot_cmd.", branch2 using (column(p)):(stable_y(column(a)*1e3, column(s))) with lines lw 2 lc rgb '#2ca02c' title 'twice the period, stable', ".\
+              "branch2 using (column(p)):(unstable_y(column(a)*1e3, column(s))) with lines lw 2 dt 2 lc rgb '#ff7f0e' title 'twice the period, unstable'"
+}
+if (have_found2) {
+   k = col(found2, 'kind')
+   fp = col(found2, 'parameter')
+   fa = col(found2, 'amplitude')
+   plot_cmd = plot_cmd.", found2 using (column(fp)):(column(k) == 5 ? column(fa)*1e3 : NaN) with points pt 11 ps 1.8 lc rgb '#17becf' title 'branch point'"
+}
 if (exists("sweep")) {
    swept = sweep.'_sweep.dat'
    sp = col(swept, 'parameter')
@@ -53,6 +71,10 @@ if (exists("sweep")) {
 eval('plot '.plot_cmd)
 set ylabel 'largest |mu|'
 set key top right
-plot branch using (column(p)):(column(m)) with linespoints pt 7 ps 0.6 lw 1 lc rgb '#1f77b4' title 'largest Floquet multiplier modulus', \
-     1 with lines dt 2 lc rgb '#d62728' title '|mu| = 1'
+multipliers = "branch using (column(p)):(column(m)) with linespoints pt 7 ps 0.6 lw 1 lc rgb '#1f77b4' title 'largest Floquet multiplier modulus', ".\
+              "1 with lines dt 2 lc rgb '#d62728' title '|mu| = 1'"
+if (have_branch2) {
+   multipliers = multipliers.", branch2 using (column(p)):(column(m)) with linespoints pt 7 ps 0.6 lw 1 lc rgb '#2ca02c' title 'twice the period'"
+}
+eval('plot '.multipliers)
 unset multiplot

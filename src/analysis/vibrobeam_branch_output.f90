@@ -1,13 +1,15 @@
 !> A continuation from start to published result (&analysis kind = 'periodic' with
 !! &periodic parameter; docs/method.md, "Continuation of periodic orbits"; docs/output.md,
 !! "Continued branch"): the branch of `continue_branch` written to /periodic/branch and
-!! /periodic/branch/bifurcations, published at once like every result (a temporary file
-!! renamed when complete); a branch that ended early is published too, marked 'failed'
-!! with the reason in /periodic failure.
+!! /periodic/branch/bifurcations, and with &periodic switch_branch the branch of twice the
+!! period (`switch_branch`) to /periodic/branch_2 beside it, published at once like every
+!! result (a temporary file renamed when complete); a branch that ended early is published
+!! too, marked 'failed' with the reason in /periodic failure.
 module vibrobeam_branch_output
    use vibrobeam_kinds, only: dp
-   use vibrobeam_status, only: stat_ok, outcome_interrupted
+   use vibrobeam_status, only: stat_ok, outcome_ok, outcome_interrupted
    use vibrobeam_text, only: integer_text
+   use vibrobeam_branch_switch, only: switched_branch, switch_branch
    use vibrobeam_scene, only: scene_type
    use vibrobeam_problem, only: run_problem
    use vibrobeam_continuation, only: continuation_branch, continue_branch, bifurcation_names
@@ -33,11 +35,25 @@ contains
       type(progress_meter) :: meter
       type(result_files) :: files
       type(run_summary) :: summary
+      type(switched_branch) :: second
       call meter%init(scene%output%progress)
       call continue_branch(scene, prepared, branch, stat, errmsg)
       if (stat /= 0) return
+      if (scene%periodic%switch_branch .and. branch%status == outcome_ok) then
+         call switch_branch(scene, branch, second, stat, errmsg)
+         if (stat /= 0) return
+         if (second%switched .and. second%branch%status /= outcome_ok) then
+            branch%status = second%branch%status
+            branch%failure = 'the branch of twice the period: '//trim(second%branch%failure)
+         end if
+         branch%steps_taken = branch%steps_taken + second%branch%steps_taken
+      end if
       call files%open(scene, prepared%model, stat, errmsg)
-      if (stat == stat_ok) call write_branch(files, branch, stat, errmsg)
+      if (stat == stat_ok) call write_branch(files, '/periodic/branch', branch, stat, errmsg)
+      if (stat == stat_ok .and. second%switched) call write_switched(files, second, stat, errmsg)
+      if (stat == stat_ok .and. len_trim(second%note) > 0) &
+         call files%h5%attr_string('/periodic', 'switch_branch', trim(second%note), stat, errmsg)
+      if (stat == stat_ok) call write_cost(files, branch, stat, errmsg)
       summary%status = branch%status
       summary%steps = branch%steps_taken
       summary%wall_seconds = meter%elapsed()
@@ -53,17 +69,49 @@ contains
       outcome%bifurcations = size(branch%bifurcations)
    end subroutine run_continuation
 
-   !> /periodic (what the branch cost and how it ended), /periodic/branch (one value per
-   !! point) and /periodic/branch/bifurcations (docs/output.md, "Continued branch").
-   subroutine write_branch(files, branch, stat, errmsg)
+   !> /periodic/branch_2 (docs/output.md, "Continued branch"): the branch of twice the
+   !! period as /periodic/branch, and where it came from.
+   subroutine write_switched(files, second, stat, errmsg)
+      type(result_files), intent(inout) :: files
+      type(switched_branch), intent(in) :: second
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=*), parameter :: group = '/periodic/branch_2'
+      call write_branch(files, group, second%branch, stat, errmsg)
+      if (stat == 0) call files%h5%attr_int(group, 'period_multiple', second%period_multiple, stat, errmsg)
+      if (stat == 0) call files%h5%attr_real(group, 'doubling', second%doubling, stat, errmsg)
+      if (stat == 0) call files%h5%attr_real(group, 'start', second%start, stat, errmsg)
+      if (stat == 0) call files%h5%attr_real(group, 'move', second%move, stat, errmsg)
+      if (stat == 0) call files%h5%attr_int(group, 'towards_points', second%towards_points, stat, errmsg)
+      if (stat == 0) call files%h5%attr_int64(group, 'steps_taken', second%branch%steps_taken, stat, errmsg)
+   end subroutine write_switched
+
+   !> /periodic: what the continuation cost and how it ended.
+   subroutine write_cost(files, branch, stat, errmsg)
       type(result_files), intent(inout) :: files
       type(continuation_branch), intent(in) :: branch
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      character(len=*), parameter :: group = '/periodic/branch', found = '/periodic/branch/bifurcations'
+      call files%h5%attr_string('/periodic', 'monodromy', trim(branch%monodromy), stat, errmsg)
+      if (stat == 0) call files%h5%attr_int64('/periodic', 'steps_taken', branch%steps_taken, stat, errmsg)
+      if (stat == 0) call files%h5%attr_int64('/periodic', 'orbit_steps', branch%orbit_steps, stat, errmsg)
+      if (stat == 0 .and. len_trim(branch%failure) > 0) &
+         call files%h5%attr_string('/periodic', 'failure', trim(branch%failure), stat, errmsg)
+   end subroutine write_cost
+
+   !> `group` (one value per point) and group/bifurcations (docs/output.md, "Continued
+   !! branch") of `branch`.
+   subroutine write_branch(files, group, branch, stat, errmsg)
+      type(result_files), intent(inout) :: files
+      character(len=*), intent(in) :: group
+      type(continuation_branch), intent(in) :: branch
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=:), allocatable :: found
       integer :: k
       stat = 0
       errmsg = ''
+      found = group//'/bifurcations'
       associate (points => branch%points, bifurcations => branch%bifurcations)
          call files%h5%write_real_1d(group//'/parameter', points%parameter, trim(branch%axis%unit), stat, errmsg)
          if (stat == 0) call files%h5%attr_string(group, 'parameter', trim(branch%axis%parameter), stat, errmsg)
@@ -85,11 +133,6 @@ contains
          if (stat == 0) call files%h5%write_int_1d(found//'/index', bifurcations%index, stat, errmsg)
          if (stat == 0) call files%h5%write_int_1d(found//'/located', merge(1, 0, bifurcations%located), stat, errmsg)
       end associate
-      if (stat == 0) call files%h5%attr_string('/periodic', 'monodromy', trim(branch%monodromy), stat, errmsg)
-      if (stat == 0) call files%h5%attr_int64('/periodic', 'steps_taken', branch%steps_taken, stat, errmsg)
-      if (stat == 0) call files%h5%attr_int64('/periodic', 'orbit_steps', branch%orbit_steps, stat, errmsg)
-      if (stat == 0 .and. len_trim(branch%failure) > 0) &
-         call files%h5%attr_string('/periodic', 'failure', trim(branch%failure), stat, errmsg)
    contains
       !> '1 fold, 2 period-doubling, 3 neimark-sacker, 4 grazing'.
       function kinds_text() result(text)

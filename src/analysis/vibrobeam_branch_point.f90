@@ -4,21 +4,31 @@
 !! sign change between two consecutive points reports a bifurcation there: the tangent's
 !! lambda component (fold), det(M + I) (period doubling), |mu|^2 - 1 of the largest
 !! complex pair (Neimark-Sacker), the orbit's smallest clearance to the obstacles
-!! (grazing).
+!! (grazing); on a branch of 2k forcing periods also the fifth, set by
+!! `vibrobeam_continuation` from the map of k periods (`half_period_test`): where the
+!! orbit becomes one of k periods, a branch point of the 2k-period map.
 module vibrobeam_branch_point
    use vibrobeam_kinds, only: dp
    implicit none
    private
    public :: branch_point, bifurcation_point, bifurcation_names, test_count, kind_grazing
-   public :: set_test_functions, changes_sign
+   public :: kind_fold, kind_doubling, kind_branch_point
+   public :: set_test_functions, changes_sign, half_period_test
 
    !> How many test functions a branch point carries (and kinds of bifurcation there are).
-   integer, parameter :: test_count = 4
+   integer, parameter :: test_count = 5
    !> The kinds of bifurcation, in the order of the test functions.
    character(len=*), parameter :: bifurcation_names(test_count) = [character(len=15) :: 'fold', &
-                                                                   'period-doubling', 'neimark-sacker', 'grazing']
+                                                                   'period-doubling', 'neimark-sacker', 'grazing', &
+                                                                   'branch-point']
+   !> The kind of a fold (the tangent's lambda component through zero) and of a period
+   !! doubling (det(M + I) through zero).
+   integer, parameter :: kind_fold = 1, kind_doubling = 2
    !> The kind of a grazing: the smallest clearance through zero.
    integer, parameter :: kind_grazing = 4
+   !> The kind of a branch point of the 2k-period map where its orbit becomes one of k
+   !! periods (`half_period_test` through zero; only on a branch of an even period_multiple).
+   integer, parameter :: kind_branch_point = 5
 
    !> One point of the branch: a converged orbit.
    type :: branch_point
@@ -34,13 +44,15 @@ module vibrobeam_branch_point
       real(dp) :: period = 0                      !! the orbit's period, k P dt (s)
       real(dp) :: step = 0                        !! the arclength step that reached it (scaled)
       integer :: iterations = 0                   !! corrector's Newton iterations
+      !> a branch of 2k periods: Phi_k(x) - x, the map of k periods' move of x (2 J)
+      real(dp), allocatable :: half_shift(:)
       !> the test functions (`set_test_functions`), in the order of `bifurcation_names`
       real(dp) :: tests(test_count) = 0
    end type branch_point
 
    !> A bifurcation located between two branch points.
    type :: bifurcation_point
-      !> 1 fold, 2 period doubling, 3 Neimark-Sacker, 4 grazing (`bifurcation_names`)
+      !> 1 fold, 2 period doubling, 3 Neimark-Sacker, 4 grazing, 5 branch point (`bifurcation_names`)
       integer :: kind = 0
       real(dp) :: parameter = 0            !! lambda where the test function vanishes
       real(dp) :: amplitude = 0            !! the tip's amplitude there (m)
@@ -74,6 +86,27 @@ contains
       end do
       point%tests(kind_grazing) = point%minimum_gap
    end subroutine set_test_functions
+
+   !> The test function of a branch point of the map of 2k periods, sigma rho -
+   !! sqrt(tolerance): rho = ||Phi_k(x) - x||/max(||x||, ||Phi_k(x)||) (`shift` over
+   !! `size`, energy norm), how far the map of k periods moves the orbit of 2k periods,
+   !! and sigma = +-1 whether it moves it the way it moved the point before (the two phases
+   !! of the orbit swap where a branch passes through the branch point). Positive on an
+   !! orbit of 2k periods whose phases lie more than sqrt(tolerance) apart; about
+   !! -sqrt(tolerance) on one of k periods (its rho is of Newton's tolerance). Near the
+   !! branch point (a pitchfork of the 2k-period map) rho grows linearly along the branch,
+   !! like the phases' distance c, while lambda moves like c^2: the zero lies where rho =
+   !! sqrt(tolerance), within (d lambda/d rho^2) tolerance of the branch point in lambda
+   !! (docs/method.md, "Branch switching at a period doubling"). A branch switch accepts a
+   !! start that converged where this is positive.
+   pure real(dp) function half_period_test(shift, size, same_way, tolerance)
+      real(dp), intent(in) :: shift, size, tolerance
+      logical, intent(in) :: same_way
+      real(dp) :: rho
+      rho = shift
+      if (size > 0) rho = shift/size
+      half_period_test = merge(1.0_dp, -1.0_dp, same_way)*rho - sqrt(tolerance)
+   end function half_period_test
 
    !> a and b of strictly opposite signs (without their product, which overflows for the
    !! clearance of a scene without obstacles, huge).

@@ -1,5 +1,7 @@
 !> The text files of a continued branch (docs/output.md, "Text files"): STEM_branch.dat,
-!! one row per branch point, and STEM_bifurcations.dat, one row per bifurcation located,
+!! one row per branch point, and STEM_bifurcations.dat, one row per bifurcation located
+!! (and STEM_branch_2.dat, STEM_bifurcations_2.dat of the branch of twice the period,
+!! /periodic/branch_2, when the result holds one),
 !! each column named in a header line as in the sweep files ('# 2: amplitude (m)'), read
 !! from its dataset of /periodic/branch (`vibrobeam_sweep_text`'s table columns).
 module vibrobeam_branch_text
@@ -10,19 +12,30 @@ module vibrobeam_branch_text
    private
    public :: branch_files
 
-   character(len=*), parameter :: group = '/periodic/branch', found = '/periodic/branch/bifurcations'
-
 contains
 
-   !> STEM_branch.dat and STEM_bifurcations.dat of the branch in the open result.
+   !> STEM_branch.dat and STEM_bifurcations.dat of the branch in the open result, and
+   !! STEM_branch_2.dat and STEM_bifurcations_2.dat of the switched branch when it holds one.
    subroutine branch_files(run, stat, errmsg)
       type(derivation), intent(inout) :: run
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      call branch_tables(run, '/periodic/branch', '', stat, errmsg)
+      if (stat == 0 .and. run%file%exists('/periodic/branch_2/parameter')) &
+         call branch_tables(run, '/periodic/branch_2', '_2', stat, errmsg)
+   end subroutine branch_files
+
+   !> STEM_branch<tail>.dat and STEM_bifurcations<tail>.dat of the branch in `group`.
+   subroutine branch_tables(run, group, tail, stat, errmsg)
+      type(derivation), intent(inout) :: run
+      character(len=*), intent(in) :: group, tail
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
       type(table_column) :: bifurcations(5)
       type(table_column), allocatable :: points(:)
-      character(len=:), allocatable :: parameter, gap
+      character(len=:), allocatable :: parameter, gap, found
       integer :: integers
+      found = group//'/bifurcations'
       call run%file%attr_string(group, 'parameter', parameter, stat, errmsg)
       if (stat /= 0) return
       points = [table_column('parameter', group//'/parameter', note=parameter), &
@@ -39,16 +52,17 @@ contains
          gap = ', the smallest clearance of the contact points to their obstacles over the orbit (m)'
          integers = 0
       end if
-      call write_table('branch', 'one row per point of the continued branch, in its order: the parameter, the '// &
+      call write_table('branch'//tail, 'one row per point of the continued branch, in its order: the parameter, the '// &
                        'largest |u| of the tip over the orbit, the period, the largest |mu|, 1 stable '// &
                        '(every |mu| < 1) or 0, the corrector''s Newton iterations'//gap, points, group//'/parameter', &
                        integers, stat, errmsg)
       if (stat /= 0) return
       bifurcations = [table_column('parameter', found//'/parameter', note=parameter), &
                       table_column('amplitude', found//'/amplitude'), &
-                      table_column('kind', found//'/kind', note='1 fold, 2 period-doubling, 3 neimark-sacker, 4 grazing'), &
+                      table_column('kind', found//'/kind', note='1 fold, 2 period-doubling, 3 neimark-sacker, 4 grazing, '// &
+                                   '5 branch-point'), &
                       table_column('index', found//'/index'), table_column('located', found//'/located')]
-      call write_table('bifurcations', 'one row per bifurcation located on the branch: its parameter, '// &
+      call write_table('bifurcations'//tail, 'one row per bifurcation located on the branch: its parameter, '// &
                        'amplitude and kind, the branch point before it, 1 when the test function''s zero was located (0: '// &
                        'the linear estimate between the two points)', bifurcations, found//'/kind', 3, stat, errmsg)
    contains
@@ -75,5 +89,5 @@ contains
          end do
          call run%close_sink(sink, stat, errmsg)
       end subroutine write_table
-   end subroutine branch_files
+   end subroutine branch_tables
 end module vibrobeam_branch_text

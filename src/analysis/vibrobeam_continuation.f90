@@ -6,8 +6,9 @@
 !! (Phi(x, lambda) - x = 0 and the arclength condition; LAPACK dgesv); the step halves
 !! when the corrector fails and grows when it converges easily. Along the branch: the
 !! Floquet multipliers, stability, and the sign changes of four test functions (fold,
-!! period doubling, Neimark-Sacker, grazing; `vibrobeam_branch_point`), each located by
-!! regula falsi on the arclength.
+!! period doubling, Neimark-Sacker, grazing; `vibrobeam_branch_point`), and on a branch
+!! of an even period_multiple 2k a fifth (where the orbit becomes one of k periods: a
+!! branch point, which ends the branch), each located by regula falsi on the arclength.
 !!
 !! lambda is any input a sweep may vary (`vibrobeam_continuation_axis`), set through the
 !! sweep's setter (`set_real_input`); each evaluation at a new lambda builds its problem
@@ -23,13 +24,15 @@ module vibrobeam_continuation
    use vibrobeam_sweep_axis, only: sweep_axis
    use vibrobeam_continuation_axis, only: resolve_continuation
    use vibrobeam_periodic_settings, only: forcing_frequency, period_step
-   use vibrobeam_problem, only: run_problem, build_problem
+   use vibrobeam_problem, only: run_problem
+   use vibrobeam_continuation_map, only: continuation_context, omega_at, problem_at, evaluate_at, &
+      parameter_derivative, residual
    use vibrobeam_period_map, only: period_map, map_image, jacobian_none, jacobian_linearised, jacobian_differences, &
       difference_fraction
    use vibrobeam_periodic_analysis, only: find_periodic_orbit, periodic_orbit, floquet_multipliers
    use vibrobeam_signals, only: interrupt_requested
    use vibrobeam_branch_point, only: branch_point, bifurcation_point, bifurcation_names, test_count, &
-      set_test_functions, changes_sign
+      set_test_functions, changes_sign, half_period_test, kind_fold, kind_branch_point
    use vibrobeam_lapack, only: dgesv
    implicit none
    private
@@ -69,39 +72,27 @@ module vibrobeam_continuation
       integer :: first_iterations = 0                  !! Newton iterations of the first orbit
    end type continuation_branch
 
-   !> What every evaluation needs: the base scene, the period map, the scaling.
-   type :: continuation_context
-      type(scene_type) :: scene
-      type(sweep_axis) :: axis
-      integer(int64) :: period_steps = 0                !! P, steps per forcing period, kept along the branch
-      type(period_map) :: map
-      type(run_problem) :: reference                   !! the start's problem: the norm of the residual
-      !> (2 J + 1) the weights of the scaled coordinates: of each unknown the square root
-      !! of its diagonal weight in the energy norm, of lambda 1 over the parameter's scale
-      real(dp), allocatable :: weights(:)
-      real(dp) :: largest_size = 0                     !! the largest weighted size of a point's x so far
-      integer :: jacobian = jacobian_linearised
-      real(dp) :: tolerance = 0
-   end type continuation_context
-
 contains
 
    !> The branch through the orbit of `scene` (kind = 'periodic', &periodic parameter
    !! given; `prepared` its problem) in `branch`. stat /= 0 (errmsg): invalid continuation
    !! input, a stepper or problem that cannot be made; a branch that ends early is
-   !! branch%status = outcome_failed with the reason, its points kept.
-   subroutine continue_branch(scene, prepared, branch, stat, errmsg)
+   !! branch%status = outcome_failed with the reason, its points kept. `start_state` (optional,
+   !! (U, V)): Newton's start for the first orbit instead of the scene's transient (a
+   !! branch switch, `vibrobeam_branch_switch`).
+   subroutine continue_branch(scene, prepared, branch, stat, errmsg, start_state)
       type(scene_type), intent(in) :: scene
       type(run_problem), intent(in) :: prepared
       type(continuation_branch), intent(out) :: branch
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      real(dp), intent(in), optional :: start_state(:)
       type(continuation_context) :: run
       type(periodic_orbit) :: orbit
       type(branch_point) :: first, next
       real(dp) :: start, first_step, ds, lambda_scale
       real(dp), allocatable :: seed(:)
-      logical :: converged, beyond
+      logical :: converged, beyond, rejoins
       integer :: halvings, m, before, kind, kept
       call resolve_continuation(scene, branch%axis, start, stat, errmsg)
       if (stat /= 0) return
@@ -112,11 +103,16 @@ contains
       run%reference = prepared
       run%tolerance = scene%periodic%tolerance
       allocate (branch%points(0), branch%bifurcations(0))
-      call find_periodic_orbit(scene, prepared, orbit, stat, errmsg)
+      call find_periodic_orbit(scene, prepared, orbit, stat, errmsg, start=start_state)
       if (stat /= 0) return
       branch%monodromy = orbit%monodromy
       branch%first_iterations = orbit%iterations
       run%map = orbit%map
+      if (mod(scene%periodic%period_multiple, 2) == 0) then
+         run%half_map = orbit%map
+         run%half_map%steps = orbit%map%steps/2
+         run%half_map%steps_taken = 0
+      end if
       branch%orbit_steps = orbit%map%steps
       run%jacobian = merge(jacobian_linearised, jacobian_differences, orbit%monodromy == 'linearised')
       if (.not. orbit%converged .or. orbit%status /= outcome_ok) then
@@ -166,6 +162,7 @@ contains
             exit
          end if
          associate (last => branch%points(size(branch%points)))
+            if (allocated(last%half_shift)) run%shift_reference = last%half_shift
             call correct(run, last, ds, next, converged, stat, errmsg)
          end associate
          if (stat /= 0) return
@@ -188,23 +185,32 @@ contains
          halvings = 0
          ! the point, and each test function's sign change since the point before, located;
          ! a point beyond the bounds ends the branch unkept, but a bifurcation between the
-         ! last point and it that lies within them is kept
+         ! last point and it that lies within them is kept; so does a branch point of the
+         ! 2k-period map (the point is on the orbit of k periods; the lambda-tangent's sign
+         ! change that comes with it where the branch turns onto the orbit's other phase is
+         ! that point, not a fold)
          beyond = outside(scene, next%parameter)
          before = size(branch%points)
-         if (.not. beyond) branch%points = [branch%points, next]
+         rejoins = changes_sign(branch%points(before)%tests(kind_branch_point), next%tests(kind_branch_point))
+         if (.not. (beyond .or. rejoins)) branch%points = [branch%points, next]
          do kind = 1, test_count
+            if (kind == kind_fold .and. rejoins) cycle
             if (.not. changes_sign(branch%points(before)%tests(kind), next%tests(kind))) cycle
             kept = size(branch%bifurcations)
-            call locate(run, branch%points(before), next, kind, before, branch%bifurcations, stat, errmsg)
+            if (kind == kind_branch_point) then
+               call locate_rejoin(run, branch%points(before), next, before, branch%bifurcations, stat, errmsg)
+            else
+               call locate(run, branch%points(before), next, kind, before, branch%bifurcations, stat, errmsg)
+            end if
             if (stat /= 0) return
             if (beyond) then
                if (outside(scene, branch%bifurcations(kept + 1)%parameter)) branch%bifurcations = branch%bifurcations(1:kept)
             end if
          end do
-         if (beyond) exit
+         if (beyond .or. rejoins) exit
          if (next%iterations <= easy_iterations) ds = min(step_growth*ds, largest_step*first_step)
       end do
-      branch%steps_taken = run%map%steps_taken
+      branch%steps_taken = run%map%steps_taken + run%half_map%steps_taken
       stat = 0
       errmsg = ''
 
@@ -218,88 +224,6 @@ contains
       if (.not. is_unset(scene%periodic%parameter_min)) outside = lambda < scene%periodic%parameter_min
       if (.not. is_unset(scene%periodic%parameter_max)) outside = outside .or. lambda > scene%periodic%parameter_max
    end function outside
-
-   !> The forcing frequency of the scene at lambda (rad/s).
-   real(dp) function omega_at(run, lambda)
-      type(continuation_context), intent(in) :: run
-      real(dp), intent(in) :: lambda
-      type(scene_type) :: local
-      character(len=:), allocatable :: problem
-      logical :: found
-      local = run%scene
-      call set_real_input(local, run%axis%group, run%axis%name, run%axis%index, lambda, found)
-      call forcing_frequency(local%load, omega_at, problem)
-   end function omega_at
-
-   !> The scene at lambda, with dt = T/P for the scene's forcing there (P kept), and its
-   !! problem. stat /= 0: the harmonic loads no longer share one frequency, or the problem
-   !! cannot be built.
-   subroutine problem_at(run, lambda, local, prepared, stat, errmsg)
-      type(continuation_context), intent(in) :: run
-      real(dp), intent(in) :: lambda
-      type(scene_type), intent(out) :: local
-      type(run_problem), intent(out) :: prepared
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      character(len=:), allocatable :: problem, warnings
-      real(dp) :: omega
-      logical :: found
-      local = run%scene
-      call set_real_input(local, run%axis%group, run%axis%name, run%axis%index, lambda, found)
-      call forcing_frequency(local%load, omega, problem)
-      if (len(problem) > 0 .or. .not. omega > 0) then
-         stat = stat_failure
-         errmsg = 'at '//trim(run%axis%parameter)//' = '//real_text(lambda)//' the scene '//problem
-         return
-      end if
-      local%time%dt = period_step(omega, int(run%period_steps))
-      warnings = ''
-      call build_problem(local, prepared, warnings, stat, errmsg)
-   end subroutine problem_at
-
-   !> Phi(x, lambda) (with the monodromy by `jacobian`) in `image`; a lambda at which the
-   !! scene cannot be built is image%status = outcome_failed with the reason.
-   subroutine evaluate_at(run, x, lambda, jacobian, image, stat, errmsg)
-      type(continuation_context), intent(inout) :: run
-      real(dp), intent(in) :: x(:), lambda
-      integer, intent(in) :: jacobian
-      type(map_image), intent(out) :: image
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      type(scene_type) :: local
-      type(run_problem) :: prepared
-      call problem_at(run, lambda, local, prepared, stat, errmsg)
-      if (stat /= 0) then
-         ! (a corrector that wandered out of the parameter's domain: a failed evaluation)
-         image%status = outcome_failed
-         image%failure = errmsg
-         stat = 0
-         errmsg = ''
-         return
-      end if
-      call run%map%evaluate(local, prepared, x, jacobian, image, stat, errmsg)
-   end subroutine evaluate_at
-
-   !> dPhi/dlambda at (x, lambda) by a forward difference, h = sqrt(eps) max(|lambda|,
-   !! 1/scale_lambda) (the step actually taken after rounding), from `image` = Phi(x,
-   !! lambda). `ok` false when the shifted evaluation failed (errmsg says why).
-   subroutine parameter_derivative(run, x, lambda, image, derivative, ok, stat, errmsg)
-      type(continuation_context), intent(inout) :: run
-      real(dp), intent(in) :: x(:), lambda
-      type(map_image), intent(in) :: image
-      real(dp), allocatable, intent(out) :: derivative(:)
-      logical, intent(out) :: ok
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      type(map_image) :: shifted
-      real(dp) :: moved
-      moved = lambda + difference_fraction*max(abs(lambda), 1/run%weights(size(run%weights)))
-      call evaluate_at(run, x, moved, jacobian_none, shifted, stat, errmsg)
-      ok = stat == 0 .and. shifted%status == outcome_ok
-      if (stat == 0 .and. .not. ok) errmsg = 'dPhi/dlambda: '//trim(shifted%failure)
-      if (.not. ok) return
-      derivative = (shifted%state - image%state)/(moved - lambda)
-   end subroutine parameter_derivative
 
    !> Predictor from `base` along its tangent by the arclength `ds` (scaled), corrector
    !! Newton on the bordered system [M - I, Phi_lambda; t^T S] (dx, dlambda) = -(Phi - x, g),
@@ -370,17 +294,6 @@ contains
       end do
    end subroutine correct
 
-   !> ||Phi(x) - x|| relative to max(||x||, ||Phi(x)||), in the start's energy norm.
-   real(dp) function residual(run, x, image)
-      type(continuation_context), intent(in) :: run
-      real(dp), intent(in) :: x(:)
-      type(map_image), intent(in) :: image
-      real(dp) :: scale
-      scale = max(run%map%norm(run%reference, x), run%map%norm(run%reference, image%state))
-      residual = run%map%norm(run%reference, image%state - x)
-      if (scale > 0) residual = residual/scale
-   end function residual
-
    !> What a converged point carries: multipliers, amplitude, smallest clearance, period,
    !! its tangent (the null vector of [M - I, Phi_lambda], from the bordered system whose
    !! last row is `previous`, the tangent before in the unscaled variables, so that the
@@ -429,7 +342,42 @@ contains
       rhs = rhs*point%scale
       point%tangent = rhs/norm2(rhs)
       call set_test_functions(point)
+      if (run%half_map%steps > 0) call branch_point_test(run, point, stat, errmsg)
    end subroutine finish_point
+
+   !> The branch point test of `point` on a branch of 2k periods (`half_period_test`):
+   !! Phi_k(x) - x by one run of k periods, its sign against the last point kept's.
+   !! point%iterations = -1, no tangent (the corrector's point is not taken) and errmsg
+   !! when that run fails (stat 0).
+   subroutine branch_point_test(run, point, stat, errmsg)
+      type(continuation_context), intent(inout) :: run
+      type(branch_point), intent(inout) :: point
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(scene_type) :: local
+      type(run_problem) :: prepared
+      type(map_image) :: image
+      logical :: same_way
+      integer :: m
+      call problem_at(run, point%parameter, local, prepared, stat, errmsg)
+      if (stat == 0) call run%half_map%evaluate(local, prepared, point%x, jacobian_none, image, stat, errmsg)
+      if (stat /= 0) return
+      if (image%status /= outcome_ok) then
+         point%iterations = -1
+         deallocate (point%tangent)
+         errmsg = 'the map of half the period: '//trim(image%failure)
+         return
+      end if
+      m = size(point%x)
+      point%half_shift = image%state - point%x
+      same_way = .true.
+      if (allocated(run%shift_reference)) &
+         same_way = dot_product(run%weights(1:m)**2*run%shift_reference, point%half_shift) >= 0
+      point%tests(kind_branch_point) = half_period_test(run%map%norm(run%reference, point%half_shift), &
+                                                        max(run%map%norm(run%reference, point%x), &
+                                                            run%map%norm(run%reference, image%state)), &
+                                                        same_way, run%tolerance)
+   end subroutine branch_point_test
 
    !> The scaled coordinates of `point`: x by the weights over the point's own size
    !! ||weights x|| (so that a step is a relative change of the orbit: a resonance peak
@@ -455,7 +403,7 @@ contains
    !! function below locate_tolerance, lambda moves by less than locate_lambda between
    !! two trials, or after locate_iterations; lambda and the amplitude
    !! interpolated linearly in the last bracket; a trial whose correctors both fail leaves
-   !! that estimate with located = .false.
+   !! that estimate with located = .false. (A branch point: `locate_rejoin`.)
    subroutine locate(run, a, b, kind, before, found, stat, errmsg)
       type(continuation_context), intent(inout) :: run
       type(branch_point), intent(in) :: a, b
@@ -523,4 +471,60 @@ contains
       located%amplitude = amplitude_low + weight*(amplitude_high - amplitude_low)
       found = [found, located]
    end subroutine locate
+
+   !> The branch point of the 2k-period map between branch point `a` (index `before`, an
+   !! orbit of 2k periods) and `b` beyond it (an orbit of k periods, or the other phase):
+   !! the branch followed from a towards it with each trial's own tangent, the step (half
+   !! of b's at first) halved when a trial lands beyond (the test function not positive)
+   !! and kept when it lands before it (that trial the next base). (Trials all from a, as
+   !! `locate` takes them, land on the orbit of k periods long before the branch point: a's
+   !! hyperplane leaves the branch where it turns.) lambda and the amplitude extrapolated
+   !! from the last two bases linearly in rho^2 to rho = 0 (near the pitchfork both move
+   !! like the square of the phases' distance, rho like the distance); located when the
+   !! step is below locate_bracket of b's (`locate`'s bracket rule) with an estimate made;
+   !! after 3 locate_iterations trials the last estimate, not located.
+   subroutine locate_rejoin(run, a, b, before, found, stat, errmsg)
+      type(continuation_context), intent(inout) :: run
+      type(branch_point), intent(in) :: a, b
+      integer, intent(in) :: before
+      type(bifurcation_point), allocatable, intent(inout) :: found(:)
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(bifurcation_point) :: located
+      type(branch_point) :: base, previous, trial
+      real(dp) :: h, rho_base, rho_previous, weight
+      integer :: iteration
+      logical :: converged, estimated
+      located%kind = kind_branch_point
+      located%index = before
+      weight = a%tests(kind_branch_point)/(a%tests(kind_branch_point) - b%tests(kind_branch_point))
+      located%parameter = a%parameter + weight*(b%parameter - a%parameter)
+      located%amplitude = a%amplitude + weight*(b%amplitude - a%amplitude)
+      base = a
+      h = b%step/2
+      estimated = .false.
+      do iteration = 1, 3*locate_iterations
+         if (allocated(base%half_shift)) run%shift_reference = base%half_shift
+         call correct(run, base, h, trial, converged, stat, errmsg)
+         if (stat /= 0) return
+         if (.not. (converged .and. trial%tests(kind_branch_point) > 0)) then
+            h = h/2
+            located%located = h <= locate_bracket*b%step .and. estimated
+            if (h <= locate_bracket*b%step) exit
+            cycle
+         end if
+         previous = base
+         base = trial
+         rho_base = base%tests(kind_branch_point) + sqrt(run%tolerance)
+         rho_previous = previous%tests(kind_branch_point) + sqrt(run%tolerance)
+         if (.not. rho_previous > rho_base) cycle
+         weight = rho_base**2/(rho_previous**2 - rho_base**2)
+         located%parameter = base%parameter - weight*(previous%parameter - base%parameter)
+         located%amplitude = base%amplitude - weight*(previous%amplitude - base%amplitude)
+         estimated = .true.
+      end do
+      stat = 0
+      errmsg = ''
+      found = [found, located]
+   end subroutine locate_rejoin
 end module vibrobeam_continuation

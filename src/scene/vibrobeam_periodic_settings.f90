@@ -10,8 +10,8 @@
 module vibrobeam_periodic_settings
    use vibrobeam_kinds, only: dp, pi
    use vibrobeam_text, only: real_text
-   use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, text_row, keyword_length, &
-      unset
+   use vibrobeam_schema_visitor, only: schema_visitor, real_row, integer_row, keyword_row, text_row, logical_row, &
+      keyword_length, unset
    use vibrobeam_loads, only: load_settings
    implicit none
    private
@@ -40,6 +40,9 @@ module vibrobeam_periodic_settings
       real(dp) :: parameter_min = unset            !! the branch ends below it (unset: no bound)
       real(dp) :: parameter_max = unset            !! the branch ends above it (unset: no bound)
       integer :: max_points = 100                  !! most points of the branch
+      !> at the branch's first located period doubling, switch to the orbits of twice the
+      !! period and continue them too (docs/method.md, "Branch switching at a period doubling")
+      logical :: switch_branch = .false.
    end type periodic_settings
 
 contains
@@ -78,6 +81,9 @@ contains
                             periodic%parameter_max)
       call visitor%variable(integer_row('periodic', 'max_points', 2, 100000, &
                                         'most points of a continued branch'), periodic%max_points)
+      call visitor%variable(logical_row('periodic', 'switch_branch', 'at the first located period doubling of '// &
+                                        'the continued branch, switch to the orbits of twice the period and '// &
+                                        'continue them too (needs parameter)'), periodic%switch_branch)
    end subroutine visit_periodic
 
    !> The one frequency of the harmonic loads of `load` (a load with a non-zero amplitude

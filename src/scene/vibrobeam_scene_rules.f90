@@ -282,7 +282,8 @@ contains
 
    !> &analysis kind = 'periodic' (docs/input.md, "&periodic"): one forcing frequency,
    !! the velocity scheme, a whole number of steps per forcing period, a step count
-   !! within max_steps, and a linearised monodromy only with rigid obstacles.
+   !! within max_steps, a linearised monodromy only with rigid obstacles, and a branch
+   !! switch only on a continued branch.
    subroutine periodic_rules(scene, stat, errmsg)
       type(scene_type), intent(in) :: scene
       integer, intent(inout) :: stat
@@ -335,6 +336,10 @@ contains
             call fail(stat, errmsg, '&periodic transient_periods = '//integer_text(periodic%transient_periods)// &
                       ' with '//rounded(ratio)//' steps per period makes more than '//rounded(real(max_steps, dp))// &
                       ' steps')
+         if (periodic%switch_branch .and. len_trim(periodic%parameter) == 0) &
+            call fail(stat, errmsg, '&periodic switch_branch = .true. needs a continuation: the branch of twice '// &
+                      'the period starts at a period doubling of the continued branch; give &periodic parameter '// &
+                      '(and step), or switch_branch = .false. (the default)')
          if (periodic%monodromy == 'linearised' .and. any(scene%obstacles%stiffness > 0)) &
             call fail(stat, errmsg, '&periodic monodromy = ''linearised'' is for rigid obstacles: the compliant '// &
                       'stops (&obstacles stiffness > 0) need ''differences'' (or ''auto'', which chooses it)')

@@ -24,7 +24,7 @@ module vibrobeam_sweep_text
       character(len=40) :: name = ''
       character(len=64) :: path = ''
       integer :: width = 1, which = 1
-      character(len=64) :: note = ''
+      character(len=80) :: note = ''
    end type table_column
 
    !> The pairs of statistics (value, standard error) of the beam and the energy, in
