@@ -18,7 +18,7 @@ module vibrobeam_problem
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_obstacles, only: build_contact_points, build_circle_points
    use vibrobeam_circle_set, only: circle_set
-   use vibrobeam_loads, only: load_set, build_loads, add_forces, add_flow
+   use vibrobeam_loads, only: load_set, build_loads, add_forces, add_flow, add_flow_z
    use vibrobeam_initial_state, only: mode_field, initial_velocity, read_velocity_profile
    use vibrobeam_table_file, only: linear_table
    use vibrobeam_static, only: solve_static
@@ -107,7 +107,8 @@ contains
          call add_flow(prepared%loads, scene%flow, prepared%model, scene%beam%rayleigh_mass, &
                        scene%beam%rayleigh_stiffness, stat, errmsg)
          if (stat /= 0) return
-         warnings = warnings//prepared%loads%flow%unbounded_warning(prepared%contacts%count > 0)
+         warnings = warnings//prepared%loads%flow%unbounded_warning(prepared%contacts%count > 0 .or. &
+                                                                     prepared%circles%count > 0)
       end if
       if (steps_in_time(scene) .and. len_trim(scene%initial%from_file) > 0) then
          call resume_from_file(scene, prepared, warnings, stat, errmsg)
@@ -200,6 +201,12 @@ contains
       call build_z_model(scene, model_z, stat, errmsg)
       if (stat /= 0) return
       allocate (prepared%stiffness_z, source=model_z%stiffness)
+      ! the fluid-elastic force on the z plane's own modes
+      if (prepared%loads%flow%active) then
+         call add_flow_z(prepared%loads, scene%flow, model_z, scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness, &
+                         stat, errmsg)
+         if (stat /= 0) errmsg = 'the z plane (&beam inertia_z): '//trim(errmsg)
+      end if
    end subroutine plane_model
 
    !> The z plane's model of a beam of two planes with a stiffness of its own: the scene's

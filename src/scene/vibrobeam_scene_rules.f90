@@ -406,7 +406,7 @@ contains
    !! take yet, each refused by name (issue 21 builds them in turn). Built: the velocity
    !! scheme with the loads of &load and &forces and the initial data of &initial, each
    !! turned by its direction, end supports, &supports, &masses, the axial force, Rayleigh
-   !! damping and damping per mode, holes and levels (rigid or compliant, with friction),
+   !! damping, damping per mode and the fluid-elastic force of &flow, holes and levels (rigid or compliant, with friction),
    !! sweeps and continued checkpoints.
    subroutine plane_rules(scene, stat, errmsg)
       type(scene_type), intent(in) :: scene
@@ -463,8 +463,6 @@ contains
          call fail(stat, errmsg, '&time scheme = '''//trim(scene%time%scheme)//''''//planar//'allowed: ''velocity''')
       if (scene%mesh%reduction /= 'none') &
          call fail(stat, errmsg, '&mesh reduction = '''//trim(scene%mesh%reduction)//''''//planar//'allowed: ''none''')
-      if (scene%flow%velocity > 0) &
-         call fail(stat, errmsg, '&flow velocity = '//real_text(scene%flow%velocity)//' m/s'//planar//'allowed: 0')
       if (scene%initial%displacement == 'static') &
          call fail(stat, errmsg, '&initial displacement = ''static'''//planar//'allowed: ''zero'', ''mode''')
       if (scene%output%lyapunov) &
