@@ -18,7 +18,7 @@ module vibrobeam_problem
    use vibrobeam_contact_set, only: contact_set, contact_value
    use vibrobeam_obstacles, only: build_contact_points, build_circle_points
    use vibrobeam_circle_set, only: circle_set
-   use vibrobeam_loads, only: load_set, build_loads, add_forces, add_flow
+   use vibrobeam_loads, only: load_set, build_loads, add_forces, add_flow, add_flow_z
    use vibrobeam_initial_state, only: mode_field, initial_velocity, read_velocity_profile
    use vibrobeam_table_file, only: linear_table
    use vibrobeam_static, only: solve_static
@@ -65,6 +65,8 @@ module vibrobeam_problem
       !> damping per mode in the system's coordinates (`vibrobeam_modal_damping`; Y = M Phi,
       !! projected T^T Y on a reduced model, and c): unallocated without
       real(dp), allocatable :: modal_forces(:,:), modal_rates(:)
+      !> a beam of two planes whose z plane has a stiffness of its own: its damping per mode
+      real(dp), allocatable :: modal_forces_z(:,:), modal_rates_z(:)
    end type run_problem
 
 contains
@@ -105,7 +107,8 @@ contains
          call add_flow(prepared%loads, scene%flow, prepared%model, scene%beam%rayleigh_mass, &
                        scene%beam%rayleigh_stiffness, stat, errmsg)
          if (stat /= 0) return
-         warnings = warnings//prepared%loads%flow%unbounded_warning(prepared%contacts%count > 0)
+         warnings = warnings//prepared%loads%flow%unbounded_warning(prepared%contacts%count > 0 .or. &
+                                                                     prepared%circles%count > 0)
       end if
       if (steps_in_time(scene) .and. len_trim(scene%initial%from_file) > 0) then
          call resume_from_file(scene, prepared, warnings, stat, errmsg)
@@ -140,44 +143,17 @@ contains
 
    !> A beam of two bending planes (docs/method.md, "Two bending planes"): the initial
    !! fields, computed in y, turned by &initial displacement_direction and direction (the
-   !! velocity's) into 2J unknowns (y then z), and
-   !! the z plane's stiffness, the model of the same scene with E inertia_z, when it has
-   !! one of its own (`beam_settings%own_z_stiffness`). The system's planes and K_z are set
-   !! by `full_system`.
+   !! velocity's) into 2J unknowns (y then z), then `plane_model`.
    subroutine two_planes(scene, prepared, stat, errmsg)
       type(scene_type), intent(in) :: scene
       type(run_problem), intent(inout) :: prepared
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      type(beam_model) :: model_z
-      integer :: k
-      stat = 0
-      errmsg = ''
       prepared%u0 = [prepared%u0, spread(0.0_dp, 1, size(prepared%u0))]
       prepared%v0 = [prepared%v0, spread(0.0_dp, 1, size(prepared%v0))]
       call spread_planes(shares_of(scene%initial%displacement_direction), prepared%u0)
       call spread_planes(shares_of(scene%initial%direction), prepared%v0)
-      prepared%planes = 2
-      ! theory §1: the initial displacement inside every hole and on the allowed side of every
-      ! level (to the activation's 1e-12 L)
-      do k = 1, prepared%circles%count
-         associate (circles => prepared%circles)
-            if (circles%penetration(k, prepared%u0) > 1e-12_dp*scene%beam%length) then
-               stat = stat_failure
-               errmsg = '&initial: the initial displacement at x = '//real_text(circles%x(k))//' m, ('// &
-                        real_text(prepared%u0(circles%dof(k)))//', '// &
-                        real_text(prepared%u0(size(prepared%u0)/2 + circles%dof(k)))//') m, is outside '// &
-                        trim(merge('the level ', 'the circle', circles%flat(k)))//' of &obstacles '// &
-                        integer_text(circles%obstacle(k))
-               return
-            end if
-         end associate
-      end do
-      if (.not. scene%beam%own_z_stiffness()) return
-      call build_model(scene%mesh%basis, scene%mesh%elements, scene%beam%length, scene%beam%rho_s(), &
-                       scene%beam%ei_z(), model_z, stat, errmsg, structure=structure_of(scene))
-      if (stat /= 0) return
-      allocate (prepared%stiffness_z, source=model_z%stiffness)
+      call plane_model(scene, prepared, '&initial: the initial displacement', .true., stat, errmsg)
    contains
       !> (cos, sin) of a direction of &initial, (1, 0) when it is not given.
       pure function shares_of(degrees) result(shares)
@@ -188,15 +164,74 @@ contains
       end function shares_of
    end subroutine two_planes
 
+   !> The model of a beam of two planes around its start state u0 (2J unknowns: initial
+   !! data or a checkpoint): with `check`, the start inside every hole and on the allowed
+   !! side of every level (theory §1, to the activation's 1e-12 L; `start` names the state
+   !! in the message; a checkpoint may be inside a compliant wall, whose spring then
+   !! pushes), and the z plane's stiffness, the model of the same scene with E inertia_z,
+   !! when it has one of its own (`beam_settings%own_z_stiffness`). The system's planes and
+   !! K_z are set by `full_system`.
+   subroutine plane_model(scene, prepared, start, check, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(run_problem), intent(inout) :: prepared
+      character(len=*), intent(in) :: start
+      logical, intent(in) :: check
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(beam_model) :: model_z
+      integer :: k
+      stat = 0
+      errmsg = ''
+      prepared%planes = 2
+      do k = 1, prepared%circles%count
+         if (.not. check .or. (prepared%resuming .and. prepared%circles%compliant)) exit
+         associate (circles => prepared%circles)
+            if (circles%penetration(k, prepared%u0) > 1e-12_dp*scene%beam%length) then
+               stat = stat_failure
+               errmsg = start//' at x = '//real_text(circles%x(k))//' m, ('// &
+                        real_text(prepared%u0(circles%dof(k)))//', '// &
+                        real_text(prepared%u0(size(prepared%u0)/2 + circles%dof(k)))//') m, is outside '// &
+                        trim(merge('the level ', 'the circle', circles%flat(k)))//' of &obstacles '// &
+                        integer_text(circles%obstacle(k))
+               return
+            end if
+         end associate
+      end do
+      if (.not. scene%beam%own_z_stiffness()) return
+      call build_z_model(scene, model_z, stat, errmsg)
+      if (stat /= 0) return
+      allocate (prepared%stiffness_z, source=model_z%stiffness)
+      ! the fluid-elastic force on the z plane's own modes
+      if (prepared%loads%flow%active) then
+         call add_flow_z(prepared%loads, scene%flow, model_z, scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness, &
+                         stat, errmsg)
+         if (stat /= 0) errmsg = 'the z plane (&beam inertia_z): '//trim(errmsg)
+      end if
+   end subroutine plane_model
+
+   !> The z plane's model of a beam of two planes with a stiffness of its own: the scene's
+   !! model with E inertia_z.
+   subroutine build_z_model(scene, model_z, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(beam_model), intent(out) :: model_z
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      call build_model(scene%mesh%basis, scene%mesh%elements, scene%beam%length, scene%beam%rho_s(), &
+                       scene%beam%ei_z(), model_z, stat, errmsg, structure=structure_of(scene))
+   end subroutine build_z_model
+
    !> The damping per mode of a dynamics scene (&beam modal_damping, modal_damping_ratios):
    !! on the mesh's modes, every mode below the default cut-off of the reduced model
    !! (`default_reduction_frequency`: resolved by dt to 1 % and 10 times past the forcing)
-   !! with modal_damping; on a reduced model, T^T Y (C_r = T^T C T).
+   !! with modal_damping; on a reduced model, T^T Y (C_r = T^T C T). A beam of two planes
+   !! takes them in each plane (the stepper's `add_modal_damping`), the z plane's on the
+   !! modes of its own stiffness when it has one (`beam_settings%own_z_stiffness`).
    subroutine modal_damping_of(scene, prepared, stat, errmsg)
       type(scene_type), intent(in) :: scene
       type(run_problem), intent(inout) :: prepared
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      type(beam_model) :: model_z
       real(dp) :: every, forcing(3)
       logical :: loaded(3)
       stat = 0
@@ -211,6 +246,18 @@ contains
                                scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness, scene%time%dt, &
                                prepared%modal_forces, prepared%modal_rates, stat, errmsg)
       if (stat /= 0) return
+      if (prepared%planes == 2 .and. scene%beam%own_z_stiffness()) then
+         call build_z_model(scene, model_z, stat, errmsg)
+         if (stat == 0) call build_modal_damping(model_z, every, scene%beam%modal_damping_ratios, &
+                                                 default_reduction_frequency(scene%time%dt, pack(forcing, loaded)), &
+                                                 scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness, &
+                                                 scene%time%dt, prepared%modal_forces_z, prepared%modal_rates_z, &
+                                                 stat, errmsg)
+         if (stat /= 0) then
+            errmsg = 'the z plane (&beam inertia_z): '//trim(errmsg)
+            return
+         end if
+      end if
       if (prepared%reduced) prepared%modal_forces = matmul(transpose(prepared%reduction%transform), prepared%modal_forces)
    end subroutine modal_damping_of
 
@@ -256,6 +303,10 @@ contains
       if (allocated(prepared%modal_rates)) then
          settings%modal_forces = prepared%modal_forces
          settings%modal_rates = prepared%modal_rates
+      end if
+      if (allocated(prepared%modal_rates_z)) then
+         settings%modal_forces_z = prepared%modal_forces_z
+         settings%modal_rates_z = prepared%modal_rates_z
       end if
       if (prepared%resuming) then
          call new_time_stepper(prepared%system, settings, prepared%start, stepper, stat, errmsg, prepared%resume)
@@ -339,7 +390,7 @@ contains
       file = trim(scene%initial%from_file)
       associate (contacts => prepared%contacts)
          call check_compatible(file, scene, contacts%x, contacts%lower, contacts%upper, same_bounds, stat, errmsg, &
-                               stops=.true.)
+                               stops=.true., hole_x=prepared%circles%x)
          if (stat /= 0) return
          call read_checkpoint(file, prepared%resume, prepared%resume_time, stat, errmsg, verified)
          if (stat /= 0) then
@@ -349,7 +400,8 @@ contains
          if (.not. verified) warnings = warnings//'&initial from_file = '''//file//''': its checkpoint carries '// &
             'no checksum (written by vibrobeam 0.2.0): it is continued without a check that it is undamaged'// &
             new_line('a')
-         call state_from_record(scene%time%scheme, prepared%resume, prepared%model%unknowns, resumed, stat, errmsg)
+         call state_from_record(scene%time%scheme, prepared%resume, scene%beam%plane_count()*prepared%model%unknowns, &
+                                resumed, stat, errmsg)
          if (stat /= 0) then
             errmsg = '&initial from_file = '''//file//''': '//trim(errmsg)
             return
@@ -365,6 +417,14 @@ contains
          prepared%u0 = resumed%u
          prepared%v0 = resumed%v
          prepared%resuming = .true.
+         ! a beam of two planes: its walls may have moved (as rigid levels may); the state
+         ! is checked against them when they did (the velocity scheme lets it lie a
+         ! step's travel beyond an unchanged wall)
+         if (scene%beam%plane_count() == 2) then
+            call plane_model(scene, prepared, '&initial from_file = '''//file//''': the beam', .not. same_bounds, stat, &
+                             errmsg)
+            if (stat /= 0) return
+         end if
          do c = 1, contacts%count
             if (same_bounds) exit
             value = contact_value(contacts, c, prepared%u0)

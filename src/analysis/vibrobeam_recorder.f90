@@ -195,7 +195,7 @@ contains
       end do
       if (stepper%holes%circles%count > 0) &
          call self%wear%init(stepper, problem%start%v, tolerance, &
-                             window_first_step(scene%output%measure_from, scene%time%dt), last_step, &
+                             window_first_step(scene%output%measure_from, scene%time%dt), &
                              wear_coefficients(stepper%holes%circles%obstacle))
       self%max_penetration = penetration(stepper)
       self%max_penetration_time = stepper%t
@@ -357,11 +357,11 @@ contains
    end subroutine restart_statistics
 
    !> The wear's window (`vibrobeam_support_wear`: a sweep measures window after window)
-   !! from the state of step `first_step` to that of `last_step`.
-   subroutine restart_wear(self, first_step, last_step)
+   !! from the state of step `first_step`.
+   subroutine restart_wear(self, first_step)
       class(dynamics_recorder), intent(inout) :: self
-      integer(int64), intent(in) :: first_step, last_step
-      if (self%wear%active) call self%wear%begin_window(first_step, last_step)
+      integer(int64), intent(in) :: first_step
+      if (self%wear%active) call self%wear%begin_window(first_step)
    end subroutine restart_wear
 
    !> The statistics of the window so far (docs/statistics.md).
@@ -644,6 +644,7 @@ contains
       if (allocated(self%forces_spectra%loads)) call self%forces_spectra%save_state(record)
       call self%episodes%save_state(record)
       call self%statistics%save_state(record)
+      call self%wear%save_state(record)
    end subroutine save_state
 
    !> Take back what `save_state` put into `record`.
@@ -663,6 +664,7 @@ contains
       if (stat == 0 .and. allocated(self%forces_spectra%loads)) call self%forces_spectra%restore_state(record, stat, errmsg)
       if (stat == 0) call self%episodes%restore_state(record, stat, errmsg)
       if (stat == 0) call self%statistics%restore_state(record, stat, errmsg)
+      if (stat == 0) call self%wear%restore_state(record, stat, errmsg)
       if (stat /= 0) return
       self%last_output_step = counts(1)
       self%last_field_step = counts(2)

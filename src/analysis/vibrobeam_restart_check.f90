@@ -1,8 +1,10 @@
 !> Whether a scene may continue the checkpoint of an earlier result (docs/output.md,
 !! "Checkpoint and restart"; `&initial from_file`, and a sweep that starts from a file):
 !! the scene must match the file in its model (basis, elements, reduction, length, beam
-!! data, supports, springs, point masses, sections and axial force), its time scheme (scheme, dt, theta, gamma) and its contact points (count and x);
-!! a single run's continuation also in its compliant stops. Loads, restitution, rigid
+!! data, bending planes and inertia_z, supports, springs, point masses, sections and axial
+!! force), its time scheme (scheme, dt, theta, gamma) and its contact points (count and x;
+!! a beam of two planes: the points of its obstacles, count and x); a single run's
+!! continuation also in its compliant stops (a compliant hole: its shape and size too). Loads, restitution, rigid
 !! obstacle levels, a stop's damping and outputs may change. Reading the checkpoint itself
 !! is `vibrobeam_checkpoint`'s.
 module vibrobeam_restart_check
@@ -24,7 +26,8 @@ module vibrobeam_restart_check
       'beam.rayleigh_stiffness', 'time.scheme', 'time.dt', 'time.theta', 'time.gamma']
    !> Why the model, the time scheme and the contact points must match (end of a message).
    character(len=*), parameter :: model_why = '; the model (basis, elements, reduction, length, beam data), the '// &
-      'time scheme (scheme, dt, theta, gamma) and the contact points must match'
+      'time scheme (scheme, dt, theta, gamma) and the contact points (a beam of two planes: the points of '// &
+      'its obstacles) must match'
    !> Why a compliant stop must match (end of a message).
    character(len=*), parameter :: stops_why = '; a compliant stop''s force and stored energy are part of '// &
       'the checkpoint: each obstacle keeps its kind (rigid or compliant), and a compliant one its side, '// &
@@ -42,7 +45,7 @@ contains
    !! levels are checked against the state by the caller). stat = stat_failure with a message naming
    !! the first mismatch. `same_bounds`: the obstacle bounds at the contact points are
    !! those of the file.
-   subroutine check_compatible(filename, scene, contact_x, lower, upper, same_bounds, stat, errmsg, stops)
+   subroutine check_compatible(filename, scene, contact_x, lower, upper, same_bounds, stat, errmsg, stops, hole_x)
       character(len=*), intent(in) :: filename
       type(scene_type), intent(in) :: scene
       real(dp), intent(in) :: contact_x(:), lower(:), upper(:)
@@ -50,6 +53,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       logical, intent(in), optional :: stops
+      real(dp), intent(in), optional :: hole_x(:)   !! a beam of two planes: its obstacles' points
       type(h5_reader) :: file
       type(scene_entry), allocatable :: list(:)
       character(len=:), allocatable :: prefix
@@ -72,8 +76,15 @@ contains
          if (stat /= 0) exit compare
          call compare_structure(file, list, prefix, stat, errmsg)
          if (stat /= 0) exit compare
-         call compare_contact_points(file, contact_x, prefix, stat, errmsg)
+         call compare_planes(file, list, prefix, stat, errmsg)
          if (stat /= 0) exit compare
+         call compare_points(file, '/contact/x', 'contact point', contact_x, prefix, stat, errmsg)
+         if (stat /= 0) exit compare
+         if (present(hole_x)) then
+            if (size(hole_x) > 0 .or. file%exists('/wear/x')) &
+               call compare_points(file, '/wear/x', 'point of the obstacles', hole_x, prefix, stat, errmsg)
+            if (stat /= 0) exit compare
+         end if
          if (present(stops)) then
             if (stops) call compare_stops(file, scene, list, prefix, stat, errmsg)
             if (stat /= 0) exit compare
@@ -85,6 +96,7 @@ contains
             exit compare
          end if
          same_bounds = all(same_bits(file_lower, lower)) .and. all(same_bits(file_upper, upper))
+         if (present(hole_x)) same_bounds = same_bounds .and. same_walls(file, list)
       end block compare
       call file%close()
    end subroutine check_compatible
@@ -185,30 +197,122 @@ contains
       end do
    end subroutine compare_structure
 
-   !> The file's contact points (/contact/x) against `contact_x`, count and positions
-   !! bitwise.
-   subroutine compare_contact_points(file, contact_x, prefix, stat, errmsg)
+   !> &beam planes (1 when not listed) and inertia_z (0: not given, the y plane's) of the
+   !! file against the scene's: they make the state's unknowns and the z plane's stiffness.
+   subroutine compare_planes(file, list, prefix, stat, errmsg)
       type(h5_reader), intent(in) :: file
-      real(dp), intent(in) :: contact_x(:)
+      type(scene_entry), intent(in) :: list(:)
       character(len=*), intent(in) :: prefix
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp), allocatable :: x(:)
-      integer :: k
-      call file%read_reals('/contact/x', x, stat, errmsg)
+      character(len=*), parameter :: why = '; the bending planes make the state''s unknowns (y, or y and z) and '// &
+                                           'inertia_z the z plane''s stiffness: they must match'
+      integer(int64) :: file_planes, scene_planes
+      real(dp) :: file_inertia, scene_inertia
+      integer :: e
+      stat = 0
+      errmsg = ''
+      file_planes = 1
+      scene_planes = 1
+      file_inertia = 0
+      scene_inertia = 0
+      if (file%has_attr('/', 'beam.planes')) call file%attr_int64('/', 'beam.planes', file_planes, stat, errmsg)
+      if (stat == 0 .and. file%has_attr('/', 'beam.inertia_z')) &
+         call file%attr_real('/', 'beam.inertia_z', file_inertia, stat, errmsg)
       if (stat /= 0) then
          errmsg = prefix//trim(errmsg)
          return
       end if
-      if (size(x) /= size(contact_x)) then
-         call mismatch(prefix, 'contact points', integer_text(size(x)), integer_text(size(contact_x)), model_why, &
+      do e = 1, size(list)
+         if (list(e)%name == 'beam.planes') scene_planes = list(e)%integer_value
+         if (list(e)%name == 'beam.inertia_z') scene_inertia = list(e)%real_value
+      end do
+      if (file_planes /= scene_planes) then
+         call mismatch(prefix, 'beam.planes', integer_text(int(file_planes)), integer_text(int(scene_planes)), why, &
                        stat, errmsg)
-      else if (.not. all(same_bits(x, contact_x))) then
-         k = findloc(same_bits(x, contact_x), .false., dim=1)
-         call mismatch(prefix, 'contact point '//integer_text(k)//' x', real_text(x(k)), real_text(contact_x(k)), &
-                       model_why, stat, errmsg)
+      else if (.not. same_bits(file_inertia, scene_inertia)) then
+         call mismatch(prefix, 'beam.inertia_z', given(file_inertia), given(scene_inertia), why, stat, errmsg)
       end if
-   end subroutine compare_contact_points
+   contains
+      !> The value, or 'not given' (0).
+      function given(value) result(text)
+         real(dp), intent(in) :: value
+         character(len=:), allocatable :: text
+         text = 'not given'
+         if (value > 0) text = real_text(value)
+      end function given
+   end subroutine compare_planes
+
+   !> The file's points (`path`: /contact/x, or /wear/x for a beam of two planes) against
+   !! `x`, count and positions bitwise; `what` names one in the message.
+   subroutine compare_points(file, path, what, x, prefix, stat, errmsg)
+      type(h5_reader), intent(in) :: file
+      character(len=*), intent(in) :: path, what
+      real(dp), intent(in) :: x(:)
+      character(len=*), intent(in) :: prefix
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      real(dp), allocatable :: in_file(:)
+      integer :: k
+      if (file%exists(path)) then
+         call file%read_reals(path, in_file, stat, errmsg)
+         if (stat /= 0) then
+            errmsg = prefix//trim(errmsg)
+            return
+         end if
+      else
+         allocate (in_file(0))
+         stat = 0
+         errmsg = ''
+      end if
+      if (size(in_file) /= size(x)) then
+         call mismatch(prefix, what//'s', integer_text(size(in_file)), integer_text(size(x)), model_why, stat, errmsg)
+      else if (.not. all(same_bits(in_file, x))) then
+         k = findloc(same_bits(in_file, x), .false., dim=1)
+         call mismatch(prefix, what//' '//integer_text(k)//' x', real_text(in_file(k)), real_text(x(k)), model_why, &
+                       stat, errmsg)
+      end if
+   end subroutine compare_points
+
+   !> Are the obstacles' walls in the cross-section of a beam of two planes those of the
+   !! file (every obstacle's place, kind of wall, size, centre, orientation and level, as
+   !! listed, bitwise)? Then its state needs no check against them.
+   logical function same_walls(file, list)
+      type(h5_reader), intent(in) :: file
+      type(scene_entry), intent(in) :: list(:)
+      character(len=*), parameter :: walls(11) = [character(len=11) :: 'side', 'x_from', 'x_to', 'level_from', &
+                                                  'level_to', 'shape', 'sides', 'orientation', 'radius', 'center_y', &
+                                                  'center_z']
+      character(len=:), allocatable :: text
+      real(dp) :: value
+      integer(int64) :: number
+      integer :: e, k, stat
+      character(len=256) :: errmsg
+      same_walls = .false.
+      call file%attr_int64('/', 'obstacles.count', number, stat, errmsg)
+      do e = 1, size(list)
+         if (list(e)%name == 'obstacles.count') same_walls = stat == 0 .and. number == list(e)%integer_value
+      end do
+      if (.not. same_walls) return
+      do e = 1, size(list)
+         k = index(list(e)%name, '(')
+         if (index(list(e)%name, 'obstacles.') /= 1 .or. k == 0) cycle
+         if (.not. any(list(e)%name(11:k - 1) == walls)) cycle
+         if (.not. file%has_attr('/', trim(list(e)%name))) then
+            same_walls = .false.
+         else if (list(e)%kind == 'real') then
+            call file%attr_real('/', trim(list(e)%name), value, stat, errmsg)
+            same_walls = stat == 0 .and. same_bits(value, list(e)%real_value)
+         else if (list(e)%kind == 'integer') then
+            call file%attr_int64('/', trim(list(e)%name), number, stat, errmsg)
+            same_walls = stat == 0 .and. number == list(e)%integer_value
+         else
+            call file%attr_string('/', trim(list(e)%name), text, stat, errmsg)
+            same_walls = stat == 0 .and. text == trim(list(e)%string_value)
+         end if
+         if (.not. same_walls) return
+      end do
+   end function same_walls
 
    !> The compliant stops of the file against the scene's (`check_compatible`).
    subroutine compare_stops(file, scene, list, prefix, stat, errmsg)
@@ -220,6 +324,8 @@ contains
       character(len=*), intent(out) :: errmsg
       character(len=*), parameter :: compared(7) = [character(len=10) :: 'side', 'x_from', 'x_to', &
                                                      'level_from', 'level_to', 'stiffness', 'exponent']
+      character(len=*), parameter :: hole_items(6) = [character(len=11) :: 'shape', 'sides', 'orientation', &
+                                                      'radius', 'center_y', 'center_z']
       character(len=:), allocatable :: item
       integer(int64) :: file_count
       real(dp) :: file_stiffness
@@ -261,6 +367,16 @@ contains
                if (list(e)%name == 'obstacles.'//trim(merge(compared(min(k, size(compared))), 'profile   ', &
                                                             k <= size(compared)))//item) exit
             end do
+            call compare_entry(file, list(e), prefix, stops_why, stat, errmsg)
+            if (stat /= 0) return
+         end do
+         ! a compliant hole of a beam of two planes (listed when the scene gives it): its
+         ! wall is its shape, size, centre and orientation
+         do k = 1, size(hole_items)
+            do e = size(list), 1, -1
+               if (list(e)%name == 'obstacles.'//trim(hole_items(k))//item) exit
+            end do
+            if (e == 0) cycle
             call compare_entry(file, list(e), prefix, stops_why, stat, errmsg)
             if (stat /= 0) return
          end do

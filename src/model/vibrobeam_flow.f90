@@ -17,7 +17,10 @@
 !!
 !! Connors' formula (J_n = 1 on the whole span). On the unknowns the force is
 !! F_f = sum_n g_n (M phi_n)(M phi_n)^T V, g_n = 2 zeta_f,n omega_n/m_n: the velocity
-!! scheme adds it to F^{n+theta} at V^n (`vibrobeam_velocity_stepper`).
+!! scheme adds it to F^{n+theta} at V^n (`vibrobeam_velocity_stepper`). A beam of two
+!! planes receives it in each plane (the flow feeds both transverse motions alike, with
+!! one Connors constant): on the y plane's modes in z too while the planes share K, on the
+!! z plane's own modes when it has a stiffness of its own (`take_z_plane`).
 module vibrobeam_flow
    use vibrobeam_kinds, only: dp, pi
    use vibrobeam_status, only: stat_failure, stat_numerical_failure
@@ -60,8 +63,14 @@ module vibrobeam_flow
       real(dp), allocatable :: fluid_zeta(:)        !! (count) zeta_f,n at U
       real(dp), allocatable :: gain(:)              !! (count) g_n (1/(s kg))
       real(dp), allocatable :: rows(:, :)           !! (count, J) (M phi_n)^T, a row per mode
+      !> a beam of two planes whose z plane has a stiffness of its own: the force on its
+      !! modes (`take_z_plane`), the same quantities as above
+      logical :: own_z = .false.
+      real(dp), allocatable :: omega_z(:), zeta_z(:), span_share_z(:), critical_z(:), fluid_zeta_z(:), gain_z(:)
+      real(dp), allocatable :: rows_z(:, :)
    contains
       procedure :: add_force
+      procedure :: take_z_plane
       procedure :: project
       procedure :: report
       procedure :: unbounded_warning
@@ -205,19 +214,51 @@ contains
    end subroutine build_flow
 
    !> f += F_f(V) = sum_n g_n (M phi_n) ((M phi_n)^T V) (module documentation): the modes'
-   !! velocities q_n' = (M phi_n)^T V, then the force, two products with BLAS dgemv.
+   !! velocities q_n' = (M phi_n)^T V, then the force, two products with BLAS dgemv. A beam
+   !! of two planes (2J velocities, y then z): in each plane, with the z plane's own modes
+   !! when it has them.
    subroutine add_force(self, v, f)
       class(fluid_elastic), intent(in) :: self
       real(dp), intent(in) :: v(:)      !! velocities of the unknowns
       real(dp), intent(inout) :: f(:)
-      real(dp) :: c(self%count)
-      integer :: m, n
-      m = self%count
-      n = size(v)
-      call dgemv('N', m, n, 1.0_dp, self%rows, m, v, 1, 0.0_dp, c, 1)
-      c = self%gain*c
-      call dgemv('T', m, n, 1.0_dp, self%rows, m, c, 1, 1.0_dp, f, 1)
+      integer :: j
+      j = size(self%rows, 2)
+      call add_plane(self%rows, self%gain, v(1:j), f(1:j))
+      if (size(v) == j) return
+      if (self%own_z) then
+         call add_plane(self%rows_z, self%gain_z, v(j + 1:), f(j + 1:))
+      else
+         call add_plane(self%rows, self%gain, v(j + 1:), f(j + 1:))
+      end if
+   contains
+      subroutine add_plane(rows, gain, v, f)
+         real(dp), intent(in) :: rows(:, :), gain(:), v(:)
+         real(dp), intent(inout) :: f(:)
+         real(dp) :: c(size(gain))
+         integer :: m, n
+         m = size(gain)
+         n = size(v)
+         call dgemv('N', m, n, 1.0_dp, rows, m, v, 1, 0.0_dp, c, 1)
+         c = gain*c
+         call dgemv('T', m, n, 1.0_dp, rows, m, c, 1, 1.0_dp, f, 1)
+      end subroutine add_plane
    end subroutine add_force
+
+   !> The z plane of a beam of two planes with a stiffness of its own: `z`, the force built
+   !! on that plane's model (`build_flow`), becomes this force's z part.
+   subroutine take_z_plane(self, z)
+      class(fluid_elastic), intent(inout) :: self
+      type(fluid_elastic), intent(in) :: z
+      if (.not. z%active) return
+      self%own_z = .true.
+      self%omega_z = z%omega
+      self%zeta_z = z%zeta
+      self%span_share_z = z%span_share
+      self%critical_z = z%critical
+      self%fluid_zeta_z = z%fluid_zeta
+      self%gain_z = z%gain
+      self%rows_z = z%rows
+   end subroutine take_z_plane
 
    !> The force on other coordinates y, U = T y: each M phi_n becomes T^T M phi_n
    !! (`vibrobeam_reduction`'s reduce_loads).
@@ -238,16 +279,26 @@ contains
       text = ''
       if (.not. self%active) return
       text = 'fluid-elastic force at U = '//short_text(self%velocity)//' m/s (Connors, modal damping):'//new_line('a')
-      do n = 1, self%count
-         text = text//'  mode '//integer_text(n)//': f = '//short_text(self%omega(n)/(2*pi))//' Hz, zeta = '// &
-                short_text(self%zeta(n))//', span share J = '//short_text(self%span_share(n))// &
-                ', critical velocity U_c = '//short_text(self%critical(n))//' m/s'
-         if (self%diameter > 0) text = text//' (U_c/(f d) = '// &
-                                       short_text(self%critical(n)/(self%omega(n)/(2*pi)*self%diameter))//')'
-         text = text//', fluid damping ratio at U '//short_text(-self%fluid_zeta(n))
-         if (self%velocity > self%critical(n)) text = text//' (UNSTABLE without contact)'
-         text = text//new_line('a')
-      end do
+      call add_modes('', self%omega, self%zeta, self%span_share, self%critical, self%fluid_zeta)
+      if (self%own_z) then
+         text = text//'  the z plane (its own stiffness):'//new_line('a')
+         call add_modes('z ', self%omega_z, self%zeta_z, self%span_share_z, self%critical_z, self%fluid_zeta_z)
+      end if
+   contains
+      subroutine add_modes(plane, omega, zeta, span_share, critical, fluid_zeta)
+         character(len=*), intent(in) :: plane
+         real(dp), intent(in) :: omega(:), zeta(:), span_share(:), critical(:), fluid_zeta(:)
+         do n = 1, size(omega)
+            text = text//'  '//plane//'mode '//integer_text(n)//': f = '//short_text(omega(n)/(2*pi))//' Hz, zeta = '// &
+                   short_text(zeta(n))//', span share J = '//short_text(span_share(n))// &
+                   ', critical velocity U_c = '//short_text(critical(n))//' m/s'
+            if (self%diameter > 0) text = text//' (U_c/(f d) = '// &
+                                          short_text(critical(n)/(omega(n)/(2*pi)*self%diameter))//')'
+            text = text//', fluid damping ratio at U '//short_text(-fluid_zeta(n))
+            if (self%velocity > critical(n)) text = text//' (UNSTABLE without contact)'
+            text = text//new_line('a')
+         end do
+      end subroutine add_modes
    end function report
 
    !> A warning when the flow velocity exceeds the critical velocity of a mode and nothing
@@ -262,14 +313,22 @@ contains
       integer :: n
       text = ''
       if (.not. self%active .or. bounded) return
-      do n = 1, self%count
-         if (self%velocity <= self%critical(n)) cycle
-         text = '&flow velocity = '//short_text(self%velocity)//' m/s exceeds the critical velocity of mode '// &
-                integer_text(n)//' (U_c = '//short_text(self%critical(n))//' m/s) and no obstacle bounds the '// &
-                'motion: its amplitude grows as exp('//short_text(self%fluid_zeta(n) - self%zeta(n))// &
-                ' omega_'//integer_text(n)//' t) without end (vibrobeam --check lists every mode)'//new_line('a')
-         return
-      end do
+      call first_unstable('', self%critical, self%fluid_zeta, self%zeta)
+      if (len(text) == 0 .and. self%own_z) call first_unstable('the z plane''s ', self%critical_z, self%fluid_zeta_z, &
+                                                              self%zeta_z)
+   contains
+      subroutine first_unstable(plane, critical, fluid_zeta, zeta)
+         character(len=*), intent(in) :: plane
+         real(dp), intent(in) :: critical(:), fluid_zeta(:), zeta(:)
+         do n = 1, size(critical)
+            if (self%velocity <= critical(n)) cycle
+            text = '&flow velocity = '//short_text(self%velocity)//' m/s exceeds the critical velocity of '// &
+                   plane//'mode '//integer_text(n)//' (U_c = '//short_text(critical(n))//' m/s) and no obstacle '// &
+                   'bounds the motion: its amplitude grows as exp('//short_text(fluid_zeta(n) - zeta(n))// &
+                   ' omega_'//integer_text(n)//' t) without end (vibrobeam --check lists every mode)'//new_line('a')
+            return
+         end do
+      end subroutine first_unstable
    end function unbounded_warning
 
    !> Warnings for &flow values given that the run does not use (docs/input.md,

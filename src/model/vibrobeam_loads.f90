@@ -25,7 +25,7 @@ module vibrobeam_loads
    use vibrobeam_flow, only: fluid_elastic, flow_settings, build_flow
    implicit none
    private
-   public :: load_set, build_loads, load_settings, visit_load, add_forces, add_flow
+   public :: load_set, build_loads, load_settings, visit_load, add_forces, add_flow, add_flow_z
 
    !> &load as the input gives it (docs/input.md, "&load"): a uniform load, a point force
    !! and a base excitation, each constant or harmonic.
@@ -186,6 +186,20 @@ contains
       character(len=*), intent(out) :: errmsg
       call build_flow(settings, model, rayleigh_mass, rayleigh_stiffness, loads%flow, stat, errmsg)
    end subroutine add_flow
+
+   !> The fluid-elastic force on the z plane of a beam of two planes with a stiffness of
+   !! its own: on the modes of `model_z`, the model of that plane (`fluid_elastic%take_z_plane`).
+   subroutine add_flow_z(loads, settings, model_z, rayleigh_mass, rayleigh_stiffness, stat, errmsg)
+      type(load_set), intent(inout) :: loads
+      type(flow_settings), intent(in) :: settings
+      type(beam_model), intent(in) :: model_z
+      real(dp), intent(in) :: rayleigh_mass, rayleigh_stiffness
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(fluid_elastic) :: flow_z
+      call build_flow(settings, model_z, rayleigh_mass, rayleigh_stiffness, flow_z, stat, errmsg)
+      if (stat == 0) call loads%flow%take_z_plane(flow_z)
+   end subroutine add_flow_z
 
    !> F(t) (N per unknown; per unit mass when the beam is given by k2), for a caller that
    !! keeps no state: the same values as `evaluate`, which the steppers use.

@@ -273,10 +273,10 @@ contains
                   circles%normal(:, k) = [side, 0.0_dp]
                   circles%bound(k) = side*level_at(o, model, i)
                end if
-               ! a circle is punctual (`plane_rules`): N/m^a at its node; a compliant level or
-               ! polygon along the beam gives each node its tributary share, as a planar level
+               ! a punctual obstacle: N/m^a at its node; a compliant circle, level or polygon
+               ! along the beam gives each node its tributary share, as a planar level
                circles%stiffness(k) = o%stiffness
-               if (o%stiffness > 0 .and. .not. o%circle()) &
+               if (o%stiffness > 0) &
                   circles%stiffness(k) = o%stiffness*spring_length(o, model, point_node(first), point_first(first) == &
                                                                    point_last(first))
                circles%exponent(k) = o%exponent

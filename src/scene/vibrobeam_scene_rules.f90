@@ -408,9 +408,11 @@ contains
 
    !> &beam planes (docs/input.md, "&beam"): a planar beam takes no direction (like
    !! inertia_z, it would be unused); with planes = 2, what the two-plane model does not
-   !! take yet, each refused by name (issue 21 builds them in turn). Built: the free flight
-   !! of the velocity scheme with the loads of &load and the initial data of &initial, each
-   !! turned by its direction, end supports, &supports, &masses and the axial force.
+   !! take yet, each refused by name (issue 21 builds them in turn). Built: the velocity
+   !! scheme with the loads of &load and &forces and the initial data of &initial, each
+   !! turned by its direction, end supports, &supports, &masses, the axial force, Rayleigh
+   !! damping, damping per mode and the fluid-elastic force of &flow, holes and levels (rigid or compliant, with friction),
+   !! sweeps and continued checkpoints.
    subroutine plane_rules(scene, stat, errmsg)
       type(scene_type), intent(in) :: scene
       integer, intent(inout) :: stat
@@ -451,13 +453,6 @@ contains
             if (.not. o%circle() .and. len_trim(o%profile) > 0) &
                call fail(stat, errmsg, '&obstacles profile('//integer_text(i)//') = '''//trim(o%profile)//''''// &
                          planar//'give level_from and level_to')
-            ! a compliant circle is a support plate's hole: one node (its stiffness per node);
-            ! a compliant level or polygon along the beam shares its stiffness per length
-            ! among its nodes, as a planar level (docs/input.md, "&obstacles")
-            if (o%circle() .and. o%stiffness > 0 .and. o%x_to > o%x_from) &
-               call fail(stat, errmsg, '&obstacles stiffness('//integer_text(i)//') = '//real_text(o%stiffness)// &
-                         ' N/m with x_to('//integer_text(i)//') > x_from (a compliant circle along the beam)'// &
-                         planar//'a compliant circle acts at one node: give x_to = x_from')
             if (o%stiffness > 0 .neqv. scene%obstacles(1)%stiffness > 0) &
                call fail(stat, errmsg, '&obstacles stiffness('//integer_text(i)//') = '//real_text(o%stiffness)// &
                          ' N/m and stiffness(1) = '//real_text(scene%obstacles(1)%stiffness)//' N/m (rigid and '// &
@@ -473,14 +468,6 @@ contains
          call fail(stat, errmsg, '&time scheme = '''//trim(scene%time%scheme)//''''//planar//'allowed: ''velocity''')
       if (scene%mesh%reduction /= 'none') &
          call fail(stat, errmsg, '&mesh reduction = '''//trim(scene%mesh%reduction)//''''//planar//'allowed: ''none''')
-      if (scene%beam%modal()) &
-         call fail(stat, errmsg, '&beam modal_damping (or modal_damping_ratios)'//planar// &
-                   'give Rayleigh damping (rayleigh_mass, rayleigh_stiffness)')
-      if (scene%flow%velocity > 0) &
-         call fail(stat, errmsg, '&flow velocity = '//real_text(scene%flow%velocity)//' m/s'//planar//'allowed: 0')
-      if (len_trim(scene%initial%from_file) > 0) &
-         call fail(stat, errmsg, '&initial from_file = '''//trim(scene%initial%from_file)//''''//planar// &
-                   'a checkpoint does not record its planes yet; start from initial data')
       if (scene%initial%displacement == 'static') &
          call fail(stat, errmsg, '&initial displacement = ''static'''//planar//'allowed: ''zero'', ''mode''')
       if (scene%output%lyapunov) &

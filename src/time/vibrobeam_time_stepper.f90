@@ -43,8 +43,11 @@ module vibrobeam_time_stepper
       real(dp) :: rayleigh_stiffness = 0             !! b in C = a M + b K (s)
       !> damping per mode (docs/theory.md §1, "Damping"): C_m = Y diag(c) Y^T, Y = M Phi
       !! (J x K, the first K modes, M-orthonormal) and c_k = 2 zeta_k omega_k - a - b
-      !! omega_k^2 (1/s), taken explicitly (at V^n); unallocated: none
+      !! omega_k^2 (1/s), taken explicitly (at V^n); unallocated: none. A beam of two planes
+      !! takes them in each plane, y and z, or the z plane's own modes (`modal_forces_z`,
+      !! `modal_rates_z`) when it has a stiffness of its own
       real(dp), allocatable :: modal_forces(:,:), modal_rates(:)
+      real(dp), allocatable :: modal_forces_z(:,:), modal_rates_z(:)
       integer :: compliant_rule = rule_gradient      !! how a step takes a compliant stop's force
       type(contact_options) :: contact               !! the contact projection's regime, method, iterations
    end type stepper_settings
@@ -110,6 +113,8 @@ module vibrobeam_time_stepper
       logical :: modal = .false.                   !! damping per mode (`modal_forces`, `modal_rates`)
       real(dp), allocatable :: modal_forces(:,:)   !! Y = M Phi (J x K)
       real(dp), allocatable :: modal_rates(:)      !! c_k (1/s)
+      !> a beam of two planes whose z plane has a stiffness of its own: its modes' Y and c
+      real(dp), allocatable :: modal_forces_z(:,:), modal_rates_z(:)
       type(symmetric_band) :: mass, stiffness
       type(symmetric_band) :: iteration_matrix     !! W of the scheme, factored once per run
       type(band_cholesky) :: iteration_factor
@@ -345,6 +350,10 @@ contains
          self%modal = size(settings%modal_rates) > 0
          self%modal_forces = settings%modal_forces
          self%modal_rates = settings%modal_rates
+         if (allocated(settings%modal_rates_z)) then
+            self%modal_forces_z = settings%modal_forces_z
+            self%modal_rates_z = settings%modal_rates_z
+         end if
       end if
       self%compliant_rule = settings%compliant_rule
       self%mass = system%model%mass
@@ -412,7 +421,9 @@ contains
    end subroutine checkpoint_state
 
    !> Put everything a continued run needs to go on bitwise into `record` (docs/output.md,
-   !! "Checkpoint and restart"): the step number, U and V, and the running energy sums.
+   !! "Checkpoint and restart"): the step number, U and V, and the running energy sums
+   !! (with compliant stops or compliant holes their damping's and the balance's accuracy;
+   !! with the holes of a beam of two planes the energy friction took).
    !! A scheme with more state extends this (the position scheme adds U^{n-1}); the contact
    !! solver's state between steps (a warm start), when it has one, belongs here too.
    subroutine save_stepper_state(self, record)
@@ -422,13 +433,13 @@ contains
       call record%put_reals('stepper.u', self%u)
       call record%put_reals('stepper.v', self%v)
       call record%put_reals('stepper.energy_sums', [self%energy%work, self%energy%dissipated_impacts, &
-         self%energy%dissipated_damping, &
-                                                    self%energy%dissipated_numerical])
-      if (self%contacts%springs%count > 0) then
+                                                    self%energy%dissipated_damping, self%energy%dissipated_numerical])
+      if (compliant_contact(self)) &
          call record%put_reals('stepper.contact_damping', [self%energy%dissipated_contact_damping])
-         call record%put_reals('stepper.contact_force', self%report%contact_force)
+      if (self%contacts%springs%count > 0) call record%put_reals('stepper.contact_force', self%report%contact_force)
+      if (compliant_contact(self)) &
          call record%put_reals('stepper.compliant_accuracy', [self%energy%unresolved_work, self%energy%energy_scale])
-      end if
+      if (self%holes%circles%count > 0) call record%put_reals('stepper.friction', [self%energy%dissipated_friction])
    end subroutine save_stepper_state
 
    !> Take back what `save_state` put into `record` (same sizes); t = steps dt.
@@ -437,31 +448,38 @@ contains
       type(state_record), intent(in) :: record
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      real(dp) :: sums(4)
+      real(dp) :: sums(4), damping(1), accuracy(2), friction(1)
+      damping = 0
+      accuracy = 0
+      friction = 0
       call record%get_int64('stepper.steps', self%steps, stat, errmsg)
       if (stat == 0) call record%get_reals('stepper.u', self%u, stat, errmsg)
       if (stat == 0) call record%get_reals('stepper.v', self%v, stat, errmsg)
       if (stat == 0) call record%get_reals('stepper.energy_sums', sums, stat, errmsg)
-      if (stat == 0 .and. self%contacts%springs%count > 0) then
-         call record%get_reals('stepper.contact_damping', sums(1:1), stat, errmsg)
-         if (stat == 0) self%energy%dissipated_contact_damping = sums(1)
-         if (stat == 0) call record%get_reals('stepper.contact_force', self%report%contact_force, stat, errmsg)
-         if (stat == 0) call record%get_reals('stepper.energy_sums', sums, stat, errmsg)
-      end if
+      if (stat == 0 .and. self%contacts%springs%count > 0) &
+         call record%get_reals('stepper.contact_force', self%report%contact_force, stat, errmsg)
+      if (stat == 0 .and. compliant_contact(self)) call record%get_reals('stepper.contact_damping', damping, stat, errmsg)
       ! checkpoints written before issue 23 do not hold it: the sum starts again at 0
-      if (stat == 0 .and. self%contacts%springs%count > 0 .and. record%find('stepper.compliant_accuracy') > 0) then
-         call record%get_reals('stepper.compliant_accuracy', sums(1:2), stat, errmsg)
-         if (stat == 0) self%energy%unresolved_work = sums(1)
-         if (stat == 0) self%energy%energy_scale = sums(2)
-         if (stat == 0) call record%get_reals('stepper.energy_sums', sums, stat, errmsg)
-      end if
+      if (stat == 0 .and. compliant_contact(self) .and. record%find('stepper.compliant_accuracy') > 0) &
+         call record%get_reals('stepper.compliant_accuracy', accuracy, stat, errmsg)
+      if (stat == 0 .and. self%holes%circles%count > 0) call record%get_reals('stepper.friction', friction, stat, errmsg)
       if (stat /= 0) return
       self%energy%work = sums(1)
       self%energy%dissipated_impacts = sums(2)
       self%energy%dissipated_damping = sums(3)
       self%energy%dissipated_numerical = sums(4)
+      self%energy%dissipated_contact_damping = damping(1)
+      self%energy%unresolved_work = accuracy(1)
+      self%energy%energy_scale = accuracy(2)
+      self%energy%dissipated_friction = friction(1)
       self%t = self%steps*self%dt
    end subroutine restore_stepper_state
+
+   !> Does the scene have compliant stops (the springs of levels) or compliant holes?
+   pure logical function compliant_contact(self)
+      class(time_stepper), intent(in) :: self
+      compliant_contact = self%contacts%springs%count > 0 .or. self%holes%circles%compliant
+   end function compliant_contact
 
    !> y = C x = a M x + b K x into preallocated y, with z (same size) as work space (the
    !! steppers' form, without a temporary; `damping_times` is the function form).
@@ -535,14 +553,29 @@ contains
    end subroutine free_solve
 
    !> y := y + C_m x = y + Y (c * (Y^T x)): the damping per mode (`stepper_settings`), 4 J K
-   !! operations (docs/method.md, "Damping per mode").
+   !! operations (docs/method.md, "Damping per mode"); a beam of two planes (x of 2J values,
+   !! y then z): in each plane, with the z plane's own modes when it has them.
    subroutine add_modal_damping(self, x, y)
       class(time_stepper), intent(in) :: self
       real(dp), intent(in) :: x(:)
       real(dp), intent(inout) :: y(:)
-      real(dp) :: coordinates(size(self%modal_rates))
-      coordinates = self%modal_rates*matmul(x, self%modal_forces)
-      y = y + matmul(self%modal_forces, coordinates)
+      integer :: j
+      j = size(self%modal_forces, 1)
+      call add_plane(self%modal_forces, self%modal_rates, x(1:j), y(1:j))
+      if (size(x) == j) return
+      if (allocated(self%modal_rates_z)) then
+         call add_plane(self%modal_forces_z, self%modal_rates_z, x(j + 1:), y(j + 1:))
+      else
+         call add_plane(self%modal_forces, self%modal_rates, x(j + 1:), y(j + 1:))
+      end if
+   contains
+      subroutine add_plane(forces, rates, x, y)
+         real(dp), intent(in) :: forces(:, :), rates(:), x(:)
+         real(dp), intent(inout) :: y(:)
+         real(dp) :: coordinates(size(rates))
+         coordinates = rates*matmul(x, forces)
+         y = y + matmul(forces, coordinates)
+      end subroutine add_plane
    end subroutine add_modal_damping
 
    !> C x = a M x + b K x (Rayleigh damping).

@@ -13,7 +13,9 @@
 !! (3) the same whirl in a compliant, undamped hole: E + Phi and L conserved to round-off
 !!     over 1e5 steps (the spring's force is the discrete gradient of its potential along
 !!     the midpoint's direction, docs/method.md);
-!! and (1) again with compliant stops (the circle's radial spring against the levels'), with
+!! and (1) again with compliant stops (the circle's radial spring against the levels'; a
+!! compliant circle along the beam against levels along it, their stiffness per length
+!! shared among the nodes alike), with
 !! a square hole (a polygon of 4 faces) and with the square turned by 45 degrees and the
 !! data along 45 degrees (y and z the twin's times cos 45 and sin 45).
 program test_circle_holes
@@ -44,6 +46,11 @@ program test_circle_holes
    compliant = scene
    compliant%obstacles(1)%stiffness = 1e6_dp
    call planar_reduction(compliant, 'compliant (1e6 N/m)')
+   ! a compliant hole along the beam (a long bearing): its stiffness per length shared
+   ! among its nodes as the levels' (tributary lengths)
+   compliant%obstacles(1)%x_from = 0.4_dp
+   compliant%obstacles(1)%stiffness = 2e7_dp
+   call planar_reduction(compliant, 'compliant along 0.4..0.5 m (2e7 N/m per m)')
    ! a square hole (a polygon of 4 faces, the first face's normal along y) is the two levels
    ! for data along y; turned by 45 degrees with data along 45 degrees, it is the twin turned
    square = scene
@@ -153,7 +160,9 @@ contains
          call advance_planar_twins(stepper, reference, perturbed, shares, deviation, own, scale)
          if (.not. present(angle)) z_zero = z_zero .and. all(abs(stepper%u(j + 1:)) <= 0) .and. &
                                             all(abs(stepper%v(j + 1:)) <= 0)
-         depth = max(depth, stepper%holes%circles%penetration(1, stepper%u))
+         do k = 1, stepper%holes%circles%count
+            depth = max(depth, stepper%holes%circles%penetration(k, stepper%u))
+         end do
          if (hole%obstacles(1)%stiffness > 0) cycle
          ! rigid: a level's point held from below or above is the circle's, with its impulse
          ! upwards (+y) from below and the circle's along its inward normal

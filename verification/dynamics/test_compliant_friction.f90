@@ -59,10 +59,10 @@ program test_compliant_friction
          call start_friction_case(scene, case, stepper, k_beam, normal, angle, pull)
          j = size(stepper%u)/2
          tip = stepper%holes%circles%dof(1)
-         ! the wear window: from the ramp's start (0.02 s) to the end, the steps first..steps
+         ! the wear window: from the ramp's start (0.02 s) to the end, the steps first, first + 1, ... (to the end)
          ! (the window from the state of step first - 1)
          first = nint(0.02_dp/scene%time%dt) + 1
-         call wear(case)%init(stepper, stepper%v, 1e-12_dp, int(first - 1, int64), int(steps, int64), [-1.0_dp])
+         call wear(case)%init(stepper, stepper%v, 1e-12_dp, int(first - 1, int64), [-1.0_dp])
          slid = 0
          at_bound = 0
          work_rate = 0

@@ -7,6 +7,9 @@
 !!   every statistic of /statistics (the window starts before the checkpoint) with its
 !!   standard error;
 !! - the final states (every item of the final checkpoint) and the step counts.
+!! A beam of two planes with obstacles (issue 21): its histories of both planes, the
+!! friction's energy, and the wear (/wear and /statistics/wear) too. The statistics'
+!! layout is read from FULL.h5 (its points, contact points, obstacles and wear points).
 !! The reference is the uninterrupted run itself: no tolerance, equality of bit patterns.
 !! usage: compare_continued FULL.h5 CONTINUED.h5
 program compare_continued
@@ -21,7 +24,8 @@ program compare_continued
    character(len=*), parameter :: histories(*) = [character(len=40) :: '/time', '/tip/displacement', &
       '/tip/velocity', '/tip/reaction', '/tip/impulse', '/energy/kinetic', '/energy/elastic', '/energy/total', &
       '/energy/work', '/energy/dissipated', '/energy/dissipated_impacts', '/energy/dissipated_damping', &
-      '/energy/dissipated_numerical', '/energy/balance', '/contact/penetration', '/points/displacement', &
+      '/energy/dissipated_numerical', '/energy/balance', '/energy/dissipated_friction', &
+      '/energy/dissipated_contact_damping', '/energy/contact_potential', '/contact/penetration', '/points/displacement', &
       '/points/velocity', '/field/time', '/field/displacement', '/impacts/time', '/impacts/x', &
       '/impacts/impulse', '/impacts/velocity_before', '/impacts/velocity_after', '/episodes/x', &
       '/episodes/start', '/episodes/end', '/episodes/impulse', '/episodes/approach_speed', '/episodes/impacts', &
@@ -29,6 +33,9 @@ program compare_continued
       '/statistics/poincare/velocity']
    character(len=*), parameter :: wholes(*) = [character(len=40) :: '/spectrum/frequency', &
       '/spectrum/tip_amplitude', '/contact/fraction']
+   !> /wear/NAME and NAME_error (a beam of two planes with obstacles)
+   character(len=*), parameter :: wear(*) = [character(len=24) :: 'work_rate', 'mean_force', 'rms_force', &
+      'contact_fraction', 'sliding_fraction', 'impact_rate', 'wear_volume_rate']
    type(test_counter) :: t
    type(h5_reader) :: full, continued
    type(state_record) :: full_state, continued_state
@@ -38,6 +45,7 @@ program compare_continued
    integer(int64) :: full_steps, continued_steps, rows_compared
    integer :: k, stat
    type(statistics_layout) :: layout
+   integer(int64) :: obstacles
 
    call get_command_argument(1, full_name)
    call get_command_argument(2, continued_name)
@@ -53,8 +61,17 @@ program compare_continued
    do k = 1, size(wholes)
       call compare_whole(trim(wholes(k)))
    end do
-   ! the statistics of the scene of restart.nml.in: tip and 2 points, 1 contact point, 2 stops
-   call layout%init(3, 1, 2)
+   do k = 1, size(wear)
+      if (.not. full%exists('/wear/'//trim(wear(k)))) cycle
+      call compare_whole('/wear/'//trim(wear(k)))
+      call compare_whole('/wear/'//trim(wear(k))//'_error')
+   end do
+   ! the statistics' layout of the full run
+   call full%attr_int64('/', 'obstacles.count', obstacles, stat, errmsg)
+   call t%check_true('read the obstacles'' count', stat == 0, errmsg)
+   call layout%init(entries('/statistics/points/x'), entries('/statistics/contacts/x'), int(obstacles), &
+                    entries('/statistics/wear/x'), full%exists('/statistics/wear/wear_volume_rate'), &
+                    full%exists('/statistics/energy/power_friction'))
    do k = 1, size(layout%entries)
       call compare_whole('/statistics/'//layout%path(k, .false.))
       if (layout%entries(k)%has_error) call compare_whole('/statistics/'//layout%path(k, .true.))
@@ -92,6 +109,16 @@ program compare_continued
 
 contains
 
+   !> Number of values of the dataset `path` of the full run (0 when it has none).
+   integer function entries(path)
+      character(len=*), intent(in) :: path
+      entries = 0
+      if (.not. full%exists(path)) return
+      call full%read_reals(path, a, stat, errmsg)
+      call t%check_true('read '//path, stat == 0, errmsg)
+      if (stat == 0) entries = size(a)
+   end function entries
+
    !> Dataset `path` is the same in both files.
    subroutine compare_whole(path)
       character(len=*), intent(in) :: path
@@ -117,8 +144,8 @@ contains
       call t%check_true('shape of '//path, stat == 0, errmsg)
       if (stat /= 0) return
       rows = continued_dims(size(continued_dims))
-      columns = 1
-      if (size(continued_dims) == 2) columns = int(continued_dims(1))
+      ! a row of a 2-d or 3-d history: every value of its inner dimensions
+      columns = int(product(continued_dims(1:size(continued_dims) - 1)))
       call t%check_true(path//': the continued run has no more rows than the full run', &
                         rows <= full_dims(size(full_dims)))
       if (rows == 0 .or. rows > full_dims(size(full_dims))) return

@@ -13,6 +13,13 @@
 #             contact points, the compliant stops and their kind; what may change (rigid
 #             obstacle levels, a stop's damping) is accepted; &initial velocity beside
 #             from_file draws a warning
+#   planes    a beam of two planes (issue 21), rigid and compliant walls in the
+#             cross-section (a round hole and a hexagonal one with friction, a level),
+#             continued at 0.1524 s inside the statistics window and (compliant) inside a
+#             contact with the hexagon: bitwise as in `bitwise`, the wear (/wear,
+#             /statistics/wear) and the friction's energy included; then what must match
+#             (the planes, inertia_z, the points of the obstacles, a compliant wall) and
+#             what may change (a rigid wall moved away; one moved onto the beam is refused)
 #   checksum  a checkpoint with one flipped bit (a real, a running sum, the step count) is
 #             refused with exit status 2 (edit_checkpoint damages it); one without a
 #             checksum (as vibrobeam 0.2.0 wrote them) is continued with a warning
@@ -167,6 +174,47 @@ refused)
   accepted 'the rigid stops moved apart' "s/level_from(1) = -1e-3/level_from(1) = -2e-3/; s/level_from(2) = 1e-3/level_from(2) = 2e-3/"
   accepted 'a compliant stop with damping' \
     "s/half.h5/compliant.h5/; s/level_from(1) = -1e-3,/level_from(1) = -1e-3, stiffness(1) = 1e5, damping(1) = 0.5,/"
+  ;;
+
+planes)
+  # planes_scene NAME T_END KIND [FROM_FILE]: restart_planes.nml.in with rigid or
+  # compliant walls
+  planes_scene() {
+    local walls=('' '' '')
+    [ "$3" = compliant ] && walls=('stiffness(1) = 1e6, damping(1) = 5,' 'stiffness(2) = 1e6, damping(2) = 5,' \
+                                   'stiffness(3) = 1e6, damping(3) = 5,')
+    sed -e "s|@FILE@|$1.h5|" -e "s|@T_END@|$2|" -e "s|@KIND@|$3|" -e "s|@T_HALF@|0.1524|" \
+        -e "s|@STOP1@|${walls[0]}|" -e "s|@STOP2@|${walls[1]}|" -e "s|@STOP3@|${walls[2]}|" \
+        -e "s|@FROM_FILE@|${4:+, from_file = '$4'}|" "$here/restart_planes.nml.in" > "$1.nml"
+  }
+  scheme=velocity; basis=hermite
+  for kind in rigid compliant; do
+    planes_scene full 0.3 $kind
+    planes_scene half 0.1524 $kind
+    planes_scene continued 0.3 $kind half.h5
+    for name in full half continued; do run $name; done
+    echo "two planes, $kind walls:"
+    "$compare" full.h5 continued.h5 || failed=1
+    [ $kind = compliant ] && break
+    # what must match, and what may change (rigid walls)
+    refused 'a z plane of its own' 'beam.inertia_z is not given in the file and 3e-9 in this scene' \
+      "s/planes = 2/planes = 2, inertia_z = 3e-9/"
+    refused 'a hole moved along the beam' \
+      'point of the obstacles 1 x is 0.39999999999999997 in the file and 0.5 in this scene' \
+      "s/x_from(1) = 0.4/x_from(1) = 0.5/"
+    refused 'a rigid hole shrunk onto the beam' 'is outside the circle of &obstacles 1' \
+      "s/radius(1) = 0.25e-3/radius(1) = 1e-6/"
+    accepted 'a rigid hole widened' "s/radius(1) = 0.25e-3/radius(1) = 0.3e-3/"
+  done
+  # a compliant wall keeps its size (its spring's energy is part of the checkpoint)
+  refused 'a compliant hole widened' 'obstacles.radius(1) is 2.5e-4 in the file and 3e-4 in this scene' \
+    "s/radius(1) = 0.25e-3/radius(1) = 0.3e-3/"
+  # a planar checkpoint (restart.nml.in's two tip stops) continued by a beam of two planes
+  scene half 0.1
+  scene continued 0.2 half.h5
+  run half
+  refused 'a planar checkpoint continued in two planes' 'beam.planes is 1 in the file and 2 in this scene' \
+    "s/rayleigh_mass = 2/rayleigh_mass = 2, planes = 2/"
   ;;
 
 checksum)

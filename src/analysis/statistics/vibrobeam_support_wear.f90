@@ -14,33 +14,39 @@
 !! - impact rate: impacts (an impulse after a free step, towards the wall) per second;
 !! - Archard's wear volume rate K W' (m^3/s) where the obstacle's wear_coefficient K is
 !!   given.
-!! Standard errors: the window cut into `batches` equal batches of steps, each quantity
-!! computed per batch, the standard deviation of the batch values over sqrt(batches)
-!! (independent batches: a window long against the motion's correlation time).
+!! Standard errors: batch means over the blocks of the run's statistics
+!! (`vibrobeam_batch_blocks`: 8 to 15 complete blocks of 2^m steps, the same blocks as
+!! every other statistic of the window), each quantity computed per complete block, the
+!! standard error of the mean of the block values (independent blocks: a window long
+!! against the motion's correlation time). The blocks depend only on the steps observed,
+!! not on where the window will end, so a run continued from its checkpoint
+!! (`save_state`, `restore_state`) reaches the uninterrupted run's numbers bit for bit.
 module vibrobeam_support_wear
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_circle_set, only: circle_set
    use vibrobeam_time_stepper, only: time_stepper
    use vibrobeam_hdf5, only: h5_writer
    use vibrobeam_hdf5_series, only: h5_array
+   use vibrobeam_batch_blocks, only: block_accumulator, standard_error
+   use vibrobeam_state_record, only: state_record
    use vibrobeam_statistics_layout, only: wear_quantities, wear_names, wear_units, group_wear
    use vibrobeam_statistics, only: statistics_result
    implicit none
    private
    public :: support_wear
 
-   integer, parameter :: batch_count = 16
+   !> the sums kept per point, in this order: P |v_t|, P, P^2/dt, held steps, sliding
+   !! steps, impacts (sum s of point k is the blocks' quantity sums_per_point (k - 1) + s)
+   integer, parameter :: s_work = 1, s_impulse = 2, s_square = 3, s_held = 4, s_sliding = 5, s_impacts = 6, &
+                         sums_per_point = 6
 
    type :: support_wear
       logical :: active = .false.                  !! the scene has such points
       integer :: points = 0
-      integer(int64) :: first_step = 1, last_step = 0   !! the window's first and last steps
-      integer :: batches = batch_count
+      integer(int64) :: window_start = 0          !! n0: the window holds the steps n > n0
       real(dp) :: dt = 0
       real(dp), allocatable :: coefficient(:)      !! (points) Archard's K (m^3/(N m)); < 0: not given
-      !> (points, batches) sums over each batch: P |v_t|, P, P^2/dt, held steps, sliding
-      !! steps, impacts
-      real(dp), allocatable :: work(:, :), impulse(:, :), square(:, :), held(:, :), sliding(:, :), impacts(:, :)
+      type(block_accumulator) :: blocks            !! the sums of every point over the window's blocks
       !> each point received an impulse in the last step (or rested on its wall at t = 0):
       !! the next impulse there is not an impact
       logical, allocatable :: in_contact(:)
@@ -54,22 +60,25 @@ module vibrobeam_support_wear
       procedure :: observe_step
       procedure :: observe
       procedure :: count_impact
+      procedure :: close_step
       procedure :: result
       procedure :: into_statistics
+      procedure :: save_state
+      procedure :: restore_state
    end type support_wear
 
 contains
 
    !> For the points of the stepper's obstacles (`stepper%holes%circles`, at its start,
-   !! with the initial velocity `v0`), a window from step first_step to last_step; each
-   !! point's `coefficient`, Archard's K of its obstacle (< 0: not given). A point on its
-   !! wall (within `tolerance`) and not moving into it is in contact from t = 0, so its
+   !! with the initial velocity `v0`), a window after the state of step `first_step`;
+   !! each point's `coefficient`, Archard's K of its obstacle (< 0: not given). A point on
+   !! its wall (within `tolerance`) and not moving into it is in contact from t = 0, so its
    !! first impulse is not an impact.
-   subroutine init(self, stepper, v0, tolerance, first_step, last_step, coefficient)
+   subroutine init(self, stepper, v0, tolerance, first_step, coefficient)
       class(support_wear), intent(inout) :: self
       class(time_stepper), intent(in) :: stepper
       real(dp), intent(in) :: v0(:), tolerance
-      integer(int64), intent(in) :: first_step, last_step
+      integer(int64), intent(in) :: first_step
       real(dp), intent(in) :: coefficient(:)
       integer :: c
       associate (circles => stepper%holes%circles)
@@ -87,22 +96,18 @@ contains
       self%dt = stepper%dt
       self%coefficient = coefficient
       self%volume = any(coefficient >= 0)
-      call self%begin_window(first_step, last_step)
+      call self%begin_window(first_step)
    end subroutine init
 
-   !> The window from the state of step `first_step` (n0) to that of `last_step` (N): the
-   !! steps n0 + 1 .. N, as the statistics' window (`vibrobeam_statistics`), its tallies
-   !! empty (a sweep measures window after window); the points' contact state carries on.
-   subroutine begin_window(self, first_step, last_step)
+   !> The window from the state of step `first_step` (n0): the steps n0 + 1, n0 + 2, ...,
+   !! as the statistics' window (`vibrobeam_statistics`), its tallies empty (a sweep
+   !! measures window after window); the points' contact state carries on.
+   subroutine begin_window(self, first_step)
       class(support_wear), intent(inout) :: self
-      integer(int64), intent(in) :: first_step, last_step
-      self%first_step = first_step + 1
-      self%last_step = last_step
-      self%batches = int(max(1_int64, min(int(batch_count, int64), last_step - self%first_step + 1)))
-      if (allocated(self%work)) deallocate (self%work, self%impulse, self%square, self%held, self%sliding, self%impacts)
-      allocate (self%work(self%points, self%batches), self%impulse(self%points, self%batches), &
-                self%square(self%points, self%batches), self%held(self%points, self%batches), &
-                self%sliding(self%points, self%batches), self%impacts(self%points, self%batches), source=0.0_dp)
+      integer(int64), intent(in) :: first_step
+      real(dp) :: no_levels(0)
+      self%window_start = first_step
+      call self%blocks%init(sums_per_point*self%points, 0, no_levels)
    end subroutine begin_window
 
    !> The last step of `stepper` at its points: each held point's impulse, tangential
@@ -152,16 +157,22 @@ contains
          end if
       end associate
       self%in_contact = held
+      call self%close_step(stepper%steps)
    end subroutine observe_step
 
-   !> Batch of step n (0: outside the window).
-   pure integer function batch_of(self, n)
+   !> Step n is in the window.
+   pure logical function in_window(self, n)
       class(support_wear), intent(in) :: self
       integer(int64), intent(in) :: n
-      batch_of = 0
-      if (n < self%first_step .or. n > self%last_step) return
-      batch_of = 1 + int((n - self%first_step)*self%batches/(self%last_step - self%first_step + 1))
-   end function batch_of
+      in_window = n > self%window_start
+   end function in_window
+
+   !> Step n is observed: in the window, it closes its sample of the blocks.
+   subroutine close_step(self, n)
+      class(support_wear), intent(inout) :: self
+      integer(int64), intent(in) :: n
+      if (in_window(self, n)) call self%blocks%close_sample()
+   end subroutine close_step
 
    !> Step n's contact at point k: normal impulse `impulse` (N s, > 0 held), tangential
    !! velocity `slip` (m/s, at V^{n+theta}), `sliding` whether it slid.
@@ -171,14 +182,14 @@ contains
       integer, intent(in) :: k
       real(dp), intent(in) :: impulse, slip
       logical, intent(in) :: sliding
-      integer :: b
-      b = batch_of(self, n)
-      if (b == 0 .or. impulse <= 0) return
-      self%work(k, b) = self%work(k, b) + impulse*abs(slip)
-      self%impulse(k, b) = self%impulse(k, b) + impulse
-      self%square(k, b) = self%square(k, b) + impulse**2/self%dt
-      self%held(k, b) = self%held(k, b) + 1
-      if (sliding) self%sliding(k, b) = self%sliding(k, b) + 1
+      integer :: q
+      if (.not. in_window(self, n) .or. impulse <= 0) return
+      q = sums_per_point*(k - 1)
+      call self%blocks%add(q + s_work, impulse*abs(slip))
+      call self%blocks%add(q + s_impulse, impulse)
+      call self%blocks%add(q + s_square, impulse**2/self%dt)
+      call self%blocks%add(q + s_held, 1.0_dp)
+      if (sliding) call self%blocks%add(q + s_sliding, 1.0_dp)
    end subroutine observe
 
    !> An impact at point k in step n.
@@ -186,71 +197,55 @@ contains
       class(support_wear), intent(inout) :: self
       integer(int64), intent(in) :: n
       integer, intent(in) :: k
-      integer :: b
-      b = batch_of(self, n)
-      if (b > 0) self%impacts(k, b) = self%impacts(k, b) + 1
+      if (in_window(self, n)) call self%blocks%add(sums_per_point*(k - 1) + s_impacts, 1.0_dp)
    end subroutine count_impact
 
    !> The quantities of the module documentation (points, wear_quantities) over the whole
-   !! window and their standard errors; the wear volume rate is 0 where no coefficient is
-   !! given.
+   !! window and their standard errors (batch means over the complete blocks); the wear
+   !! volume rate is 0 where no coefficient is given.
    subroutine result(self, value, error)
       class(support_wear), intent(in) :: self
       real(dp), intent(out) :: value(:, :), error(:, :)   !! (points, wear_quantities)
-      real(dp) :: per_batch(self%batches), length(self%batches), window
+      real(dp) :: per_block(self%blocks%complete), whole(sums_per_point), window, block_length
       integer :: k, q, b
-      integer(int64) :: steps
-      steps = self%last_step - self%first_step + 1
       value = 0
       error = 0
-      if (steps < 1 .or. self%points == 0) return   ! no window
-      do b = 1, self%batches   ! the steps of batch b
-         length(b) = real(count_steps(b), dp)*self%dt
-      end do
-      window = real(steps, dp)*self%dt
+      if (self%blocks%samples < 1 .or. self%points == 0) return   ! no window
+      window = real(self%blocks%samples, dp)*self%dt
+      block_length = real(self%blocks%block_steps, dp)*self%dt
       do k = 1, self%points
+         whole = [(self%blocks%total(sums_per_point*(k - 1) + q), q = 1, sums_per_point)]
          do q = 1, wear_quantities
-            do b = 1, self%batches
-               per_batch(b) = quantity(q, k, [b], length(b))
+            value(k, q) = quantity(q, k, whole, window)
+            do b = 1, self%blocks%complete
+               per_block(b) = quantity(q, k, self%blocks%sums(sums_per_point*(k - 1) + 1:sums_per_point*k, b - 1), &
+                                       block_length)
             end do
-            value(k, q) = quantity(q, k, [(b, b=1, self%batches)], window)
-            error(k, q) = 0
-            if (self%batches > 1) error(k, q) = sqrt(sum((per_batch - sum(per_batch)/self%batches)**2)/ &
-                                                     (self%batches - 1)/self%batches)
+            error(k, q) = standard_error(per_block)
          end do
       end do
    contains
-      !> Quantity q of point k over the batches `in` of total length `time` (s).
-      pure real(dp) function quantity(q, k, in, time)
-         integer, intent(in) :: q, k, in(:)
-         real(dp), intent(in) :: time
+      !> Quantity q of point k from its sums over a time `time` (s).
+      pure real(dp) function quantity(q, k, sums, time)
+         integer, intent(in) :: q, k
+         real(dp), intent(in) :: sums(:), time
          select case (q)
          case (1)
-            quantity = sum(self%work(k, in))/time
+            quantity = sums(s_work)/time
          case (2)
-            quantity = sum(self%impulse(k, in))/time
+            quantity = sums(s_impulse)/time
          case (3)
-            quantity = sqrt(sum(self%square(k, in))/time)
+            quantity = sqrt(sums(s_square)/time)
          case (4)
-            quantity = sum(self%held(k, in))*self%dt/time
+            quantity = sums(s_held)*self%dt/time
          case (5)
-            quantity = sum(self%sliding(k, in))*self%dt/time
+            quantity = sums(s_sliding)*self%dt/time
          case (6)
-            quantity = sum(self%impacts(k, in))/time
+            quantity = sums(s_impacts)/time
          case default
-            quantity = max(0.0_dp, self%coefficient(k))*sum(self%work(k, in))/time
+            quantity = max(0.0_dp, self%coefficient(k))*sums(s_work)/time
          end select
       end function quantity
-      !> Steps of batch b: n - first_step in [ceil((b - 1) N/B), ceil(b N/B) - 1].
-      pure integer(int64) function count_steps(b)
-         integer, intent(in) :: b
-         count_steps = ceiling_ratio(b*steps, self%batches) - ceiling_ratio((b - 1)*steps, self%batches)
-      end function count_steps
-      pure integer(int64) function ceiling_ratio(a, d)
-         integer(int64), intent(in) :: a
-         integer, intent(in) :: d
-         ceiling_ratio = (a + d - 1)/d
-      end function ceiling_ratio
    end subroutine result
 
    !> The quantities and their standard errors into the 'wear' group of `outcome` (the
@@ -320,4 +315,32 @@ contains
          if (stat /= 0) return
       end do
    end subroutine write
+
+   !> Put what a continued run needs into `record` (docs/output.md, "Checkpoint and
+   !! restart"): the window's start, each point's contact state and the blocks' sums.
+   subroutine save_state(self, record)
+      class(support_wear), intent(in) :: self
+      type(state_record), intent(inout) :: record
+      if (.not. self%active) return
+      call record%put_int64s('wear.window_start', [self%window_start])
+      call record%put_logicals('wear.in_contact', self%in_contact)
+      call self%blocks%save_state(record, 'wear.blocks')
+   end subroutine save_state
+
+   !> Take back what `save_state` put into `record` (the observer is `init`ed for the
+   !! same points).
+   subroutine restore_state(self, record, stat, errmsg)
+      class(support_wear), intent(inout) :: self
+      type(state_record), intent(in) :: record
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      integer(int64) :: start(1)
+      stat = 0
+      errmsg = ''
+      if (.not. self%active) return
+      call record%get_int64s('wear.window_start', start, stat, errmsg)
+      if (stat == 0) call record%get_logicals('wear.in_contact', self%in_contact, stat, errmsg)
+      if (stat == 0) call self%blocks%restore_state(record, 'wear.blocks', stat, errmsg)
+      if (stat == 0) self%window_start = start(1)
+   end subroutine restore_state
 end module vibrobeam_support_wear

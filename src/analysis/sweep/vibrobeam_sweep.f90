@@ -331,7 +331,7 @@ contains
       if (len_trim(scene%initial%from_file) == 0) return
       file = trim(scene%initial%from_file)
       call check_compatible(file, first_scene, first%contacts%x, first%contacts%lower, first%contacts%upper, &
-                            same_bounds, stat, errmsg)
+                            same_bounds, stat, errmsg, hole_x=first%circles%x)
       if (stat == 0) call read_checkpoint(file, record, time, stat, errmsg)
       if (stat /= 0) then
          if (index(errmsg, '&initial from_file') == 0) errmsg = '&initial from_file = '''//file//''': '//trim(errmsg)
@@ -339,7 +339,8 @@ contains
          return
       end if
       ! the scheme is the file's (check_compatible): its state, at t = 0
-      call state_from_record(first_scene%time%scheme, record, first%model%unknowns, base, stat, errmsg)
+      call state_from_record(first_scene%time%scheme, record, first_scene%beam%plane_count()*first%model%unknowns, &
+                             base, stat, errmsg)
       if (stat /= 0) then
          errmsg = '&initial from_file = '''//file//''': '//trim(errmsg)
          stat = stat_invalid_input

@@ -395,7 +395,7 @@ contains
          do windows = 1, max_settle_windows
             transient = result%settle_steps + (windows - 1)*result%measure_steps
             if (windows > 1) call recorder%restart_statistics(stepper, transient)
-            call recorder%restart_wear(transient, transient + result%measure_steps)
+            call recorder%restart_wear(transient)
             call step_to(stepper, recorder, transient + result%measure_steps)
             current = recorder%window_statistics(stepper)
             if (result%status /= status_ok) exit
