@@ -240,7 +240,7 @@ contains
       character(len=256) :: errmsg
       observations = 1
       if (allocated(scene%output%points)) observations = 1 + size(scene%output%points)
-      call layout%init(observations, contact_points, size(scene%obstacles))
+      call layout%init(observations, contact_points, size(scene%obstacles), planes=scene%beam%plane_count())
       do k = 1, size(points)
          local = point_scene(scene, settings, points(k))
          call point_windows(settings, local, settle_steps, measure_steps, stat, errmsg)

@@ -14,7 +14,6 @@ holds exact zeros, in the HDF5 histories and in the text files' columns.
 Exit status 0 when every check holds, 1 otherwise (one line per failure), 77 without h5py.
 """
 import os
-import subprocess
 import sys
 import tempfile
 
@@ -25,31 +24,12 @@ except ImportError:
     print('SKIP: no python3 with h5py (Debian package python3-h5py)')
     sys.exit(77)
 
-SCENE = """
-&beam      length = 0.5, youngs_modulus = 210e9, density = 7850, area = 6.938018879893839e-05,
-           inertia = 2.7642255353230253e-09, rayleigh_mass = 7.9193, rayleigh_stiffness = 5.9941e-06 {planes} /
-&mesh      elements = 8 /
-&time      t_end = 0.02, dt = 2e-5 /
-&load      point_force = 5.0, point_frequency = 300.0 {direction} /
-&initial   velocity = 'mode', velocity_mode = 1, velocity_amplitude = 0.3 {direction} /
-&output    file = '{name}.h5', text = .true., points = 0.2, 0.35 /
-"""
-failures = []
-
-
-def check(what, holds):
-    print(('ok   ' if holds else 'FAIL ') + what)
-    if not holds:
-        failures.append(what)
+from planes_scene import check, failures, run as run_scene
 
 
 def run(vibrobeam, folder, name, planes='', direction=''):
-    with open(os.path.join(folder, name + '.nml'), 'w') as handle:
-        handle.write(SCENE.format(planes=planes, direction=direction, name=name))
-    done = subprocess.run([vibrobeam, name + '.nml'], cwd=folder, capture_output=True, text=True, timeout=120)
-    if done.returncode != 0:
-        sys.exit(f'vibrobeam {name}.nml exited {done.returncode}: {done.stderr}')
-    with h5py.File(os.path.join(folder, name + '.h5'), 'r') as result:
+    result_path = run_scene(vibrobeam, folder, name, planes, direction, output=', text = .true.')
+    with h5py.File(result_path, 'r') as result:
         histories = {path: result[path][...] for path in
                      ['tip/displacement', 'tip/velocity', 'points/displacement', 'points/velocity']}
     text = {kind: np.loadtxt(os.path.join(folder, f'{name}_{kind}.dat'), comments='#', ndmin=2)
