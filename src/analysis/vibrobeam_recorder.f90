@@ -574,15 +574,16 @@ contains
       type(beam_model), intent(in) :: model
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      integer :: plane
       stat = 0
       errmsg = ''
       if (stepper%steps == self%last_field_step) return
       if (allocated(self%reduction)) then
          call self%files%append_field(stepper%t, nodal_displacement(model, self%reduction%expand(stepper%u)), stat, &
                                       errmsg)
-      else
-         ! the y plane's (the first J unknowns; a beam of two planes has its z after them)
-         call self%files%append_field(stepper%t, nodal_displacement(model, stepper%u(1:model%unknowns)), stat, errmsg)
+      else   ! each plane's J unknowns (a beam of two planes has those in z after those in y)
+         call self%files%append_field(stepper%t, [(nodal_displacement(model, stepper%u((plane - 1)*model%unknowns + 1: &
+                                      plane*model%unknowns)), plane = 1, self%planes)], stat, errmsg)
       end if
       self%last_field_step = stepper%steps
    end subroutine sample_field

@@ -321,32 +321,38 @@ contains
       end if
    end subroutine history_files
 
-   !> STEM_field.dat: one gnuplot block per snapshot, x t u.
+   !> STEM_field.dat: one gnuplot block per snapshot, x t u (a beam of two planes: x t u_y u_z).
    subroutine field_file(run, stat, errmsg)
       type(derivation), intent(inout) :: run
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(text_sink) :: sink
       real(dp), allocatable :: x(:), times(:, :), field(:, :)
+      integer(int64), allocatable :: dims(:)
       integer(int64) :: snapshots, first, count
-      integer :: nodes, i, k
+      integer :: nodes, i, k, planes
+      character(len=:), allocatable :: columns
       call run%rows_of('/field/time', snapshots, stat, errmsg)
       if (stat == 0) call run%file%read_reals('/mesh/x', x, stat, errmsg)
+      if (stat == 0) call run%file%shape('/field/displacement', dims, stat, errmsg)
       if (stat /= 0) return
       nodes = size(x)
-      call run%open_sink(sink, 'field', 'x (m)  t (s)  u (m); one block per snapshot (gnuplot splot/pm3d)', stat, errmsg)
+      planes = merge(2, 1, size(dims) == 3)   ! (snapshots, nodes, 2): y, z at each node
+      columns = 'x (m)  t (s)  u (m)'
+      if (planes == 2) columns = 'x (m)  t (s)  u in y (m)  u in z (m)'
+      call run%open_sink(sink, 'field', columns//'; one block per snapshot (gnuplot splot/pm3d)', stat, errmsg)
       if (stat /= 0) return
       count = max(1_int64, int(block_values/nodes, int64))
       first = 1
       blocks: do while (first <= snapshots)
          count = min(count, snapshots - first + 1)
-         allocate (times(1, count), field(nodes, count))
+         allocate (times(1, count), field(planes*nodes, count))
          call run%file%read_rows('/field/time', first, times, stat, errmsg)
          if (stat == 0) call run%file%read_rows('/field/displacement', first, field, stat, errmsg)
          if (stat /= 0) exit blocks
          do k = 1, int(count)
             do i = 1, nodes
-               call sink%put_row('narrow', [x(i), times(1, k), field(i, k)], stat, errmsg)
+               call sink%put_row('narrow', [x(i), times(1, k), field(planes*(i - 1) + 1:planes*i, k)], stat, errmsg)
                if (stat /= 0) exit blocks
             end do
             call sink%put_line('', stat, errmsg)
