@@ -207,7 +207,7 @@ contains
       self%observed_weights(:, 2:) = self%point_weights
       allocate (self%events%observed(1 + size(self%point_x), 2))
       allocate (self%events%observed_z(1 + size(self%point_x), 2), source=0.0_dp)
-      call self%spectra%init(self%every*scene%time%dt, last_step/self%every + 1, self%point_x)
+      call self%spectra%init(self%every*scene%time%dt, last_step/self%every + 1, self%point_x, self%planes)
       if (self%write_rows) call self%forces_spectra%init(scene%forces, problem%loads%forces, last_step)
       gap = scene%output%episode_gap
       if (is_unset(gap)) gap = default_episode_gap(model)
@@ -560,7 +560,7 @@ contains
       if (stat /= 0) return
       ! the spectrum takes the uniformly spaced rows only (not a last row off the grid)
       if (mod(stepper%steps, self%every) == 0) call self%spectra%add(row(h_tip_u), self%events%observed(2:, 1), stat, &
-                                                                      errmsg)
+                                                                      errmsg, self%events%observed_z(:, 1))
       if (stat /= 0) return
       self%tip_impulse = 0
       self%last_output_step = stepper%steps

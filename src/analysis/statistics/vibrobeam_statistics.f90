@@ -64,7 +64,7 @@ module vibrobeam_statistics
       type(block_accumulator) :: blocks
       type(poincare_sampler) :: poincare
       type(poincare_diagnostics) :: diagnostics   !! period, 0-1 test, Lyapunov exponent of the samples
-      type(welch_estimator) :: spectrum
+      type(welch_estimator) :: spectrum, spectrum_z   !! the tip's displacement, in z with two planes
       !> (contact points) sample offset at which the open episode there opened; -1: none in the window
       integer(int64), allocatable :: episode_offset(:)
       !> (contact points) the compliant stops push there (force /= 0 after the last step)
@@ -157,6 +157,7 @@ contains
       self%episode_offset = -1
       self%force_offset = -1
       call self%spectrum%init(self%dt, self%expected_samples)
+      if (self%planes == 2) call self%spectrum_z%init(self%dt, self%expected_samples)
    end subroutine begin_window
 
    !> The run's starting state (t = 0, or a checkpoint): the window starts here when n0 is
@@ -316,6 +317,7 @@ contains
       call self%poincare%sample_step(stepper%steps, values, self%poincare_found, self%sample_times, self%sample_values)
       call self%diagnostics%observe_step(stepper, values, self%poincare_found, self%sample_values)
       call self%spectrum%add(events%observed(1, 1), stat, errmsg)
+      if (stat == 0 .and. self%planes == 2) call self%spectrum_z%add(events%observed_z(1, 1), stat, errmsg)
       ! the levels (an energy evaluation) only where a block ends
       if (self%blocks%completes_block()) then
          call self%blocks%close_sample(levels_of(stepper, self%layout%friction))
@@ -440,7 +442,7 @@ contains
       type(statistics_result) :: outcome
       type(run_statistics) :: copy
       real(dp), allocatable :: batch(:, :), frequency(:), amplitude(:)
-      real(dp) :: levels_end(level_count + merge(1, 0, self%layout%friction)), duration, block_duration
+      real(dp) :: levels_end(level_count + merge(1, 0, self%layout%friction)), duration, block_duration, width_z
       integer :: c, k, e, b, batches, stat
       integer(int64) :: segments
       character(len=256) :: errmsg
@@ -518,9 +520,12 @@ contains
       do k = 1, self%layout%size
          outcome%errors(k) = standard_error(batch(k, :))
       end do
-      ! dominant frequencies of the tip displacement
+      ! dominant frequencies of the tip displacement (in each plane: the same samples, bins)
       call copy%spectrum%spectrum(frequency, amplitude, segments, outcome%bin_width, stat, errmsg)
-      if (stat == 0) call peaks(frequency, amplitude)
+      if (stat == 0) call peaks(frequency, amplitude, 1)
+      if (stat == 0 .and. self%planes == 2) call copy%spectrum_z%spectrum(frequency, amplitude, segments, &
+                                                                         width_z, stat, errmsg)
+      if (stat == 0 .and. self%planes == 2) call peaks(frequency, amplitude, 2)
       outcome%poincare_total = self%poincare%taken
       call self%diagnostics%fill(self%layout, outcome%values, outcome%errors)
       call self%poincare%kept(outcome%poincare_time, outcome%poincare_values)
@@ -614,16 +619,19 @@ contains
          batch(at, :) = block_changes/block_duration
       end subroutine powers
 
-      !> The three largest local maxima of the spectrum (`interpolated_peaks`), also in rad/s.
-      subroutine peaks(frequency, amplitude)
+      !> The three largest local maxima of the spectrum (`interpolated_peaks`), also in rad/s,
+      !! of `plane` (the layout's entries hold each peak's y, z side by side with two planes).
+      subroutine peaks(frequency, amplitude, plane)
          real(dp), intent(in) :: frequency(:), amplitude(:)
-         integer :: f_at, a_at, w_at
-         f_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_frequency'))%offset
-         a_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_amplitude'))%offset
-         w_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_frequency_rad_s'))%offset
-         call interpolated_peaks(frequency, amplitude, outcome%bin_width, outcome%values(f_at + 1:f_at + peak_count), &
-                                 outcome%values(a_at + 1:a_at + peak_count))
-         outcome%values(w_at + 1:w_at + peak_count) = 2*pi*outcome%values(f_at + 1:f_at + peak_count)
+         integer, intent(in) :: plane
+         integer :: f_at, a_at, w_at, n
+         n = self%planes
+         f_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_frequency'))%offset + plane
+         a_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_amplitude'))%offset + plane
+         w_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_frequency_rad_s'))%offset + plane
+         call interpolated_peaks(frequency, amplitude, outcome%bin_width, outcome%values(f_at:f_at + n*(peak_count - 1):n), &
+                                 outcome%values(a_at:a_at + n*(peak_count - 1):n))
+         outcome%values(w_at:w_at + n*(peak_count - 1):n) = 2*pi*outcome%values(f_at:f_at + n*(peak_count - 1):n)
       end subroutine peaks
    end function result
 
@@ -643,6 +651,7 @@ contains
       call self%poincare%save_state(record, 'statistics.poincare')
       call self%diagnostics%save_state(record, 'statistics.diagnostics')
       call self%spectrum%save_state(record, 'statistics.spectrum')
+      if (self%planes > 1) call self%spectrum_z%save_state(record, 'statistics.spectrum_z')
    end subroutine save_state
 
    !> Take the state back. A checkpoint of another window (another measure_from, other
@@ -674,5 +683,6 @@ contains
       if (stat == 0) call self%poincare%restore_state(record, 'statistics.poincare', stat, errmsg)
       if (stat == 0) call self%diagnostics%restore_state(record, 'statistics.diagnostics', stat, errmsg)
       if (stat == 0) call self%spectrum%restore_state(record, stat, errmsg, 'statistics.spectrum')
+      if (stat == 0 .and. self%planes > 1) call self%spectrum_z%restore_state(record, stat, errmsg, 'statistics.spectrum_z')
    end subroutine restore_state
 end module vibrobeam_statistics

@@ -15,7 +15,7 @@
 !! spectrum's and the 'poincare' group's, where only the Lyapunov exponent has one.
 !! A beam of two planes has the 'points' statistics in y and z: 2 values per point, the
 !! plane fastest (`layers` = 2: (1 + points, 2) as h5py shows it), the planar y values
-!! of point p at offset + 2 (p - 1) + 1.
+!! of point p at offset + 2 (p - 1) + 1; and the 'spectrum' peaks likewise, (peaks, 2).
 module vibrobeam_statistics_layout
    implicit none
    private
@@ -125,9 +125,11 @@ contains
       do k = 1, size(energy_names)
          call add(energy_names(k), 'W', group_energy, 1, .true.)
       end do
-      call add('peak_frequency', 'Hz', group_spectrum, peak_count, .false.)
-      call add('peak_amplitude', 'm', group_spectrum, peak_count, .false.)
-      call add('peak_frequency_rad_s', 'rad/s', group_spectrum, peak_count, .false.)   ! 2 pi peak_frequency
+      ! with two planes each peak in y and in z (of the tip displacement in each plane)
+      call add('peak_frequency', 'Hz', group_spectrum, self%planes*peak_count, .false.)
+      call add('peak_amplitude', 'm', group_spectrum, self%planes*peak_count, .false.)
+      call add('peak_frequency_rad_s', 'rad/s', group_spectrum, self%planes*peak_count, .false.)   ! 2 pi peak_frequency
+      self%entries(size(self%entries) - 2:)%layers = self%planes
       do k = 1, size(poincare_names)
          call add(poincare_names(k), poincare_units(k), group_poincare, 1, index(poincare_names(k), 'lyapunov_exponent') == 1)
       end do

@@ -67,7 +67,7 @@ contains
       if (stat == 0) call run%file%shape('/sweep/statistics/points/displacement_rms', dims, stat, errmsg)
       if (stat == 0) width = observation*merge(2, 1, size(dims) == 3)
       if (stat == 0) call run%file%shape('/sweep/statistics/spectrum/peak_frequency', dims, stat, errmsg)
-      if (stat == 0) peaks = int(dims(1))   ! (peaks, points)
+      if (stat == 0) peaks = int(product(dims(1:size(dims) - 1)))   ! (peaks, points), two planes (2, peaks, points)
       if (stat == 0) call run%file%read_reals('/sweep/statistics/contacts/x', contact_x, stat, errmsg)
       if (stat /= 0) return
       call most_loaded(run, int(points), size(contact_x), loaded, stat, errmsg)
