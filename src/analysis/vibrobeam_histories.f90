@@ -63,8 +63,8 @@ contains
 
    !> Create every dataset and attribute of the histories (before the file enters SWMR
    !! mode): `point_x` the observation points (m), `contacts` the contact points, `nodes`
-   !! the field's node count, `planes` the bending planes (1, or 2: the tip's deflection
-   !! histories in y and z).
+   !! the field's node count, `planes` the bending planes (1, or 2: the tip's, the points'
+   !! and the field's deflection histories in y and z).
    subroutine create(self, writer, point_x, contacts, nodes, compliant, planes, friction, stat, errmsg)
       class(run_histories), intent(inout) :: self
       type(h5_writer), intent(inout) :: writer
@@ -99,7 +99,9 @@ contains
          if (stat /= 0) return
       end if
       call self%field_time%create(writer, '/field/time', 1, 's', stat, errmsg)
-      if (stat == 0) call self%field%create(writer, '/field/displacement', nodes, 'm', stat, errmsg, matrix=.true.)
+      ! (snapshots, nodes), with two planes (snapshots, nodes, 2): y, z
+      if (stat == 0) call self%field%create(writer, '/field/displacement', planes*nodes, 'm', stat, errmsg, &
+                                            matrix=.true., layers=planes)
       if (stat == 0 .and. self%points) then
          call writer%write_real_1d('/points/x', point_x, 'm', stat, errmsg)
          ! (outputs, points), with two planes (outputs, points, 2): y, z
@@ -173,10 +175,8 @@ contains
          if (stat /= 0) return
       end if
       if (self%points .and. self%planes == 2) then   ! (points, 2): y and z of each point side by side
-         call self%point_u%append(reshape(transpose(reshape([point_u, point_uz], [size(point_u), 2])), &
-                                          [2*size(point_u)]), stat, errmsg)
-         if (stat == 0) call self%point_v%append(reshape(transpose(reshape([point_v, point_vz], [size(point_v), 2])), &
-                                                         [2*size(point_v)]), stat, errmsg)
+         call self%point_u%append(side_by_side([point_u, point_uz]), stat, errmsg)
+         if (stat == 0) call self%point_v%append(side_by_side([point_v, point_vz]), stat, errmsg)
       else if (self%points) then
          call self%point_u%append(point_u, stat, errmsg)
          if (stat == 0) call self%point_v%append(point_v, stat, errmsg)
@@ -196,15 +196,29 @@ contains
       end do
    end subroutine append_impact
 
-   !> One field snapshot at time t: the displacement at the nodes.
+   !> One field snapshot at time t: the displacement at the nodes (a beam of two planes:
+   !! at each node in y, then at each in z).
    subroutine append_field(self, t, nodal, stat, errmsg)
       class(run_histories), intent(inout) :: self
       real(dp), intent(in) :: t, nodal(:)
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       call self%field_time%append([t], stat, errmsg)
-      if (stat == 0) call self%field%append(nodal, stat, errmsg)
+      if (stat /= 0) return
+      if (self%planes == 2) then
+         call self%field%append(side_by_side(nodal), stat, errmsg)
+      else
+         call self%field%append(nodal, stat, errmsg)
+      end if
    end subroutine append_field
+
+   !> The values of a row of a 3-d series of two layers (`h5_series` `layers`), y and z of
+   !! each point side by side, from `stacked`: every y value, then every z value.
+   pure function side_by_side(stacked) result(row)
+      real(dp), intent(in) :: stacked(:)
+      real(dp) :: row(size(stacked))
+      row = reshape(transpose(reshape(stacked, [size(stacked)/2, 2])), [size(stacked)])
+   end function side_by_side
 
    !> Buffered rows to the file.
    subroutine write(self, stat, errmsg)

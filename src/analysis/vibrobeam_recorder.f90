@@ -83,11 +83,7 @@ module vibrobeam_recorder
       ! a reduced model (&mesh reduction): the stepper's unknowns are q, U = T q
       type(reduced_basis), allocatable :: reduction   !! T, for field snapshots
       real(dp), allocatable :: observed_rows(:, :)   !! (r, 1 + points) u_h at the tip and points = row . q
-      !> bending planes of the stepper; with 2, the deflection and velocity in z at the tip
-      !! and the observation points at the last `observe`, (1 + points, 2) (the y plane's
-      !! are events%observed)
-      integer :: planes = 1
-      real(dp), allocatable :: observed_z(:, :)
+      integer :: planes = 1   !! bending planes of the stepper; 2: events%observed_z holds z
       type(support_wear) :: wear                     !! impacts, forces, sliding and wear at those points
       type(run_spectra) :: spectra                   !! /spectrum: the tip's and the observation points'
       type(forces_psd) :: forces_spectra             !! /forces: the random loads' densities (none without)
@@ -210,8 +206,8 @@ contains
       self%observed_dofs(:, 2:) = self%point_dofs
       self%observed_weights(:, 2:) = self%point_weights
       allocate (self%events%observed(1 + size(self%point_x), 2))
-      allocate (self%observed_z(1 + size(self%point_x), 2), source=0.0_dp)
-      call self%spectra%init(self%every*scene%time%dt, last_step/self%every + 1, self%point_x)
+      allocate (self%events%observed_z(1 + size(self%point_x), 2), source=0.0_dp)
+      call self%spectra%init(self%every*scene%time%dt, last_step/self%every + 1, self%point_x, self%planes)
       if (self%write_rows) call self%forces_spectra%init(scene%forces, problem%loads%forces, last_step)
       gap = scene%output%episode_gap
       if (is_unset(gap)) gap = default_episode_gap(model)
@@ -224,7 +220,8 @@ contains
                                 1 + size(self%point_x), stepper%contacts%lower_obstacle, &
                                 stepper%contacts%upper_obstacle, size(scene%obstacles), omega, phase, &
                                 scene%output%lyapunov, stepper, stepper%holes%circles%count, &
-                                statistics_options(scene, 'wear_volume'), statistics_options(scene, 'friction'))
+                                statistics_options(scene, 'wear_volume'), statistics_options(scene, 'friction'), &
+                                scene%beam%plane_count())
       if (problem%reduced) then
          self%reduction = problem%reduction
          allocate (self%observed_rows(problem%reduction%boundary + problem%reduction%modes, size(self%observed_dofs, 2)))
@@ -305,9 +302,9 @@ contains
       if (self%planes == 2) then   ! the z plane: the same rows on the second half of the unknowns
          associate (j => size(stepper%u)/2)
             do p = 1, size(self%observed_dofs, 2)
-               self%observed_z(p, 1) = combination(self%observed_dofs(:, p), self%observed_weights(:, p), &
+               self%events%observed_z(p, 1) = combination(self%observed_dofs(:, p), self%observed_weights(:, p), &
                                                    stepper%u(j + 1:))
-               self%observed_z(p, 2) = combination(self%observed_dofs(:, p), self%observed_weights(:, p), &
+               self%events%observed_z(p, 2) = combination(self%observed_dofs(:, p), self%observed_weights(:, p), &
                                                    stepper%v(j + 1:))
             end do
          end associate
@@ -555,14 +552,15 @@ contains
       end if
       row(h_balance) = row(h_total) - row(h_work) + row(h_dissipated)
       row(h_penetration) = penetration(stepper)
-      call self%files%append_sample(row, self%observed_z(1, :), stepper%energy%dissipated_friction, &
-                                    self%events%observed(2:, 1), self%events%observed(2:, 2), self%observed_z(2:, 1), &
-                                    self%observed_z(2:, 2), potential, &
-                                    stepper%energy%dissipated_contact_damping, stepper%report%contact_force, stat, errmsg)
+      associate (observed => self%events%observed, observed_z => self%events%observed_z)
+         call self%files%append_sample(row, observed_z(1, :), stepper%energy%dissipated_friction, observed(2:, 1), &
+                                       observed(2:, 2), observed_z(2:, 1), observed_z(2:, 2), potential, &
+                                       stepper%energy%dissipated_contact_damping, stepper%report%contact_force, stat, errmsg)
+      end associate
       if (stat /= 0) return
       ! the spectrum takes the uniformly spaced rows only (not a last row off the grid)
       if (mod(stepper%steps, self%every) == 0) call self%spectra%add(row(h_tip_u), self%events%observed(2:, 1), stat, &
-                                                                      errmsg)
+                                                                      errmsg, self%events%observed_z(:, 1))
       if (stat /= 0) return
       self%tip_impulse = 0
       self%last_output_step = stepper%steps
@@ -576,15 +574,16 @@ contains
       type(beam_model), intent(in) :: model
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      integer :: plane
       stat = 0
       errmsg = ''
       if (stepper%steps == self%last_field_step) return
       if (allocated(self%reduction)) then
          call self%files%append_field(stepper%t, nodal_displacement(model, self%reduction%expand(stepper%u)), stat, &
                                       errmsg)
-      else
-         ! the y plane's (the first J unknowns; a beam of two planes has its z after them)
-         call self%files%append_field(stepper%t, nodal_displacement(model, stepper%u(1:model%unknowns)), stat, errmsg)
+      else   ! each plane's J unknowns (a beam of two planes has those in z after those in y)
+         call self%files%append_field(stepper%t, [(nodal_displacement(model, stepper%u((plane - 1)*model%unknowns + 1: &
+                                      plane*model%unknowns)), plane = 1, self%planes)], stat, errmsg)
       end if
       self%last_field_step = stepper%steps
    end subroutine sample_field

@@ -20,6 +20,8 @@ module vibrobeam_step_observer
       !> (observation points, 2) u and v at the tip (1) and at each &output points x,
       !! after the step (when an observer needs them)
       real(dp), allocatable :: observed(:, :)
+      !> (observation points, 2) the same in z for a beam of two planes (0 for a planar one)
+      real(dp), allocatable :: observed_z(:, :)
       !> contact episodes that closed in the step: at closed_point(1:closed_count), of total
       !! impulse closed_impulse (N s)
       integer :: closed_count = 0

@@ -321,32 +321,38 @@ contains
       end if
    end subroutine history_files
 
-   !> STEM_field.dat: one gnuplot block per snapshot, x t u.
+   !> STEM_field.dat: one gnuplot block per snapshot, x t u (a beam of two planes: x t u_y u_z).
    subroutine field_file(run, stat, errmsg)
       type(derivation), intent(inout) :: run
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(text_sink) :: sink
       real(dp), allocatable :: x(:), times(:, :), field(:, :)
+      integer(int64), allocatable :: dims(:)
       integer(int64) :: snapshots, first, count
-      integer :: nodes, i, k
+      integer :: nodes, i, k, planes
+      character(len=:), allocatable :: columns
       call run%rows_of('/field/time', snapshots, stat, errmsg)
       if (stat == 0) call run%file%read_reals('/mesh/x', x, stat, errmsg)
+      if (stat == 0) call run%file%shape('/field/displacement', dims, stat, errmsg)
       if (stat /= 0) return
       nodes = size(x)
-      call run%open_sink(sink, 'field', 'x (m)  t (s)  u (m); one block per snapshot (gnuplot splot/pm3d)', stat, errmsg)
+      planes = merge(2, 1, size(dims) == 3)   ! (snapshots, nodes, 2): y, z at each node
+      columns = 'x (m)  t (s)  u (m)'
+      if (planes == 2) columns = 'x (m)  t (s)  u in y (m)  u in z (m)'
+      call run%open_sink(sink, 'field', columns//'; one block per snapshot (gnuplot splot/pm3d)', stat, errmsg)
       if (stat /= 0) return
       count = max(1_int64, int(block_values/nodes, int64))
       first = 1
       blocks: do while (first <= snapshots)
          count = min(count, snapshots - first + 1)
-         allocate (times(1, count), field(nodes, count))
+         allocate (times(1, count), field(planes*nodes, count))
          call run%file%read_rows('/field/time', first, times, stat, errmsg)
          if (stat == 0) call run%file%read_rows('/field/displacement', first, field, stat, errmsg)
          if (stat /= 0) exit blocks
          do k = 1, int(count)
             do i = 1, nodes
-               call sink%put_row('narrow', [x(i), times(1, k), field(i, k)], stat, errmsg)
+               call sink%put_row('narrow', [x(i), times(1, k), field(planes*(i - 1) + 1:planes*i, k)], stat, errmsg)
                if (stat /= 0) exit blocks
             end do
             call sink%put_line('', stat, errmsg)
@@ -361,7 +367,7 @@ contains
 
    !> STEM_spectrum.dat: frequency (Hz), the tip's amplitude, frequency (rad/s), and the
    !! amplitude at each observation point (those a file of an earlier version lacks are
-   !! left out).
+   !! left out); a beam of two planes: these in y, then the tip's and the points' in z.
    subroutine spectrum_file(run, stat, errmsg)
       type(derivation), intent(inout) :: run
       integer, intent(out) :: stat
@@ -369,14 +375,18 @@ contains
       type(text_sink) :: sink
       integer(int64) :: bins, point_bins
       character(len=40), allocatable :: paths(:)
-      integer, allocatable :: widths(:)
+      integer, allocatable :: widths(:), order(:)
+      integer(int64), allocatable :: dims(:)
       real(dp), allocatable :: x(:)
       character(len=:), allocatable :: columns
+      integer :: planes, p, k
       call run%rows_of('/spectrum/frequency', bins, stat, errmsg)
       if (stat == 0) call run%rows_of('/spectrum/point_amplitude', point_bins, stat, errmsg)
+      if (stat == 0) call run%file%shape('/spectrum/tip_amplitude', dims, stat, errmsg)
       if (stat /= 0) return
+      planes = merge(2, 1, size(dims) == 2)   ! (bins, 2): y, z
       allocate (paths, source=[character(len=40) :: '/spectrum/frequency', '/spectrum/tip_amplitude'])
-      allocate (widths, source=[1, 1])
+      allocate (widths, source=[1, planes])
       columns = 'frequency (Hz)  amplitude of the tip displacement (m)'
       if (run%file%exists('/spectrum/frequency_rad_s')) then
          paths = [character(len=40) :: paths, '/spectrum/frequency_rad_s']
@@ -387,13 +397,22 @@ contains
          call run%file%read_reals('/points/x', x, stat, errmsg)
          if (stat /= 0) return
          paths = [character(len=40) :: paths, '/spectrum/point_amplitude']
-         widths = [widths, size(x)]
+         widths = [widths, planes*size(x)]
          columns = columns//'  then the amplitude (m) at each observation point x = '//points_text(x)//' m'
+      end if
+      if (planes == 2) then   ! read: f, tip y, z, f (rad/s), y and z of each point; the z columns last
+         p = (sum(widths) - 4)/2
+         order = [1, 2, 4, (4 + 2*k - 1, k = 1, p), 3, (4 + 2*k, k = 1, p)]
+         columns = columns//'; these in y, then the amplitudes in z (m) at the tip and at each observation point'
       end if
       call run%open_sink(sink, 'spectrum', columns//': single-sided, mean removed, Hann window, Welch average '// &
                          'over segments of 2^16 samples when longer', stat, errmsg)
       if (stat /= 0) return
-      call run%stream_rows(sink, paths, widths, bins, 'wide', stat, errmsg)
+      if (planes == 2) then
+         call run%stream_rows(sink, paths, widths, bins, 'wide', stat, errmsg, order=order)
+      else
+         call run%stream_rows(sink, paths, widths, bins, 'wide', stat, errmsg)
+      end if
       call run%close_sink(sink, stat, errmsg)
    end subroutine spectrum_file
 

@@ -194,7 +194,7 @@ contains
          h = metadata_bytes + histories*chunked(estimate%outputs, 1) + 2*(planes - 1)*chunked(estimate%outputs, 1)
          if (compliant) h = h + chunked(estimate%outputs, contacts)
          if (points > 0) h = h + 2*chunked(estimate%outputs, planes*points)
-         h = h + chunked(estimate%snapshots, 1) + chunked(estimate%snapshots, nodes)
+         h = h + chunked(estimate%snapshots, 1) + chunked(estimate%snapshots, planes*nodes)
          if (obstacles) h = h + (impact_columns + episode_columns)*chunked(1.0_dp, 1)
          h = h + 3*chunked(bins, 1)
          if (points > 0) h = h + chunked(bins, points)
@@ -216,7 +216,7 @@ contains
             t = estimate%outputs*((5 + 2*(planes - 1) + 11)*wide + 2)
             if (points > 0) t = t + estimate%outputs*((1 + 2*planes*points)*wide + 1)
             if (compliant) t = t + estimate%outputs*((1 + contacts)*wide + 1)
-            t = t + estimate%snapshots*(nodes*(3*narrow + 1) + 1) + bins*((3 + points)*wide + 1)
+            t = t + estimate%snapshots*(nodes*((2 + planes)*narrow + 1) + 1) + bins*((3 + points)*wide + 1)
             if (periods > 0) t = t + periods*((1 + 2*(1 + points))*wide + 1)
          end associate
       end if
@@ -240,7 +240,7 @@ contains
       character(len=256) :: errmsg
       observations = 1
       if (allocated(scene%output%points)) observations = 1 + size(scene%output%points)
-      call layout%init(observations, contact_points, size(scene%obstacles))
+      call layout%init(observations, contact_points, size(scene%obstacles), planes=scene%beam%plane_count())
       do k = 1, size(points)
          local = point_scene(scene, settings, points(k))
          call point_windows(settings, local, settle_steps, measure_steps, stat, errmsg)

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""The histories of a beam of two planes at the tip and at the observation points
-(docs/output.md: /tip/displacement and /tip/velocity (outputs, 2), /points/displacement and
-/points/velocity (outputs, points, 2), y then z; STEM_tip.dat and STEM_points.dat with the
-z columns after the planar ones), against the planar run of the same beam.
+"""The histories of a beam of two planes at the tip, at the observation points and at the
+nodes (docs/output.md: /tip/displacement and /tip/velocity (outputs, 2), /points/displacement
+and /points/velocity (outputs, points, 2), /field/displacement (snapshots, nodes, 2), y then
+z; STEM_tip.dat and STEM_points.dat with the z columns after the planar ones, STEM_field.dat
+x t u_y u_z), against the planar run of the same beam.
 
 usage: check_planes_points.py VIBROBEAM
 
@@ -10,11 +11,12 @@ A forced cantilever with two observation points, free of obstacles, runs planar,
 &beam planes = 2 and its load and initial velocity along y (direction 0) and along z
 (direction 90): directions that are multiples of 90 degrees are exact (docs/input.md,
 "&beam"), so the plane that carries the data equals the planar run bit for bit and the other
-holds exact zeros, in the HDF5 histories and in the text files' columns.
+holds exact zeros, in the HDF5 histories and in the text files' columns. Loaded at 30
+degrees the beam moves in both planes: the field's last node is the tip (docs/output.md),
+so its y and z equal /tip/displacement's bit for bit at every snapshot (field_every = every).
 Exit status 0 when every check holds, 1 otherwise (one line per failure), 77 without h5py.
 """
 import os
-import subprocess
 import sys
 import tempfile
 
@@ -25,35 +27,17 @@ except ImportError:
     print('SKIP: no python3 with h5py (Debian package python3-h5py)')
     sys.exit(77)
 
-SCENE = """
-&beam      length = 0.5, youngs_modulus = 210e9, density = 7850, area = 6.938018879893839e-05,
-           inertia = 2.7642255353230253e-09, rayleigh_mass = 7.9193, rayleigh_stiffness = 5.9941e-06 {planes} /
-&mesh      elements = 8 /
-&time      t_end = 0.02, dt = 2e-5 /
-&load      point_force = 5.0, point_frequency = 300.0 {direction} /
-&initial   velocity = 'mode', velocity_mode = 1, velocity_amplitude = 0.3 {direction} /
-&output    file = '{name}.h5', text = .true., points = 0.2, 0.35 /
-"""
-failures = []
-
-
-def check(what, holds):
-    print(('ok   ' if holds else 'FAIL ') + what)
-    if not holds:
-        failures.append(what)
+from planes_scene import check, failures, run as run_scene
 
 
 def run(vibrobeam, folder, name, planes='', direction=''):
-    with open(os.path.join(folder, name + '.nml'), 'w') as handle:
-        handle.write(SCENE.format(planes=planes, direction=direction, name=name))
-    done = subprocess.run([vibrobeam, name + '.nml'], cwd=folder, capture_output=True, text=True, timeout=120)
-    if done.returncode != 0:
-        sys.exit(f'vibrobeam {name}.nml exited {done.returncode}: {done.stderr}')
-    with h5py.File(os.path.join(folder, name + '.h5'), 'r') as result:
+    result_path = run_scene(vibrobeam, folder, name, planes, direction, output=', text = .true.')
+    with h5py.File(result_path, 'r') as result:
         histories = {path: result[path][...] for path in
-                     ['tip/displacement', 'tip/velocity', 'points/displacement', 'points/velocity']}
+                     ['tip/displacement', 'tip/velocity', 'points/displacement', 'points/velocity',
+                      'field/displacement']}
     text = {kind: np.loadtxt(os.path.join(folder, f'{name}_{kind}.dat'), comments='#', ndmin=2)
-            for kind in ['tip', 'points']}
+            for kind in ['tip', 'points', 'field']}
     return histories, text
 
 
@@ -66,7 +50,8 @@ def main():
               np.abs(planar['points/displacement']).max() > 0)
         for name, direction, carrier in [('along_y', ', direction = 0', 0), ('along_z', ', direction = 90', 1)]:
             turned, turned_text = run(vibrobeam, folder, name, ', planes = 2', direction)
-            for path in ['tip/displacement', 'tip/velocity', 'points/displacement', 'points/velocity']:
+            for path in ['tip/displacement', 'tip/velocity', 'points/displacement', 'points/velocity',
+                         'field/displacement']:
                 values = turned[path]
                 shape = planar[path].shape + (2,)
                 check(f'{name}: /{path} has the shape {shape} (y, z last)', values.shape == shape)
@@ -92,6 +77,20 @@ def main():
                 check(f'{name}: {name}_{kind}.dat, the plane of the data equals the planar columns',
                       np.array_equal(data, reference))
                 check(f'{name}: {name}_{kind}.dat, the other plane is 0', not np.any(other))
+            # STEM_field.dat: x t u planar, x t u_y u_z with two planes
+            table, reference = turned_text['field'], planar_text['field']
+            check(f'{name}: {name}_field.dat has the columns x t u_y u_z', table.shape == (reference.shape[0], 4))
+            if table.shape == (reference.shape[0], 4):
+                check(f'{name}: {name}_field.dat, x, t and the plane of the data equal the planar file',
+                      np.array_equal(table[:, [0, 1, 2 + carrier]], reference))
+                check(f'{name}: {name}_field.dat, the other plane is 0', not np.any(table[:, 3 - carrier]))
+        turned, _ = run(vibrobeam, folder, 'along_30', ', planes = 2', ', direction = 30')
+        field_tip, tip = turned['field/displacement'][:, -1, :], turned['tip/displacement']
+        check('along_30: the field moves in z (largest |u_z| at the tip '
+              f'{np.abs(field_tip[:, 1]).max():.3e} m, in y {np.abs(field_tip[:, 0]).max():.3e} m)',
+              np.abs(field_tip[:, 1]).max() > 0.1 * np.abs(field_tip[:, 0]).max())
+        check('along_30: the field at the last node equals /tip/displacement in y and z bit for bit',
+              field_tip.shape == tip.shape and np.array_equal(field_tip, tip))
     print(f'check_planes_points: {len(failures)} failure(s)')
     return 1 if failures else 0
 

@@ -12,7 +12,8 @@
 program compare_sweep
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: integer_text
-   use vibrobeam_hdf5_file_reads, only: read_real_1d, read_real_2d, read_int_1d, read_attr_int, h5_path_exists
+   use vibrobeam_hdf5_file_reads, only: read_real_1d, read_real_2d, read_real_3d, read_int_1d, read_attr_int, &
+      h5_path_exists
    use vibrobeam_statistics_layout, only: statistics_layout, group_wear
    use vibrobeam_test_support, only: test_counter
    implicit none
@@ -43,11 +44,11 @@ contains
 
    !> The layout of the sweep file's statistics (a beam of two planes: its obstacles'
    !! points, /sweep/statistics/wear/x, and what the file holds of the wear volume rate and
-   !! the power of friction).
+   !! the power of friction; its points' statistics in y and z: a 3-d dataset).
    subroutine layout_of(file)
       character(len=*), intent(in) :: file
-      real(dp), allocatable :: x(:), c(:), w(:)
-      integer :: obstacles
+      real(dp), allocatable :: x(:), c(:), w(:), cube(:, :, :)
+      integer :: obstacles, planes
       allocate (w(0))
       call read_real_1d(file, '/sweep/statistics/points/x', x, stat, errmsg)
       if (stat == 0) call read_real_1d(file, '/sweep/statistics/contacts/x', c, stat, errmsg)
@@ -56,18 +57,23 @@ contains
          call read_real_1d(file, '/sweep/statistics/wear/x', w, stat, errmsg)
       call t%check_true('read the layout of '//file, stat == 0, errmsg)
       if (stat /= 0) call t%finish('compare_sweep')
+      call read_real_3d(file, '/sweep/statistics/points/displacement_mean', cube, stat, errmsg)
+      planes = merge(2, 1, stat == 0)
       call layout%init(size(x), size(c), obstacles, size(w), &
                        h5_path_exists(file, '/sweep/statistics/wear/wear_volume_rate'), &
-                       h5_path_exists(file, '/sweep/statistics/energy/power_friction'))
+                       h5_path_exists(file, '/sweep/statistics/energy/power_friction'), planes)
    end subroutine layout_of
 
-   !> Row `point` of a /sweep/statistics dataset (1-d or 2-d).
+   !> Row `point` of a /sweep/statistics dataset (1-d, 2-d, or 3-d: y, z of each value).
    function sweep_row(file, path, e) result(row)
       character(len=*), intent(in) :: file, path
       integer, intent(in) :: e
-      real(dp), allocatable :: row(:), column(:), table(:, :)
+      real(dp), allocatable :: row(:), column(:), table(:, :), cube(:, :, :)
       allocate (row(0))
-      if (layout%one_value(e)) then
+      if (layout%entries(e)%layers > 1) then
+         call read_real_3d(file, path, cube, stat, errmsg)
+         if (stat == 0) row = reshape(cube(:, :, point), [size(cube(:, :, point))])
+      else if (layout%one_value(e)) then
          call read_real_1d(file, path, column, stat, errmsg)
          if (stat == 0) row = column(point:point)
       else
@@ -77,6 +83,21 @@ contains
       call t%check_true('read '//path, stat == 0, errmsg)
    end function sweep_row
 
+   !> The values of the run's statistic `path` (a beam of two planes: `layers` = 2, y, z of
+   !! each point side by side, as a sweep row).
+   function run_values(path, layers) result(values)
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: layers
+      real(dp), allocatable :: values(:), table(:, :)
+      allocate (values(0))
+      if (layers > 1) then
+         call read_real_2d(trim(second), path, table, stat, errmsg)
+         if (stat == 0) values = reshape(table, [size(table)])
+      else
+         call read_real_1d(trim(second), path, values, stat, errmsg)
+      end if
+   end function run_values
+
    subroutine compare_point()
       real(dp), allocatable :: a(:), b(:), time(:), run_time(:), u(:, :), run_u(:, :)
       integer, allocatable :: owners(:)
@@ -85,7 +106,7 @@ contains
          do k = 0, 1
             if (k == 1 .and. .not. layout%entries(e)%has_error) cycle
             a = sweep_row(trim(first), '/sweep/statistics/'//layout%path(e, k == 1), e)
-            call read_real_1d(trim(second), '/statistics/'//layout%path(e, k == 1), b, stat, errmsg)
+            b = run_values('/statistics/'//layout%path(e, k == 1), layout%entries(e)%layers)
             call t%check_true('read run '//layout%path(e, k == 1), stat == 0, errmsg)
             if (stat == 0) call t%check_true(layout%path(e, k == 1)//' of point '//integer_text(point)// &
                                              ' equals the single run', same_bits(a, b), 'differs')
@@ -131,7 +152,7 @@ contains
          '/sweep/batch_steps', '/sweep/poincare_samples', '/sweep/poincare/point', '/sweep/poincare/direction']
       character(len=*), parameter :: matrices(*) = [character(len=40) :: '/sweep/poincare/displacement', &
          '/sweep/poincare/velocity']
-      real(dp), allocatable :: a(:), b(:), x(:, :), y(:, :)
+      real(dp), allocatable :: a(:), b(:), x(:, :), y(:, :), xs(:, :, :), ys(:, :, :)
       integer, allocatable :: i(:), j(:)
       compared = 0
       do k = 1, size(reals)
@@ -153,7 +174,11 @@ contains
          do k = 0, 1
             if (k == 1 .and. .not. layout%entries(e)%has_error) cycle
             associate (path => '/sweep/statistics/'//layout%path(e, k == 1))
-               if (layout%one_value(e)) then
+               if (layout%entries(e)%layers > 1) then
+                  call read_real_3d(trim(first), path, xs, stat, errmsg)
+                  if (stat == 0) call read_real_3d(trim(second), path, ys, stat, errmsg)
+                  call equal(path, same_bits(reshape(xs, [size(xs)]), reshape(ys, [size(ys)])))
+               else if (layout%one_value(e)) then
                   call read_real_1d(trim(first), path, a, stat, errmsg)
                   if (stat == 0) call read_real_1d(trim(second), path, b, stat, errmsg)
                   call equal(path, same_bits(a, b))

@@ -33,7 +33,7 @@ module vibrobeam_spectrum
    use vibrobeam_status, only: stat_failure, stat_invalid_argument
    implicit none
    private
-   public :: amplitude_spectrum, spectral_peaks, bin_width
+   public :: amplitude_spectrum, spectral_peaks, interpolated_peaks, bin_width
 
    include 'fftw3.f03'
 
@@ -193,4 +193,33 @@ contains
          candidate(peaks(i)) = .false.
       end do
    end function spectral_peaks
+
+   !> The size(peak_frequency) largest local maxima of a spectrum (`spectral_peaks`), each
+   !! refined by a parabola through the amplitudes of its bin and its two neighbours
+   !! (`bin_width` apart; not at the last bin, nor where the parabola does not open
+   !! downwards); 0 where there are fewer peaks.
+   pure subroutine interpolated_peaks(frequency, amplitude, bin_width, peak_frequency, peak_amplitude)
+      real(dp), intent(in) :: frequency(:), amplitude(:), bin_width
+      real(dp), intent(out) :: peak_frequency(:), peak_amplitude(:)
+      integer :: j, i
+      real(dp) :: left, middle, right, curvature, shift
+      peak_frequency = 0
+      peak_amplitude = 0
+      associate (found => spectral_peaks(frequency, amplitude, size(peak_frequency), 0.0_dp))
+         do j = 1, size(found)
+            i = found(j)
+            peak_frequency(j) = frequency(i)
+            peak_amplitude(j) = amplitude(i)
+            if (i >= size(amplitude)) cycle
+            left = amplitude(i - 1)
+            middle = amplitude(i)
+            right = amplitude(i + 1)
+            curvature = left - 2*middle + right
+            if (curvature >= 0) cycle
+            shift = 0.5_dp*(left - right)/curvature
+            peak_frequency(j) = frequency(i) + shift*bin_width
+            peak_amplitude(j) = middle - 0.25_dp*(left - right)*shift
+         end do
+      end associate
+   end subroutine interpolated_peaks
 end module vibrobeam_spectrum

@@ -18,7 +18,9 @@ module vibrobeam_statistics
    use vibrobeam_poincare, only: poincare_sampler
    use vibrobeam_poincare_diagnostics, only: poincare_diagnostics
    use vibrobeam_welch, only: welch_estimator
-   use vibrobeam_spectrum, only: spectral_peaks
+   use vibrobeam_spectrum, only: interpolated_peaks
+   use vibrobeam_contact_fill, only: fill, fill_force, f_force, f_force_square, f_steps, f_episodes, f_episode_steps, &
+      per_force, x_force, x_episode_steps, per_force_extreme
    use vibrobeam_statistics_layout, only: statistics_layout, peak_count, group_points, group_contacts, &
       group_obstacles, group_beam, group_energy, group_spectrum, group_poincare
    implicit none
@@ -32,10 +34,6 @@ module vibrobeam_statistics
    !> Sum quantities per contact target (a contact point, an obstacle or the beam).
    integer, parameter :: s_impacts = 1, s_episodes = 2, s_impulse = 3, s_impulse_square = 4, s_contact_steps = 5, &
                          s_force = 6, per_target = 6
-   !> Sum quantities of the compliant stops' force per contact point: sum |f|, sum f^2,
-   !! steps with f /= 0, compliant episodes, their steps; extremes: |f|, episode steps.
-   integer, parameter :: f_force = 1, f_force_square = 2, f_steps = 3, f_episodes = 4, f_episode_steps = 5, &
-                         per_force = 5, x_force = 1, x_episode_steps = 2, per_force_extreme = 2
 
    !> What the statistics of a window are (docs/statistics.md).
    type :: statistics_result
@@ -60,12 +58,13 @@ module vibrobeam_statistics
       integer(int64) :: first_step = 0            !! n0
       real(dp) :: dt = 0
       integer :: points = 0, contacts = 0, obstacles = 0
+      integer :: planes = 1                       !! 2: the points' statistics in z too (events%observed_z)
       integer, allocatable :: lower_obstacle(:), upper_obstacle(:)
       type(statistics_layout) :: layout
       type(block_accumulator) :: blocks
       type(poincare_sampler) :: poincare
       type(poincare_diagnostics) :: diagnostics   !! period, 0-1 test, Lyapunov exponent of the samples
-      type(welch_estimator) :: spectrum
+      type(welch_estimator) :: spectrum, spectrum_z   !! the tip's displacement, in z with two planes
       !> (contact points) sample offset at which the open episode there opened; -1: none in the window
       integer(int64), allocatable :: episode_offset(:)
       !> (contact points) the compliant stops push there (force /= 0 after the last step)
@@ -110,9 +109,10 @@ contains
    !! for a beam of two planes with obstacles, the layout's 'wear' group (`wear_points`,
    !! `wear_volume`: filled by the recorder from `vibrobeam_support_wear`) and, with
    !! `friction` (the scene gives a friction coefficient, 0 too: the layout of every point
-   !! of a sweep over it is the same), the power friction takes.
+   !! of a sweep over it is the same), the power friction takes; `planes` = 2: the points'
+   !! statistics in y and z.
    subroutine init(self, first_step, last_step, dt, points, lower_obstacle, upper_obstacle, obstacles, omega, phase, &
-                   lyapunov, stepper, wear_points, wear_volume, friction)
+                   lyapunov, stepper, wear_points, wear_volume, friction, planes)
       class(run_statistics), intent(inout) :: self
       integer(int64), intent(in) :: first_step, last_step
       real(dp), intent(in) :: dt, omega, phase
@@ -120,7 +120,7 @@ contains
       integer, intent(in) :: lower_obstacle(:), upper_obstacle(:)
       logical, intent(in) :: lyapunov
       class(time_stepper), intent(in) :: stepper
-      integer, intent(in), optional :: wear_points
+      integer, intent(in), optional :: wear_points, planes
       logical, intent(in), optional :: wear_volume, friction
       integer :: capacity
       self%active = first_step < last_step
@@ -130,7 +130,9 @@ contains
       self%obstacles = obstacles
       self%lower_obstacle = lower_obstacle
       self%upper_obstacle = upper_obstacle
-      call self%layout%init(points, self%contacts, obstacles, wear_points, wear_volume, friction)
+      self%planes = 1
+      if (present(planes)) self%planes = planes
+      call self%layout%init(points, self%contacts, obstacles, wear_points, wear_volume, friction, self%planes)
       allocate (self%episode_offset(self%contacts), self%force_offset(self%contacts), source=-1_int64)
       allocate (self%force_touching(self%contacts), source=.false.)
       call self%poincare%init(omega, phase, dt, 2*points)
@@ -155,6 +157,7 @@ contains
       self%episode_offset = -1
       self%force_offset = -1
       call self%spectrum%init(self%dt, self%expected_samples)
+      if (self%planes == 2) call self%spectrum_z%init(self%dt, self%expected_samples)
    end subroutine begin_window
 
    !> The run's starting state (t = 0, or a checkpoint): the window starts here when n0 is
@@ -185,18 +188,34 @@ contains
    end function targets
 
    !> Sum quantities: 4 per observation point, per_target per contact target, per_force
-   !! per contact point.
+   !! per contact point, then (a beam of two planes) 4 per observation point in z.
    pure integer function sum_count(self)
       type(run_statistics), intent(in) :: self
-      sum_count = 4*self%points + per_target*targets(self) + per_force*self%contacts
+      sum_count = 4*self%points*self%planes + per_target*targets(self) + per_force*self%contacts
    end function sum_count
 
    !> Extreme quantities: u and v per observation point, |I| per target, per_force_extreme
-   !! per contact point.
+   !! per contact point, then (a beam of two planes) u and v per observation point in z.
    pure integer function extreme_count(self)
       type(run_statistics), intent(in) :: self
-      extreme_count = 2*self%points + targets(self) + per_force_extreme*self%contacts
+      extreme_count = 2*self%points*self%planes + targets(self) + per_force_extreme*self%contacts
    end function extreme_count
+
+   !> The sums of observation point p in `plane` (1: y, 2: z) follow this index: u, u^2, v, v^2.
+   pure integer function point_sum(self, p, plane)
+      type(run_statistics), intent(in) :: self
+      integer, intent(in) :: p, plane
+      point_sum = 4*(p - 1)
+      if (plane == 2) point_sum = point_sum + 4*self%points + per_target*targets(self) + per_force*self%contacts
+   end function point_sum
+
+   !> The extremes of observation point p in `plane` follow this index: u, v.
+   pure integer function point_extreme(self, p, plane)
+      type(run_statistics), intent(in) :: self
+      integer, intent(in) :: p, plane
+      point_extreme = 2*(p - 1)
+      if (plane == 2) point_extreme = point_extreme + 2*self%points + targets(self) + per_force_extreme*self%contacts
+   end function point_extreme
 
    !> Index of force sum quantity q of contact point c.
    pure integer function force_sum(self, c, q)
@@ -267,12 +286,8 @@ contains
       if (offset < 0) return
       associate (blocks => self%blocks)
          do p = 1, self%points
-            call blocks%add(4*(p - 1) + 1, events%observed(p, 1))
-            call blocks%add(4*(p - 1) + 2, events%observed(p, 1)**2)
-            call blocks%add(4*(p - 1) + 3, events%observed(p, 2))
-            call blocks%add(4*(p - 1) + 4, events%observed(p, 2)**2)
-            call blocks%extreme(2*(p - 1) + 1, events%observed(p, 1))
-            call blocks%extreme(2*(p - 1) + 2, events%observed(p, 2))
+            call point_sums(p, 1, events%observed(p, :))
+            if (self%planes == 2) call point_sums(p, 2, events%observed_z(p, :))
          end do
          touched = .false.
          do k = 1, stepper%report%active_count
@@ -302,6 +317,7 @@ contains
       call self%poincare%sample_step(stepper%steps, values, self%poincare_found, self%sample_times, self%sample_values)
       call self%diagnostics%observe_step(stepper, values, self%poincare_found, self%sample_values)
       call self%spectrum%add(events%observed(1, 1), stat, errmsg)
+      if (stat == 0 .and. self%planes == 2) call self%spectrum_z%add(events%observed_z(1, 1), stat, errmsg)
       ! the levels (an energy evaluation) only where a block ends
       if (self%blocks%completes_block()) then
          call self%blocks%close_sample(levels_of(stepper, self%layout%friction))
@@ -309,6 +325,18 @@ contains
          call self%blocks%close_sample()
       end if
    contains
+      !> u, u^2, v, v^2 and the extremes of u and v at observation point p in `plane`.
+      subroutine point_sums(p, plane, observed)
+         integer, intent(in) :: p, plane
+         real(dp), intent(in) :: observed(2)
+         integer :: j
+         do j = 1, 2
+            call self%blocks%add(point_sum(self, p, plane) + 2*j - 1, observed(j))
+            call self%blocks%add(point_sum(self, p, plane) + 2*j, observed(j)**2)
+            call self%blocks%extreme(point_extreme(self, p, plane) + j, observed(j))
+         end do
+      end subroutine point_sums
+
       !> Compliant episodes (docs/statistics.md): one opens where the force becomes nonzero
       !! and closes at the first step without force; it counts when it opened in the window.
       subroutine force_episodes()
@@ -414,7 +442,7 @@ contains
       type(statistics_result) :: outcome
       type(run_statistics) :: copy
       real(dp), allocatable :: batch(:, :), frequency(:), amplitude(:)
-      real(dp) :: levels_end(level_count + merge(1, 0, self%layout%friction)), duration, block_duration
+      real(dp) :: levels_end(level_count + merge(1, 0, self%layout%friction)), duration, block_duration, width_z
       integer :: c, k, e, b, batches, stat
       integer(int64) :: segments
       character(len=256) :: errmsg
@@ -448,8 +476,10 @@ contains
          allocate (batch(self%layout%size, batches), source=0.0_dp)
          ! observation points
          do k = 1, self%points
-            call point_statistics(k, 1, 0)
-            call point_statistics(k, 2, 4)
+            do c = 1, self%planes
+               call point_statistics(k, c, 1, 0)
+               call point_statistics(k, c, 2, 4)
+            end do
          end do
          ! contact points, obstacles, beam
          do k = 1, targets(self)
@@ -490,22 +520,25 @@ contains
       do k = 1, self%layout%size
          outcome%errors(k) = standard_error(batch(k, :))
       end do
-      ! dominant frequencies of the tip displacement
+      ! dominant frequencies of the tip displacement (in each plane: the same samples, bins)
       call copy%spectrum%spectrum(frequency, amplitude, segments, outcome%bin_width, stat, errmsg)
-      if (stat == 0) call peaks(frequency, amplitude)
+      if (stat == 0) call peaks(frequency, amplitude, 1)
+      if (stat == 0 .and. self%planes == 2) call copy%spectrum_z%spectrum(frequency, amplitude, segments, &
+                                                                         width_z, stat, errmsg)
+      if (stat == 0 .and. self%planes == 2) call peaks(frequency, amplitude, 2)
       outcome%poincare_total = self%poincare%taken
       call self%diagnostics%fill(self%layout, outcome%values, outcome%errors)
       call self%poincare%kept(outcome%poincare_time, outcome%poincare_values)
    contains
-      !> Mean, RMS, min, max of quantity `which` (1: u, 2: v) at point p into the entries
-      !! from `first` on ('displacement_*' when first = 0, 'velocity_*' when 4).
-      subroutine point_statistics(p, which, first)
-         integer, intent(in) :: p, which, first
+      !> Mean, RMS, min, max of quantity `which` (1: u, 2: v) at point p in `plane` into
+      !! the entries from `first` on ('displacement_*' when first = 0, 'velocity_*' when 4).
+      subroutine point_statistics(p, plane, which, first)
+         integer, intent(in) :: p, plane, which, first
          integer :: sum_q, extreme_q, o(4), j
-         sum_q = 4*(p - 1) + 2*(which - 1) + 1
-         extreme_q = 2*(p - 1) + which
+         sum_q = point_sum(self, p, plane) + 2*(which - 1) + 1
+         extreme_q = point_extreme(self, p, plane) + which
          do j = 1, 4
-            o(j) = self%layout%entries(first + j)%offset + p
+            o(j) = self%layout%entries(first + j)%offset + self%planes*(p - 1) + plane
          end do
          associate (blocks => copy%blocks)
             outcome%values(o(1)) = blocks%total(sum_q)/blocks%samples
@@ -586,73 +619,21 @@ contains
          batch(at, :) = block_changes/block_duration
       end subroutine powers
 
-      !> The three largest local maxima of the spectrum, parabolic interpolation on the
-      !! amplitudes of the bin and its two neighbours (none at the last bin).
-      subroutine peaks(frequency, amplitude)
+      !> The three largest local maxima of the spectrum (`interpolated_peaks`), also in rad/s,
+      !! of `plane` (the layout's entries hold each peak's y, z side by side with two planes).
+      subroutine peaks(frequency, amplitude, plane)
          real(dp), intent(in) :: frequency(:), amplitude(:)
-         integer :: j, i, f_at, a_at, w_at
-         real(dp) :: left, middle, right, curvature, shift
-         f_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_frequency'))%offset
-         a_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_amplitude'))%offset
-         w_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_frequency_rad_s'))%offset
-         associate (found => spectral_peaks(frequency, amplitude, peak_count, 0.0_dp))
-         do j = 1, size(found)
-            i = found(j)
-            outcome%values(f_at + j) = frequency(i)
-            outcome%values(a_at + j) = amplitude(i)
-            if (i >= size(amplitude)) cycle
-            left = amplitude(i - 1)
-            middle = amplitude(i)
-            right = amplitude(i + 1)
-            curvature = left - 2*middle + right
-            if (curvature >= 0) cycle
-            shift = 0.5_dp*(left - right)/curvature
-            outcome%values(f_at + j) = frequency(i) + shift*outcome%bin_width
-            outcome%values(a_at + j) = middle - 0.25_dp*(left - right)*shift
-         end do
-         ! the same peaks in rad/s
-         outcome%values(w_at + 1:w_at + size(found)) = 2*pi*outcome%values(f_at + 1:f_at + size(found))
-         end associate
+         integer, intent(in) :: plane
+         integer :: f_at, a_at, w_at, n
+         n = self%planes
+         f_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_frequency'))%offset + plane
+         a_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_amplitude'))%offset + plane
+         w_at = self%layout%entries(self%layout%find(group_spectrum, 'peak_frequency_rad_s'))%offset + plane
+         call interpolated_peaks(frequency, amplitude, outcome%bin_width, outcome%values(f_at:f_at + n*(peak_count - 1):n), &
+                                 outcome%values(a_at:a_at + n*(peak_count - 1):n))
+         outcome%values(w_at:w_at + n*(peak_count - 1):n) = 2*pi*outcome%values(f_at:f_at + n*(peak_count - 1):n)
       end subroutine peaks
    end function result
-
-   !> The contact statistics from sums over `samples` steps lasting `duration` (s).
-   pure subroutine fill(values, at, impacts, episodes, impulse, impulse_square, largest, contact_steps, force, &
-                        samples, duration)
-      real(dp), intent(inout) :: values(:)
-      integer, intent(in) :: at(7)
-      real(dp), intent(in) :: impacts, episodes, impulse, impulse_square, largest, contact_steps, force, samples, &
-                              duration
-      values(at(1)) = impacts/duration
-      values(at(2)) = episodes/duration
-      values(at(3:5)) = 0
-      if (episodes > 0) then
-         values(at(3)) = impulse/episodes
-         values(at(4)) = largest
-         values(at(5)) = sqrt(impulse_square/episodes)
-      end if
-      values(at(6)) = contact_steps/samples
-      values(at(7)) = force/duration
-   end subroutine fill
-
-   !> The force statistics from the force sums and extremes over `samples` steps of dt.
-   pure subroutine fill_force(values, at, sums, extremes, samples, dt)
-      real(dp), intent(inout) :: values(:)
-      integer, intent(in) :: at(7)
-      real(dp), intent(in) :: sums(per_force), extremes(per_force_extreme), samples, dt
-      values(at) = 0
-      values(at(1)) = max(0.0_dp, extremes(x_force))
-      values(at(2)) = sums(f_force)/samples
-      if (sums(f_steps) > 0) then
-         values(at(3)) = sums(f_force)/sums(f_steps)
-         values(at(4)) = sqrt(sums(f_force_square)/sums(f_steps))
-      end if
-      values(at(5)) = sums(f_steps)/samples
-      if (sums(f_episodes) > 0) then
-         values(at(6)) = sums(f_episode_steps)*dt/sums(f_episodes)
-         values(at(7)) = extremes(x_episode_steps)*dt
-      end if
-   end subroutine fill_force
 
    !> Everything a continued run needs (docs/output.md, "Checkpoint and restart").
    subroutine save_state(self, record)
@@ -665,14 +646,16 @@ contains
       call record%put_int64s('statistics.episode_offset', self%episode_offset)
       call record%put_int64s('statistics.force_offset', self%force_offset)
       call record%put_int64s('statistics.force_touching', merge(1_int64, 0_int64, self%force_touching))
+      if (self%planes > 1) call record%put_int64s('statistics.planes', [int(self%planes, int64)])
       call self%blocks%save_state(record, 'statistics.blocks')
       call self%poincare%save_state(record, 'statistics.poincare')
       call self%diagnostics%save_state(record, 'statistics.diagnostics')
       call self%spectrum%save_state(record, 'statistics.spectrum')
+      if (self%planes > 1) call self%spectrum_z%save_state(record, 'statistics.spectrum_z')
    end subroutine save_state
 
    !> Take the state back. A checkpoint of another window (another measure_from, other
-   !! points, contact points or obstacles) or of a run without statistics is not
+   !! points, contact points, obstacles or planes) or of a run without statistics is not
    !! restored: `restored` is then false and the window starts afresh.
    subroutine restore_state(self, record, stat, errmsg)
       class(run_statistics), intent(inout) :: self
@@ -687,6 +670,7 @@ contains
       if (stat /= 0) return
       if (any(layout(1:4) /= [self%first_step, int(self%points, int64), int(self%contacts, int64), &
                               int(self%obstacles, int64)])) return
+      if ((record%find('statistics.planes') > 0) .neqv. (self%planes > 1)) return
       call record%get_int64s('statistics.episode_offset', self%episode_offset, stat, errmsg)
       if (stat == 0 .and. record%find('statistics.force_offset') > 0) then
          call record%get_int64s('statistics.force_offset', self%force_offset, stat, errmsg)
@@ -699,5 +683,6 @@ contains
       if (stat == 0) call self%poincare%restore_state(record, 'statistics.poincare', stat, errmsg)
       if (stat == 0) call self%diagnostics%restore_state(record, 'statistics.diagnostics', stat, errmsg)
       if (stat == 0) call self%spectrum%restore_state(record, stat, errmsg, 'statistics.spectrum')
+      if (stat == 0 .and. self%planes > 1) call self%spectrum_z%restore_state(record, stat, errmsg, 'statistics.spectrum_z')
    end subroutine restore_state
 end module vibrobeam_statistics

@@ -13,6 +13,9 @@
 !! rate where a wear_coefficient is given) and the energy's 'power_friction' (with
 !! friction). Every statistic has a standard error beside it (`<name>_error`) except the
 !! spectrum's and the 'poincare' group's, where only the Lyapunov exponent has one.
+!! A beam of two planes has the 'points' statistics in y and z: 2 values per point, the
+!! plane fastest (`layers` = 2: (1 + points, 2) as h5py shows it), the planar y values
+!! of point p at offset + 2 (p - 1) + 1; and the 'spectrum' peaks likewise, (peaks, 2).
 module vibrobeam_statistics_layout
    implicit none
    private
@@ -40,17 +43,19 @@ module vibrobeam_statistics_layout
       integer :: group = 0              !! group_points, ...
       integer :: length = 0
       integer :: offset = 0             !! values(offset + 1 : offset + length)
+      integer :: layers = 1             !! 2: a value in y and in z per point, the plane fastest
       logical :: has_error = .true.
    end type statistic_entry
 
    !> Every statistic of a scene with the given numbers of observation points, contact
    !! points and obstacles (and, for a beam of two planes, its obstacles' points, whether
-   !! a wear coefficient is given and whether friction acts).
+   !! a wear coefficient is given, whether friction acts and its `planes`).
    type :: statistics_layout
       integer :: observation_points = 0, contact_points = 0, obstacles = 0
       integer :: wear_points = 0                  !! points of a beam of two planes' obstacles (0: none)
       logical :: wear_volume = .false.            !! some wear_coefficient given: wear_volume_rate
       logical :: friction = .false.               !! Coulomb friction acts: energy/power_friction
+      integer :: planes = 1                       !! 2: the 'points' statistics in y and z
       integer :: size = 0                         !! length of the flat vector
       type(statistic_entry), allocatable :: entries(:)
    contains
@@ -84,10 +89,10 @@ module vibrobeam_statistics_layout
 
 contains
 
-   subroutine init(self, observation_points, contact_points, obstacles, wear_points, wear_volume, friction)
+   subroutine init(self, observation_points, contact_points, obstacles, wear_points, wear_volume, friction, planes)
       class(statistics_layout), intent(inout) :: self
       integer, intent(in) :: observation_points, contact_points, obstacles
-      integer, intent(in), optional :: wear_points
+      integer, intent(in), optional :: wear_points, planes
       logical, intent(in), optional :: wear_volume, friction
       integer :: k, group, lengths(3)
       self%observation_points = observation_points
@@ -99,11 +104,14 @@ contains
       if (present(wear_volume)) self%wear_volume = wear_volume .and. self%wear_points > 0
       self%friction = .false.
       if (present(friction)) self%friction = friction
+      self%planes = 1
+      if (present(planes)) self%planes = planes
       self%size = 0
       if (allocated(self%entries)) deallocate (self%entries)
       allocate (self%entries(0))
       do k = 1, size(point_names)
-         call add(point_names(k), merge('m  ', 'm/s', k <= 4), group_points, observation_points, .true.)
+         call add(point_names(k), merge('m  ', 'm/s', k <= 4), group_points, self%planes*observation_points, .true.)
+         self%entries(k)%layers = self%planes
       end do
       lengths = [contact_points, obstacles, 1]
       do group = group_contacts, group_beam
@@ -117,9 +125,11 @@ contains
       do k = 1, size(energy_names)
          call add(energy_names(k), 'W', group_energy, 1, .true.)
       end do
-      call add('peak_frequency', 'Hz', group_spectrum, peak_count, .false.)
-      call add('peak_amplitude', 'm', group_spectrum, peak_count, .false.)
-      call add('peak_frequency_rad_s', 'rad/s', group_spectrum, peak_count, .false.)   ! 2 pi peak_frequency
+      ! with two planes each peak in y and in z (of the tip displacement in each plane)
+      call add('peak_frequency', 'Hz', group_spectrum, self%planes*peak_count, .false.)
+      call add('peak_amplitude', 'm', group_spectrum, self%planes*peak_count, .false.)
+      call add('peak_frequency_rad_s', 'rad/s', group_spectrum, self%planes*peak_count, .false.)   ! 2 pi peak_frequency
+      self%entries(size(self%entries) - 2:)%layers = self%planes
       do k = 1, size(poincare_names)
          call add(poincare_names(k), poincare_units(k), group_poincare, 1, index(poincare_names(k), 'lyapunov_exponent') == 1)
       end do

@@ -3,7 +3,8 @@
 !! the run goes on, every other statistic written at the end.
 !!
 !! Layout: /statistics/<group>/<name> and <name>_error for every statistic of
-!! `vibrobeam_statistics_layout`; /statistics/points/x (the tip, then &output points),
+!! `vibrobeam_statistics_layout` (a beam of two planes' points statistics: (1 + points, 2),
+!! y then z, as h5py shows them); /statistics/points/x (the tip, then &output points),
 !! /statistics/contacts/x, lower_obstacle, upper_obstacle (`statistics_points`, also the
 !! sweep file's), /statistics/wear/x and obstacle (a beam of two planes' obstacles' points,
 !! only when it has such points); /statistics/poincare/time,
@@ -58,12 +59,12 @@ contains
          if (stat /= 0) return
          associate (item => layout%entries(k))
             call self%values(k)%create(writer, '/statistics/'//layout%path(k, .false.), item%length, .false., &
-                                       stat, errmsg)
+                                       stat, errmsg, item%layers)
             if (stat == 0) call writer%attr_string('/statistics/'//layout%path(k, .false.), 'unit', trim(item%unit), &
                                                    stat, errmsg)
             if (stat /= 0 .or. .not. item%has_error) cycle
             call self%errors(k)%create(writer, '/statistics/'//layout%path(k, .true.), item%length, .false., &
-                                       stat, errmsg)
+                                       stat, errmsg, item%layers)
             if (stat == 0) call writer%attr_string('/statistics/'//layout%path(k, .true.), 'unit', trim(item%unit), &
                                                    stat, errmsg)
          end associate

@@ -114,7 +114,7 @@ contains
       if (stat /= 0) return
       call layout%init(1 + size(first_scene%output%points), first%contacts%count, size(first_scene%obstacles), &
                        first%circles%count, statistics_options(first_scene, 'wear_volume'), &
-                       statistics_options(first_scene, 'friction'))
+                       statistics_options(first_scene, 'friction'), first_scene%beam%plane_count())
       fingerprint = sweep_fingerprint(scene, settings, base)
       ! the partial directory: rank 0 makes and locks it, then every rank reads it
       if (rank == 0) then

@@ -242,10 +242,12 @@ contains
       do e = 1, size(layout%entries)
          associate (entry => layout%entries(e))
             call tables%values(e)%create(h5, '/sweep/statistics/'//layout%path(e, .false.), entry%length, rows, &
-                                         stat, errmsg, unit=trim(entry%unit), vector=layout%one_value(e))
+                                         stat, errmsg, unit=trim(entry%unit), vector=layout%one_value(e), &
+                                         layers=entry%layers)
             if (stat == 0 .and. entry%has_error) &
                call tables%errors(e)%create(h5, '/sweep/statistics/'//layout%path(e, .true.), entry%length, rows, &
-                                            stat, errmsg, unit=trim(entry%unit), vector=layout%one_value(e))
+                                            stat, errmsg, unit=trim(entry%unit), vector=layout%one_value(e), &
+                                            layers=entry%layers)
          end associate
          if (stat /= 0) return
       end do
@@ -346,9 +348,9 @@ contains
                                                     half(first, :), trim(entry%unit), stat, errmsg)
             else
                call h5%write_real_2d('/sweep/ensemble/'//layout%path(e, .false.), ensemble%mean(first:last, :), &
-                                     trim(entry%unit), stat, errmsg)
+                                     trim(entry%unit), stat, errmsg, entry%layers)
                if (stat == 0) call h5%write_real_2d('/sweep/ensemble/'//layout%path(e, .false.)//'_half_width', &
-                                                    half(first:last, :), trim(entry%unit), stat, errmsg)
+                                                    half(first:last, :), trim(entry%unit), stat, errmsg, entry%layers)
             end if
          end associate
       end do

@@ -55,7 +55,7 @@ contains
       integer(int64), allocatable :: dims(:)
       integer(int64) :: points, samples
       real(dp) :: loaded_x
-      integer :: loaded, observation, peaks
+      integer :: loaded, observation, peaks, width
       character(len=:), allocatable :: first_label, second_label, first_name, second_name
       type(table_column), allocatable :: columns(:)
       logical :: second_axis
@@ -63,8 +63,11 @@ contains
       second_axis = run%file%exists('/sweep/parameter2')
       if (stat == 0) call run%file%read_reals('/sweep/statistics/points/x', point_x, stat, errmsg)
       if (stat == 0) observation = size(point_x)
+      ! a beam of two planes: (rows, 1 + points, 2), a row of y, z at each point in turn
+      if (stat == 0) call run%file%shape('/sweep/statistics/points/displacement_rms', dims, stat, errmsg)
+      if (stat == 0) width = observation*merge(2, 1, size(dims) == 3)
       if (stat == 0) call run%file%shape('/sweep/statistics/spectrum/peak_frequency', dims, stat, errmsg)
-      if (stat == 0) peaks = int(dims(1))   ! (peaks, points)
+      if (stat == 0) peaks = int(product(dims(1:size(dims) - 1)))   ! (peaks, points), two planes (2, peaks, points)
       if (stat == 0) call run%file%read_reals('/sweep/statistics/contacts/x', contact_x, stat, errmsg)
       if (stat /= 0) return
       call most_loaded(run, int(points), size(contact_x), loaded, stat, errmsg)
@@ -76,10 +79,11 @@ contains
       second_label = 'none'
       if (stat == 0 .and. second_axis) call axis_label(run, '/sweep/parameter2', second_name, second_label, stat, errmsg)
       if (stat /= 0) return
-      columns = point_columns(second_axis, observation, peaks, size(contact_x), loaded)
+      columns = point_columns(second_axis, width, peaks, size(contact_x), loaded)
+      if (width > observation) columns = [columns, z_columns(width)]
       columns(4)%note = first_name
       columns(5)%note = second_name
-      call point_file(run, int(points), columns, first_label, second_label, loaded_x, stat, errmsg)
+      call point_file(run, int(points), columns, first_label, second_label, loaded_x, width > observation, stat, errmsg)
       if (stat /= 0) return
       call run%rows_of('/sweep/poincare/time', samples, stat, errmsg)
       if (stat /= 0) return
@@ -87,14 +91,15 @@ contains
       columns(1)%note = first_name
       columns(2)%note = second_name
       call poincare_file(run, int(samples), columns, first_label, second_label, stat, errmsg)
-      if (stat == 0 .and. run%file%exists('/sweep/ensemble/realisations')) call ensemble_file(run, observation, stat, errmsg)
+      if (stat == 0 .and. run%file%exists('/sweep/ensemble/realisations')) call ensemble_file(run, width, stat, errmsg)
    end subroutine sweep_files
 
    !> STEM_ensemble.dat of an ensemble (a sweep over forces.realisation; docs/output.md):
    !! one row per group of /sweep/ensemble, the other axis' value, the branch, the
    !! realisations, then the mean and the half-width of the 95 % interval of the
    !! statistics of STEM_sweep.dat's first columns (tip RMS displacement and velocity,
-   !! largest tip displacement, the beam's and the energy's), every column named.
+   !! largest tip displacement (in y for a beam of two planes), the beam's and the energy's),
+   !! every column named. `observation`: values a row of the points' statistics.
    subroutine ensemble_file(run, observation, stat, errmsg)
       type(derivation), intent(inout) :: run
       integer, intent(in) :: observation
@@ -227,6 +232,22 @@ contains
       end do
    end function point_columns
 
+   !> The columns after STEM_sweep.dat's planar ones for a beam of two planes, whose points'
+   !! statistics hold `width` values a row (y, z at each point): the tip's RMS and largest
+   !! displacement in z, each with its standard error.
+   pure function z_columns(width) result(columns)
+      integer, intent(in) :: width
+      type(table_column) :: columns(4)
+      character(len=*), parameter :: names(2) = [character(len=16) :: 'displacement_rms', 'displacement_max']
+      integer :: j
+      do j = 1, 2
+         columns(2*j - 1) = table_column('tip_'//trim(names(j))//'_z', '/sweep/statistics/points/'//trim(names(j)), &
+                                         width, 2)
+         columns(2*j) = table_column('tip_'//trim(names(j))//'_z_error', &
+                                     '/sweep/statistics/points/'//trim(names(j))//'_error', width, 2)
+      end do
+   end function z_columns
+
    !> The columns of STEM_poincare.dat (the tip first of `observation`).
    pure function poincare_columns(second_axis, observation) result(columns)
       logical, intent(in) :: second_axis
@@ -242,19 +263,25 @@ contains
       columns(7) = table_column('tip_velocity', '/sweep/poincare/velocity', observation, 1)
    end function poincare_columns
 
-   !> STEM_sweep.dat: one row per point, a blank line where the line changes.
-   subroutine point_file(run, points, columns, first_label, second_label, loaded_x, stat, errmsg)
+   !> STEM_sweep.dat: one row per point, a blank line where the line changes; `z_plane`:
+   !! the columns end with `z_columns`.
+   subroutine point_file(run, points, columns, first_label, second_label, loaded_x, z_plane, stat, errmsg)
       type(derivation), intent(inout) :: run
       integer, intent(in) :: points
       type(table_column), intent(in) :: columns(:)
       character(len=*), intent(in) :: first_label, second_label
       real(dp), intent(in) :: loaded_x
+      logical, intent(in) :: z_plane
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(text_sink) :: sink
       real(dp), allocatable :: table(:, :)   ! (column, point) of a block
       real(dp) :: previous_line
       integer :: first, count, k
+      character(len=:), allocatable :: z_note
+      z_note = ''
+      if (z_plane) z_note = '; then (a beam of two planes) value and standard error of the RMS tip displacement '// &
+                            'in z (m) and of the largest (m); the tip columns before are the y plane''s'
       call run%open_sink(sink, 'sweep', 'point  line  direction (+1 up, -1 down, 0 independent)  parameter: '// &
                          first_label//'  parameter2: '//second_label//'  status (0 ok)  settled (1, 0, -1 not '// &
                          'asked)  transient (s)  then value and '// &
@@ -267,7 +294,7 @@ contains
                          '  RMS in contact (N)  contact fraction (1)  mean episode duration (s)  longest episode (s); '// &
                          'then the Poincare samples'' period (0: none, -1: not determined) and mismatch, the 0-1 '// &
                          'test''s K and lags, the Lyapunov exponent (1/s) and per forcing period with their errors, '// &
-                         'and its periods', &
+                         'and its periods'//z_note, &
                          stat, errmsg)
       if (stat /= 0) return
       call column_lines(run, sink, columns, stat, errmsg)

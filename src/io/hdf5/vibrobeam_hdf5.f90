@@ -298,22 +298,30 @@ contains
    !> Write the 2-d real dataset `path`. The Fortran array `values(n1, n2)` becomes a
    !! dataset of shape `(n2, n1)` as seen by h5py, h5dump and C (HDF5's Fortran API
    !! reverses the dimensions; memory order is unchanged). Optional string attribute
-   !! 'unit'. Pass `stat`/`errmsg` by keyword when `unit` is omitted.
-   subroutine writer_write_real_2d(self, path, values, unit, stat, errmsg)
+   !! 'unit'. Pass `stat`/`errmsg` by keyword when `unit` is omitted. With `layers` > 1 the
+   !! dataset is 3-d, (n2, n1/layers, layers) as h5py sees it (a beam of two planes' y, z).
+   subroutine writer_write_real_2d(self, path, values, unit, stat, errmsg, layers)
       class(h5_writer), intent(inout) :: self         !! open writer
       character(len=*), intent(in) :: path            !! dataset path, e.g. '/modes/shape'
       real(dp), intent(in) :: values(:, :)            !! data (n1, n2), may be empty
       character(len=*), intent(in), optional :: unit  !! physical unit, e.g. 'm'
       integer, intent(out) :: stat                    !! 0 on success
       character(len=*), intent(out) :: errmsg         !! reason of the failure, blank on success
+      integer, intent(in), optional :: layers         !! > 1: a 3-d dataset (see above)
       integer(hid_t) :: dataset_id
-      integer(hsize_t) :: dims(2)
-      integer :: hdferr
+      integer(hsize_t) :: dims(2), file_dims(3)
+      integer :: hdferr, rank
       real(dp), allocatable :: contiguous_values(:, :)
 
       dims = int(shape(values), hsize_t)
+      rank = 2
+      file_dims(1:2) = dims
+      if (present(layers)) then
+         if (layers > 1) rank = 3
+         if (layers > 1) file_dims = [int(layers, hsize_t), dims(1)/layers, dims(2)]
+      end if
       call create_dataset(self%is_open, self%file_id, self%link_creation_list, self%temporary_file(), path, &
-         h5kind_to_type(dp, H5_REAL_KIND), 2, dims, dataset_id, stat, errmsg)
+         h5kind_to_type(dp, H5_REAL_KIND), rank, file_dims(1:rank), dataset_id, stat, errmsg)
       if (stat /= 0) return
       hdferr = 0
       if (size(values) > 0) then

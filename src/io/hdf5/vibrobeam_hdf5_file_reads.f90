@@ -18,7 +18,7 @@ module vibrobeam_hdf5_file_reads
       h5tset_strpad_f, h5tget_class_f, h5tis_variable_str_f, H5T_FORTRAN_S1, H5T_STR_NULLPAD_F, H5T_STRING_F
    implicit none
    private
-   public :: read_real_1d, read_real_2d, read_int_1d, read_real_scalar
+   public :: read_real_1d, read_real_2d, read_real_3d, read_int_1d, read_real_scalar
    public :: read_attr_real, read_attr_int, read_attr_int64, read_attr_string
    public :: h5_path_exists
 
@@ -66,6 +66,26 @@ contains
       end if
       call close_after_reading(filename, path, file_id, dataset_id, hdferr, stat, errmsg)
    end subroutine read_real_2d
+
+   !> Read the 3-d numeric dataset `path` of `filename`: a dataset of shape (n3, n2, n1) as
+   !! h5py sees it is returned as `values(n1, n2, n3)` (a beam of two planes' y, z: n1 = 2).
+   subroutine read_real_3d(filename, path, values, stat, errmsg)
+      character(len=*), intent(in) :: filename                !! HDF5 file
+      character(len=*), intent(in) :: path                    !! dataset path
+      real(dp), allocatable, intent(out) :: values(:, :, :)   !! the data (n1, n2, n3)
+      integer, intent(out) :: stat                            !! 0 on success
+      character(len=*), intent(out) :: errmsg                 !! reason of the failure, blank on success
+      integer(hid_t) :: file_id, dataset_id
+      integer(hsize_t) :: dims(3)
+      integer :: hdferr
+
+      call open_dataset_for_reading(filename, path, 3, file_id, dataset_id, dims, stat, errmsg)
+      if (stat /= 0) return
+      allocate (values(dims(1), dims(2), dims(3)))
+      hdferr = 0
+      if (size(values) > 0) call h5dread_f(dataset_id, h5kind_to_type(dp, H5_REAL_KIND), values, dims, hdferr)
+      call close_after_reading(filename, path, file_id, dataset_id, hdferr, stat, errmsg)
+   end subroutine read_real_3d
 
    !> Read the 1-d integer dataset `path` of `filename` (default integer kind).
    subroutine read_int_1d(filename, path, values, stat, errmsg)

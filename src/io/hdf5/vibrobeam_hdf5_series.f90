@@ -4,10 +4,12 @@
 !!   written as one hyperslab (H5Dset_extent + a selection) when the buffer is full or
 !!   when the caller flushes, so memory does not grow with the number of rows.
 !! - `h5_array`: a fixed-size 1-d dataset created once and rewritten in place (the
-!!   checkpoint slots), which SWMR mode allows.
+!!   checkpoint slots), which SWMR mode allows; with `layers` > 1 a 2-d dataset that h5py
+!!   sees as (length/layers, layers), the layer fastest (a beam of two planes' y, z).
 !!
 !! A series of one column is a 1-d dataset (rows); of c columns, a 2-d dataset that h5py
-!! sees as (rows, c) (the Fortran array (c, rows), `vibrobeam_hdf5` conventions). Values
+!! sees as (rows, c) (the Fortran array (c, rows), `vibrobeam_hdf5` conventions); a series or
+!! a table of `layers` > 1 is 3-d, (rows, c/layers, layers), the layer fastest. Values
 !! are stored as native doubles, or as 64-bit integers for `integers = .true.` (counts).
 !! Every dataset gets its string attribute 'unit'. Create every dataset before the file
 !! enters SWMR mode (`h5_writer%start_swmr`).
@@ -73,6 +75,7 @@ module vibrobeam_hdf5_series
       integer(hid_t) :: dataset = no_id
       integer :: columns = 1
       integer(int64) :: rows = 0
+      integer :: layers = 1                  !! > 1: a 3-d dataset (rows, columns/layers, layers)
       logical :: integers = .false.
       logical :: vector = .false.
       character(len=:), allocatable :: path, file
@@ -281,7 +284,7 @@ contains
    end subroutine series_close
 
    !> Create the 1-d dataset `path` of `length` values (reals, or 64-bit integers).
-   subroutine array_create(self, writer, path, length, integers, stat, errmsg)
+   subroutine array_create(self, writer, path, length, integers, stat, errmsg, layers)
       class(h5_array), intent(inout) :: self
       type(h5_writer), intent(in) :: writer
       character(len=*), intent(in) :: path
@@ -289,11 +292,19 @@ contains
       logical, intent(in) :: integers
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
+      integer, intent(in), optional :: layers     !! > 1: (length/layers, layers) (module documentation)
       self%length = length
       self%integers = integers
       self%path = trim(path)
       self%file = writer%temporary_file()
       ! storage allocated now: writing it later (in SWMR mode) changes no metadata
+      if (present(layers)) then
+         if (layers > 1) then
+            call create_fixed(writer, self%path, int([layers, length/layers], hsize_t), value_type(integers), .true., &
+                              self%dataset, stat, errmsg)
+            return
+         end if
+      end if
       call create_fixed(writer, self%path, [int(length, hsize_t)], value_type(integers), .true., self%dataset, &
                         stat, errmsg)
    end subroutine array_create
@@ -346,7 +357,7 @@ contains
 
    !> Create the dataset `path` of `rows` rows of `columns` values (module documentation),
    !! with the string attribute 'unit' when `unit` is given.
-   subroutine table_create(self, writer, path, columns, rows, stat, errmsg, unit, integers, vector, early)
+   subroutine table_create(self, writer, path, columns, rows, stat, errmsg, unit, integers, vector, early, layers)
       class(h5_table), intent(inout) :: self
       type(h5_writer), intent(in) :: writer
       character(len=*), intent(in) :: path
@@ -358,7 +369,8 @@ contains
       logical, intent(in), optional :: integers   !! default integers (default: doubles)
       logical, intent(in), optional :: vector     !! a 1-d dataset (one column; default: 2-d)
       logical, intent(in), optional :: early      !! storage allocated now (default: at the first write)
-      integer(hsize_t) :: dims(2)
+      integer, intent(in), optional :: layers     !! > 1: 3-d, (rows, columns/layers, layers) (module documentation)
+      integer(hsize_t) :: dims(3)
       character(len=:), allocatable :: failed_step
       integer :: rank
       logical :: early_storage
@@ -376,9 +388,12 @@ contains
          call fail(stat, errmsg, 'cannot create dataset '//describe(path, self%file)//': the path already exists')
          return
       end if
-      rank = merge(1, 2, self%vector)
-      dims = [int(columns, hsize_t), int(rows, hsize_t)]
+      self%layers = 1
+      if (present(layers) .and. .not. self%vector) self%layers = max(1, layers)
+      rank = merge(1, merge(3, 2, self%layers > 1), self%vector)
+      dims(1:2) = [int(columns, hsize_t), int(rows, hsize_t)]
       if (self%vector) dims(1) = int(rows, hsize_t)
+      if (rank == 3) dims = [int(self%layers, hsize_t), int(columns/self%layers, hsize_t), int(rows, hsize_t)]
       early_storage = .false.
       if (present(early)) early_storage = early
       call create_fixed(writer, self%path, dims(1:rank), value_type(self%integers, whole=.true.), early_storage, &
@@ -400,7 +415,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer(hid_t) :: file_space, memory_space
-      integer(hsize_t) :: offset(2), count(2)
+      integer(hsize_t) :: offset(3), count(3)
       real(dp), allocatable :: reals(:, :)
       integer, allocatable :: whole(:, :)
       character(len=:), allocatable :: reason
@@ -419,10 +434,14 @@ contains
          rank = 1
          offset(1) = int(first_row - 1, hsize_t)
          count(1) = int(size(values, 2), hsize_t)
+      else if (self%layers > 1) then
+         rank = 3
+         offset = [0_hsize_t, 0_hsize_t, int(first_row - 1, hsize_t)]
+         count = int([self%layers, size(values, 1)/self%layers, size(values, 2)], hsize_t)
       else
          rank = 2
-         offset = [0_hsize_t, int(first_row - 1, hsize_t)]
-         count = int([size(values, 1), size(values, 2)], hsize_t)
+         offset(1:2) = [0_hsize_t, int(first_row - 1, hsize_t)]
+         count(1:2) = int([size(values, 1), size(values, 2)], hsize_t)
       end if
       file_space = no_id
       memory_space = no_id
