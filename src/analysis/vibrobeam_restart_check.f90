@@ -283,35 +283,23 @@ contains
       character(len=*), parameter :: walls(11) = [character(len=11) :: 'side', 'x_from', 'x_to', 'level_from', &
                                                   'level_to', 'shape', 'sides', 'orientation', 'radius', 'center_y', &
                                                   'center_z']
-      character(len=:), allocatable :: text
-      real(dp) :: value
-      integer(int64) :: number
       integer :: e, k, stat
-      character(len=256) :: errmsg
+      character(len=1024) :: errmsg
+      ! obstacles.count (the scene must list it) and every wall entry, each compared as
+      ! `compare_entry` compares it, its message unused
       same_walls = .false.
-      call file%attr_int64('/', 'obstacles.count', number, stat, errmsg)
-      do e = 1, size(list)
-         if (list(e)%name == 'obstacles.count') same_walls = stat == 0 .and. number == list(e)%integer_value
-      end do
-      if (.not. same_walls) return
+      if (.not. any(list%name == 'obstacles.count')) return
       do e = 1, size(list)
          k = index(list(e)%name, '(')
-         if (index(list(e)%name, 'obstacles.') /= 1 .or. k == 0) cycle
-         if (.not. any(list(e)%name(11:k - 1) == walls)) cycle
-         if (.not. file%has_attr('/', trim(list(e)%name))) then
-            same_walls = .false.
-         else if (list(e)%kind == 'real') then
-            call file%attr_real('/', trim(list(e)%name), value, stat, errmsg)
-            same_walls = stat == 0 .and. same_bits(value, list(e)%real_value)
-         else if (list(e)%kind == 'integer') then
-            call file%attr_int64('/', trim(list(e)%name), number, stat, errmsg)
-            same_walls = stat == 0 .and. number == list(e)%integer_value
-         else
-            call file%attr_string('/', trim(list(e)%name), text, stat, errmsg)
-            same_walls = stat == 0 .and. text == trim(list(e)%string_value)
+         if (list(e)%name /= 'obstacles.count') then
+            if (index(list(e)%name, 'obstacles.') /= 1 .or. k == 0) cycle
+            if (.not. any(list(e)%name(11:k - 1) == walls)) cycle
          end if
-         if (.not. same_walls) return
+         if (.not. file%has_attr('/', trim(list(e)%name))) return
+         call compare_entry(file, list(e), '', '', stat, errmsg)
+         if (stat /= 0) return
       end do
+      same_walls = .true.
    end function same_walls
 
    !> The compliant stops of the file against the scene's (`check_compatible`).
