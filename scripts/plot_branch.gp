@@ -5,15 +5,19 @@
 # marked; with &periodic switch_branch the branch of twice the period (stem_branch_2.dat,
 # stem_bifurcations_2.dat) on the same axes, green stable and orange dashed unstable, its
 # branch points marked; and the largest Floquet multiplier's modulus along the branches
-# against |mu| = 1. With
+# against |mu| = 1; and (stem_branch_multipliers.png) every multiplier of every point in
+# the complex plane, coloured by the parameter, with the unit circle: a fold or a
+# period doubling is a multiplier leaving it through +1 or -1, a Neimark-Sacker point a
+# complex pair leaving it elsewhere. With
 # -e "sweep='STEM2'" the points of a time-marching sweep of the same scene
 # (STEM2_sweep.dat, its tip_displacement_max, up and down branches apart) are drawn over
 # the branch: they lie on its stable parts and jump at its folds.
 # usage: gnuplot -e "stem='results/compliant_stop_branch'" scripts/plot_branch.gp
 # needs: branch
-# reads  stem_branch.dat and stem_bifurcations.dat (docs/output.md, "Text files"), and
-#        stem_branch_2.dat and stem_bifurcations_2.dat when they exist;
-# writes stem_branch.png
+# reads  stem_branch.dat and stem_bifurcations.dat (docs/output.md, "Text files"),
+#        stem_branch_2.dat and stem_bifurcations_2.dat when they exist, and
+#        stem_branch_multipliers.dat (and _2) when they exist;
+# writes stem_branch.png and, with the multipliers, stem_branch_multipliers.png
 if (!exists("stem")) stem = 'results/vibrobeam'
 branch = stem.'_branch.dat'
 found = stem.'_bifurcations.dat'
@@ -78,3 +82,36 @@ if (have_branch2) {
 }
 eval('plot '.multipliers)
 unset multiplot
+# the multipliers in the complex plane, the axes wide enough for the largest
+table = stem.'_branch_multipliers.dat'
+table2 = stem.'_branch_multipliers_2.dat'
+have_table = int(system("awk '!/^#/ && NF {n++} END {print n + 0}' '".table."' 2> /dev/null")) > 0
+have_table2 = int(system("awk '!/^#/ && NF {n++} END {print n + 0}' '".table2."' 2> /dev/null")) > 0
+if (have_table) {
+   set output stem.'_branch_multipliers.png'
+   set terminal pngcairo size 1000,900 noenhanced
+   mp = col(table, 'parameter')
+   mr = col(table, 'real')
+   mi = col(table, 'imaginary')
+   mm = col(table, 'modulus')
+   largest = real(system("awk '!/^#/ && NF {if ($".mm." > m) m = $".mm."} END {print m + 0}' '".table."'"))
+   reach = largest*1.15 > 1.2 ? largest*1.15 : 1.2
+   set title 'Floquet multipliers along the branch: '.stem
+   set xlabel 'Re'
+   set ylabel 'Im'
+   set size ratio -1
+   set xrange [-reach:reach]
+   set yrange [-reach:reach]
+   set cblabel xlabel
+   set palette rgbformulae 33,13,10
+   set key below
+   set parametric
+   set trange [0:2*pi]
+   multipliers = "cos(t), sin(t) with lines dt 2 lc rgb 'gray' title 'unit circle', ".\
+                 "table using (column(mr)):(column(mi)):(column(mp)) with points pt 7 ps 0.7 lc palette title 'multipliers (colour: the parameter)'"
+   if (have_table2) {
+      multipliers = multipliers.", table2 using (column(mr)):(column(mi)):(column(mp)) with points pt 6 ps 1.0 lc palette title 'twice the period'"
+   }
+   eval('plot '.multipliers)
+   unset parametric
+}

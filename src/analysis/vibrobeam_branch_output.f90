@@ -121,6 +121,8 @@ contains
                                                                       k=1, size(points))], stat, errmsg)
          if (stat == 0) call files%h5%write_real_1d(group//'/largest_multiplier', [(largest(k), k=1, size(points))], &
                                                     '1', stat, errmsg)
+         if (stat == 0) call files%h5%write_real_2d(group//'/floquet_multipliers', multiplier_table(), '1', stat, &
+                                                    errmsg, layers=2)
          if (stat == 0) call files%h5%write_int_1d(group//'/newton_iterations', points%iterations, stat, errmsg)
          ! (a scene without obstacles has no clearance: huge at every point, not written)
          if (stat == 0 .and. any(points%minimum_gap < huge(1.0_dp))) &
@@ -142,6 +144,19 @@ contains
             text = text//', '//integer_text(k)//' '//trim(bifurcation_names(k))
          end do
       end function kinds_text
+
+      !> Every point's multipliers, a column each: (2 x 2 J, points), so that h5py sees
+      !! (points, 2 J, 2), the last dimension the real and imaginary parts.
+      function multiplier_table() result(table)
+         real(dp), allocatable :: table(:, :)
+         integer :: count
+         count = 0
+         if (size(branch%points) > 0) count = size(branch%points(1)%multipliers)
+         allocate (table(count, size(branch%points)))
+         do k = 1, size(branch%points)
+            table(:, k) = reshape(branch%points(k)%multipliers, [count])
+         end do
+      end function multiplier_table
 
       !> The largest modulus of point k's multipliers.
       real(dp) function largest(k)

@@ -21,9 +21,57 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       call branch_tables(run, '/periodic/branch', '', stat, errmsg)
-      if (stat == 0 .and. run%file%exists('/periodic/branch_2/parameter')) &
+      if (stat == 0) call multiplier_table(run, '/periodic/branch', '', stat, errmsg)
+      if (stat == 0 .and. run%file%exists('/periodic/branch_2/parameter')) then
          call branch_tables(run, '/periodic/branch_2', '_2', stat, errmsg)
+         if (stat == 0) call multiplier_table(run, '/periodic/branch_2', '_2', stat, errmsg)
+      end if
    end subroutine branch_files
+
+   !> STEM_branch_multipliers<tail>.dat: every Floquet multiplier of every point of the
+   !! branch in `group` (its floquet_multipliers), a block of rows per point (parameter,
+   !! real and imaginary part, modulus, the point's index) with a blank line between
+   !! blocks, for the multipliers in the complex plane (scripts/plot_branch.gp). A result
+   !! written before the branch kept its multipliers has none: no file.
+   subroutine multiplier_table(run, group, tail, stat, errmsg)
+      type(derivation), intent(inout) :: run
+      character(len=*), intent(in) :: group, tail
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(text_sink) :: sink
+      real(dp), allocatable :: parameter(:), multipliers(:)
+      character(len=:), allocatable :: name
+      integer :: k, j, count
+      stat = 0
+      errmsg = ''
+      if (.not. run%file%exists(group//'/floquet_multipliers')) return
+      call run%file%read_reals(group//'/parameter', parameter, stat, errmsg)
+      if (stat == 0) call run%file%read_reals(group//'/floquet_multipliers', multipliers, stat, errmsg)
+      if (stat == 0) call run%file%attr_string(group, 'parameter', name, stat, errmsg)
+      if (stat /= 0) return
+      call run%open_sink(sink, 'branch_multipliers'//tail, 'the Floquet multipliers of each point of the '// &
+                         'branch, largest modulus first, a block of rows per point: the parameter, the real and '// &
+                         'imaginary parts, the modulus, the point''s index', stat, errmsg)
+      if (stat == 0) call column_lines(run, sink, [table_column('parameter', group//'/parameter', note=name), &
+                                                   table_column('real', group//'/floquet_multipliers'), &
+                                                   table_column('imaginary', group//'/floquet_multipliers'), &
+                                                   table_column('modulus', group//'/floquet_multipliers'), &
+                                                   table_column('point', '')], stat, errmsg)
+      if (stat /= 0) return
+      count = 0
+      if (size(parameter) > 0) count = size(multipliers)/(2*size(parameter))
+      do k = 1, size(parameter)
+         do j = 1, count
+            associate (re => multipliers(2*((k - 1)*count + j) - 1), im => multipliers(2*((k - 1)*count + j)))
+               call sink%put_row('wide', [parameter(k), re, im, hypot(re, im), real(k, dp)], stat, errmsg, 1)
+            end associate
+            if (stat /= 0) exit
+         end do
+         if (stat == 0 .and. k < size(parameter)) call sink%put_line('', stat, errmsg)
+         if (stat /= 0) exit
+      end do
+      call run%close_sink(sink, stat, errmsg)
+   end subroutine multiplier_table
 
    !> STEM_branch<tail>.dat and STEM_bifurcations<tail>.dat of the branch in `group`.
    subroutine branch_tables(run, group, tail, stat, errmsg)

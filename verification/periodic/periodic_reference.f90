@@ -10,11 +10,12 @@ module vibrobeam_periodic_reference
    use vibrobeam_scene, only: scene_type
    use vibrobeam_continuation, only: continuation_branch, continue_branch
    use vibrobeam_test_support, only: test_counter
+   use vibrobeam_period_map, only: difference_fraction
    implicit none
    private
    public :: identity, solve_dense, energy_gram, energy_norm, cancellation, fixed_point_condition
    public :: amplification_matrix, eigenvalues_with_conditions, harmonic_steady_state, matrix_power
-   public :: continue_test_branch
+   public :: continue_test_branch, check_multipliers
 
 contains
 
@@ -209,4 +210,66 @@ contains
          branch%points(1)%parameter, ' to ', branch%points(size(branch%points))%parameter, ' rad/s, ', &
          branch%steps_taken, ' steps'
    end subroutine continue_test_branch
+   !> Check the Floquet multipliers `multipliers` (2, 2 J: real, imaginary) of an orbit of
+   !! `steps` steps against lambda_k^steps, lambda_k the eigenvalues of the one-step
+   !! amplification matrix `a` (LAPACK dgeevx), each to the round-off bound derived below;
+   !! `monodromy` says how they were computed ('linearised' or 'differences'), `noise` is
+   !! the period map's relative noise in the energy norm of `gram`. Returns the largest
+   !! error over its bound.
+   real(dp) function check_multipliers(t, multipliers, a, steps, monodromy, noise, gram) result(worst)
+      type(test_counter), intent(inout) :: t
+      real(dp), intent(in) :: multipliers(:, :), a(:, :), noise, gram(:, :)
+      integer(int64), intent(in) :: steps
+      character(len=*), intent(in) :: monodromy
+      real(dp), allocatable :: wr(:), wi(:), rconde(:), vectors(:, :)
+      complex(dp), allocatable :: mu_ref(:)
+      logical, allocatable :: used(:)
+      real(dp) :: distance, lambda_power, bound
+      integer :: k, j, m
+      m = size(a, 1)
+      allocate (wr(m), wi(m), rconde(m), vectors(m, m))
+      call eigenvalues_with_conditions(a, wr, wi, rconde, vectors)
+      allocate (mu_ref(m))   ! (first: gfortran's -Wmaybe-uninitialized does not follow a reallocation)
+      mu_ref = cmplx(wr, wi, dp)**steps
+      call t%check_true('as many multipliers as unknowns of the map (2 J)', size(multipliers, 2) == m)
+      ! Bounds, to first order (a factor 4 beside them): an error E of a matrix moves its
+      ! eigenvalue by |y^H E x|/|y^H x| <= ||E x||/s_k (x, y right and left eigenvectors,
+      ! s_k = rconde, LAPACK's reciprocal condition number). The reference lambda_k^P:
+      ! dgeevx's backward error eps ||A||_F, times P |lambda_k|^(P-1). The monodromy, P
+      ! tangent steps applied to the eigenvector x_k: each step's componentwise round-off
+      ! (8 eps, as the map's noise) of a vector of size |lambda_k|^j, carried to the end by
+      ! A^(P-1-j), adds to y^H E x a term lambda_k^(P-1) 8 eps rho(x_k), so P of them; and
+      ! dgeev on the monodromy its backward error eps ||M||_F (M in the energy coordinates,
+      ! where the steps are contractions: ||M||_F <= sqrt(2 J)). By finite differences
+      ! (&periodic monodromy = 'differences') each column is a difference quotient whose
+      ! numerator carries the map's noise: ||E|| <= noise/difference_fraction instead.
+      allocate (used(m), source=.false.)
+      worst = 0
+      do k = 1, min(m, size(multipliers, 2))
+         j = minloc(abs(cmplx(multipliers(1, k), multipliers(2, k), dp) - mu_ref), mask=.not. used, dim=1)
+         used(j) = .true.
+         distance = abs(cmplx(multipliers(1, k), multipliers(2, k), dp) - mu_ref(j))
+         lambda_power = abs(cmplx(wr(j), wi(j), dp))**(steps - 1)
+         bound = epsilon(1.0_dp)*steps*sqrt(sum(a**2))*lambda_power + epsilon(1.0_dp)*sqrt(real(m, dp))
+         if (monodromy == 'differences') then
+            bound = bound + noise/difference_fraction
+         else
+            bound = bound + 8*epsilon(1.0_dp)*steps*lambda_power*pair_cancellation(j)
+         end if
+         bound = 4*bound/rconde(j)
+         worst = max(worst, distance/bound)
+         call t%check_close('Floquet multiplier against lambda^P', distance, 0.0_dp, bound, scale=1.0_dp)
+      end do
+   contains
+      !> rho of eigenvector j of dgeevx's `vectors` (a complex pair is stored as its real and
+      !! imaginary parts in columns j, j + 1): the larger of its parts' rho.
+      real(dp) function pair_cancellation(j)
+         integer, intent(in) :: j
+         integer :: first
+         first = j
+         if (wi(j) < 0) first = j - 1
+         pair_cancellation = cancellation(gram, vectors(:, first))
+         if (abs(wi(j)) > 0) pair_cancellation = max(pair_cancellation, cancellation(gram, vectors(:, first + 1)))
+      end function pair_cancellation
+   end function check_multipliers
 end module vibrobeam_periodic_reference

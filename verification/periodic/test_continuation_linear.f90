@@ -4,7 +4,8 @@
 !! the reference is the scheme's harmonic steady state at Omega_k with dt = T_k/P
 !! (`harmonic_steady_state`: a complex linear system from the dense M, K, no stepper, no
 !! period map, as test_periodic_linear), and the point's state must equal it to the
-!! round-off bound derived below. A linear response curve has no fold, period doubling
+!! round-off bound derived below, and each of its Floquet multipliers lambda_k^P, lambda_k
+!! the eigenvalues of the scheme's one-step matrix there (`check_multipliers`). A linear response curve has no fold, period doubling
 !! or Neimark-Sacker point: none may be reported, every point is stable, and the branch
 !! runs monotonically in Omega across the resonance to the bound.
 !! Usage: test_continuation_linear SCENE.nml (kind = 'periodic', &periodic parameter =
@@ -16,7 +17,7 @@ program test_continuation_linear
    use vibrobeam_band, only: band_to_dense
    use vibrobeam_periodic_settings, only: period_step
    use vibrobeam_periodic_reference, only: energy_gram, energy_norm, cancellation, fixed_point_condition, &
-      amplification_matrix, harmonic_steady_state, matrix_power, continue_test_branch
+      amplification_matrix, harmonic_steady_state, matrix_power, continue_test_branch, check_multipliers
    use vibrobeam_continuation, only: continuation_branch
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
    implicit none
@@ -27,7 +28,7 @@ program test_continuation_linear
    character(len=512) :: path
    real(dp), allocatable :: mass(:, :), stiffness(:, :), damping(:, :), gram(:, :), x_ref(:), a(:, :)
    complex(dp), allocatable :: harmonic(:)
-   real(dp) :: omega, omega0, dt, error, bound, noise, worst, norm_ratio, largest_bound
+   real(dp) :: omega, omega0, dt, error, bound, noise, worst, norm_ratio, largest_bound, worst_multipliers
    integer :: k, n, info, steps_per_period
    integer(int64) :: steps
 
@@ -49,6 +50,7 @@ program test_continuation_linear
    steps_per_period = scene%periodic%steps_per_period
    omega0 = scene%load%point_frequency
    worst = 0
+   worst_multipliers = 0
    largest_bound = 0
    do k = 1, size(branch%points)
       omega = branch%points(k)%parameter
@@ -82,7 +84,12 @@ program test_continuation_linear
       largest_bound = max(largest_bound, bound)
       call t%check_close('branch point against the harmonic steady state at its Omega (energy norm, relative)', &
                          error, 0.0_dp, bound, scale=1.0_dp)
+      ! every multiplier of the point (/periodic/branch/floquet_multipliers) against
+      ! lambda_k^P of the scheme at its Omega and dt
+      worst_multipliers = max(worst_multipliers, check_multipliers(t, branch%points(k)%multipliers, a, steps, &
+                                                                   branch%monodromy, noise, gram))
    end do
+   write (*, '(a,es10.3)') 'Floquet multipliers at every point: largest error / bound ', worst_multipliers
    write (*, '(a,es10.3,a,es10.3)') 'states: largest error / bound ', worst, ', largest bound ', largest_bound
    call t%check_true('the bounds are round-off bounds (< 1e-6)', largest_bound < 1e-6_dp)
    call t%finish('test_continuation_linear')

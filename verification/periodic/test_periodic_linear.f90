@@ -22,9 +22,8 @@ program test_periodic_linear
    use vibrobeam_band, only: band_to_dense
    use vibrobeam_model, only: node_row
    use vibrobeam_periodic_reference, only: identity, solve_dense, energy_gram, energy_norm, cancellation, &
-      fixed_point_condition, amplification_matrix, eigenvalues_with_conditions, harmonic_steady_state, matrix_power
+      fixed_point_condition, amplification_matrix, harmonic_steady_state, matrix_power, check_multipliers
    use vibrobeam_periodic_analysis, only: find_periodic_orbit, periodic_orbit
-   use vibrobeam_period_map, only: difference_fraction
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
    implicit none
    type(test_counter) :: t
@@ -34,14 +33,13 @@ program test_periodic_linear
    character(len=512) :: path, errmsg
    real(dp), allocatable :: mass(:, :), stiffness(:, :), damping(:, :), a(:, :), gram(:, :), &
                             tip_row(:), x_ref(:), &
-                            tip_ref(:), wr(:), wi(:), rconde(:), vectors(:, :)
-   complex(dp), allocatable :: rhs(:, :), mu_ref(:), harmonic(:)
+                            tip_ref(:)
+   complex(dp), allocatable :: rhs(:, :), harmonic(:)
    complex(dp) :: z
-   real(dp) :: dt, theta, omega, period, error, bound, inverse_norm, noise, worst, distance, lambda_power
-   integer :: n, m, stat, info, k, j, dofs(4)
+   real(dp) :: dt, theta, omega, period, error, bound, inverse_norm, noise, worst
+   integer :: n, m, stat, info, k, dofs(4)
    integer(int64) :: steps
    real(dp) :: weights(4)
-   logical, allocatable :: used(:)
 
    call get_command_argument(1, path)
    scene = read_test_scene(trim(path))
@@ -119,57 +117,12 @@ program test_periodic_linear
    call t%check_close('tip displacement over the period against the harmonic steady state (m)', error, 0.0_dp, bound, &
                       scale=1.0_dp)
 
-   ! ---- Floquet multipliers against lambda_k^P ----
-   allocate (wr(m), wi(m), rconde(m), vectors(m, m))
-   call eigenvalues_with_conditions(a, wr, wi, rconde, vectors)
-   allocate (mu_ref(size(wr)))   ! (first: see tip_ref)
-   mu_ref = cmplx(wr, wi, dp)**steps
-   call t%check_true('as many multipliers as unknowns of the map (2 J)', size(orbit%multipliers, 2) == m)
-   ! Bounds, to first order (a factor 4 beside them): an error E of a matrix moves its
-   ! eigenvalue by |y^H E x|/|y^H x| <= ||E x||/s_k (x, y right and left eigenvectors,
-   ! s_k = rconde, LAPACK's reciprocal condition number). The reference lambda_k^P:
-   ! dgeevx's backward error eps ||A||_F, times P |lambda_k|^(P-1). The monodromy, P
-   ! tangent steps applied to the eigenvector x_k: each step's componentwise round-off
-   ! (8 eps, as the noise above) of a vector of size |lambda_k|^j, carried to the end by
-   ! A^(P-1-j), adds to y^H E x a term lambda_k^(P-1) 8 eps rho(x_k), so P of them; and
-   ! dgeev on the monodromy its backward error eps ||M||_F (M in the energy coordinates,
-   ! where the steps are contractions: ||M||_F <= sqrt(2 J)). By finite differences
-   ! (&periodic monodromy = 'differences') each column is a difference quotient whose
-   ! numerator carries the map's noise: ||E|| <= noise/difference_fraction instead.
-   allocate (used(m), source=.false.)
-   worst = 0
-   do k = 1, m
-      j = minloc(abs(cmplx(orbit%multipliers(1, k), orbit%multipliers(2, k), dp) - mu_ref), mask=.not. used, dim=1)
-      used(j) = .true.
-      distance = abs(cmplx(orbit%multipliers(1, k), orbit%multipliers(2, k), dp) - mu_ref(j))
-      lambda_power = abs(cmplx(wr(j), wi(j), dp))**(steps - 1)
-      bound = epsilon(1.0_dp)*steps*sqrt(sum(a**2))*lambda_power + epsilon(1.0_dp)*sqrt(real(m, dp))
-      if (orbit%monodromy == 'differences') then
-         bound = bound + noise/difference_fraction
-      else
-         bound = bound + 8*epsilon(1.0_dp)*steps*lambda_power*cancellation_complex(vectors, j)
-      end if
-      bound = 4*bound/rconde(j)
-      worst = max(worst, distance/bound)
-      call t%check_close('Floquet multiplier against lambda^P', distance, 0.0_dp, bound, scale=1.0_dp)
-   end do
-   write (*, '(a,es10.3,a,es12.5)') 'Floquet multipliers: largest error / bound ', worst, ', largest modulus ', &
-      maxval(abs(mu_ref))
+   ! ---- Floquet multipliers against lambda_k^P (bounds derived in check_multipliers) ----
+   worst = check_multipliers(t, orbit%multipliers, a, steps, orbit%monodromy, noise, gram)
+   write (*, '(a,es10.3)') 'Floquet multipliers: largest error / bound ', worst
    call t%finish('test_periodic_linear')
 
 contains
-
-   !> rho of eigenvector j of dgeevx's `vectors` (a complex pair is stored as its real and
-   !! imaginary parts in columns j, j + 1): the larger of its parts' rho.
-   real(dp) function cancellation_complex(vectors, j)
-      real(dp), intent(in) :: vectors(:, :)
-      integer, intent(in) :: j
-      integer :: first
-      first = j
-      if (wi(j) < 0) first = j - 1
-      cancellation_complex = cancellation(gram, vectors(:, first))
-      if (abs(wi(j)) > 0) cancellation_complex = max(cancellation_complex, cancellation(gram, vectors(:, first + 1)))
-   end function cancellation_complex
 
    !> The row t of u at the tip on the stepped system's unknowns (through the reduced
    !! basis when the scene is reduced).
