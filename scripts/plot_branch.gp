@@ -21,6 +21,9 @@
 if (!exists("stem")) stem = 'results/vibrobeam'
 branch = stem.'_branch.dat'
 found = stem.'_bifurcations.dat'
+# the data rows of a file, 0 when it does not exist (awk reads a pipe: a missing file
+# argument would end it before its END block prints)
+rows(file) = int(system("cat '".file."' 2> /dev/null | awk '!/^#/ && NF {n++} END {print n + 0}'"))
 # a column's number from its header line '# n: name (unit)'
 col(file, name) = int(system("sed -n 's/^# \\([0-9]*\\): ".name." .*/\\1/p' '".file."'"))
 p = col(branch, 'parameter')
@@ -28,11 +31,11 @@ a = col(branch, 'amplitude')
 s = col(branch, 'stable')
 m = col(branch, 'largest_multiplier')
 xlabel = system("sed -n 's/^# [0-9]*: parameter (\\([^)]*\\)) \\(.*\\)$/\\2 (\\1)/p' '".branch."'")
-have_found = int(system("awk '!/^#/ && NF {n++} END {print n + 0}' '".found."' 2> /dev/null")) > 0
+have_found = rows(found) > 0
 branch2 = stem.'_branch_2.dat'
 found2 = stem.'_bifurcations_2.dat'
-have_branch2 = int(system("awk '!/^#/ && NF {n++} END {print n + 0}' '".branch2."' 2> /dev/null")) > 0
-have_found2 = int(system("awk '!/^#/ && NF {n++} END {print n + 0}' '".found2."' 2> /dev/null")) > 0
+have_branch2 = rows(branch2) > 0
+have_found2 = rows(found2) > 0
 set terminal pngcairo size 1200,1000 noenhanced
 set output stem.'_branch.png'
 set multiplot layout 2,1 title 'Continued branch: '.stem
@@ -85,8 +88,8 @@ unset multiplot
 # the multipliers in the complex plane, the axes wide enough for the largest
 table = stem.'_branch_multipliers.dat'
 table2 = stem.'_branch_multipliers_2.dat'
-have_table = int(system("awk '!/^#/ && NF {n++} END {print n + 0}' '".table."' 2> /dev/null")) > 0
-have_table2 = int(system("awk '!/^#/ && NF {n++} END {print n + 0}' '".table2."' 2> /dev/null")) > 0
+have_table = rows(table) > 0
+have_table2 = rows(table2) > 0
 if (have_table) {
    set output stem.'_branch_multipliers.png'
    set terminal pngcairo size 1000,900 noenhanced

@@ -14,10 +14,14 @@
 #  - a one-parameter sweep with &output lyapunov: plot_sweep.sh draws STEM_chaos.png
 #    without a warning, its Lyapunov panel over the points' exponents (issue 20, item 3);
 #  - a periodic orbit: plot_results.sh draws its multipliers without a warning, their
-#    moduli's panel from the smallest to 10 times max(1, the largest).
+#    moduli's panel from the smallest to 10 times max(1, the largest);
+#  - a continued branch (verification/periodic/continuation_grazing.nml): plot_branch.gp
+#    draws the branch and its multipliers in the complex plane without a warning, the
+#    plane's axes reaching past the largest modulus of STEM_branch_multipliers.dat.
 # usage: check_plots.sh VIBROBEAM SCRIPTS_DIRECTORY
 set -uo pipefail
 vibrobeam=$1; scripts=$2
+periodic_scenes=$(cd "$(dirname "$0")/../periodic" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -154,6 +158,21 @@ awk -v range="$range" '!/^#/ && NF && $3 > 0 { if (!n || $3 < low) low = $3; if 
         printf "moduli panel: %s to %s, the moduli %.3g to %.3g\n", g[1], g[2], low, high
         exit !(n > 0 && g[1] <= low && g[2] >= top * (1 - 1e-9)) }' orbit_multipliers.dat ||
   fail "the moduli panel does not show every multiplier and the unit line ($range)"
+
+# a continued branch: the branch and every point's multipliers in the complex plane
+sed "s/file = 'continuation_grazing.h5'/file = 'branch.h5'/" "$periodic_scenes/continuation_grazing.nml" > branch.nml
+"$vibrobeam" branch.nml > branch.out 2> branch.err || fail "vibrobeam branch.nml (continuation)"
+gnuplot -e "stem='branch'" "$scripts/plot_branch.gp" -e "print GPVAL_X_MAX" > branch_plot.out 2> branch_plot.err
+reach=$(tail -1 branch_plot.err)
+grep -v '^[-0-9.e+]*$' branch_plot.err > branch_plot_warnings.err
+quiet branch_plot_warnings.err || fail "plot_branch.gp printed a warning"
+for png in branch_branch.png branch_branch_multipliers.png; do
+  [ "$(stat -c %s $png 2> /dev/null || echo 0)" -gt 10000 ] || fail "$png not drawn"
+done
+awk -v reach="$reach" '!/^#/ && NF { if ($4 > high) high = $4; n++ }
+  END { printf "multipliers plane: axes to %s, %d multipliers, the largest modulus %.3g\n", reach, n, high
+        exit !(n > 0 && reach + 0 > high && reach + 0 >= 1) }' branch_branch_multipliers.dat ||
+  fail "the complex plane of the branch's multipliers does not reach the largest ($reach)"
 
 [ $failed -eq 0 ] && echo "check_plots: every plot drawn and checked"
 exit $failed
