@@ -123,28 +123,60 @@ contains
 
    contains
 
-      !> Forward differences (Phi(x + h_j e_j) - Phi(x))/h_j, column by column.
+      !> Forward differences (Phi(x + h_j e_j) - Phi(x))/h_j, column by column: each
+      !! column an evaluation of its own (its own stepper, nothing shared but the read-only
+      !! scene and problem), run on the threads of this process (OpenMP, as a sweep's tasks;
+      !! OMP_NUM_THREADS or every core), so the Jacobian does not depend on the number of
+      !! threads, bit for bit. A column that fails is reported as the serial loop would
+      !! (the first in column order); the steps of every column run count in steps_taken.
       recursive subroutine differences(image)
          type(map_image), intent(inout) :: image
-         type(map_image) :: shifted
          real(dp) :: h(2*n)
-         real(dp), allocatable :: moved(:)
+         integer :: column_stat(2*n), column_status(2*n)
+         integer(int64) :: column_steps(2*n)
+         character(len=len(image%failure)), allocatable :: reasons(:)
+         character(len=512), allocatable :: messages(:)
          character(len=*), parameter :: prefix = 'a finite difference of the period map: '
          h = difference_step(self, prepared, x, image%state)
-         allocate (image%jacobian(2*n, 2*n))
+         allocate (image%jacobian(2*n, 2*n), reasons(2*n), messages(2*n))
+         column_stat = 0
+         column_status = outcome_ok
+         column_steps = 0
+         !$omp parallel do schedule(dynamic, 1) default(shared) private(j)
          do j = 1, 2*n
-            moved = x
-            moved(j) = moved(j) + h(j)
-            call self%evaluate(scene, prepared, moved, jacobian_none, shifted, stat, errmsg)
-            if (stat /= 0) return
-            if (shifted%status /= outcome_ok) then
-               image%status = shifted%status
-               ! (the reason cut to what the field holds, the prefix included)
-               image%failure = prefix//shifted%failure(1:len(image%failure) - len(prefix))
+            block
+               type(period_map) :: column_map
+               type(map_image) :: shifted
+               real(dp), allocatable :: moved(:)
+               column_map = self
+               column_map%steps_taken = 0
+               moved = x
+               moved(j) = moved(j) + h(j)
+               call column_map%evaluate(scene, prepared, moved, jacobian_none, shifted, column_stat(j), messages(j))
+               column_steps(j) = column_map%steps_taken
+               if (column_stat(j) == 0) then
+                  column_status(j) = shifted%status
+                  reasons(j) = shifted%failure
+                  ! the step actually taken (x + h rounds h)
+                  if (shifted%status == outcome_ok) &
+                     image%jacobian(:, j) = (shifted%state - image%state)/(moved(j) - x(j))
+               end if
+            end block
+         end do
+         !$omp end parallel do
+         self%steps_taken = self%steps_taken + sum(column_steps)
+         do j = 1, 2*n
+            if (column_stat(j) /= 0) then
+               stat = column_stat(j)
+               errmsg = messages(j)
                return
             end if
-            ! the step actually taken (x + h rounds h)
-            image%jacobian(:, j) = (shifted%state - image%state)/(moved(j) - x(j))
+            if (column_status(j) /= outcome_ok) then
+               image%status = column_status(j)
+               ! (the reason cut to what the field holds, the prefix included)
+               image%failure = prefix//reasons(j)(1:len(image%failure) - len(prefix))
+               return
+            end if
          end do
       end subroutine differences
    end subroutine evaluate
