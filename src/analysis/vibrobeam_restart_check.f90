@@ -101,6 +101,17 @@ contains
       call file%close()
    end subroutine check_compatible
 
+   !> The index of the last entry of `list` named `name` (the one that holds, as in a
+   !! namelist), 0 when none is.
+   pure integer function entry_index(list, name) result(e)
+      type(scene_entry), intent(in) :: list(:)
+      character(len=*), intent(in) :: name
+      do e = size(list), 1, -1
+         if (list(e)%name == name) return
+      end do
+      e = 0
+   end function entry_index
+
    !> The root attributes of `matching` in the file against the scene's entries `list`.
    subroutine compare_model(file, list, prefix, stat, errmsg)
       type(h5_reader), intent(in) :: file
@@ -113,9 +124,7 @@ contains
       stat = 0
       errmsg = ''
       do k = 1, size(matching)
-         do i = size(list), 1, -1
-            if (list(i)%name == matching(k)) exit
-         end do
+         i = entry_index(list, matching(k))
          if (i == 0) cycle
          why = model_why
          if (matching(k) == 'mesh.reduction') why = ': a reduced run''s state holds reduced coordinates, '// &
@@ -154,9 +163,8 @@ contains
          if (file%has_attr('/', name)) call file%attr_string('/', name, in_file, stat, errmsg)
          if (stat /= 0) return
          in_scene = trim(defaults(k))
-         do e = 1, size(list)
-            if (list(e)%name == name) in_scene = trim(list(e)%string_value)
-         end do
+         e = entry_index(list, name)
+         if (e > 0) in_scene = trim(list(e)%string_value)
          if (in_file /= in_scene) then
             call mismatch(prefix, name, ''''//in_file//'''', ''''//in_scene//'''', why, stat, errmsg)
             return
@@ -168,9 +176,8 @@ contains
          if (file%has_attr('/', name)) call file%attr_real('/', name, file_value, stat, errmsg)
          if (stat /= 0) return
          scene_value = 0
-         do e = 1, size(list)
-            if (list(e)%name == name) scene_value = list(e)%real_value
-         end do
+         e = entry_index(list, name)
+         if (e > 0) scene_value = list(e)%real_value
          if (.not. same_bits(file_value, scene_value)) then
             call mismatch(prefix, name, real_text(file_value), real_text(scene_value), why, stat, errmsg)
             return
@@ -182,9 +189,8 @@ contains
          if (file%has_attr('/', name)) call file%attr_int64('/', name, file_count, stat, errmsg)
          if (stat /= 0) return
          scene_count = 0
-         do e = 1, size(list)
-            if (list(e)%name == name) scene_count = list(e)%integer_value
-         end do
+         e = entry_index(list, name)
+         if (e > 0) scene_count = list(e)%integer_value
          if (file_count /= scene_count) then
             call mismatch(prefix, name, integer_text(int(file_count)), integer_text(int(scene_count)), why, stat, errmsg)
             return
@@ -223,10 +229,10 @@ contains
          errmsg = prefix//trim(errmsg)
          return
       end if
-      do e = 1, size(list)
-         if (list(e)%name == 'beam.planes') scene_planes = list(e)%integer_value
-         if (list(e)%name == 'beam.inertia_z') scene_inertia = list(e)%real_value
-      end do
+      e = entry_index(list, 'beam.planes')
+      if (e > 0) scene_planes = list(e)%integer_value
+      e = entry_index(list, 'beam.inertia_z')
+      if (e > 0) scene_inertia = list(e)%real_value
       if (file_planes /= scene_planes) then
          call mismatch(prefix, 'beam.planes', integer_text(int(file_planes)), integer_text(int(scene_planes)), why, &
                        stat, errmsg)
@@ -288,7 +294,7 @@ contains
       ! obstacles.count (the scene must list it) and every wall entry, each compared as
       ! `compare_entry` compares it, its message unused
       same_walls = .false.
-      if (.not. any(list%name == 'obstacles.count')) return
+      if (entry_index(list, 'obstacles.count') == 0) return
       do e = 1, size(list)
          k = index(list(e)%name, '(')
          if (list(e)%name /= 'obstacles.count') then
@@ -351,19 +357,15 @@ contains
             if (k > size(compared)) then
                if (len_trim(scene%obstacles(i)%profile) == 0) exit
             end if
-            do e = size(list), 1, -1
-               if (list(e)%name == 'obstacles.'//trim(merge(compared(min(k, size(compared))), 'profile   ', &
-                                                            k <= size(compared)))//item) exit
-            end do
+            e = entry_index(list, 'obstacles.'//trim(merge(compared(min(k, size(compared))), 'profile   ', &
+                                                           k <= size(compared)))//item)
             call compare_entry(file, list(e), prefix, stops_why, stat, errmsg)
             if (stat /= 0) return
          end do
          ! a compliant hole of a beam of two planes (listed when the scene gives it): its
          ! wall is its shape, size, centre and orientation
          do k = 1, size(hole_items)
-            do e = size(list), 1, -1
-               if (list(e)%name == 'obstacles.'//trim(hole_items(k))//item) exit
-            end do
+            e = entry_index(list, 'obstacles.'//trim(hole_items(k))//item)
             if (e == 0) cycle
             call compare_entry(file, list(e), prefix, stops_why, stat, errmsg)
             if (stat /= 0) return
