@@ -25,6 +25,7 @@
 !! in GPa or MPa, a density in g/cm^3, a section in mm^2 or cm^2, an inertia in mm^4 or
 !! cm^4 beside an area in m^2).
 module vibrobeam_check_report
+   !$ use omp_lib, only: omp_get_max_threads
    use vibrobeam_kinds, only: dp, pi, int64
    use vibrobeam_text, only: real_text, integer_text, g => short_text
    use vibrobeam_scene, only: scene_type, is_unset, held_conditions, steps_in_time, forcing_period_steps
@@ -187,6 +188,7 @@ contains
          if (scene%analysis%kind == 'periodic') then
             if (len_trim(scene%periodic%parameter) > 0) then
                line = line//': a branch of at most '//integer_text(scene%periodic%max_points)//' points'
+               if (scene%periodic%switch_branch) line = line//' (the switched branch''s points on top, not counted)'
             else
                line = line//': one orbit and its multipliers'
             end if
@@ -206,6 +208,9 @@ contains
       type(scene_type), intent(in) :: scene
       character(len=:), allocatable :: text
       integer(int64) :: steps
+      integer :: threads
+      threads = 1
+      !$ threads = omp_get_max_threads()
       steps = forcing_period_steps(scene)
       text = 'periodic orbit: forcing period T = '//g(steps*scene%time%dt)//' s = '//g(real(steps, dp))// &
              ' steps of dt = '//g(scene%time%dt)//' s; the orbit spans '// &
@@ -218,6 +223,10 @@ contains
                 g(scene%periodic%step)//', at most '//integer_text(scene%periodic%max_points)// &
                 ' points; each corrector iteration steps the orbit with its monodromy and once more for '// &
                 'dPhi/dlambda, at '//g(real(steps, dp))//' steps per forcing period at every value'//new_line('a')
+      if (scene%periodic%monodromy /= 'linearised') &
+         text = text//'a monodromy by differences (''differences'', or ''auto'' with compliant stops) runs its '// &
+                'columns on '//integer_text(threads)//' thread(s) (OMP_NUM_THREADS), the same result on any number'// &
+                new_line('a')
    end function periodic_text
 
    !> Contact time scale of compliant obstacle i of the scene (s; module comment), with the

@@ -145,12 +145,17 @@ contains
       case ('periodic')
          if (len_trim(scene%periodic%parameter) > 0) then
             ! a continuation, at most max_points points: /mesh/x; /periodic/branch, 6 values
-            ! a point, and a few bifurcations (5 values each), 12 datasets' headers beside the
-            ! small metadata; STEM_branch.dat (6 columns a point) and STEM_bifurcations.dat,
-            ! with their column lines
-            associate (points => real(scene%periodic%max_points, dp))
-               estimate%hdf5_bytes = small_metadata_bytes + 12*dataset_header_bytes + 8*(nodes + 6*points + 5*4)
-               if (scene%output%text) estimate%text_bytes = points*(6*wide + 1) + 4*(5*wide + 1) + text_header_bytes
+            ! and the 2J Floquet multipliers (real, imaginary) a point, and a few bifurcations
+            ! (5 values each), 13 datasets' headers beside the small metadata;
+            ! STEM_branch.dat (6 columns a point), STEM_bifurcations.dat and
+            ! STEM_branch_multipliers.dat (5 columns a multiplier, a blank line a point), with
+            ! their column lines. With switch_branch the switched branch's points come on top
+            ! (not known before the run: it ends at its branch points), not counted.
+            associate (points => real(scene%periodic%max_points, dp), multipliers => 2*real(unknowns, dp))
+               estimate%hdf5_bytes = small_metadata_bytes + 13*dataset_header_bytes + &
+                                     8*(nodes + points*(6 + 2*multipliers) + 5*4)
+               if (scene%output%text) estimate%text_bytes = points*(6*wide + 1) + 4*(5*wide + 1) + &
+                                                            points*(multipliers*(5*wide + 1) + 1) + 2*text_header_bytes
             end associate
             estimate%total_bytes = estimate%hdf5_bytes + estimate%text_bytes
             return
