@@ -209,10 +209,15 @@ sigint_stepping | sigterm_stepping)
   ;;
 sigkill_stepping)
   # Kills at three moments; checkpoints (and so flushes) every 0.1 s. The temporary file
-  # must open and hold the start of the uninterrupted run; a run continued from the last
-  # one's checkpoint must end like the uninterrupted run.
+  # must open and hold the start of the uninterrupted run; a run continued from the
+  # checkpoint of the latest kill that left one must end like the uninterrupted run.
   earlier out/run.h5
-  for kill_after in 0.$((RANDOM % 2 + 3)) 0.$((RANDOM % 3 + 5)) 0.$((RANDOM % 2 + 8)); do
+  # the continuation below uses the latest kill whose file holds a checkpoint (on a loaded
+  # machine the last kill may still come before the run's first one; a fourth kill, 2 s in,
+  # is made only when none of the three left a checkpoint)
+  kept_checkpoint=''
+  for kill_after in 0.$((RANDOM % 2 + 3)) 0.$((RANDOM % 3 + 5)) 0.$((RANDOM % 2 + 8)) 2; do
+    [ "$kill_after" = 2 ] && [ -n "$kept_checkpoint" ] && break
     rm -f out/*.tmp
     scene out/run.h5 run 100 0.8 .true. 0.1
     "$vibrobeam" run.nml > run.out 2> run.err &
@@ -234,15 +239,18 @@ sigkill_stepping)
     [ -n "$partial" ] || continue
     read -r flushed checkpoint current < <("$python" "$here/check_result.py" flushed_step "$partial")
     echo "killed after $kill_after s: flushed at step $flushed, checkpoint at step $checkpoint (slot $current)"
+    if [ "$current" -gt 0 ]; then
+      cp "$partial" killed.h5
+      kept_checkpoint=$checkpoint
+    fi
     # the uninterrupted run, a little beyond the flushed part
     scene reference/run.h5 reference "$(echo "($flushed + 1000) * 0.00002" | bc -l)" 0.8 .false.
     "$vibrobeam" reference.nml > /dev/null 2>&1
     check "kill after $kill_after s: the partial file is the start of the uninterrupted run" \
       "$python" "$here/check_result.py" partial "$partial" reference/run.h5
   done
-  if [ -n "$partial" ] && [ "$current" -gt 0 ]; then
-    mv "$partial" killed.h5
-    t_end=$(echo "($checkpoint + 5000) * 0.00002" | bc -l)
+  if [ -n "$kept_checkpoint" ]; then
+    t_end=$(echo "($kept_checkpoint + 5000) * 0.00002" | bc -l)
     scene continued/run.h5 continued "$t_end" 0.8 .false. 0 killed.h5
     "$vibrobeam" continued.nml > continued.out 2> continued.err
     check 'the continued run succeeds' status_is $? 0
@@ -251,7 +259,7 @@ sigkill_stepping)
     check 'the continued run ends like the uninterrupted run' \
       "$python" "$here/check_result.py" continued continued/run.h5 reference/full.h5
   else
-    check 'the last kill came after a checkpoint' false
+    check 'a kill came after a checkpoint (the last, 2 s after the start)' false
   fi
   ;;
 sigint_publishing | sigkill_publishing)
