@@ -19,6 +19,7 @@ program vibrobeam_main
    use vibrobeam_modal_analysis, only: run_modal, frequencies_text
    use vibrobeam_static_analysis, only: run_equilibrium
    use vibrobeam_periodic_analysis, only: run_periodic
+   use vibrobeam_autonomous_orbit, only: run_autonomous
    use vibrobeam_branch_output, only: run_continuation
    use vibrobeam_continuation_axis, only: resolve_continuation, continues
    use vibrobeam_sweep_axis, only: sweep_axis
@@ -301,7 +302,11 @@ contains
          call run_continuation_scene()
          return
       end if
-      call run_periodic(scene, prepared, outcome, stat, errmsg)
+      if (scene%periodic%autonomous) then
+         call run_autonomous(scene, prepared, outcome, stat, errmsg)
+      else
+         call run_periodic(scene, prepared, outcome, stat, errmsg)
+      end if
       if (stat /= 0) call fail(exit_other_error, errmsg)
       select case (outcome%status)
       case (outcome_failed)
