@@ -112,6 +112,9 @@ contains
       m = 2*n
       period = scene%periodic%period
       monodromy = merge(jacobian_linearised, jacobian_differences, orbit%monodromy == 'linearised')
+      ! (allocated first: gfortran's -Wmaybe-uninitialized does not follow a function
+      ! result's reallocation)
+      allocate (weights(m))
       weights = diagonal_weights()
       do
          call evaluate(orbit%x, period, monodromy, orbit%image)
