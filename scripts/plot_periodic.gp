@@ -19,7 +19,9 @@ if (have_multipliers) {
    largest = real(system("awk '!/^#/ && NF {if ($3 > m) m = $3} END {print m + 0}' '".multipliers."'"))
    count = int(system("awk '!/^#/ && NF {n++} END {print n + 0}' '".multipliers."'"))
 }
-verdict = largest < 1 ? 'stable' : 'unstable'
+# (a conservative scene's autonomous orbit has every multiplier on the unit circle at best,
+# to round-off or the monodromy's error: docs/method.md, "Autonomous periodic orbits")
+verdict = largest < 1 ? 'stable' : (largest < 1.001 ? 'on the unit circle to 1e-3: neutral at best' : 'unstable')
 set multiplot layout 2,2 title 'Periodic orbit: '.stem
 set grid
 set xlabel 't (ms)'

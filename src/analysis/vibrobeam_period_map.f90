@@ -47,6 +47,8 @@ module vibrobeam_period_map
       real(dp), allocatable :: state(:)          !! Phi(x) = (U, V) after the orbit's steps (2 unknowns)
       real(dp), allocatable :: jacobian(:, :)    !! (2 unknowns, 2 unknowns) when asked: dPhi/dx
       real(dp), allocatable :: tip(:, :)         !! (2, 0:steps) u (m) and v (m/s) at the tip after each step
+      !> (unknowns) the tip's row on the stepper's unknowns: u_tip = tip_row . U, v_tip = tip_row . V
+      real(dp), allocatable :: tip_row(:)
       !> the smallest clearance to the obstacles over the start and every step
       !! (`smallest_clearance`, m; huge without obstacles): a sampled minimum
       real(dp) :: minimum_gap = huge(1.0_dp)
@@ -96,6 +98,7 @@ contains
       allocate (tracker%tip(2, 0:self%steps))
       call recorder%observe(stepper)
       tracker%tip(:, 0) = recorder%events%observed(1, :)
+      image%tip_row = recorder%observed_row(1, n)
       tracker%minimum_gap = stepper%smallest_clearance(stepper%u)
       tracker%linearised = jacobian == jacobian_linearised
       if (tracker%linearised) then

@@ -27,7 +27,7 @@ module vibrobeam_periodic_analysis
    use vibrobeam_lapack, only: dgesv, dgeev
    implicit none
    private
-   public :: run_periodic, find_periodic_orbit, periodic_orbit, floquet_multipliers
+   public :: run_periodic, find_periodic_orbit, periodic_orbit, floquet_multipliers, publish_orbit, settle_start
 
    !> Halvings of a Newton step that does not reduce the residual, before it is taken whole.
    integer, parameter :: max_halvings = 4
@@ -46,6 +46,9 @@ module vibrobeam_periodic_analysis
       integer :: status = outcome_ok             !! outcome_ok, outcome_failed, outcome_interrupted
       character(len=512) :: failure = ''
       character(len=16) :: monodromy = ''        !! 'linearised' or 'differences'
+      real(dp) :: dt = 0                         !! the time step of the orbit (s): the scene's, or T/P of an autonomous one
+      !> the period is an unknown (&periodic autonomous; `vibrobeam_autonomous_orbit`)
+      logical :: autonomous = .false.
    end type periodic_orbit
 
 contains
@@ -62,11 +65,25 @@ contains
       character(len=*), intent(out) :: errmsg
       type(periodic_orbit) :: newton
       type(progress_meter) :: meter
-      type(result_files) :: files
-      type(run_summary) :: summary
       call meter%init(scene%output%progress)
       call find_periodic_orbit(scene, prepared, newton, stat, errmsg, meter)
       if (stat /= 0) return
+      call publish_orbit(scene, prepared, newton, meter, outcome, stat, errmsg)
+   end subroutine run_periodic
+
+   !> Publish the orbit `newton` found (or its last iterate) as the result of the run: the
+   !! result file's /periodic, and the run's outcome. stat /= 0 (errmsg) when the result
+   !! cannot be written (nothing is published, earlier results stay).
+   subroutine publish_orbit(scene, prepared, newton, meter, outcome, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      type(run_problem), intent(in) :: prepared
+      type(periodic_orbit), intent(in) :: newton
+      type(progress_meter), intent(inout) :: meter
+      type(run_outcome), intent(out) :: outcome
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(result_files) :: files
+      type(run_summary) :: summary
       call meter%end_line()
       associate (map => newton%map, multipliers => newton%multipliers)
       call files%open(scene, prepared%model, stat, errmsg)
@@ -84,10 +101,10 @@ contains
       outcome%steps = map%steps_taken
       outcome%newton_iterations = newton%iterations
       if (size(newton%residuals) > 0) outcome%residual = newton%residuals(size(newton%residuals))
-      outcome%period = map%steps*scene%time%dt
+      outcome%period = map%steps*newton%dt
       if (size(multipliers, 2) > 0) outcome%largest_multiplier = hypot(multipliers(1, 1), multipliers(2, 1))
       end associate
-   end subroutine run_periodic
+   end subroutine publish_orbit
 
    !> The periodic orbit of the prepared scene (module documentation) in `orbit`: its
    !! status says whether Newton's method converged ('ok'), did not or met a failing step
@@ -112,8 +129,9 @@ contains
       period_steps = forcing_period_steps(scene)
       orbit%map%steps = period_steps*scene%periodic%period_multiple
       orbit%map%unknowns = prepared%system%model%unknowns
+      orbit%dt = scene%time%dt
       call forcing_frequency(scene%load, orbit%map%omega, problem)
-      call settle(scene, prepared, period_steps, orbit, stat, errmsg, start)
+      call settle_start(scene, prepared, period_steps, orbit, stat, errmsg, start)
       if (stat /= 0) return
       if (orbit%status == outcome_ok) then
          if (present(meter)) then
@@ -132,10 +150,10 @@ contains
    end subroutine find_periodic_orbit
 
    !> The start of Newton's method: `start` when given, else the scene's initial state (or
-   !! the checkpoint it continues) stepped to the next whole forcing period and then
-   !! transient_periods more; and which monodromy the analysis takes ('auto': linearised
-   !! when the scheme can).
-   subroutine settle(scene, prepared, period_steps, newton, stat, errmsg, start)
+   !! the checkpoint it continues) stepped to the next whole period of `period_steps` steps
+   !! and then transient_periods more; and which monodromy the analysis takes ('auto':
+   !! linearised when the scheme can).
+   subroutine settle_start(scene, prepared, period_steps, newton, stat, errmsg, start)
       type(scene_type), intent(in) :: scene
       type(run_problem), intent(in) :: prepared
       integer(int64), intent(in) :: period_steps
@@ -173,7 +191,7 @@ contains
       newton%x = [stepper%u, stepper%v]
       allocate (newton%residuals(0))
       call release_stepper(stepper)
-   end subroutine settle
+   end subroutine settle_start
 
    !> Newton's method on Phi(x) - x = 0 from newton%x: each iteration solves
    !! (dPhi/dx - I) d = -(Phi(x) - x) (LAPACK dgesv) and takes x + d, halving d (at most
@@ -340,7 +358,8 @@ contains
       integer(int64) :: n
       integer :: unknowns
       unknowns = map%unknowns
-      call files%h5%attr_real('/periodic', 'period', map%steps*scene%time%dt, stat, errmsg)
+      call files%h5%attr_real('/periodic', 'period', map%steps*newton%dt, stat, errmsg)
+      if (newton%autonomous) call put_int('autonomous', 1)
       call put_int('converged', merge(1, 0, newton%converged))
       call put_int('newton_iterations', newton%iterations)
       if (stat == 0 .and. size(newton%residuals) > 0) &
@@ -348,11 +367,14 @@ contains
       call put_int('period_multiple', scene%periodic%period_multiple)
       if (stat == 0) call files%h5%attr_int64('/periodic', 'steps_per_period', map%steps/scene%periodic%period_multiple, &
                                               stat, errmsg)
-      if (stat == 0) call files%h5%attr_real('/periodic', 'forcing_frequency', map%omega, stat, errmsg)
+      if (stat == 0 .and. .not. newton%autonomous) &
+         call files%h5%attr_real('/periodic', 'forcing_frequency', map%omega, stat, errmsg)
       if (stat == 0) call files%h5%attr_string('/periodic', 'monodromy', trim(newton%monodromy), stat, errmsg)
       if (stat == 0) call files%h5%attr_int64('/periodic', 'steps_taken', map%steps_taken, stat, errmsg)
       if (stat == 0 .and. size(multipliers, 2) > 0) then
-         call put_int('stable', merge(1, 0, hypot(multipliers(1, 1), multipliers(2, 1)) < 1))
+         ! (an autonomous orbit of a conservative scene has its multipliers on the unit
+         ! circle at best, to round-off: neither |mu| < 1 nor a verdict; docs/output.md)
+         if (.not. newton%autonomous) call put_int('stable', merge(1, 0, hypot(multipliers(1, 1), multipliers(2, 1)) < 1))
          if (stat == 0) call files%h5%write_real_2d('/periodic/floquet_multipliers', multipliers, '1', stat, errmsg)
       end if
       if (stat == 0 .and. len_trim(newton%failure) > 0) &
@@ -361,7 +383,7 @@ contains
          call files%h5%write_real_1d('/periodic/newton_residual', newton%residuals, '1', stat, errmsg)
       if (stat /= 0 .or. .not. allocated(newton%image%tip)) return
       ! the orbit from the last iterate: one period of the tip, and the state at t = 0
-      times = [(n*scene%time%dt, n=0, map%steps)]
+      times = [(n*newton%dt, n=0, map%steps)]
       call files%h5%write_real_1d('/periodic/orbit/time', times, 's', stat, errmsg)
       if (stat == 0) call files%h5%write_real_1d('/periodic/orbit/tip_displacement', newton%image%tip(1, :), 'm', &
                                                  stat, errmsg)

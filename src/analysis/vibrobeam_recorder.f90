@@ -96,6 +96,7 @@ module vibrobeam_recorder
       real(dp), allocatable :: peak_force(:)         !! largest |force| per contact point over every step (N)
    contains
       procedure :: init => recorder_init
+      procedure :: observed_row
       procedure :: create_datasets
       procedure :: after_step
       procedure :: output_due
@@ -310,6 +311,24 @@ contains
          end associate
       end if
    end subroutine observe
+
+   !> The row of observed point p (1: the tip, then the &output points) on the stepper's
+   !! `unknowns` unknowns (of one plane): u_p = row . u, v_p = row . v, as `observe` takes them.
+   function observed_row(self, p, unknowns) result(row)
+      class(dynamics_recorder), intent(in) :: self
+      integer, intent(in) :: p, unknowns
+      real(dp) :: row(unknowns)
+      integer :: a
+      if (allocated(self%observed_rows)) then
+         row = self%observed_rows(:, p)
+         return
+      end if
+      row = 0
+      do a = 1, 4
+         if (self%observed_dofs(a, p) /= 0) row(self%observed_dofs(a, p)) = row(self%observed_dofs(a, p)) + &
+                                                                             self%observed_weights(a, p)
+      end do
+   end function observed_row
 
    !> sum_a weights(a) unknowns(dofs(a)) over the dofs /= 0, in order.
    pure real(dp) function combination(dofs, weights, unknowns)

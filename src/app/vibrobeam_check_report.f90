@@ -203,7 +203,8 @@ contains
    end function check_report_text
 
    !> What a periodic analysis steps (docs/method.md, "Periodic orbits by shooting"): the
-   !! forcing period, its steps, the orbit's steps and how its monodromy is taken.
+   !! forcing period, its steps, the orbit's steps and how its monodromy is taken; of an
+   !! autonomous orbit the period's guess, its steps and the phase and amplitude conditions.
    function periodic_text(scene) result(text)
       type(scene_type), intent(in) :: scene
       character(len=:), allocatable :: text
@@ -212,6 +213,21 @@ contains
       threads = 1
       !$ threads = omp_get_max_threads()
       steps = forcing_period_steps(scene)
+      if (scene%periodic%autonomous) then
+         text = 'autonomous periodic orbit (free vibration, the period an unknown; docs/method.md, "Autonomous '// &
+                'periodic orbits"): the guess T = '//g(scene%periodic%period)//' s in '//g(real(steps, dp))// &
+                ' steps of dt = T/'//g(real(steps, dp))//' = '//g(scene%time%dt)//' s at the guess (dt moves with '// &
+                'T); each Gauss-Newton iteration steps the orbit with its monodromy ('''// &
+                trim(scene%periodic%monodromy)//''') and once more for dPhi/dT, after a transient of '// &
+                integer_text(scene%periodic%transient_periods)//' period(s); the orbit starts where the tip''s '// &
+                'velocity is 0, its tip displacement '
+         if (is_unset(scene%periodic%tip_amplitude)) then
+            text = text//'the start''s own'//new_line('a')
+         else
+            text = text//g(scene%periodic%tip_amplitude)//' m'//new_line('a')
+         end if
+         return
+      end if
       text = 'periodic orbit: forcing period T = '//g(steps*scene%time%dt)//' s = '//g(real(steps, dp))// &
              ' steps of dt = '//g(scene%time%dt)//' s; the orbit spans '// &
              integer_text(scene%periodic%period_multiple)//' period(s), '// &

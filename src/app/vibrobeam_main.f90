@@ -19,6 +19,7 @@ program vibrobeam_main
    use vibrobeam_modal_analysis, only: run_modal, frequencies_text
    use vibrobeam_static_analysis, only: run_equilibrium
    use vibrobeam_periodic_analysis, only: run_periodic
+   use vibrobeam_autonomous_orbit, only: run_autonomous
    use vibrobeam_branch_output, only: run_continuation
    use vibrobeam_continuation_axis, only: resolve_continuation, continues
    use vibrobeam_sweep_axis, only: sweep_axis
@@ -297,11 +298,16 @@ contains
    !! iterate marked 'failed' with the reason in /periodic failure and exits with status 3.
    subroutine run_periodic_scene()
       type(run_outcome) :: outcome
+      character(len=:), allocatable :: orbit_kind, method
       if (continues(scene)) then
          call run_continuation_scene()
          return
       end if
-      call run_periodic(scene, prepared, outcome, stat, errmsg)
+      if (scene%periodic%autonomous) then
+         call run_autonomous(scene, prepared, outcome, stat, errmsg)
+      else
+         call run_periodic(scene, prepared, outcome, stat, errmsg)
+      end if
       if (stat /= 0) call fail(exit_other_error, errmsg)
       select case (outcome%status)
       case (outcome_failed)
@@ -317,8 +323,14 @@ contains
          call stop_if_interrupted(outcome%text_skipped)
          call finish(outcome_exit_status(outcome%status))
       end select
-      write (output_unit, '(a,es12.5,a,i0,a,es9.2,a)') 'vibrobeam: periodic orbit of period ', &
-         outcome%period, ' s after ', outcome%newton_iterations, ' Newton iterations (residual ', outcome%residual, &
+      orbit_kind = 'periodic orbit'
+      method = 'Newton'
+      if (scene%periodic%autonomous) then
+         orbit_kind = 'autonomous periodic orbit'
+         method = 'Gauss-Newton'
+      end if
+      write (output_unit, '(a,es12.5,a,i0,a,es9.2,a)') 'vibrobeam: '//orbit_kind//' of period ', &
+         outcome%period, ' s after ', outcome%newton_iterations, ' '//method//' iterations (residual ', outcome%residual, &
          '), largest Floquet multiplier modulus '//fixed_text(outcome%largest_multiplier, 6)//', '// &
          fixed_text(outcome%wall_seconds, 2)//' s; written to '//trim(scene%output%file)
       call stop_if_interrupted(outcome%text_skipped)

@@ -14,6 +14,7 @@ module vibrobeam_lapack
    public :: poison_failed_solve
    public :: dpbtrf, dpbtrs, dpbcon, dpbrfs, dsbmv, dgemv, dsbgvx, dpttrf, dpttrs
    public :: dpotrf, dpotrs, dpotri, dgbtrf, dgbtrs, dgbsv, dgesv, dlamch, dgeqrf, dormqr, dsygv, dgeev
+   public :: dgels   ! the autonomous orbit's Gauss-Newton steps (an overdetermined consistent system)
    public :: dger   ! the rank-one update of vibrobeam_lemke's tableau
    public :: dgetrf, dorgqr, dsyev, dgeevx, zgesv   ! the tests' dense references
 
@@ -159,6 +160,16 @@ module vibrobeam_lapack
          real(dp), intent(inout) :: a(lda, *), b(ldb, *)
          integer, intent(out) :: ipiv(*), info
       end subroutine dgesv
+      !> Least squares by QR: min ||b - A x|| for a full-rank m x n A, m >= n (trans 'N');
+      !! x in b(1:n).
+      subroutine dgels(trans, m, n, nrhs, a, lda, b, ldb, work, lwork, info)
+         import :: dp
+         character, intent(in) :: trans
+         integer, intent(in) :: m, n, nrhs, lda, ldb, lwork
+         real(dp), intent(inout) :: a(lda, *), b(ldb, *)
+         real(dp), intent(out) :: work(*)
+         integer, intent(out) :: info
+      end subroutine dgels
       !> Eigenvalues (and optionally eigenvectors) of a general real matrix: the Floquet
       !! multipliers of a periodic orbit (its monodromy) and the tests' references.
       subroutine dgeev(jobvl, jobvr, n, a, lda, wr, wi, vl, ldvl, vr, ldvr, work, lwork, info)

@@ -103,6 +103,15 @@ contains
             call add(warnings, '&time dt is ignored: &periodic steps_per_period = '// &
                      integer_text(scene%periodic%steps_per_period)//' sets dt = '//real_text(scene%time%dt)// &
                      ' s, the forcing period over that many steps')
+         ! the guess of an autonomous orbit's period and its amplitude: autonomous only
+         if (.not. scene%periodic%autonomous) then
+            if (scanned%is_given('periodic', 'period')) &
+               call add(warnings, '&periodic period is ignored: autonomous = .false. (the period of a forced orbit '// &
+                        'is the forcing''s)')
+            if (scanned%is_given('periodic', 'tip_amplitude')) &
+               call add(warnings, '&periodic tip_amplitude is ignored: autonomous = .false. (it picks an autonomous '// &
+                        'orbit of a conservative scene)')
+         end if
       end if
       if (.not. steps_in_time(scene)) then
          call given_real(scanned, scene, warnings, 'beam', 'rayleigh_mass', scene%beam%rayleigh_mass, &

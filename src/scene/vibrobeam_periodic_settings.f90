@@ -43,6 +43,13 @@ module vibrobeam_periodic_settings
       !> at the branch's first located period doubling, switch to the orbits of twice the
       !! period and continue them too (docs/method.md, "Branch switching at a period doubling")
       logical :: switch_branch = .false.
+      ! autonomous orbits (docs/method.md, "Autonomous periodic orbits"): no forcing, the
+      ! period an unknown, steps_per_period steps of dt = T/steps_per_period each
+      logical :: autonomous = .false.              !! free vibration: the period T is an unknown
+      real(dp) :: period = unset                   !! the guess of T (s), required with autonomous
+      !> the tip's displacement at the orbit's start (m), which picks the member of the
+      !! conservative scene's family of orbits (unset: the start's own tip displacement)
+      real(dp) :: tip_amplitude = unset
    end type periodic_settings
 
 contains
@@ -84,6 +91,15 @@ contains
       call visitor%variable(logical_row('periodic', 'switch_branch', 'at the first located period doubling of '// &
                                         'the continued branch, switch to the orbits of twice the period and '// &
                                         'continue them too (needs parameter)'), periodic%switch_branch)
+      call visitor%variable(logical_row('periodic', 'autonomous', 'free vibration without forcing: the period is '// &
+                                        'an unknown, steps_per_period steps of dt = period/steps_per_period each'), &
+                            periodic%autonomous)
+      call visitor%variable(real_row('periodic', 'period', 's', 1e-15_dp, 1e12_dp, &
+                                     'the guess of the autonomous orbit''s period (required with autonomous)', &
+                                     optional=.true.), periodic%period)
+      call visitor%variable(real_row('periodic', 'tip_amplitude', 'm', -1e6_dp, 1e6_dp, &
+                                     'the tip''s displacement at the autonomous orbit''s start, where its velocity '// &
+                                     'is 0 (none: the start''s own)', optional=.true.), periodic%tip_amplitude)
    end subroutine visit_periodic
 
    !> The one frequency of the harmonic loads of `load` (a load with a non-zero amplitude

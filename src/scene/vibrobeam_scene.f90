@@ -258,11 +258,16 @@ contains
    end function steps_in_time
 
    !> Steps of one forcing period 2 pi/Omega of a periodic analysis, nint(2 pi/(Omega dt)),
-   !! as a 64-bit count; the scene must be valid (`validate_scene` bounds it by max_steps).
+   !! as a 64-bit count; of an autonomous orbit (no forcing) &periodic steps_per_period.
+   !! The scene must be valid (`validate_scene` bounds it by max_steps).
    integer(int64) function forcing_period_steps(scene)
       type(scene_type), intent(in) :: scene
       real(dp) :: omega
       character(len=:), allocatable :: problem
+      if (scene%periodic%autonomous) then   ! (no forcing: the steps of one period, as given)
+         forcing_period_steps = max(1_int64, int(scene%periodic%steps_per_period, int64))
+         return
+      end if
       call forcing_frequency(scene%load, omega, problem)
       forcing_period_steps = max(1_int64, nint(2*pi/(omega*scene%time%dt), int64))
    end function forcing_period_steps

@@ -124,12 +124,19 @@ contains
 
    !> &periodic steps_per_period > 0 sets &time dt = T/steps_per_period, T = 2 pi/Omega the
    !! period of the harmonic loads (`forcing_frequency`); with none, or several of
-   !! different frequencies, dt stays as given and `validate_scene` says why.
+   !! different frequencies, dt stays as given and `validate_scene` says why. An
+   !! autonomous orbit's T is &periodic period, the guess of its period.
    subroutine resolve_periodic_step(scene)
       type(scene_type), intent(inout) :: scene
       real(dp) :: omega
       character(len=:), allocatable :: problem
       if (scene%periodic%steps_per_period <= 0) return
+      if (scene%periodic%autonomous) then
+         ! the period's guess is cut into the steps (a period unset or out of range:
+         ! `validate_scene` says so, dt stays)
+         if (scene%periodic%period > 0) scene%time%dt = scene%periodic%period/scene%periodic%steps_per_period
+         return
+      end if
       call forcing_frequency(scene%load, omega, problem)
       if (len(problem) > 0) return
       ! (2 pi/(Omega steps) finite: the hard ranges leave Omega > 0 as small as a normal double)

@@ -291,10 +291,15 @@ contains
       real(dp) :: omega, ratio
       character(len=:), allocatable :: problem
       associate (time => scene%time, periodic => scene%periodic)
-         call forcing_frequency(scene%load, omega, problem)
-         if (len(problem) > 0) then
-            call fail(stat, errmsg, '&analysis kind = ''periodic'' '//problem)
-            return
+         if (periodic%autonomous) then
+            call autonomous_rules(scene, stat, errmsg)
+            if (stat /= 0) return
+         else
+            call forcing_frequency(scene%load, omega, problem)
+            if (len(problem) > 0) then
+               call fail(stat, errmsg, '&analysis kind = ''periodic'' '//problem)
+               return
+            end if
          end if
          if (time%scheme /= 'velocity') &
             call fail(stat, errmsg, '&time scheme = '''//trim(time%scheme)//''' is not available with &analysis '// &
@@ -315,6 +320,10 @@ contains
             call fail(stat, errmsg, '&beam modal_damping (or modal_damping_ratios) is not available with &analysis '// &
                       'kind = ''periodic'': the period map''s linearised steps hold Rayleigh damping only, for now '// &
                       '(scripts/rayleigh_damping.py fits it on two modes)')
+         if (periodic%autonomous) then
+            call shared_rules()
+            return
+         end if
          ! omega dt may underflow (no trap); the quotient is computed only when it is at most max_steps
          if (omega*time%dt < 2*pi/real(max_steps, dp)) then
             call fail(stat, errmsg, '&time dt = '//real_text(time%dt)//' s makes more than '// &
@@ -336,15 +345,83 @@ contains
             call fail(stat, errmsg, '&periodic transient_periods = '//integer_text(periodic%transient_periods)// &
                       ' with '//rounded(ratio)//' steps per period makes more than '//rounded(real(max_steps, dp))// &
                       ' steps')
-         if (periodic%switch_branch .and. len_trim(periodic%parameter) == 0) &
+         call shared_rules()
+      end associate
+   contains
+      !> What a forced and an autonomous orbit both need.
+      subroutine shared_rules()
+         if (scene%periodic%switch_branch .and. len_trim(scene%periodic%parameter) == 0) &
             call fail(stat, errmsg, '&periodic switch_branch = .true. needs a continuation: the branch of twice '// &
                       'the period starts at a period doubling of the continued branch; give &periodic parameter '// &
                       '(and step), or switch_branch = .false. (the default)')
-         if (periodic%monodromy == 'linearised' .and. any(scene%obstacles%stiffness > 0)) &
+         if (scene%periodic%monodromy == 'linearised' .and. any(scene%obstacles%stiffness > 0)) &
             call fail(stat, errmsg, '&periodic monodromy = ''linearised'' is for rigid obstacles: the compliant '// &
                       'stops (&obstacles stiffness > 0) need ''differences'' (or ''auto'', which chooses it)')
-      end associate
+      end subroutine shared_rules
    end subroutine periodic_rules
+
+   !> &periodic autonomous = .true. (docs/input.md, "&periodic"; docs/method.md,
+   !! "Autonomous periodic orbits"): no harmonic load, the period's guess and the steps of
+   !! one period given, one orbit (no multiple, no continuation), and a conservative scene:
+   !! a scene that dissipates energy has no free periodic orbit but rest.
+   subroutine autonomous_rules(scene, stat, errmsg)
+      type(scene_type), intent(in) :: scene
+      integer, intent(inout) :: stat
+      character(len=*), intent(inout) :: errmsg
+      character(len=*), parameter :: free = ' is not available with &periodic autonomous = .true.: '
+      character(len=*), parameter :: decays = 'a scene that dissipates energy has no free periodic orbit (its free '// &
+                                              'vibration decays to rest)'
+      integer :: k
+      associate (load => scene%load, periodic => scene%periodic)
+         if (abs(load%point_force) > 0 .and. load%point_frequency > 0) &
+            call fail(stat, errmsg, '&load point_frequency = '//real_text(load%point_frequency)//' rad/s (point_force = '// &
+                      real_text(load%point_force)//')'//free//'a free vibration has no harmonic load; give the '// &
+                      'load''s amplitude 0 (constant loads may stay), or autonomous = .false. (the default)')
+         if (abs(load%distributed) > 0 .and. load%distributed_frequency > 0) &
+            call fail(stat, errmsg, '&load distributed_frequency = '//real_text(load%distributed_frequency)// &
+                      ' rad/s (distributed = '//real_text(load%distributed)//')'//free//'a free vibration has no '// &
+                      'harmonic load; give the load''s amplitude 0 (constant loads may stay), or autonomous = .false.')
+         if (abs(load%base_load_amplitude()) > 0 .and. load%base_frequency > 0) &
+            call fail(stat, errmsg, '&load base_frequency = '//real_text(load%base_frequency)//' rad/s'//free// &
+                      'a free vibration has no base excitation; give its amplitude 0, or autonomous = .false.')
+         if (is_unset(periodic%period)) &
+            call fail(stat, errmsg, '&periodic autonomous = .true. needs &periodic period (s), the guess of the '// &
+                      'orbit''s period (> 0)')
+         if (periodic%steps_per_period < 1) &
+            call fail(stat, errmsg, '&periodic steps_per_period = '//integer_text(periodic%steps_per_period)// &
+                      free//'give the steps of one period, at least 1 (dt = period/steps_per_period varies with '// &
+                      'the unknown period)')
+         if (periodic%period_multiple /= 1) &
+            call fail(stat, errmsg, '&periodic period_multiple = '//integer_text(periodic%period_multiple)//free// &
+                      'the period is the unknown itself; give 1 (the default)')
+         if (len_trim(periodic%parameter) > 0) &
+            call fail(stat, errmsg, '&periodic parameter = '''//trim(periodic%parameter)//''''//free// &
+                      'the continuation of autonomous orbits is not built yet; give parameter = '''' (the default)')
+         if (scene%beam%plane_count() /= 1) &
+            call fail(stat, errmsg, '&beam planes = '//integer_text(scene%beam%plane_count())//free// &
+                      'the phase condition holds the tip''s velocity in y; give 1, for now')
+         if (scene%beam%rayleigh_mass > 0 .or. scene%beam%rayleigh_stiffness > 0) &
+            call fail(stat, errmsg, '&beam rayleigh_mass = '//real_text(scene%beam%rayleigh_mass)// &
+                      ' 1/s and rayleigh_stiffness = '//real_text(scene%beam%rayleigh_stiffness)//' s'//free// &
+                      decays//'; give both 0')
+         if (abs(scene%time%theta - 0.5_dp) > 0) &
+            call fail(stat, errmsg, '&time theta = '//real_text(scene%time%theta)//free//'theta > 1/2 damps '// &
+                      'every mode of the discrete scheme, so '//decays//'; give 0.5')
+         do k = 1, size(scene%obstacles)
+            if (scene%obstacles(k)%stiffness > 0 .and. scene%obstacles(k)%damping > 0) &
+               call fail(stat, errmsg, '&obstacles damping('//integer_text(k)//') = '// &
+                         real_text(scene%obstacles(k)%damping)//' s/m'//free//decays//'; give 0')
+            if (.not. scene%obstacles(k)%stiffness > 0 .and. scene%impact%restitution < 1) &
+               call fail(stat, errmsg, '&impact restitution = '//real_text(scene%impact%restitution)//' with the '// &
+                         'rigid &obstacles '//integer_text(k)//free//decays//'; give 1')
+         end do
+         if (stat == 0 .and. (real(periodic%transient_periods, dp) + 1)*periodic%steps_per_period > &
+             real(max_steps, dp)) &
+            call fail(stat, errmsg, '&periodic transient_periods = '//integer_text(periodic%transient_periods)// &
+                      ' with '//integer_text(periodic%steps_per_period)//' steps per period makes more than '// &
+                      rounded(real(max_steps, dp))//' steps')
+      end associate
+   end subroutine autonomous_rules
 
    !> &load: the point force on the beam; a base excitation by its acceleration or its
    !! amplitude, not both, and by its acceleration only with a frequency.

@@ -143,6 +143,8 @@ EXPECTED = {
     'periodic.step': [('A', "belongs to &periodic, the settings of the periodic analysis itself")],
     'periodic.parameter_min': [('A', "belongs to &periodic, the settings of the periodic analysis itself")],
     'periodic.parameter_max': [('A', "belongs to &periodic, the settings of the periodic analysis itself")],
+    'periodic.period': [('A', "belongs to &periodic, the settings of the periodic analysis itself")],
+    'periodic.tip_amplitude': [('A', "belongs to &periodic, the settings of the periodic analysis itself")],
     # a second moment for bending in z and the directions need two bending planes (issue 21;
     # docs/input.md, "&beam"): refused in the planar scene A, swept in scene E
     'beam.inertia_z': [('A', 'is given with planes = 1'), ('E', None)],
