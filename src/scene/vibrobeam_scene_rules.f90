@@ -78,7 +78,7 @@ contains
       if (stat == 0) call check_forces(copy%forces, copy%beam%length, copy%time%dt, copy%analysis%kind == 'dynamics', &
                                        stat, errmsg)
       if (stat == 0) call check_flow(copy%flow, copy%beam%length, copy%time%scheme, copy%mesh%unknowns(), &
-                                     copy%analysis%kind == 'dynamics', stat, errmsg)
+                                     steps_in_time(copy), stat, errmsg)
       if (stat == 0 .and. steps_in_time(copy) .and. len_trim(copy%initial%from_file) == 0) &
          call check_initial(copy%initial, stat, errmsg)
       call output_rules(copy, stat, errmsg)
@@ -170,7 +170,7 @@ contains
       end do
       if (scene%beam%sectioned() .and. stat == 0) then
          call check_sections(scene%beam%sections, scene%beam%length, scene%mesh%elements, stat, errmsg)
-         if (scene%flow%velocity > 0 .and. scene%analysis%kind == 'dynamics') &
+         if (scene%flow%velocity > 0 .and. steps_in_time(scene)) &
             call fail(stat, errmsg, '&flow velocity = '//real_text(scene%flow%velocity)//' m/s is not available '// &
                       'with &sections: Connors'' fluid-elastic force takes one mass per length, for now')
       end if
@@ -282,7 +282,7 @@ contains
 
    !> &analysis kind = 'periodic' (docs/input.md, "&periodic"): one forcing frequency,
    !! the velocity scheme, a whole number of steps per forcing period, a step count
-   !! within max_steps, a linearised monodromy only with rigid obstacles, and a branch
+   !! within max_steps (any monodromy: the linearised steps take compliant stops when asked), and a branch
    !! switch only on a continued branch.
    subroutine periodic_rules(scene, stat, errmsg)
       type(scene_type), intent(in) :: scene
@@ -300,21 +300,14 @@ contains
             call fail(stat, errmsg, '&time scheme = '''//trim(time%scheme)//''' is not available with &analysis '// &
                       'kind = ''periodic'': the period map steps the velocity scheme only, for now')
          ! what the period map does not take yet (docs/input.md, "&periodic"): the loads of
-         ! &forces (their common period is not known), the fluid-elastic force and damping per
-         ! mode (the linearised steps hold Rayleigh damping only)
+         ! &forces (their common period is not known); the fluid-elastic force and damping per
+         ! mode it steps, and linearises, as a dynamics run does
          if (allocated(scene%forces%load)) then
             if (size(scene%forces%load) > 0) &
                call fail(stat, errmsg, '&forces count = '//integer_text(size(scene%forces%load))//' is not '// &
                          'available with &analysis kind = ''periodic'': the period map takes the harmonic loads of '// &
                          '&load only, for now (give the load in &load)')
          end if
-         if (scene%flow%velocity > 0) &
-            call fail(stat, errmsg, '&flow velocity = '//real_text(scene%flow%velocity)//' m/s is not available '// &
-                      'with &analysis kind = ''periodic'': the period map has no fluid-elastic force, for now')
-         if (scene%beam%modal()) &
-            call fail(stat, errmsg, '&beam modal_damping (or modal_damping_ratios) is not available with &analysis '// &
-                      'kind = ''periodic'': the period map''s linearised steps hold Rayleigh damping only, for now '// &
-                      '(scripts/rayleigh_damping.py fits it on two modes)')
          ! omega dt may underflow (no trap); the quotient is computed only when it is at most max_steps
          if (omega*time%dt < 2*pi/real(max_steps, dp)) then
             call fail(stat, errmsg, '&time dt = '//real_text(time%dt)//' s makes more than '// &
@@ -340,9 +333,6 @@ contains
             call fail(stat, errmsg, '&periodic switch_branch = .true. needs a continuation: the branch of twice '// &
                       'the period starts at a period doubling of the continued branch; give &periodic parameter '// &
                       '(and step), or switch_branch = .false. (the default)')
-         if (periodic%monodromy == 'linearised' .and. any(scene%obstacles%stiffness > 0)) &
-            call fail(stat, errmsg, '&periodic monodromy = ''linearised'' is for rigid obstacles: the compliant '// &
-                      'stops (&obstacles stiffness > 0) need ''differences'' (or ''auto'', which chooses it)')
       end associate
    end subroutine periodic_rules
 
