@@ -24,11 +24,11 @@ a = col(branch, 'amplitude')
 s = col(branch, 'stable')
 m = col(branch, 'largest_multiplier')
 xlabel = system("sed -n 's/^# [0-9]*: parameter (\\([^)]*\\)) \\(.*\\)$/\\2 (\\1)/p' '".branch."'")
-have_found = int(system("awk '!/^#/ && NF {n++} END {print n + 0}' '".found."' 2> /dev/null")) > 0
+have_found = int(system("cat '".found."' 2> /dev/null | awk '!/^#/ && NF {n++} END {print n + 0}'")) > 0
 branch2 = stem.'_branch_2.dat'
 found2 = stem.'_bifurcations_2.dat'
-have_branch2 = int(system("awk '!/^#/ && NF {n++} END {print n + 0}' '".branch2."' 2> /dev/null")) > 0
-have_found2 = int(system("awk '!/^#/ && NF {n++} END {print n + 0}' '".found2."' 2> /dev/null")) > 0
+have_branch2 = int(system("cat '".branch2."' 2> /dev/null | awk '!/^#/ && NF {n++} END {print n + 0}'")) > 0
+have_found2 = int(system("cat '".found2."' 2> /dev/null | awk '!/^#/ && NF {n++} END {print n + 0}'")) > 0
 set terminal pngcairo size 1200,1000 noenhanced
 set output stem.'_branch.png'
 set multiplot layout 2,1 title 'Continued branch: '.stem
