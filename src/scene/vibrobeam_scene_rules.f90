@@ -377,7 +377,7 @@ contains
                          '''auto''')
          end if
          ! the Lyapunov exponent (docs/statistics.md): renormalised once per forcing period,
-         ! through the velocity scheme's tangent (Rayleigh damping; no fluid-elastic force)
+         ! through the velocity scheme's tangent (its damping, per mode too, and the fluid-elastic force)
          if (output%lyapunov .and. scene%analysis%kind == 'dynamics') then
             if (forcing_of(scene) == 'none') &
                call fail(stat, errmsg, '&output lyapunov = .true. needs a harmonic load (&load base_frequency, '// &
@@ -386,12 +386,6 @@ contains
             if (scene%time%scheme /= 'velocity') &
                call fail(stat, errmsg, '&output lyapunov = .true. is not available with &time scheme = '''// &
                          trim(scene%time%scheme)//''': the tangent map is the velocity scheme''s')
-            if (scene%beam%modal()) &
-               call fail(stat, errmsg, '&output lyapunov = .true. is not available with &beam modal_damping (or '// &
-                         'modal_damping_ratios): the tangent map holds Rayleigh damping only, for now')
-            if (scene%flow%velocity > 0) &
-               call fail(stat, errmsg, '&output lyapunov = .true. is not available with &flow velocity = '// &
-                         real_text(scene%flow%velocity)//' m/s: the tangent map has no fluid-elastic force, for now')
          end if
       end associate
    end subroutine output_rules
