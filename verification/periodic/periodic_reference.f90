@@ -14,7 +14,7 @@ module vibrobeam_periodic_reference
    private
    public :: identity, solve_dense, energy_gram, energy_norm, cancellation, fixed_point_condition
    public :: amplification_matrix, eigenvalues_with_conditions, harmonic_steady_state, matrix_power
-   public :: continue_test_branch, fluid_elastic_damping
+   public :: continue_test_branch, fluid_elastic_damping, modal_damping_excess
 
 contains
 
@@ -172,6 +172,36 @@ contains
          end do
       end do
    end function fluid_elastic_damping
+
+   !> The damping per mode of `&beam modal_damping_ratios` as the scheme takes it, at V^n
+   !! beside the Rayleigh damping: mode k (of the first size(ratios), phi^T M phi = 1 from
+   !! LAPACK dsygv on the dense M, K) gets the excess rate c_k = 2 zeta_k omega_k - a -
+   !! b omega_k^2 over Rayleigh's, so E = sum_k c_k (M phi_k)(M phi_k)^T (docs/method.md,
+   !! "Damping per mode"); written from the formula, not from `vibrobeam_modal_damping`.
+   function modal_damping_excess(mass, stiffness, ratios, rayleigh_mass, rayleigh_stiffness) result(explicit)
+      real(dp), intent(in) :: mass(:, :), stiffness(:, :), ratios(:), rayleigh_mass, rayleigh_stiffness
+      real(dp) :: explicit(size(mass, 1), size(mass, 1))
+      real(dp) :: a(size(mass, 1), size(mass, 1)), b(size(mass, 1), size(mass, 1)), w(size(mass, 1)), &
+                  y(size(mass, 1)), query(1), omega, rate
+      real(dp), allocatable :: space(:)
+      integer :: n, k, info, j
+      n = size(mass, 1)
+      a = stiffness
+      b = mass
+      call dsygv(1, 'V', 'L', n, a, n, b, n, w, query, -1, info)
+      allocate (space(int(query(1))))
+      call dsygv(1, 'V', 'L', n, a, n, b, n, w, space, size(space), info)
+      if (info /= 0) error stop 'dsygv failed'
+      explicit = 0
+      do k = 1, size(ratios)
+         omega = sqrt(w(k))
+         rate = 2*ratios(k)*omega - rayleigh_mass - rayleigh_stiffness*omega**2
+         y = matmul(mass, a(:, k))
+         do j = 1, n
+            explicit(:, j) = explicit(:, j) + rate*y*y(j)
+         end do
+      end do
+   end function modal_damping_excess
 
    !> G = diag(K + omega^2 M, M) of the stepped system, dense (2 unknowns square).
    function energy_gram(prepared, omega) result(gram)

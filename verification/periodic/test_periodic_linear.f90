@@ -12,7 +12,8 @@
 !! of the orbit: exp(s_k T) for the scheme's own rates s_k = log(lambda_k)/dt.
 !! With &flow (theory §10) the fluid-elastic force F_f = -E V^n, E from the modes of the
 !! dense M, K and Connors' formula (`fluid_elastic_damping`), enters both as a damping
-!! taken at V^n: -(C + E) V on the right, W unchanged.
+!! taken at V^n: -(C + E) V on the right, W unchanged; and so does the damping per mode of
+!! `&beam modal_damping_ratios` (`modal_damping_excess`: the rates beyond Rayleigh's).
 !!
 !! Checked against the orbit `find_periodic_orbit` returns (converged, its state at
 !! t = 0 and its tip over the period) and its multipliers, to round-off bounds derived
@@ -26,7 +27,7 @@ program test_periodic_linear
    use vibrobeam_model, only: node_row
    use vibrobeam_periodic_reference, only: identity, solve_dense, energy_gram, energy_norm, cancellation, &
       fixed_point_condition, amplification_matrix, eigenvalues_with_conditions, harmonic_steady_state, matrix_power, &
-      fluid_elastic_damping
+      fluid_elastic_damping, modal_damping_excess
    use vibrobeam_periodic_analysis, only: find_periodic_orbit, periodic_orbit
    use vibrobeam_period_map, only: difference_fraction
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
@@ -42,7 +43,7 @@ program test_periodic_linear
    complex(dp), allocatable :: rhs(:, :), mu_ref(:), harmonic(:)
    complex(dp) :: z
    real(dp) :: dt, theta, omega, period, error, bound, inverse_norm, noise, worst, distance, lambda_power
-   integer :: n, m, stat, info, k, j, dofs(4)
+   integer :: n, m, stat, info, k, j, dofs(4), ratios_given
    integer(int64) :: steps
    real(dp) :: weights(4)
    logical, allocatable :: used(:)
@@ -74,6 +75,16 @@ program test_periodic_linear
          error stop 'test_periodic_linear: &flow over the whole span of a full model only'
       explicit = fluid_elastic_damping(mass, stiffness, scene%flow%velocity, scene%flow%density, &
                                        scene%flow%connors_constant, scene%beam%rho_s(), scene%flow%modes)
+   end if
+   if (scene%beam%modal()) then
+      ! the ratios given, modes 1 to the last (the reference takes neither `modal_damping`'s
+      ! cut-off nor rigid-body modes)
+      ratios_given = count(.not. is_unset(scene%beam%modal_damping_ratios))
+      if (.not. is_unset(scene%beam%modal_damping) .or. prepared%reduced .or. &
+          any(is_unset(scene%beam%modal_damping_ratios(1:ratios_given)))) &
+         error stop 'test_periodic_linear: damping per mode by modal_damping_ratios(1:k) of a full model only'
+      explicit = explicit + modal_damping_excess(mass, stiffness, scene%beam%modal_damping_ratios(1:ratios_given), &
+                                                 scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness)
    end if
    omega = maxval([scene%load%point_frequency, scene%load%base_frequency, scene%load%distributed_frequency])
    period = 2*pi/omega
