@@ -262,7 +262,7 @@ contains
 
    !> The branch of `scene` (`continue_branch`) for the continuation tests: it must run
    !! (else the test `program` ends, failed) and reach its end without failure; prints
-   !! its number of points, its span in Omega and its steps.
+   !! its number of points, its span in the parameter and its steps.
    subroutine continue_test_branch(t, program, scene, prepared, branch)
       type(test_counter), intent(inout) :: t
       character(len=*), intent(in) :: program
@@ -276,8 +276,8 @@ contains
       if (stat /= 0) call t%finish(program)
       call t%check_true('the branch reached its end without failure', len_trim(branch%failure) == 0, &
                         trim(branch%failure))
-      write (*, '(a,i0,a,f0.3,a,f0.3,a,i0,a)') 'branch: ', size(branch%points), ' points, Omega from ', &
-         branch%points(1)%parameter, ' to ', branch%points(size(branch%points))%parameter, ' rad/s, ', &
-         branch%steps_taken, ' steps'
+      write (*, '(a,i0,3a,f0.3,a,f0.3,3a,i0,a)') 'branch: ', size(branch%points), ' points, ', &
+         trim(branch%axis%parameter), ' from ', branch%points(1)%parameter, ' to ', &
+         branch%points(size(branch%points))%parameter, ' ', trim(branch%axis%unit), ', ', branch%steps_taken, ' steps'
    end subroutine continue_test_branch
 end module vibrobeam_periodic_reference
