@@ -10,7 +10,8 @@
 #   (the orbit, 4.4e-5 m, touches nothing). The samples do not read as period 1 (measured
 #   mismatch 4.6): the tolerance 8 eps P s is 1.6e-17 m for this small orbit, of the size
 #   of what the rounding of the load's phase Omega t after 60 s may move it (eps Omega t A,
-#   about 8e-17 m; a likely cause, not verified); 1e3 of it is still 4e-10 of the orbit;
+#   about 8e-17 m; the likely cause: the mismatch grows with the window's time, 22 over
+#   225-240 s); 1e3 of it is still 4e-10 of the orbit;
 # - beyond it mode 1 grows until the stops bound it: the tip reaches at least 0.9 of the
 #   gap and no more than twice it, and the samples have no period up to 64 with a mismatch
 #   above 1e6 (measured 9e11: the quasi-periodic motion moves them over the whole gap).
