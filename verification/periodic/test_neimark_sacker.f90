@@ -158,6 +158,8 @@ contains
       radius = maxval(hypot(wr, wi))
    end function radius
 
+   !> The one-step matrix A(U) of the velocity scheme with the flow at velocity u (the
+   !! reference's Rayleigh damping, the flow's force at V^n).
    function amplification(u) result(a)
       real(dp), intent(in) :: u
       real(dp) :: a(2*n, 2*n)
