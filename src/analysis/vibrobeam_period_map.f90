@@ -10,7 +10,7 @@ module vibrobeam_period_map
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_status, only: outcome_ok
    use vibrobeam_scene, only: scene_type
-   use vibrobeam_problem, only: run_problem, stepper_settings_of
+   use vibrobeam_problem, only: run_problem, problem_stepper_settings
    use vibrobeam_time_stepper, only: time_stepper, dynamic_state, energy_norm
    use vibrobeam_stepper_factory, only: new_time_stepper, release_stepper, linearise_step
    use vibrobeam_recorder, only: dynamics_recorder
@@ -92,7 +92,7 @@ contains
       n = self%unknowns
       start%u = x(1:n)
       start%v = x(n + 1:2*n)
-      call new_time_stepper(prepared%system, stepper_settings_of(scene), start, stepper, stat, errmsg)
+      call new_time_stepper(prepared%system, problem_stepper_settings(scene, prepared), start, stepper, stat, errmsg)
       if (stat /= 0) return
       call recorder%init(scene, stepper, prepared, self%steps, write_rows=.false.)
       allocate (tracker%tip(2, 0:self%steps))

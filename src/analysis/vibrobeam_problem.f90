@@ -34,7 +34,7 @@ module vibrobeam_problem
    use vibrobeam_modal_damping, only: build_modal_damping
    implicit none
    private
-   public :: run_problem, build_problem, new_stepper, stepper_settings_of, reduction_cutoff
+   public :: run_problem, build_problem, new_stepper, stepper_settings_of, problem_stepper_settings, reduction_cutoff
 
    !> A run's problem: what it is about (the model, contacts and loads of the mesh), what a
    !! stepper steps (`system`, in the run's coordinates) and from where (`start`); how it
@@ -103,7 +103,7 @@ contains
       call build_loads(scene%load, prepared%model, scene%beam%rho_s(), prepared%loads)
       call add_forces(prepared%loads, scene%forces, prepared%model, scene%beam%rho_s(), scene%time%dt, stat, errmsg)
       if (stat /= 0) return
-      if (scene%analysis%kind == 'dynamics') then
+      if (steps_in_time(scene)) then   ! (a periodic analysis's period map steps it too)
          call add_flow(prepared%loads, scene%flow, prepared%model, scene%beam%rayleigh_mass, &
                        scene%beam%rayleigh_stiffness, stat, errmsg)
          if (stat /= 0) return
@@ -236,7 +236,7 @@ contains
       logical :: loaded(3)
       stat = 0
       errmsg = ''
-      if (scene%analysis%kind /= 'dynamics' .or. .not. scene%beam%modal()) return
+      if (.not. steps_in_time(scene) .or. .not. scene%beam%modal()) return
       every = 0
       if (.not. is_unset(scene%beam%modal_damping)) every = scene%beam%modal_damping
       forcing = [scene%load%distributed_frequency, scene%load%point_frequency, scene%load%base_frequency]
@@ -272,7 +272,26 @@ contains
       prepared%start%v = prepared%v0
    end subroutine full_system
 
-   !> How the scene is stepped: &time, &impact, the Rayleigh damping of &beam, &solver.
+   !> How the problem of `scene` is stepped: `stepper_settings_of` and the damping per
+   !! mode `prepared` holds (&beam modal_damping): what every stepper of a run, and of a
+   !! periodic analysis's period map, is made with.
+   function problem_stepper_settings(scene, prepared) result(settings)
+      type(scene_type), intent(in) :: scene
+      type(run_problem), intent(in) :: prepared
+      type(stepper_settings) :: settings
+      settings = stepper_settings_of(scene)
+      if (allocated(prepared%modal_rates)) then
+         settings%modal_forces = prepared%modal_forces
+         settings%modal_rates = prepared%modal_rates
+      end if
+      if (allocated(prepared%modal_rates_z)) then
+         settings%modal_forces_z = prepared%modal_forces_z
+         settings%modal_rates_z = prepared%modal_rates_z
+      end if
+   end function problem_stepper_settings
+
+   !> How the scene is stepped: &time, &impact, the Rayleigh damping of &beam, &solver
+   !! (without the damping per mode the problem holds: `problem_stepper_settings`).
    pure function stepper_settings_of(scene) result(settings)
       type(scene_type), intent(in) :: scene
       type(stepper_settings) :: settings
@@ -299,15 +318,7 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(stepper_settings) :: settings
-      settings = stepper_settings_of(scene)
-      if (allocated(prepared%modal_rates)) then
-         settings%modal_forces = prepared%modal_forces
-         settings%modal_rates = prepared%modal_rates
-      end if
-      if (allocated(prepared%modal_rates_z)) then
-         settings%modal_forces_z = prepared%modal_forces_z
-         settings%modal_rates_z = prepared%modal_rates_z
-      end if
+      settings = problem_stepper_settings(scene, prepared)
       if (prepared%resuming) then
          call new_time_stepper(prepared%system, settings, prepared%start, stepper, stat, errmsg, prepared%resume)
       else

@@ -332,8 +332,8 @@ contains
    end function unbounded_warning
 
    !> Warnings for &flow values given that the run does not use (docs/input.md,
-   !! "Warnings"): the group without a flow velocity, or for an analysis that is not
-   !! dynamics.
+   !! "Warnings"): the group without a flow velocity, or for an analysis that steps no
+   !! motion (`dynamics`: kind = 'dynamics' or 'periodic').
    subroutine ignored_flow(scanned, flow, dynamics, swept_velocity, warnings)
       type(scanned_file), intent(in) :: scanned
       type(flow_settings), intent(in) :: flow
@@ -341,8 +341,8 @@ contains
       character(len=:), allocatable, intent(inout) :: warnings
       if (.not. scanned%group_given('flow')) return
       if (.not. dynamics) then
-         warnings = warnings//'&flow is ignored: the fluid-elastic force acts on the motion (kind = ''dynamics'')'// &
-                    new_line('a')
+         warnings = warnings//'&flow is ignored: the fluid-elastic force acts on the motion (kind = ''dynamics'' '// &
+                    'or ''periodic'')'//new_line('a')
       else if (flow%velocity <= 0 .and. .not. swept_velocity) then
          warnings = warnings//'&flow is ignored: velocity = 0 m/s (no fluid-elastic force)'//new_line('a')
       end if

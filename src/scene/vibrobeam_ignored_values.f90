@@ -36,7 +36,7 @@ contains
       call obstacle_warnings(scanned, scene, swept, warnings)
       call load_warnings(scanned, scene, swept, warnings)
       call ignored_forces(scanned, scene%forces, scene%analysis%kind == 'static', warnings)
-      call ignored_flow(scanned, scene%flow, scene%analysis%kind == 'dynamics', any(swept == 'flow.velocity'), warnings)
+      call ignored_flow(scanned, scene%flow, steps_in_time(scene), any(swept == 'flow.velocity'), warnings)
       if (.not. steps_in_time(scene)) return
       call time_warnings(scanned, scene, swept, warnings)
       call initial_warnings(scanned, scene, warnings)

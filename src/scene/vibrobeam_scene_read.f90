@@ -108,18 +108,30 @@ contains
       if (present(warnings)) call ignored_values(reader%scanned, scene, swept_inputs(), warnings)
 
    contains
-      !> The inputs the &sweep varies, 'group.variable' without an element index.
+      !> The inputs the &sweep varies, and a continuation's &periodic parameter (a branch
+      !! may start where that input is 0: &flow velocity), 'group.variable' without an
+      !! element index.
       function swept_inputs() result(names)
          character(len=parameter_length), allocatable :: names(:)
-         integer :: a, open
+         integer :: a
          allocate (names(0))
+         if (scene%analysis%kind == 'periodic' .and. len_trim(scene%periodic%parameter) > 0) &
+            names = [character(len=parameter_length) :: names, without_element(scene%periodic%parameter)]
          if (.not. present(sweep)) return
          do a = 1, 2
-            names = [character(len=parameter_length) :: names, lowercase(sweep%axis(a)%parameter)]
-            open = index(names(size(names)), '(')
-            if (open > 0) names(size(names)) = names(size(names))(1:open - 1)
+            names = [character(len=parameter_length) :: names, without_element(sweep%axis(a)%parameter)]
          end do
       end function swept_inputs
+
+      !> 'group.variable(i)' in lower case without '(i)'.
+      function without_element(parameter) result(name)
+         character(len=*), intent(in) :: parameter
+         character(len=parameter_length) :: name
+         integer :: open
+         name = lowercase(parameter)
+         open = index(name, '(')
+         if (open > 0) name = name(1:open - 1)
+      end function without_element
    end subroutine read_scene
 
    !> &periodic steps_per_period > 0 sets &time dt = T/steps_per_period, T = 2 pi/Omega the

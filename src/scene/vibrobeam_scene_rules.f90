@@ -78,7 +78,7 @@ contains
       if (stat == 0) call check_forces(copy%forces, copy%beam%length, copy%time%dt, copy%analysis%kind == 'dynamics', &
                                        stat, errmsg)
       if (stat == 0) call check_flow(copy%flow, copy%beam%length, copy%time%scheme, copy%mesh%unknowns(), &
-                                     copy%analysis%kind == 'dynamics', stat, errmsg)
+                                     steps_in_time(copy), stat, errmsg)
       if (stat == 0 .and. steps_in_time(copy) .and. len_trim(copy%initial%from_file) == 0) &
          call check_initial(copy%initial, stat, errmsg)
       call output_rules(copy, stat, errmsg)
@@ -170,7 +170,7 @@ contains
       end do
       if (scene%beam%sectioned() .and. stat == 0) then
          call check_sections(scene%beam%sections, scene%beam%length, scene%mesh%elements, stat, errmsg)
-         if (scene%flow%velocity > 0 .and. scene%analysis%kind == 'dynamics') &
+         if (scene%flow%velocity > 0 .and. steps_in_time(scene)) &
             call fail(stat, errmsg, '&flow velocity = '//real_text(scene%flow%velocity)//' m/s is not available '// &
                       'with &sections: Connors'' fluid-elastic force takes one mass per length, for now')
       end if
@@ -282,7 +282,7 @@ contains
 
    !> &analysis kind = 'periodic' (docs/input.md, "&periodic"): one forcing frequency,
    !! the velocity scheme, a whole number of steps per forcing period, a step count
-   !! within max_steps, a linearised monodromy only with rigid obstacles, and a branch
+   !! within max_steps (any monodromy: the linearised steps take compliant stops when asked), and a branch
    !! switch only on a continued branch.
    subroutine periodic_rules(scene, stat, errmsg)
       type(scene_type), intent(in) :: scene
@@ -305,21 +305,14 @@ contains
             call fail(stat, errmsg, '&time scheme = '''//trim(time%scheme)//''' is not available with &analysis '// &
                       'kind = ''periodic'': the period map steps the velocity scheme only, for now')
          ! what the period map does not take yet (docs/input.md, "&periodic"): the loads of
-         ! &forces (their common period is not known), the fluid-elastic force and damping per
-         ! mode (the linearised steps hold Rayleigh damping only)
+         ! &forces (their common period is not known); the fluid-elastic force and damping per
+         ! mode it steps, and linearises, as a dynamics run does
          if (allocated(scene%forces%load)) then
             if (size(scene%forces%load) > 0) &
                call fail(stat, errmsg, '&forces count = '//integer_text(size(scene%forces%load))//' is not '// &
                          'available with &analysis kind = ''periodic'': the period map takes the harmonic loads of '// &
                          '&load only, for now (give the load in &load)')
          end if
-         if (scene%flow%velocity > 0) &
-            call fail(stat, errmsg, '&flow velocity = '//real_text(scene%flow%velocity)//' m/s is not available '// &
-                      'with &analysis kind = ''periodic'': the period map has no fluid-elastic force, for now')
-         if (scene%beam%modal()) &
-            call fail(stat, errmsg, '&beam modal_damping (or modal_damping_ratios) is not available with &analysis '// &
-                      'kind = ''periodic'': the period map''s linearised steps hold Rayleigh damping only, for now '// &
-                      '(scripts/rayleigh_damping.py fits it on two modes)')
          if (periodic%autonomous) then
             call shared_rules()
             return
@@ -354,9 +347,6 @@ contains
             call fail(stat, errmsg, '&periodic switch_branch = .true. needs a continuation: the branch of twice '// &
                       'the period starts at a period doubling of the continued branch; give &periodic parameter '// &
                       '(and step), or switch_branch = .false. (the default)')
-         if (scene%periodic%monodromy == 'linearised' .and. any(scene%obstacles%stiffness > 0)) &
-            call fail(stat, errmsg, '&periodic monodromy = ''linearised'' is for rigid obstacles: the compliant '// &
-                      'stops (&obstacles stiffness > 0) need ''differences'' (or ''auto'', which chooses it)')
       end subroutine shared_rules
    end subroutine periodic_rules
 
@@ -404,6 +394,12 @@ contains
             call fail(stat, errmsg, '&beam rayleigh_mass = '//real_text(scene%beam%rayleigh_mass)// &
                       ' 1/s and rayleigh_stiffness = '//real_text(scene%beam%rayleigh_stiffness)//' s'//free// &
                       decays//'; give both 0')
+         if (scene%beam%modal()) &
+            call fail(stat, errmsg, '&beam modal_damping (or modal_damping_ratios)'//free//decays//'; give none')
+         if (scene%flow%velocity > 0) &
+            call fail(stat, errmsg, '&flow velocity = '//real_text(scene%flow%velocity)//' m/s'//free// &
+                      'the fluid-elastic force feeds or takes energy (a self-excited orbit is not a free vibration '// &
+                      'of a conservative scene); give 0')
          if (abs(scene%time%theta - 0.5_dp) > 0) &
             call fail(stat, errmsg, '&time theta = '//real_text(scene%time%theta)//free//'theta > 1/2 damps '// &
                       'every mode of the discrete scheme, so '//decays//'; give 0.5')
@@ -464,7 +460,7 @@ contains
                          '''auto''')
          end if
          ! the Lyapunov exponent (docs/statistics.md): renormalised once per forcing period,
-         ! through the velocity scheme's tangent (Rayleigh damping; no fluid-elastic force)
+         ! through the velocity scheme's tangent (its damping, per mode too, and the fluid-elastic force)
          if (output%lyapunov .and. scene%analysis%kind == 'dynamics') then
             if (forcing_of(scene) == 'none') &
                call fail(stat, errmsg, '&output lyapunov = .true. needs a harmonic load (&load base_frequency, '// &
@@ -473,12 +469,6 @@ contains
             if (scene%time%scheme /= 'velocity') &
                call fail(stat, errmsg, '&output lyapunov = .true. is not available with &time scheme = '''// &
                          trim(scene%time%scheme)//''': the tangent map is the velocity scheme''s')
-            if (scene%beam%modal()) &
-               call fail(stat, errmsg, '&output lyapunov = .true. is not available with &beam modal_damping (or '// &
-                         'modal_damping_ratios): the tangent map holds Rayleigh damping only, for now')
-            if (scene%flow%velocity > 0) &
-               call fail(stat, errmsg, '&output lyapunov = .true. is not available with &flow velocity = '// &
-                         real_text(scene%flow%velocity)//' m/s: the tangent map has no fluid-elastic force, for now')
          end if
       end associate
    end subroutine output_rules

@@ -343,10 +343,11 @@ contains
    !! perturbation of U^{n+1} and V^{n+1} it makes out (docs/method.md, "Periodic orbits by
    !! shooting"). With the points h the step held (an impulse P_c /= 0) and their
    !! restitution e_c,
-   !!   dV_free = dV + dt J^-1 (-C dV - K (dU + theta dt dV) - S),
+   !!   dV_free = dV + dt J^-1 (-(C + C_m - F_f) dV - K (dU + theta dt dV) - S),
    !!   dV' = dV_free - J^-1 H_h^T D^-1 (H_h dV_free + E_h H_h dV),  D = H_h J^-1 H_h^T,
    !!   dU' = dU + dt (theta dV' + (1 - theta) dV),
-   !! J = W without compliant stops (S = 0): the step is affine in (U^n, V^n) as long as the
+   !! C_m the damping per mode and F_f the fluid-elastic force's matrix (theory §10), both
+   !! explicit in V^n as `step` takes them, J = W without compliant stops (S = 0): the step is affine in (U^n, V^n) as long as the
    !! same points are active, the same of them held and each approaches or separates as it
    !! did (the period map is piecewise affine; a piece ends where an activation test, an
    !! impulse's sign or an approach changes). With compliant stops (docs/method.md,
@@ -424,15 +425,22 @@ contains
             return
          end if
       end if
-      b = 0
       do j = 1, size(du, 2)
          x = du(:, j) + self%theta*self%dt*dv(:, j)
+         ! the forces explicit in V^n: -C dV (Rayleigh), -C_m dV (per mode) and the
+         ! fluid-elastic F_f(dV), linear in V as `step` adds them (theory §10)
+         b = 0
          if (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0) then
             call self%damping_into(dv(:, j), b, z)
             b = -b
          end if
+         if (self%modal) then
+            z = 0
+            call self%add_modal_damping(dv(:, j), z)
+            b = b - z
+         end if
+         if (self%loads%flow%active) call self%loads%flow%add_force(dv(:, j), b)
          if (associated(factor)) then
-            if (.not. (self%rayleigh_mass > 0 .or. self%rayleigh_stiffness > 0)) b = 0
             do k = 1, self%contacts%springs%count
                if (end_slope(k) <= 0 .and. abs(start_slope(k)) <= 0) cycle
                associate (point => self%contacts%springs%point(k))

@@ -6,7 +6,7 @@ module vibrobeam_periodic_reference
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_band, only: band_to_dense
    use vibrobeam_problem, only: run_problem
-   use vibrobeam_lapack, only: dgesv, dpotrf, dgeevx, zgesv
+   use vibrobeam_lapack, only: dgesv, dpotrf, dgeevx, zgesv, dsygv
    use vibrobeam_scene, only: scene_type
    use vibrobeam_continuation, only: continuation_branch, continue_branch
    use vibrobeam_test_support, only: test_counter
@@ -15,7 +15,7 @@ module vibrobeam_periodic_reference
    private
    public :: identity, solve_dense, energy_gram, energy_norm, cancellation, fixed_point_condition
    public :: amplification_matrix, eigenvalues_with_conditions, harmonic_steady_state, matrix_power
-   public :: continue_test_branch, check_multipliers
+   public :: continue_test_branch, check_multipliers, fluid_elastic_damping, modal_damping_excess
 
 contains
 
@@ -63,10 +63,13 @@ contains
    !!   (z - 1) W V^ = dt (F^ (theta z + 1 - theta) - K U^ - (C + theta dt K) V^),
    !!   (z - 1) U^ = dt (theta z + 1 - theta) V^,
    !! a complex linear system solved with LAPACK zgesv; `state` = (U^, V^). `info` /= 0:
-   !! zgesv found it singular.
-   subroutine harmonic_steady_state(prepared, mass, stiffness, damping, dt, theta, omega, state, info)
+   !! zgesv found it singular. `explicit` (optional): a damping taken at V^n outside W, as
+   !! the scheme takes the fluid-elastic force and damping per mode, -E V^n on the right
+   !! (C + theta dt K becomes C + E + theta dt K there).
+   subroutine harmonic_steady_state(prepared, mass, stiffness, damping, dt, theta, omega, state, info, explicit)
       type(run_problem), intent(in) :: prepared
       real(dp), intent(in) :: mass(:, :), stiffness(:, :), damping(:, :), dt, theta, omega
+      real(dp), intent(in), optional :: explicit(:, :)
       complex(dp), allocatable, intent(out) :: state(:)
       integer, intent(out) :: info
       complex(dp), allocatable :: system(:, :), rhs(:, :)
@@ -83,6 +86,7 @@ contains
       system(1:n, 1:n) = dt*stiffness
       system(1:n, n + 1:) = (z - 1)*(mass + theta*dt*damping + theta**2*dt**2*stiffness) + &
                             dt*(damping + theta*dt*stiffness)
+      if (present(explicit)) system(1:n, n + 1:) = system(1:n, n + 1:) + dt*explicit
       rhs(1:n, 1) = dt*g*cmplx(prepared%system%loads%at(0.0_dp), -prepared%system%loads%at(2*pi/omega/4), dp)
       do j = 1, n
          system(n + j, j) = z - 1
@@ -96,9 +100,11 @@ contains
    !> The one-step amplification matrix A of the velocity scheme without contact,
    !! (U', V') = A (U, V) + load terms: W (V' - V) = -dt (C V + K (U + theta dt V)),
    !! U' = U + dt (theta V' + (1 - theta) V), W = M + theta dt C + theta^2 dt^2 K, from the
-   !! dense M, K and C = damping of the stepped system.
-   function amplification_matrix(mass, stiffness, damping, dt, theta) result(a)
+   !! dense M, K and C = damping of the stepped system; `explicit` (optional) a damping E
+   !! taken at V^n outside W (-dt (C + E) V on the right; `harmonic_steady_state`).
+   function amplification_matrix(mass, stiffness, damping, dt, theta, explicit) result(a)
       real(dp), intent(in) :: mass(:, :), stiffness(:, :), damping(:, :), dt, theta
+      real(dp), intent(in), optional :: explicit(:, :)
       real(dp) :: a(2*size(mass, 1), 2*size(mass, 1))
       real(dp) :: work(size(mass, 1), 2*size(mass, 1)), eye(size(mass, 1), size(mass, 1))
       integer :: n
@@ -106,6 +112,7 @@ contains
       eye = identity(n)
       work(:, 1:n) = stiffness
       work(:, n + 1:) = damping + theta*dt*stiffness
+      if (present(explicit)) work(:, n + 1:) = work(:, n + 1:) + explicit
       call solve_dense(mass + theta*dt*damping + theta**2*dt**2*stiffness, work)
       a(n + 1:, 1:n) = -dt*work(:, 1:n)
       a(n + 1:, n + 1:) = eye - dt*work(:, n + 1:)
@@ -132,6 +139,70 @@ contains
                   rconde, rcondv, space, size(space), iwork, status)
       if (status /= 0) error stop 'dgeevx failed'
    end subroutine eigenvalues_with_conditions
+
+   !> The fluid-elastic force of &flow as an explicit damping E = -sum_n g_n (M phi_n)(M phi_n)^T
+   !! (docs/theory.md §10: F_f = -E V), from the dense M, K (LAPACK dsygv: the modes with
+   !! phi^T M phi = 1, so g_n = 2 zeta_f,n omega_n) and Connors' formula zeta_f,n = rho
+   !! U^2/(2 pi K^2 m f_n^2), for the flow over the whole span (J_n = 1) of a beam of mass
+   !! per length `mass_per_length` and the lowest `modes` modes: written here from the
+   !! formula, not from `vibrobeam_flow`.
+   function fluid_elastic_damping(mass, stiffness, velocity, fluid_density, connors, mass_per_length, modes) &
+      result(explicit)
+      real(dp), intent(in) :: mass(:, :), stiffness(:, :), velocity, fluid_density, connors, mass_per_length
+      integer, intent(in) :: modes
+      real(dp) :: explicit(size(mass, 1), size(mass, 1))
+      real(dp) :: a(size(mass, 1), size(mass, 1)), b(size(mass, 1), size(mass, 1)), w(size(mass, 1)), &
+                  y(size(mass, 1)), query(1), omega, zeta_f
+      real(dp), allocatable :: space(:)
+      real(dp), parameter :: pi = acos(-1.0_dp)
+      integer :: n, k, info, j
+      n = size(mass, 1)
+      a = stiffness
+      b = mass
+      call dsygv(1, 'V', 'L', n, a, n, b, n, w, query, -1, info)
+      allocate (space(int(query(1))))
+      call dsygv(1, 'V', 'L', n, a, n, b, n, w, space, size(space), info)
+      if (info /= 0) error stop 'dsygv failed'
+      explicit = 0
+      do k = 1, modes
+         omega = sqrt(w(k))
+         zeta_f = fluid_density*velocity**2/(2*pi*connors**2*mass_per_length*(omega/(2*pi))**2)
+         y = matmul(mass, a(:, k))
+         do j = 1, n
+            explicit(:, j) = explicit(:, j) - 2*zeta_f*omega*y*y(j)
+         end do
+      end do
+   end function fluid_elastic_damping
+
+   !> The damping per mode of `&beam modal_damping_ratios` as the scheme takes it, at V^n
+   !! beside the Rayleigh damping: mode k (of the first size(ratios), phi^T M phi = 1 from
+   !! LAPACK dsygv on the dense M, K) gets the excess rate c_k = 2 zeta_k omega_k - a -
+   !! b omega_k^2 over Rayleigh's, so E = sum_k c_k (M phi_k)(M phi_k)^T (docs/method.md,
+   !! "Damping per mode"); written from the formula, not from `vibrobeam_modal_damping`.
+   function modal_damping_excess(mass, stiffness, ratios, rayleigh_mass, rayleigh_stiffness) result(explicit)
+      real(dp), intent(in) :: mass(:, :), stiffness(:, :), ratios(:), rayleigh_mass, rayleigh_stiffness
+      real(dp) :: explicit(size(mass, 1), size(mass, 1))
+      real(dp) :: a(size(mass, 1), size(mass, 1)), b(size(mass, 1), size(mass, 1)), w(size(mass, 1)), &
+                  y(size(mass, 1)), query(1), omega, rate
+      real(dp), allocatable :: space(:)
+      integer :: n, k, info, j
+      n = size(mass, 1)
+      a = stiffness
+      b = mass
+      call dsygv(1, 'V', 'L', n, a, n, b, n, w, query, -1, info)
+      allocate (space(int(query(1))))
+      call dsygv(1, 'V', 'L', n, a, n, b, n, w, space, size(space), info)
+      if (info /= 0) error stop 'dsygv failed'
+      explicit = 0
+      do k = 1, size(ratios)
+         omega = sqrt(w(k))
+         rate = 2*ratios(k)*omega - rayleigh_mass - rayleigh_stiffness*omega**2
+         y = matmul(mass, a(:, k))
+         do j = 1, n
+            explicit(:, j) = explicit(:, j) + rate*y*y(j)
+         end do
+      end do
+   end function modal_damping_excess
 
    !> G = diag(K + omega^2 M, M) of the stepped system, dense (2 unknowns square).
    function energy_gram(prepared, omega) result(gram)
@@ -192,7 +263,7 @@ contains
 
    !> The branch of `scene` (`continue_branch`) for the continuation tests: it must run
    !! (else the test `program` ends, failed) and reach its end without failure; prints
-   !! its number of points, its span in Omega and its steps.
+   !! its number of points, its span in the parameter and its steps.
    subroutine continue_test_branch(t, program, scene, prepared, branch)
       type(test_counter), intent(inout) :: t
       character(len=*), intent(in) :: program
@@ -206,9 +277,9 @@ contains
       if (stat /= 0) call t%finish(program)
       call t%check_true('the branch reached its end without failure', len_trim(branch%failure) == 0, &
                         trim(branch%failure))
-      write (*, '(a,i0,a,f0.3,a,f0.3,a,i0,a)') 'branch: ', size(branch%points), ' points, Omega from ', &
-         branch%points(1)%parameter, ' to ', branch%points(size(branch%points))%parameter, ' rad/s, ', &
-         branch%steps_taken, ' steps'
+      write (*, '(a,i0,3a,f0.3,a,f0.3,3a,i0,a)') 'branch: ', size(branch%points), ' points, ', &
+         trim(branch%axis%parameter), ' from ', branch%points(1)%parameter, ' to ', &
+         branch%points(size(branch%points))%parameter, ' ', trim(branch%axis%unit), ', ', branch%steps_taken, ' steps'
    end subroutine continue_test_branch
    !> Check the Floquet multipliers `multipliers` (2, 2 J: real, imaginary) of an orbit of
    !! `steps` steps against lambda_k^steps, lambda_k the eigenvalues of the one-step

@@ -5,7 +5,8 @@
 !! Without contact the velocity scheme is the linear recurrence x' = A x + load terms
 !! (test_periodic_linear), and the tangent map of every step is A: the exponent is
 !! log|lambda_1|/dt, lambda_1 the eigenvalue of A of largest modulus (dense, LAPACK
-!! dgeevx, from the stepped system's M, K and C: no stepper), and the Floquet multipliers
+!! dgeevx, from the stepped system's M, K and C, and with &flow its force at V^n from the
+!! dense modes and Connors' formula: no stepper), and the Floquet multipliers
 !! of the periodic analysis are lambda_k^P, so log|lambda_1|/dt = max Re(log mu)/T.
 !!
 !! The run: the dynamics run's stepper, recorder and loop over the scene (&output
@@ -33,7 +34,8 @@ program test_lyapunov_linear
    use vibrobeam_run_loop, only: advance
    use vibrobeam_statistics, only: statistics_result
    use vibrobeam_statistics_layout, only: group_poincare
-   use vibrobeam_periodic_reference, only: amplification_matrix, eigenvalues_with_conditions, energy_gram
+   use vibrobeam_periodic_reference, only: amplification_matrix, eigenvalues_with_conditions, energy_gram, &
+      fluid_elastic_damping
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
    implicit none
    type(test_counter) :: t
@@ -65,7 +67,16 @@ program test_lyapunov_linear
    mass = band_to_dense(prepared%system%model%mass)
    stiffness = band_to_dense(prepared%system%model%stiffness)
    damping = scene%beam%rayleigh_mass*mass + scene%beam%rayleigh_stiffness*stiffness
-   a = amplification_matrix(mass, stiffness, damping, scene%time%dt, scene%time%theta)
+   if (scene%flow%velocity > 0) then
+      ! the fluid-elastic force at V^n (the flow over the whole span of the full model,
+      ! as the reference takes it: test_periodic_linear)
+      if (prepared%reduced .or. scene%flow%x_from > 0) error stop 'test_lyapunov_linear: &flow over the whole span only'
+      a = amplification_matrix(mass, stiffness, damping, scene%time%dt, scene%time%theta, &
+                               fluid_elastic_damping(mass, stiffness, scene%flow%velocity, scene%flow%density, &
+                                                     scene%flow%connors_constant, scene%beam%rho_s(), scene%flow%modes))
+   else
+      a = amplification_matrix(mass, stiffness, damping, scene%time%dt, scene%time%theta)
+   end if
    call eigenvalues_with_conditions(a, wr, wi, rconde, vectors)
    lead = maxloc(hypot(wr, wi), dim=1)
    if (wi(lead) < 0) lead = lead - 1   ! the first column of a complex pair

@@ -10,6 +10,10 @@
 !! F^ = F(0) - i F(T/4). The Floquet multipliers of that orbit are lambda_k^P, lambda_k the
 !! eigenvalues of the one-step amplification matrix A (dense, LAPACK dgeevx), P the steps
 !! of the orbit: exp(s_k T) for the scheme's own rates s_k = log(lambda_k)/dt.
+!! With &flow (theory §10) the fluid-elastic force F_f = -E V^n, E from the modes of the
+!! dense M, K and Connors' formula (`fluid_elastic_damping`), enters both as a damping
+!! taken at V^n: -(C + E) V on the right, W unchanged; and so does the damping per mode of
+!! `&beam modal_damping_ratios` (`modal_damping_excess`: the rates beyond Rayleigh's).
 !!
 !! Checked against the orbit `find_periodic_orbit` returns (converged, its state at
 !! t = 0 and its tip over the period) and its multipliers, to round-off bounds derived
@@ -17,12 +21,13 @@
 !! obstacles, if any, are never reached).
 program test_periodic_linear
    use vibrobeam_kinds, only: dp, int64, pi
-   use vibrobeam_scene, only: scene_type
+   use vibrobeam_scene, only: scene_type, is_unset
    use vibrobeam_problem, only: run_problem
    use vibrobeam_band, only: band_to_dense
    use vibrobeam_model, only: node_row
    use vibrobeam_periodic_reference, only: identity, solve_dense, energy_gram, energy_norm, cancellation, &
-      fixed_point_condition, amplification_matrix, harmonic_steady_state, matrix_power, check_multipliers
+      fixed_point_condition, amplification_matrix, harmonic_steady_state, matrix_power, check_multipliers, &
+      fluid_elastic_damping, modal_damping_excess
    use vibrobeam_periodic_analysis, only: find_periodic_orbit, periodic_orbit
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
    implicit none
@@ -31,13 +36,13 @@ program test_periodic_linear
    type(run_problem) :: prepared
    type(periodic_orbit) :: orbit
    character(len=512) :: path, errmsg
-   real(dp), allocatable :: mass(:, :), stiffness(:, :), damping(:, :), a(:, :), gram(:, :), &
+   real(dp), allocatable :: mass(:, :), stiffness(:, :), damping(:, :), explicit(:, :), a(:, :), gram(:, :), &
                             tip_row(:), x_ref(:), &
                             tip_ref(:)
    complex(dp), allocatable :: rhs(:, :), harmonic(:)
    complex(dp) :: z
    real(dp) :: dt, theta, omega, period, error, bound, inverse_norm, noise, worst
-   integer :: n, m, stat, info, k, dofs(4)
+   integer :: n, m, stat, info, k, dofs(4), ratios_given
    integer(int64) :: steps
    real(dp) :: weights(4)
 
@@ -60,16 +65,35 @@ program test_periodic_linear
    dt = scene%time%dt
    theta = scene%time%theta
    damping = scene%beam%rayleigh_mass*mass + scene%beam%rayleigh_stiffness*stiffness
+   allocate (explicit(n, n), source=0.0_dp)
+   if (scene%flow%velocity > 0) then
+      ! the reference takes the modes of the mesh, over the whole span
+      if (prepared%reduced .or. scene%flow%x_from > 0 .or. .not. (is_unset(scene%flow%x_to) .or. &
+          scene%flow%x_to >= scene%beam%length)) &
+         error stop 'test_periodic_linear: &flow over the whole span of a full model only'
+      explicit = fluid_elastic_damping(mass, stiffness, scene%flow%velocity, scene%flow%density, &
+                                       scene%flow%connors_constant, scene%beam%rho_s(), scene%flow%modes)
+   end if
+   if (scene%beam%modal()) then
+      ! the ratios given, modes 1 to the last (the reference takes neither `modal_damping`'s
+      ! cut-off nor rigid-body modes)
+      ratios_given = count(.not. is_unset(scene%beam%modal_damping_ratios))
+      if (.not. is_unset(scene%beam%modal_damping) .or. prepared%reduced .or. &
+          any(is_unset(scene%beam%modal_damping_ratios(1:ratios_given)))) &
+         error stop 'test_periodic_linear: damping per mode by modal_damping_ratios(1:k) of a full model only'
+      explicit = explicit + modal_damping_excess(mass, stiffness, scene%beam%modal_damping_ratios(1:ratios_given), &
+                                                 scene%beam%rayleigh_mass, scene%beam%rayleigh_stiffness)
+   end if
    omega = maxval([scene%load%point_frequency, scene%load%base_frequency, scene%load%distributed_frequency])
    period = 2*pi/omega
    steps = nint(scene%periodic%period_multiple*period/dt, int64)
 
    ! ---- one-step amplification matrix A: V' = A21 U + A22 V, U' = A11 U + A12 V ----
-   a = amplification_matrix(mass, stiffness, damping, dt, theta)
+   a = amplification_matrix(mass, stiffness, damping, dt, theta, explicit)
 
    ! ---- the harmonic steady state (complex system, zgesv) ----
    z = exp(cmplx(0.0_dp, omega*dt, dp))
-   call harmonic_steady_state(prepared, mass, stiffness, damping, dt, theta, omega, harmonic, info)
+   call harmonic_steady_state(prepared, mass, stiffness, damping, dt, theta, omega, harmonic, info, explicit)
    call t%check_true('zgesv solves the harmonic system', info == 0)
    rhs = reshape(harmonic, [m, 1])
    x_ref = real(rhs(:, 1))

@@ -20,7 +20,7 @@
 program test_step_tangent
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_scene, only: scene_type, forcing_of
-   use vibrobeam_problem, only: run_problem, new_stepper, stepper_settings_of
+   use vibrobeam_problem, only: run_problem, new_stepper, problem_stepper_settings
    use vibrobeam_time_stepper, only: time_stepper, dynamic_state
    use vibrobeam_stepper_factory, only: new_time_stepper, release_stepper, linearise_step
    use vibrobeam_state_record, only: state_record
@@ -133,7 +133,8 @@ contains
       integer :: status
       start%u = state(1:n)
       start%v = state(n + 1:)
-      call new_time_stepper(prepared%system, stepper_settings_of(scene), start, stepper, status, errmsg, resume=before)
+      call new_time_stepper(prepared%system, problem_stepper_settings(scene, prepared), start, stepper, status, errmsg, &
+                             resume=before)
       if (status /= 0) error stop 'new_time_stepper'
       stepper%u = state(1:n)
       stepper%v = state(n + 1:)
