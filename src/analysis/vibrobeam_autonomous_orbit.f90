@@ -21,7 +21,7 @@ module vibrobeam_autonomous_orbit
    use vibrobeam_problem, only: run_problem
    use vibrobeam_period_map, only: map_image, jacobian_linearised, jacobian_differences, jacobian_none, &
       difference_fraction
-   use vibrobeam_periodic_analysis, only: periodic_orbit, floquet_multipliers, publish_orbit, settle_start
+   use vibrobeam_periodic_analysis, only: periodic_orbit, publish_orbit, settle_start, conclude_orbit
    use vibrobeam_result_files, only: run_outcome
    use vibrobeam_progress, only: progress_meter
    use vibrobeam_lapack, only: dgels
@@ -82,11 +82,7 @@ contains
             call solve(scene, prepared, silent, orbit, stat, errmsg)
          end if
       end if
-      if (stat /= 0) return
-      allocate (orbit%multipliers(2, 0))
-      if (allocated(orbit%image%jacobian)) call floquet_multipliers(orbit%image%jacobian, orbit%multipliers, stat, errmsg)
-      if (stat /= 0) return
-      if (orbit%status == outcome_ok .and. .not. orbit%converged) orbit%status = outcome_failed
+      if (stat == 0) call conclude_orbit(orbit, stat, errmsg)
    end subroutine find_autonomous_orbit
 
    !> Gauss-Newton on (Phi_T(x) - x, v_tip(x), u_tip(x) - A) = 0 from orbit%x and the

@@ -28,6 +28,7 @@ module vibrobeam_periodic_analysis
    implicit none
    private
    public :: run_periodic, find_periodic_orbit, periodic_orbit, floquet_multipliers, publish_orbit, settle_start
+   public :: conclude_orbit
 
    !> Halvings of a Newton step that does not reduce the residual, before it is taken whole.
    integer, parameter :: max_halvings = 4
@@ -142,12 +143,22 @@ contains
             call solve(scene, prepared, silent, orbit, stat, errmsg)
          end if
       end if
-      if (stat /= 0) return
+      if (stat == 0) call conclude_orbit(orbit, stat, errmsg)
+   end subroutine find_periodic_orbit
+
+   !> After Newton's (or Gauss-Newton's) iterations: the multipliers of the last iterate's
+   !! monodromy (none without one), and a run that ended without converging marked failed.
+   subroutine conclude_orbit(orbit, stat, errmsg)
+      type(periodic_orbit), intent(inout) :: orbit
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      stat = 0
+      errmsg = ''
       allocate (orbit%multipliers(2, 0))
       if (allocated(orbit%image%jacobian)) call floquet_multipliers(orbit%image%jacobian, orbit%multipliers, stat, errmsg)
       if (stat /= 0) return
       if (orbit%status == outcome_ok .and. .not. orbit%converged) orbit%status = outcome_failed
-   end subroutine find_periodic_orbit
+   end subroutine conclude_orbit
 
    !> The start of Newton's method: `start` when given, else the scene's initial state (or
    !! the checkpoint it continues) stepped to the next whole period of `period_steps` steps

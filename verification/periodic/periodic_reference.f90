@@ -151,27 +151,14 @@ contains
       real(dp), intent(in) :: mass(:, :), stiffness(:, :), velocity, fluid_density, connors, mass_per_length
       integer, intent(in) :: modes
       real(dp) :: explicit(size(mass, 1), size(mass, 1))
-      real(dp) :: a(size(mass, 1), size(mass, 1)), b(size(mass, 1), size(mass, 1)), w(size(mass, 1)), &
-                  y(size(mass, 1)), query(1), omega, zeta_f
-      real(dp), allocatable :: space(:)
+      real(dp) :: omega(size(mass, 1)), rates(modes)
+      real(dp), allocatable :: shapes(:, :)
       real(dp), parameter :: pi = acos(-1.0_dp)
-      integer :: n, k, info, j
-      n = size(mass, 1)
-      a = stiffness
-      b = mass
-      call dsygv(1, 'V', 'L', n, a, n, b, n, w, query, -1, info)
-      allocate (space(int(query(1))))
-      call dsygv(1, 'V', 'L', n, a, n, b, n, w, space, size(space), info)
-      if (info /= 0) error stop 'dsygv failed'
-      explicit = 0
-      do k = 1, modes
-         omega = sqrt(w(k))
-         zeta_f = fluid_density*velocity**2/(2*pi*connors**2*mass_per_length*(omega/(2*pi))**2)
-         y = matmul(mass, a(:, k))
-         do j = 1, n
-            explicit(:, j) = explicit(:, j) - 2*zeta_f*omega*y*y(j)
-         end do
-      end do
+      call dense_modes(mass, stiffness, shapes, omega)
+      associate (zeta_f => fluid_density*velocity**2/(2*pi*connors**2*mass_per_length*(omega(1:modes)/(2*pi))**2))
+         rates = -2*zeta_f*omega(1:modes)
+      end associate
+      explicit = modal_sum(mass, shapes, rates)
    end function fluid_elastic_damping
 
    !> The damping per mode of `&beam modal_damping_ratios` as the scheme takes it, at V^n
@@ -182,27 +169,47 @@ contains
    function modal_damping_excess(mass, stiffness, ratios, rayleigh_mass, rayleigh_stiffness) result(explicit)
       real(dp), intent(in) :: mass(:, :), stiffness(:, :), ratios(:), rayleigh_mass, rayleigh_stiffness
       real(dp) :: explicit(size(mass, 1), size(mass, 1))
-      real(dp) :: a(size(mass, 1), size(mass, 1)), b(size(mass, 1), size(mass, 1)), w(size(mass, 1)), &
-                  y(size(mass, 1)), query(1), omega, rate
+      real(dp) :: omega(size(mass, 1))
+      real(dp), allocatable :: shapes(:, :)
+      call dense_modes(mass, stiffness, shapes, omega)
+      associate (w => omega(1:size(ratios)))
+         explicit = modal_sum(mass, shapes, 2*ratios*w - rayleigh_mass - rayleigh_stiffness*w**2)
+      end associate
+   end function modal_damping_excess
+
+   !> The modes of the dense (K, M) by LAPACK dsygv (phi^T M phi = 1, ascending) and their
+   !! angular frequencies omega_k (rad/s).
+   subroutine dense_modes(mass, stiffness, shapes, omega)
+      real(dp), intent(in) :: mass(:, :), stiffness(:, :)
+      real(dp), allocatable, intent(out) :: shapes(:, :)
+      real(dp), intent(out) :: omega(:)
+      real(dp) :: b(size(mass, 1), size(mass, 1)), query(1)
       real(dp), allocatable :: space(:)
-      integer :: n, k, info, j
+      integer :: n, info
       n = size(mass, 1)
-      a = stiffness
+      shapes = stiffness
       b = mass
-      call dsygv(1, 'V', 'L', n, a, n, b, n, w, query, -1, info)
+      call dsygv(1, 'V', 'L', n, shapes, n, b, n, omega, query, -1, info)
       allocate (space(int(query(1))))
-      call dsygv(1, 'V', 'L', n, a, n, b, n, w, space, size(space), info)
+      call dsygv(1, 'V', 'L', n, shapes, n, b, n, omega, space, size(space), info)
       if (info /= 0) error stop 'dsygv failed'
+      omega = sqrt(max(omega, 0.0_dp))   ! (a rigid-body mode: 0, not a rounding below it)
+   end subroutine dense_modes
+
+   !> sum_k rates(k) (M phi_k)(M phi_k)^T over the first size(rates) modes `shapes`.
+   function modal_sum(mass, shapes, rates) result(explicit)
+      real(dp), intent(in) :: mass(:, :), shapes(:, :), rates(:)
+      real(dp) :: explicit(size(mass, 1), size(mass, 1))
+      real(dp) :: y(size(mass, 1))
+      integer :: k, j
       explicit = 0
-      do k = 1, size(ratios)
-         omega = sqrt(w(k))
-         rate = 2*ratios(k)*omega - rayleigh_mass - rayleigh_stiffness*omega**2
-         y = matmul(mass, a(:, k))
-         do j = 1, n
-            explicit(:, j) = explicit(:, j) + rate*y*y(j)
+      do k = 1, size(rates)
+         y = matmul(mass, shapes(:, k))
+         do j = 1, size(y)
+            explicit(:, j) = explicit(:, j) + rates(k)*y*y(j)
          end do
       end do
-   end function modal_damping_excess
+   end function modal_sum
 
    !> G = diag(K + omega^2 M, M) of the stepped system, dense (2 unknowns square).
    function energy_gram(prepared, omega) result(gram)
