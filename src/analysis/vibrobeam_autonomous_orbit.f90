@@ -63,8 +63,7 @@ contains
       type(periodic_orbit), intent(out) :: orbit
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      type(progress_meter), intent(inout), optional :: meter
-      type(progress_meter) :: silent
+      type(progress_meter), intent(inout) :: meter   !! reports the iterations (a default one: silent)
       orbit%autonomous = .true.
       orbit%map%steps = int(scene%periodic%steps_per_period, int64)
       orbit%map%unknowns = prepared%system%model%unknowns
@@ -73,15 +72,7 @@ contains
       orbit%dt = scene%periodic%period/scene%periodic%steps_per_period
       call settle_start(scene, prepared, orbit%map%steps, orbit, stat, errmsg)
       if (stat /= 0) return
-      if (orbit%status == outcome_ok) then
-         if (present(meter)) then
-            call solve(scene, prepared, meter, orbit, stat, errmsg)
-         else
-            call silent%init(.false.)
-            silent%enabled = .false.
-            call solve(scene, prepared, silent, orbit, stat, errmsg)
-         end if
-      end if
+      if (orbit%status == outcome_ok) call solve(scene, prepared, meter, orbit, stat, errmsg)
       if (stat == 0) call conclude_orbit(orbit, stat, errmsg)
    end subroutine find_autonomous_orbit
 

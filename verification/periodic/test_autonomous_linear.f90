@@ -28,11 +28,13 @@ program test_autonomous_linear
    use vibrobeam_periodic_analysis, only: periodic_orbit
    use vibrobeam_autonomous_orbit, only: find_autonomous_orbit
    use vibrobeam_test_support, only: test_counter, read_test_scene, prepare_test_scene
+   use vibrobeam_progress, only: progress_meter
    implicit none
    type(test_counter) :: t
    type(scene_type) :: scene
    type(run_problem) :: prepared
    type(periodic_orbit) :: orbit
+   type(progress_meter) :: quiet   ! (a default meter reports nothing)
    character(len=512) :: path, argument, errmsg
    real(dp), allocatable :: mass(:, :), stiffness(:, :), modes(:, :), lambda(:), work(:), gram(:, :), a(:, :), &
                             wr(:), wi(:), rconde(:), vectors(:, :), u(:), v(:), other(:), inverse_mass(:, :)
@@ -50,7 +52,7 @@ program test_autonomous_linear
    end if
    scene = read_test_scene(trim(path))
    call prepare_test_scene(scene, prepared)
-   call find_autonomous_orbit(scene, prepared, orbit, stat, errmsg)
+   call find_autonomous_orbit(scene, prepared, orbit, stat, errmsg, quiet)
    call t%check_true('find_autonomous_orbit runs', stat == 0, trim(errmsg))
    if (stat /= 0) call t%finish('test_autonomous_linear')
    call t%check_true('Gauss-Newton converged', orbit%converged, trim(orbit%failure))
