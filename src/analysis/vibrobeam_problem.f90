@@ -107,13 +107,12 @@ contains
          call add_flow(prepared%loads, scene%flow, prepared%model, scene%beam%rayleigh_mass, &
                        scene%beam%rayleigh_stiffness, stat, errmsg)
          if (stat /= 0) return
-         warnings = warnings//prepared%loads%flow%unbounded_warning(prepared%contacts%count > 0 .or. &
-                                                                     prepared%circles%count > 0)
       end if
       if (steps_in_time(scene) .and. len_trim(scene%initial%from_file) > 0) then
          call resume_from_file(scene, prepared, warnings, stat, errmsg)
          if (stat == 0) call full_system(prepared)
          if (stat == 0) call modal_damping_of(scene, prepared, stat, errmsg)
+         if (stat == 0) call flow_damping(prepared, warnings)
          return
       end if
       call initial_displacement(scene, prepared, stat, errmsg)
@@ -139,7 +138,28 @@ contains
          call full_system(prepared)
       end if
       if (stat == 0) call modal_damping_of(scene, prepared, stat, errmsg)
+      if (stat == 0) call flow_damping(prepared, warnings)
    end subroutine build_problem
+
+   !> The fluid-elastic force's modes take the damping per mode (their structural damping
+   !! ratios and critical velocities: `take_modal_rates`), then the warning when a mode is
+   !! unstable and nothing bounds the motion.
+   subroutine flow_damping(prepared, warnings)
+      type(run_problem), intent(inout) :: prepared
+      character(len=:), allocatable, intent(inout) :: warnings
+      real(dp), allocatable :: none(:)
+      if (.not. prepared%loads%flow%active) return
+      allocate (none(0))
+      if (allocated(prepared%modal_rates)) then
+         if (allocated(prepared%modal_rates_z)) then
+            call prepared%loads%flow%take_modal_rates(prepared%modal_rates, prepared%modal_rates_z)
+         else
+            call prepared%loads%flow%take_modal_rates(prepared%modal_rates, none)
+         end if
+      end if
+      warnings = warnings//prepared%loads%flow%unbounded_warning(prepared%contacts%count > 0 .or. &
+                                                                  prepared%circles%count > 0)
+   end subroutine flow_damping
 
    !> A beam of two bending planes (docs/method.md, "Two bending planes"): the initial
    !! fields, computed in y, turned by &initial displacement_direction and direction (the

@@ -56,6 +56,7 @@ module vibrobeam_flow
       real(dp) :: diameter = 0                      !! d (m; 0: not given)
       real(dp) :: mass_per_length = 0               !! m = rho S (kg/m)
       real(dp) :: fluid_density = 0                 !! rho (kg/m^3)
+      real(dp) :: connors_constant = 0              !! K
       real(dp), allocatable :: omega(:)             !! (count) omega_n (rad/s)
       real(dp), allocatable :: zeta(:)              !! (count) structural damping ratios
       real(dp), allocatable :: span_share(:)        !! (count) J_n
@@ -71,6 +72,7 @@ module vibrobeam_flow
    contains
       procedure :: add_force
       procedure :: take_z_plane
+      procedure :: take_modal_rates
       procedure :: project
       procedure :: report
       procedure :: unbounded_warning
@@ -160,6 +162,7 @@ contains
       force%count = min(settings%modes, model%unknowns)
       force%velocity = settings%velocity
       force%fluid_density = settings%density
+      force%connors_constant = settings%connors_constant
       force%mass_per_length = model%rho_s
       force%diameter = 0
       if (.not. is_unset(settings%diameter)) force%diameter = settings%diameter
@@ -185,8 +188,8 @@ contains
                                span_integral(vectors(:, n), 0.0_dp, model%length)
          force%fluid_zeta(n) = settings%density*settings%velocity**2*force%span_share(n)/ &
                                (2*pi*settings%connors_constant**2*model%rho_s*f**2)
-         force%critical(n) = settings%connors_constant*f*sqrt(2*pi*force%zeta(n)*model%rho_s/ &
-                                                              (settings%density*force%span_share(n)))
+         force%critical(n) = critical_velocity(settings%connors_constant, omega(n), force%zeta(n), model%rho_s, &
+                                               settings%density, force%span_share(n))
          force%gain(n) = 2*force%fluid_zeta(n)*omega(n)/modal_mass
       end do
    contains
@@ -243,6 +246,40 @@ contains
          call dgemv('T', m, n, 1.0_dp, rows, m, c, 1, 1.0_dp, f, 1)
       end subroutine add_plane
    end subroutine add_force
+
+   !> Connors' critical velocity U_c = K f sqrt(2 pi zeta m/(rho J)) of a mode of angular
+   !! frequency omega (f = omega/(2 pi)), structural damping ratio zeta, span share J, on a
+   !! beam of mass per length m in a fluid of density rho (module documentation).
+   elemental real(dp) function critical_velocity(connors, omega, zeta, mass_per_length, fluid_density, share)
+      real(dp), intent(in) :: connors, omega, zeta, mass_per_length, fluid_density, share
+      critical_velocity = connors*(omega/(2*pi))*sqrt(2*pi*zeta*mass_per_length/(fluid_density*share))
+   end function critical_velocity
+
+   !> The damping per mode of &beam (`vibrobeam_modal_damping`): `rates` c_k (1/s) beyond
+   !! the Rayleigh damping of the first modes of the y plane (and `rates_z` of a z plane
+   !! with a stiffness of its own), the same modes as this force's, raise those modes'
+   !! structural damping ratio by c_k/(2 omega_k), to the ratio given, and with it their
+   !! critical velocity: what --check lists and the unbounded-motion warning compares. The
+   !! force itself does not depend on zeta.
+   subroutine take_modal_rates(self, rates, rates_z)
+      class(fluid_elastic), intent(inout) :: self
+      real(dp), intent(in) :: rates(:), rates_z(:)
+      if (.not. self%active) return
+      call raise(self%omega, self%zeta, self%span_share, self%critical, rates)
+      if (self%own_z) call raise(self%omega_z, self%zeta_z, self%span_share_z, self%critical_z, rates_z)
+   contains
+      subroutine raise(omega, zeta, share, critical, c)
+         real(dp), intent(in) :: omega(:), share(:), c(:)
+         real(dp), intent(inout) :: zeta(:), critical(:)
+         integer :: n
+         do n = 1, min(size(omega), size(c))
+            if (.not. omega(n) > 0) cycle
+            zeta(n) = zeta(n) + c(n)/(2*omega(n))
+            critical(n) = critical_velocity(self%connors_constant, omega(n), zeta(n), self%mass_per_length, &
+                                            self%fluid_density, share(n))
+         end do
+      end subroutine raise
+   end subroutine take_modal_rates
 
    !> The z plane of a beam of two planes with a stiffness of its own: `z`, the force built
    !! on that plane's model (`build_flow`), becomes this force's z part.
