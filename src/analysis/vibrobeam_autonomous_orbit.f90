@@ -102,7 +102,7 @@ contains
       ! (allocated first: gfortran's -Wmaybe-uninitialized does not follow a function
       ! result's reallocation)
       allocate (weights(m))
-      weights = diagonal_weights()
+      weights = orbit%map%weights(prepared)
       do
          call evaluate(orbit%x, period, monodromy, orbit%image)
          if (stat /= 0 .or. .not. usable(orbit%image)) return
@@ -223,19 +223,6 @@ contains
          local%time%dt = at/orbit%map%steps
          call orbit%map%evaluate(local, prepared, x, jacobian, image, stat, errmsg)
       end subroutine evaluate
-
-      !> Of each unknown the square root of its diagonal weight in the energy norm (K +
-      !! omega^2 M for U, M for V).
-      function diagonal_weights() result(w)
-         real(dp) :: w(2*orbit%map%unknowns)
-         integer :: k
-         associate (model => prepared%system%model, omega => orbit%map%omega)
-            do k = 1, n
-               w(k) = sqrt(model%stiffness%lower(1, k) + omega**2*model%mass%lower(1, k))
-               w(n + k) = sqrt(model%mass%lower(1, k))
-            end do
-         end associate
-      end function diagonal_weights
 
       !> The evaluation ran to its end; otherwise its status and reason become the orbit's.
       logical function usable(image)

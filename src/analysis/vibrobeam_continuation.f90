@@ -127,10 +127,7 @@ contains
       ! lambda relative to the parameter's range (or the larger of its start and the step)
       m = size(orbit%x)
       allocate (run%weights(m + 1))
-      associate (model => prepared%system%model)
-         run%weights(1:m/2) = sqrt(model%stiffness%lower(1, :) + run%map%omega**2*model%mass%lower(1, :))
-         run%weights(m/2 + 1:m) = sqrt(model%mass%lower(1, :))
-      end associate
+      run%weights(1:m) = run%map%weights(prepared)
       lambda_scale = max(abs(start), abs(scene%periodic%step))
       if (.not. (is_unset(scene%periodic%parameter_min) .or. is_unset(scene%periodic%parameter_max))) then
          if (scene%periodic%parameter_max > scene%periodic%parameter_min) &

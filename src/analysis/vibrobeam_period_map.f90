@@ -40,6 +40,7 @@ module vibrobeam_period_map
    contains
       procedure :: evaluate
       procedure :: norm => state_norm
+      procedure :: weights => diagonal_weights
    end type period_map
 
    !> Phi(x) and what came with it.
@@ -219,15 +220,21 @@ contains
       type(run_problem), intent(in) :: prepared
       real(dp), intent(in) :: x(:), image(:)
       real(dp) :: h(size(x)), scale
-      integer :: n, j
-      n = self%unknowns
       scale = max(self%norm(prepared, x), self%norm(prepared, image))
       if (scale <= 0) scale = 1
-      associate (model => prepared%system%model)
-         do j = 1, n
-            h(j) = difference_fraction*scale/sqrt(model%stiffness%lower(1, j) + self%omega**2*model%mass%lower(1, j))
-            h(n + j) = difference_fraction*scale/sqrt(model%mass%lower(1, j))
-         end do
-      end associate
+      h = difference_fraction*scale/self%weights(prepared)
    end function difference_step
+
+   !> Of each unknown of x = (U, V) the square root of its diagonal weight in the energy
+   !! norm at the map's frequency (K + omega^2 M for U, M for V): the scale of a difference
+   !! step, of the continuation's coordinates and of the autonomous orbit's system.
+   function diagonal_weights(self, prepared) result(w)
+      class(period_map), intent(in) :: self
+      type(run_problem), intent(in) :: prepared
+      real(dp) :: w(2*self%unknowns)
+      associate (model => prepared%system%model, n => self%unknowns)
+         w(1:n) = sqrt(model%stiffness%lower(1, 1:n) + self%omega**2*model%mass%lower(1, 1:n))
+         w(n + 1:2*n) = sqrt(model%mass%lower(1, 1:n))
+      end associate
+   end function diagonal_weights
 end module vibrobeam_period_map
