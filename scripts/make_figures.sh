@@ -9,9 +9,11 @@
 #   frequency_gap_map_map.png           the 2-D map as colour, on the same axis
 #   rattling_poincare_poincare.png      Poincare section of one run (rattling_poincare.nml)
 #   random_rattling_forces_psd.png      target and measured density of random_rattling.nml's load
+#   compliant_stop_branches_branches.png  three response curves continued through their folds,
+#                                       the branches of a sweep of periodic analyses
 # usage: bash scripts/make_figures.sh [BUILD_DIR]
 #   BUILD_DIR: where vibrobeam is built (Release, default build/ of this repository);
-#   about 1 minute of two cores, most of it the three sweeps.
+#   about 2 minutes of two cores, most of it the four sweeps.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 tree=${1:-$root/build}
@@ -36,9 +38,12 @@ run rattling_poincare
 bash scripts/plot_results.sh results/rattling_poincare.h5
 run random_rattling
 bash scripts/plot_results.sh results/random_rattling.h5
+run compliant_stop_branches
+bash scripts/plot_sweep.sh results/compliant_stop_branches.h5
 
 figures="tube_frequency_sweep_response rattling_bifurcation_bifurcation frequency_gap_map_response
-         frequency_gap_map_map rattling_poincare_poincare random_rattling_forces_psd"
+         frequency_gap_map_map rattling_poincare_poincare random_rattling_forces_psd
+         compliant_stop_branches_branches"
 for figure in $figures; do
   cp "results/$figure.png" "docs/figures/$figure.png"
 done

@@ -4,7 +4,10 @@
 # with, below it, the period, the 0-1 test and the Lyapunov exponent of each point's
 # Poincare samples (STEM_chaos.png), for a sweep with two parameters the map
 # (STEM_map.png) and, for a beam of two planes with obstacles, the wear at each of their
-# points against the parameter (STEM_wear.png).
+# points against the parameter (STEM_wear.png); for a sweep of periodic analyses
+# (&analysis kind = 'periodic') the branches of its points (STEM_branches.png,
+# plot_sweep_branches.gp) or, without continuation, its orbits' period and largest Floquet
+# multiplier (STEM_orbits.png, plot_sweep_orbits.gp).
 # usage: plot_sweep.sh SWEEP.h5 [--normalise [REFERENCE]]
 #   --normalise            the parameter axis over the first natural frequency of the
 #                          clamped-free beam (continuum closed form, docs/theory.md section 7,
@@ -40,6 +43,46 @@ grep -q ' /sweep/parameter$' <<< "$listing" || {
   echo "plot_sweep: $result is not a sweep file (no /sweep/parameter); for a run use plot_results.sh" >&2; exit 1; }
 
 run_id=$(h5dump -a /run/run_id "$result" 2> /dev/null | sed -n 's/.*(0): *"\([^"]*\)".*/\1/p')
+vibrobeam=${VIBROBEAM:-$(command -v vibrobeam || echo "$here/../build/vibrobeam")}
+derive() {  # derive RESULT.h5: its text files, with vibrobeam --text
+  [ -x "$vibrobeam" ] || { echo "plot_sweep: the .dat files of $1 are missing or stale and no vibrobeam" \
+                                "program was found to derive them (set VIBROBEAM)" >&2; exit 1; }
+  echo "plot_sweep: deriving the text files of $1"
+  "$vibrobeam" --text "$1"
+}
+# a sweep of periodic analyses (docs/sweeps.md, "Sweeps of periodic orbits and branches"):
+# the branches of its point files on one plot; without continuation, the orbits' period
+# and largest multiplier against the parameter
+if grep -q ' /sweep/statistics/periodic$' <<< "$listing"; then
+  file="${stem}_sweep.dat"
+  if [ ! -f "$file" ] || ! head -1 "$file" | grep -q -F "# vibrobeam run $run_id "; then derive "$result"; fi
+  points=""; titles=""; found=""; count=0
+  unit=$(h5dump -a /sweep/parameter/unit "$result" 2> /dev/null | sed -n 's/.*(0): *"\([^"]*\)".*/\1/p')
+  while read -r k value; do
+    point=$(printf '%s_point%04d' "$stem" "$k")
+    [ -f "$point.h5" ] || continue
+    if h5dump -n "$point.h5" 2> /dev/null | grep -q ' /periodic/branch/parameter$'; then
+      id=$(h5dump -a /run/run_id "$point.h5" 2> /dev/null | sed -n 's/.*(0): *"\([^"]*\)".*/\1/p')
+      if [ ! -f "${point}_branch.dat" ] || ! head -1 "${point}_branch.dat" | grep -q -F "# vibrobeam run $id "; then
+        derive "$point.h5" > /dev/null
+      fi
+      points="$points $point"; titles="$titles|$value $unit"; count=$((count + 1))
+      # (a file without rows would make gnuplot warn)
+      if awk '!/^#/ && NF {n++} END {exit !(n > 0)}' "${point}_bifurcations.dat" 2> /dev/null; then
+        found="$found $count"
+      fi
+    fi
+  done < <(awk '!/^#/ && NF {printf "%d %.6g\n", $1, $4}' "$file")
+  if [ -n "$points" ]; then
+    gnuplot -e "stem='${stem}'; points='${points# }'; titles='${titles#|}'; found='${found# }'" \
+            "$here/plot_sweep_branches.gp"
+    echo "plot_sweep: drew ${stem}_branches.png"
+  else
+    gnuplot -e "stem='${stem}'" "$here/plot_sweep_orbits.gp"
+    echo "plot_sweep: drew ${stem}_orbits.png"
+  fi
+  exit 0
+fi
 stale=0
 # a beam of two planes with obstacles: STEM_wear.dat too
 wear=""; if grep -q ' /sweep/statistics/wear/x$' <<< "$listing"; then wear=wear; fi
@@ -47,13 +90,7 @@ for kind in sweep poincare $wear; do
   file="${stem}_${kind}.dat"
   if [ ! -f "$file" ] || ! head -1 "$file" | grep -q -F "# vibrobeam run $run_id "; then stale=1; fi
 done
-if [ "$stale" = 1 ]; then
-  vibrobeam=${VIBROBEAM:-$(command -v vibrobeam || echo "$here/../build/vibrobeam")}
-  [ -x "$vibrobeam" ] || { echo "plot_sweep: the .dat files of $result are missing or stale and no vibrobeam" \
-                                "program was found to derive them (set VIBROBEAM)" >&2; exit 1; }
-  echo "plot_sweep: deriving the text files of $result"
-  "$vibrobeam" --text "$result"
-fi
+if [ "$stale" = 1 ]; then derive "$result"; fi
 
 # attribute NAME of OBJECT in the sweep file, as text (numbers to 17 digits)
 attribute() { h5dump -m '%.17g' -a "$1/$2" "$result" 2> /dev/null | sed -n 's/.*(0): *"*\([^"]*\)"*$/\1/p' | head -1; }

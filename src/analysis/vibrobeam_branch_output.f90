@@ -67,6 +67,12 @@ contains
       outcome%steps = branch%steps_taken
       outcome%branch_points = size(branch%points)
       outcome%bifurcations = size(branch%bifurcations)
+      if (size(branch%points) > 0) then   ! its first orbit's, as a single orbit's run says
+         outcome%period = branch%points(1)%period
+         outcome%newton_iterations = branch%first_iterations
+         if (size(branch%points(1)%multipliers, 2) > 0) outcome%largest_multiplier = &
+            hypot(branch%points(1)%multipliers(1, 1), branch%points(1)%multipliers(2, 1))
+      end if
    end subroutine run_continuation
 
    !> /periodic/branch_2 (docs/output.md, "Continued branch"): the branch of twice the
@@ -95,6 +101,8 @@ contains
       call files%h5%attr_string('/periodic', 'monodromy', trim(branch%monodromy), stat, errmsg)
       if (stat == 0) call files%h5%attr_int64('/periodic', 'steps_taken', branch%steps_taken, stat, errmsg)
       if (stat == 0) call files%h5%attr_int64('/periodic', 'orbit_steps', branch%orbit_steps, stat, errmsg)
+      if (stat == 0) call files%h5%attr_int('/periodic', 'first_newton_iterations', branch%first_iterations, stat, &
+                                            errmsg)
       if (stat == 0 .and. len_trim(branch%failure) > 0) &
          call files%h5%attr_string('/periodic', 'failure', trim(branch%failure), stat, errmsg)
    end subroutine write_cost

@@ -107,6 +107,7 @@ module vibrobeam_result_files
       real(dp), allocatable :: omega(:)        !! kind = 'modes': the natural frequencies written (rad/s)
       integer :: in_contact = 0                !! kind = 'static': contact points in contact
       real(dp) :: position_bound = 0           !! kind = 'static': bound of the displacements' round-off (m)
+      ! kind = 'periodic': of the orbit (of a continuation: of its branch's first orbit, no residual)
       integer :: newton_iterations = 0         !! kind = 'periodic': Newton iterations taken
       real(dp) :: residual = 0                 !! kind = 'periodic': relative residual of the last iterate
       real(dp) :: period = 0                   !! kind = 'periodic': the orbit's period (s)

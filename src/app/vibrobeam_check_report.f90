@@ -173,7 +173,8 @@ contains
          text = text//new_line('a')
       end do
       if (scene%analysis%kind == 'periodic') then
-         text = text//periodic_text(scene)//size_line()
+         text = text//periodic_text(scene)
+         if (single_run) text = text//size_line()
          return
       end if
       if (.not. single_run) return

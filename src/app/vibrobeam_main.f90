@@ -18,9 +18,7 @@ program vibrobeam_main
    use vibrobeam_check_report, only: check_report, make_check_report, check_report_text, scene_warnings
    use vibrobeam_modal_analysis, only: run_modal, frequencies_text
    use vibrobeam_static_analysis, only: run_equilibrium
-   use vibrobeam_periodic_analysis, only: run_periodic
-   use vibrobeam_autonomous_orbit, only: run_autonomous
-   use vibrobeam_branch_output, only: run_continuation
+   use vibrobeam_periodic_run, only: run_periodic_kind
    use vibrobeam_continuation_axis, only: resolve_continuation, continues
    use vibrobeam_sweep_axis, only: sweep_axis
    use vibrobeam_problem, only: run_problem, build_problem
@@ -299,16 +297,12 @@ contains
    subroutine run_periodic_scene()
       type(run_outcome) :: outcome
       character(len=:), allocatable :: orbit_kind, method
+      call run_periodic_kind(scene, prepared, outcome, stat, errmsg)
+      if (stat /= 0) call fail(exit_other_error, errmsg)
       if (continues(scene)) then
-         call run_continuation_scene()
+         call report_continuation(outcome)
          return
       end if
-      if (scene%periodic%autonomous) then
-         call run_autonomous(scene, prepared, outcome, stat, errmsg)
-      else
-         call run_periodic(scene, prepared, outcome, stat, errmsg)
-      end if
-      if (stat /= 0) call fail(exit_other_error, errmsg)
       select case (outcome%status)
       case (outcome_failed)
          write (error_unit, '(a)') 'vibrobeam: periodic orbit not found: '//trim(outcome%failure)
@@ -346,14 +340,12 @@ contains
       if (stat /= 0) call fail(exit_invalid_input, errmsg)
    end subroutine check_continuation
 
-   !> A continuation of periodic orbits (docs/method.md, "Continuation of periodic
+   !> What a continuation of periodic orbits did (docs/method.md, "Continuation of periodic
    !! orbits"). A branch that ends early (its first orbit not found, the corrector failing
    !! at the smallest step) publishes its points marked 'failed' with the reason in
    !! /periodic failure and exits with status 3.
-   subroutine run_continuation_scene()
-      type(run_outcome) :: outcome
-      call run_continuation(scene, prepared, outcome, stat, errmsg)
-      if (stat /= 0) call fail(exit_other_error, errmsg)
+   subroutine report_continuation(outcome)
+      type(run_outcome), intent(in) :: outcome
       select case (outcome%status)
       case (outcome_failed)
          write (error_unit, '(a)') 'vibrobeam: continuation ended early: '//trim(outcome%failure)
@@ -373,7 +365,7 @@ contains
          fixed_text(outcome%wall_seconds, 2)//' s; written to '//trim(scene%output%file)
       call stop_if_interrupted(outcome%text_skipped)
       call finish(exit_ok)
-   end subroutine run_continuation_scene
+   end subroutine report_continuation
 
    subroutine run_dynamics_scene()
       type(run_outcome) :: outcome

@@ -30,7 +30,7 @@ module vibrobeam_result_estimate
    use vibrobeam_welch, only: welch_segment
    use vibrobeam_recorder, only: history_paths
    use vibrobeam_statistics, only: window_first_step
-   use vibrobeam_statistics_layout, only: statistics_layout
+   use vibrobeam_statistics_layout, only: statistics_layout, periodic_names
    use vibrobeam_poincare, only: kept_samples
    use vibrobeam_sweep_journal, only: record_length, message_words
    use vibrobeam_sweep_runner, only: chunk_rows
@@ -62,6 +62,9 @@ module vibrobeam_result_estimate
    real(dp), parameter :: wide = 24, narrow = 16
    !> Columns of STEM_sweep.dat and of a sweep's STEM_poincare.dat.
    integer, parameter :: sweep_columns = 54, sweep_poincare_columns = 7
+   !> Columns of STEM_sweep.dat of a sweep of periodic analyses (point, line, direction, the
+   !! two parameters, status, the 'periodic' statistics, wall time).
+   integer, parameter :: orbit_sweep_columns = 7 + size(periodic_names)
 
    !> What a run will write (docs/output.md).
    type :: result_size
@@ -245,9 +248,23 @@ contains
       character(len=256) :: errmsg
       observations = 1
       if (allocated(scene%output%points)) observations = 1 + size(scene%output%points)
-      call layout%init(observations, contact_points, size(scene%obstacles), planes=scene%beam%plane_count())
+      if (scene%analysis%kind == 'periodic') then
+         call layout%init_periodic()
+      else
+         call layout%init(observations, contact_points, size(scene%obstacles), planes=scene%beam%plane_count())
+      end if
       do k = 1, size(points)
          local = point_scene(scene, settings, points(k))
+         if (local%analysis%kind == 'periodic') then
+            ! its numbers in the sweep file, its record in the journal, its row, its file
+            estimate%sweep_bytes = estimate%sweep_bytes + 8*(8 + layout%size)
+            estimate%journal_bytes = estimate%journal_bytes + 8*record_length(layout%size) + 4*(message_words + 1)
+            if (scene%output%text) estimate%text_bytes = estimate%text_bytes + orbit_sweep_columns*wide + 1
+            local%output%text = .false.
+            run = estimate_result_size(local, contact_points)
+            estimate%point_bytes = estimate%point_bytes + run%hdf5_bytes
+            cycle
+         end if
          call point_windows(settings, local, settle_steps, measure_steps, stat, errmsg)
          if (stat /= 0) cycle
          kept = 0

@@ -237,12 +237,16 @@ contains
       write (unit, '(a)') line//', mode '''//trim(settings%mode)//''': '//integer_text(size(points))//' points in '// &
          integer_text(task_count(points))//' tasks'
       call write_point_table(unit, scene, settings, points, total_steps, least_steps)
-      if (settings%steady_tolerance > 0) then
+      if (scene%analysis%kind == 'periodic') then
+         write (unit, '(a)') 'each point: the periodic analysis of its scene (above), exactly as a single run of '// &
+            'that scene; its cost is that run''s (not estimated here); its result is its point file'
+      else if (settings%steady_tolerance > 0) then
          write (unit, '(a)') 'steady state: after settle, windows of measure until the RMS tip displacement and the '// &
             'impact rate of two consecutive windows agree within '//real_text(settings%steady_tolerance)// &
             ', at most '//integer_text(max_settle_windows)//' windows'
       end if
-      call write_cost(unit, scene, settings, points, total_steps, least_steps, threads, ranks)
+      if (scene%analysis%kind /= 'periodic') &
+         call write_cost(unit, scene, settings, points, total_steps, least_steps, threads, ranks)
       call write_result_size(unit, scene, settings, points, contact_points)
       call write_parallel(unit, settings, points, threads, ranks)
       if (settings%keep_runs) write (unit, '(a)') 'keep_runs: every point''s result is also written, as '// &
@@ -253,7 +257,8 @@ contains
          write (unit, '(a)') 'partial directory: none; a run streams its points into '''// &
             partial_directory(trim(scene%output%file))//''' (rerunning this input after a kill goes on from there)'
       end if
-      write (unit, '(a)', advance='no') resolution_advice(scene, settings)
+      ! (the advice is about the statistics of time marching)
+      if (scene%analysis%kind /= 'periodic') write (unit, '(a)', advance='no') resolution_advice(scene, settings)
    end subroutine write_sweep_check
 
    !> The points in the order they run, one line each: line, direction, start, values
@@ -275,14 +280,18 @@ contains
       integer(int64) :: settle_shown, measure_shown   ! bits of the windows whose text is made
       line = '  point  line  direction  start      '//pad(settings%axis(1)%parameter, 22)
       if (len_trim(settings%axis(2)%parameter) > 0) line = line//pad(settings%axis(2)%parameter, 22)
-      write (unit, '(a)') line//'  settle (s)    measure (s)'
+      if (scene%analysis%kind /= 'periodic') line = line//'  settle (s)    measure (s)'
+      write (unit, '(a)') trim(line)
       total_steps = 0
       least_steps = 0
       settle_shown = transfer(-1.0_dp, 1_int64)
       measure_shown = settle_shown
       do k = 1, size(points)
          local = point_scene(scene, settings, points(k))
-         call point_windows(settings, local, settle_steps, measure_steps, stat, errmsg)
+         settle_steps = 0
+         measure_steps = 0
+         if (local%analysis%kind /= 'periodic') &
+            call point_windows(settings, local, settle_steps, measure_steps, stat, errmsg)
          total_steps = total_steps + settle_steps + measure_steps
          least_steps = least_steps + settle_steps + measure_steps
          if (settings%steady_tolerance > 0) then
@@ -312,7 +321,11 @@ contains
             measure_shown = transfer(measure_steps*local%time%dt, 1_int64)
             measure_text = real_text(measure_steps*local%time%dt)
          end if
-         write (unit, '(a)') line//settle_text//measure_text
+         if (local%analysis%kind == 'periodic') then
+            write (unit, '(a)') trim(line)
+         else
+            write (unit, '(a)') line//settle_text//measure_text
+         end if
       end do
    end subroutine write_point_table
 

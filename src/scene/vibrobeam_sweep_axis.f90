@@ -170,7 +170,8 @@ contains
       end select
       if (axis%group == 'periodic') then
          errmsg = label//' belongs to &periodic, the settings of the periodic analysis itself, which neither a '// &
-                  'sweep (its points are dynamics runs) nor a continuation (its points are orbits of the scene) varies'
+                  'sweep (its points run the analysis these settings describe) nor a continuation (its points are orbits '// &
+                  'of the scene) varies'
          return
       end if
       if (variable%extent > 0 .and. .not. element_given) then

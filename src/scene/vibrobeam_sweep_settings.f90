@@ -1,7 +1,8 @@
 !> A parameter sweep resolved against its scene (&sweep, docs/sweeps.md): `resolve_sweep`
 !! checks the settings as given, resolves the parameters and their values
 !! (`vibrobeam_sweep_axis`) and checks every point: its scene must be valid, hold as many
-!! contact points as the first, and its windows at least one step. The points, their
+!! contact points as the first, and its windows at least one step (a sweep of periodic
+!! orbits or branches, &analysis kind = 'periodic': `periodic_rules`). The points, their
 !! order and each point's scene and windows are `vibrobeam_sweep_points`'; the settings
 !! and points are taken from here by the modules that run a sweep.
 module vibrobeam_sweep_settings
@@ -16,6 +17,7 @@ module vibrobeam_sweep_settings
    use vibrobeam_circle_set, only: circle_set
    use vibrobeam_obstacles, only: build_contact_points, build_circle_points
    use vibrobeam_sweep_axis, only: sweep_axis, resolve_axis
+   use vibrobeam_continuation_axis, only: resolve_continuation, continues
    use vibrobeam_sweep_points, only: sweep_settings, sweep_point, sweep_points, point_scene, point_windows, &
       point_label, max_settle_windows, max_sweep_points, task_count
    implicit none
@@ -38,16 +40,23 @@ contains
       character(len=*), intent(out) :: errmsg
       stat = 0
       errmsg = ''
-      if (scene%analysis%kind /= 'dynamics') then
+      if (scene%analysis%kind /= 'dynamics' .and. scene%analysis%kind /= 'periodic') then
          stat = stat_failure
-         errmsg = '&sweep needs &analysis kind = ''dynamics'' (kind = '''//trim(scene%analysis%kind)//''')'
+         errmsg = '&sweep needs &analysis kind = ''dynamics'' or ''periodic'' (kind = '''// &
+                  trim(scene%analysis%kind)//''')'
          return
       end if
       call check_keyword('mode', settings%mode, stat, errmsg)
       if (stat == 0) call check_keyword('spacing', settings%axis(1)%spacing, stat, errmsg)
       if (stat == 0) call check_keyword('spacing2', settings%axis(2)%spacing, stat, errmsg)
       if (stat == 0) call resolve_axes(settings, scene, stat, errmsg)
-      if (stat == 0) call check_rules(settings, scene, stat, errmsg)
+      if (stat == 0) then
+         if (scene%analysis%kind == 'periodic') then
+            call periodic_rules(settings, scene, stat, errmsg)
+         else
+            call check_rules(settings, scene, stat, errmsg)
+         end if
+      end if
       if (stat == 0) call check_count(settings, stat, errmsg)
       if (stat == 0) call check_points(settings, scene, stat, errmsg)
    end subroutine resolve_sweep
@@ -129,6 +138,63 @@ contains
       end if
    end subroutine check_rules
 
+   !> A sweep of &analysis kind = 'periodic' (docs/sweeps.md, "Sweeps of periodic orbits
+   !! and branches"): each point is the periodic analysis its scene asks for (an orbit,
+   !! an autonomous orbit or a continued branch), run as a single run would run it, its
+   !! result its own file. So: mode = 'independent' (a point starts from its scene's
+   !! start, not from another point's state), keep_runs = .true. (the point files are
+   !! the result), no time-marching window (settle, measure, their periods,
+   !! steady_tolerance), poincare_samples = 'latest' (there are none), and a parameter
+   !! other than the continuation's own.
+   subroutine periodic_rules(settings, scene, stat, errmsg)
+      type(sweep_settings), intent(in) :: settings
+      type(scene_type), intent(in) :: scene
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      character(len=*), parameter :: kind = ' with &analysis kind = ''periodic'': '
+      type(sweep_axis) :: continued
+      real(dp) :: start
+      integer :: a
+      stat = stat_failure
+      if (settings%mode /= 'independent') then
+         errmsg = '&sweep mode = '''//trim(settings%mode)//''' is not available'//kind//'each point''s orbit '// &
+                  'or branch starts from its own scene; use mode = ''independent'' (to follow an orbit in a '// &
+                  'parameter, continue it: &periodic parameter)'
+      else if (.not. settings%keep_runs) then
+         errmsg = '&sweep keep_runs = .false. is not available'//kind//'each point''s orbit or branch is its '// &
+                  'own result file; give keep_runs = .true.'
+      else if (settings%settle > 0 .or. settings%measure > 0 .or. settings%settle_periods > 0 .or. &
+               settings%measure_periods > 0) then
+         errmsg = '&sweep settle = '//real_text(settings%settle)//' s, measure = '//real_text(settings%measure)// &
+                  ' s, settle_periods = '//real_text(settings%settle_periods)//', measure_periods = '// &
+                  real_text(settings%measure_periods)//': time-marching windows are not available'//kind// &
+                  'give none (the transient before Newton''s start is &periodic''s)'
+      else if (settings%steady_tolerance > 0) then
+         errmsg = '&sweep steady_tolerance = '//real_text(settings%steady_tolerance)//' is not available'//kind// &
+                  'give 0 (the default)'
+      else if (settings%poincare_samples /= 'latest') then
+         errmsg = '&sweep poincare_samples = '''//trim(settings%poincare_samples)//''' is not available'//kind// &
+                  'a periodic analysis has no Poincare samples; give ''latest'' (the default)'
+      else
+         stat = 0
+         errmsg = ''
+         if (.not. continues(scene)) return
+         call resolve_continuation(scene, continued, start, stat, errmsg)
+         if (stat /= 0) return
+         do a = 1, 2
+            if (len_trim(settings%axis(a)%parameter) == 0) cycle
+            if (settings%axis(a)%group == continued%group .and. settings%axis(a)%name == continued%name .and. &
+                settings%axis(a)%index == continued%index) then
+               stat = stat_failure
+               errmsg = '&sweep parameter'//trim(merge('  ', '2 ', a == 1))//' = '''// &
+                        trim(settings%axis(a)%parameter)//''' is the continuation''s own parameter (&periodic '// &
+                        'parameter): sweep another input (each point is a branch in &periodic parameter)'
+            end if
+         end do
+      end if
+   end subroutine periodic_rules
+
+
    !> At most max_sweep_points points (counted in 64 bits: 65536 x 65536 values make 2^32).
    subroutine check_count(settings, stat, errmsg)
       type(sweep_settings), intent(in) :: settings
@@ -164,6 +230,8 @@ contains
       type(contact_set) :: contacts
       character(len=:), allocatable :: warnings
       integer(int64) :: settle_steps, measure_steps
+      type(sweep_axis) :: axis
+      real(dp) :: start
       type(circle_set) :: circles
       integer :: k, contact_count, point_count
       logical :: same_model, same_contacts
@@ -177,7 +245,9 @@ contains
       do k = 1, size(points)
          trial = point_scene(scene, settings, points(k))
          call validate_scene(trial, stat, errmsg)
-         if (stat == 0) call point_windows(settings, trial, settle_steps, measure_steps, stat, errmsg)
+         if (stat == 0 .and. trial%analysis%kind /= 'periodic') &
+            call point_windows(settings, trial, settle_steps, measure_steps, stat, errmsg)
+         if (stat == 0 .and. continues(trial)) call resolve_continuation(trial, axis, start, stat, errmsg)
          if (stat == 0 .and. (k == 1 .or. .not. same_model)) &
             call build_model(trial%mesh%basis, trial%mesh%elements, trial%beam%length, trial%beam%rho_s(), &
                              trial%beam%ei(), model, stat, errmsg, structure=structure_of(trial))

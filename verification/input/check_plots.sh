@@ -17,7 +17,9 @@
 #    moduli's panel from the smallest to 10 times max(1, the largest);
 #  - a continued branch (verification/periodic/continuation_grazing.nml): plot_branch.gp
 #    draws the branch and its multipliers in the complex plane without a warning, the
-#    plane's axes reaching past the largest modulus of STEM_branch_multipliers.dat.
+#    plane's axes reaching past the largest modulus of STEM_branch_multipliers.dat;
+#  - a sweep of branches and one of single orbits (verification/periodic/continuation_sweep.nml):
+#    plot_sweep.sh draws STEM_branches.png and STEM_orbits.png without a warning.
 # usage: check_plots.sh VIBROBEAM SCRIPTS_DIRECTORY
 set -uo pipefail
 vibrobeam=$1; scripts=$2
@@ -173,6 +175,21 @@ awk -v reach="$reach" '!/^#/ && NF { if ($4 > high) high = $4; n++ }
   END { printf "multipliers plane: axes to %s, %d multipliers, the largest modulus %.3g\n", reach, n, high
         exit !(n > 0 && reach + 0 > high && reach + 0 >= 1) }' branch_branch_multipliers.dat ||
   fail "the complex plane of the branch's multipliers does not reach the largest ($reach)"
+
+# a sweep of branches (three forcing levels) and a sweep of single orbits: plot_sweep.sh
+# derives each point file's text files and draws the branches on one plot, or the orbits'
+# periods and multipliers, without a warning
+sed "s/file = 'continuation_sweep.h5'/file = 'branches.h5'/" "$periodic_scenes/continuation_sweep.nml" > branches.nml
+sed -e "s/file = 'continuation_sweep.h5'/file = 'orbits.h5'/" -e "s/parameter = 'load.point_frequency',//" \
+    "$periodic_scenes/continuation_sweep.nml" > orbits.nml
+for sweep in branches orbits; do
+  "$vibrobeam" $sweep.nml > $sweep.out 2> $sweep.err || { fail "vibrobeam $sweep.nml (a periodic sweep)"; cat $sweep.err; }
+  VIBROBEAM=$vibrobeam bash "$scripts/plot_sweep.sh" $sweep.h5 > ${sweep}_plot.out 2> ${sweep}_plot.err ||
+    fail "plot_sweep.sh $sweep.h5"
+  quiet ${sweep}_plot.err || fail "plot_sweep.sh $sweep.h5 printed a warning"
+  [ "$(stat -c %s ${sweep}_$sweep.png 2> /dev/null || echo 0)" -gt 10000 ] || fail "${sweep}_$sweep.png not drawn"
+done
+ls branches_point000[123]_branch.dat > /dev/null 2>&1 || fail "plot_sweep.sh did not derive the point files' branches"
 
 [ $failed -eq 0 ] && echo "check_plots: every plot drawn and checked"
 exit $failed

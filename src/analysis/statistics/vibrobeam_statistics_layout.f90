@@ -13,6 +13,7 @@
 !! rate where a wear_coefficient is given) and the energy's 'power_friction' (with
 !! friction). Every statistic has a standard error beside it (`<name>_error`) except the
 !! spectrum's and the 'poincare' group's, where only the Lyapunov exponent has one.
+!! A sweep of periodic analyses has the one group 'periodic' instead (`init_periodic`).
 !! A beam of two planes has the 'points' statistics in y and z: 2 values per point, the
 !! plane fastest (`layers` = 2: (1 + points, 2) as h5py shows it), the planar y values
 !! of point p at offset + 2 (p - 1) + 1; and the 'spectrum' peaks likewise, (peaks, 2).
@@ -21,13 +22,20 @@ module vibrobeam_statistics_layout
    private
    public :: statistics_layout, statistic_entry, peak_count
    public :: group_points, group_contacts, group_obstacles, group_beam, group_energy, group_spectrum, group_poincare
-   public :: group_wear, wear_quantities, wear_names, wear_units
+   public :: group_wear, group_periodic, wear_quantities, wear_names, wear_units, periodic_names
 
    integer, parameter :: peak_count = 3   !! dominant response frequencies reported
    integer, parameter :: group_points = 1, group_contacts = 2, group_obstacles = 3, group_beam = 4, &
-                         group_energy = 5, group_spectrum = 6, group_poincare = 7, group_wear = 8
-   character(len=*), parameter :: group_names(8) = [character(len=9) :: 'points', 'contacts', 'obstacles', &
-                                                    'beam', 'energy', 'spectrum', 'poincare', 'wear']
+                         group_energy = 5, group_spectrum = 6, group_poincare = 7, group_wear = 8, group_periodic = 9
+   character(len=*), parameter :: group_names(9) = [character(len=9) :: 'points', 'contacts', 'obstacles', &
+                                                    'beam', 'energy', 'spectrum', 'poincare', 'wear', 'periodic']
+   !> What a sweep of periodic analyses keeps of each point (`init_periodic`; docs/output.md,
+   !! "Sweep file"): of its orbit, or of its branch's first orbit, the period, the largest
+   !! modulus of its Floquet multipliers and the Newton iterations; the points and the
+   !! bifurcations of its branch (0 without a continuation); the time steps it took.
+   character(len=*), parameter :: periodic_names(6) = [character(len=32) :: 'period', 'largest_multiplier', &
+      'newton_iterations', 'branch_points', 'bifurcations', 'steps']
+   character(len=*), parameter :: periodic_units(6) = [character(len=8) :: 's', '1', '1', '1', '1', '1']
    !> The wear quantities of each point of a beam of two planes' obstacles
    !! (`vibrobeam_support_wear`; the last only where a wear_coefficient is given).
    integer, parameter :: wear_quantities = 7
@@ -57,9 +65,12 @@ module vibrobeam_statistics_layout
       logical :: friction = .false.               !! Coulomb friction acts: energy/power_friction
       integer :: planes = 1                       !! 2: the 'points' statistics in y and z
       integer :: size = 0                         !! length of the flat vector
+      !> the points are periodic analyses (`init_periodic`): the one group 'periodic'
+      logical :: periodic = .false.
       type(statistic_entry), allocatable :: entries(:)
    contains
       procedure :: init
+      procedure :: init_periodic
       procedure :: find
       procedure :: path
       procedure :: one_value
@@ -98,6 +109,7 @@ contains
       self%observation_points = observation_points
       self%contact_points = contact_points
       self%obstacles = obstacles
+      self%periodic = .false.
       self%wear_points = 0
       if (present(wear_points)) self%wear_points = wear_points
       self%wear_volume = .false.
@@ -158,6 +170,27 @@ contains
       end subroutine add
    end subroutine init
 
+   !> The layout of a sweep of periodic analyses: the group 'periodic' (`periodic_names`),
+   !! one value each, without standard errors.
+   subroutine init_periodic(self)
+      class(statistics_layout), intent(inout) :: self
+      integer :: k
+      self%observation_points = 0
+      self%contact_points = 0
+      self%obstacles = 0
+      self%wear_points = 0
+      self%wear_volume = .false.
+      self%friction = .false.
+      self%planes = 1
+      self%periodic = .true.
+      if (allocated(self%entries)) deallocate (self%entries)
+      allocate (self%entries(size(periodic_names)))
+      do k = 1, size(periodic_names)
+         self%entries(k) = statistic_entry(periodic_names(k), periodic_units(k), group_periodic, 1, k - 1, 1, .false.)
+      end do
+      self%size = size(periodic_names)
+   end subroutine init_periodic
+
    !> Index of the statistic `name` of `group`, 0 when there is none.
    pure integer function find(self, group, name)
       class(statistics_layout), intent(in) :: self
@@ -173,12 +206,12 @@ contains
       end do
    end function find
 
-   !> Entry k is one value per run (its group is 'beam', 'energy' or 'poincare'): a sweep
+   !> Entry k is one value per run (its group is 'beam', 'energy', 'poincare' or 'periodic'): a sweep
    !! file holds it as a vector over the points, not a matrix.
    pure logical function one_value(self, k)
       class(statistics_layout), intent(in) :: self
       integer, intent(in) :: k
-      one_value = any(self%entries(k)%group == [group_beam, group_energy, group_poincare])
+      one_value = any(self%entries(k)%group == [group_beam, group_energy, group_poincare, group_periodic])
    end function one_value
 
    !> 'group/name' of entry k (e.g. 'points/displacement_rms'), '_error' appended when

@@ -112,9 +112,13 @@ contains
       first_of = task_first_points(points)
       call sweep_start_state(scene, settings, first_scene, first, base, stat, errmsg)
       if (stat /= 0) return
-      call layout%init(1 + size(first_scene%output%points), first%contacts%count, size(first_scene%obstacles), &
-                       first%circles%count, statistics_options(first_scene, 'wear_volume'), &
-                       statistics_options(first_scene, 'friction'), first_scene%beam%plane_count())
+      if (first_scene%analysis%kind == 'periodic') then
+         call layout%init_periodic()
+      else
+         call layout%init(1 + size(first_scene%output%points), first%contacts%count, size(first_scene%obstacles), &
+                          first%circles%count, statistics_options(first_scene, 'wear_volume'), &
+                          statistics_options(first_scene, 'friction'), first_scene%beam%plane_count())
+      end if
       fingerprint = sweep_fingerprint(scene, settings, base)
       ! the partial directory: rank 0 makes and locks it, then every rank reads it
       if (rank == 0) then

@@ -20,7 +20,11 @@
 !! displacement, velocity (samples, observation points): the latest Poincare samples of
 !! each point (at most `kept_samples`). Attributes of /sweep: mode, points, lines, tasks,
 !! the windows as given, steady_tolerance, keep_runs, threads, ranks, messages (one line
-!! per point with a message).
+!! per point with a message). A sweep of periodic analyses (&analysis kind = 'periodic')
+!! has neither the datasets of time marching (settled, batches, batch_steps,
+!! poincare_samples, transient, window, the spectrum's bin width, /sweep/poincare, the
+!! points' and contact points' positions) nor their statistics, but
+!! /sweep/statistics/periodic/<name> (points) of `periodic_names`.
 module vibrobeam_sweep_file
    use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_status, only: outcome_interrupted, outcome_name, stat_failure
@@ -41,6 +45,7 @@ module vibrobeam_sweep_file
    use vibrobeam_sweep_partial, only: sweep_partial
    use vibrobeam_sweep_point_files, only: point_files
    use vibrobeam_sweep_ensemble, only: sweep_ensemble, ensemble_confidence
+   use vibrobeam_sweep_poincare_file, only: write_poincare
    implicit none
    private
    public :: write_sweep_file, sweep_counts
@@ -56,14 +61,6 @@ module vibrobeam_sweep_file
       character(len=failures_length) :: failures = ''   !! the first failed points and their reasons
    end type sweep_counts
 
-   !> The Poincare chunks of one journal, grouped by point: order(first(k) : first(k+1) - 1)
-   !! are the columns of `table` (point, first row, rows) of point k's chunks, in order.
-   type :: journal_chunks
-      logical :: loaded = .false.
-      real(dp), allocatable :: table(:, :)
-      integer, allocatable :: first(:), order(:)
-   end type journal_chunks
-
    !> The per-point datasets (index t_*) and the statistics' values and errors (index
    !! of the layout's entries), written a block of points at a time.
    integer, parameter :: t_parameter = 1, t_parameter2 = 2, t_direction = 3, t_line = 4, t_task = 5, &
@@ -74,6 +71,7 @@ module vibrobeam_sweep_file
       type(h5_table) :: per_point(16)
       type(h5_table), allocatable :: values(:), errors(:)
       logical :: second_axis = .false.
+      logical :: dynamics = .true.   !! the points ran in time (not periodic analyses): their windows, batches
    end type point_tables
 
    !> What the journals say of each point beyond its rows.
@@ -126,9 +124,10 @@ contains
          return
       end if
       write_all: block
-         call create_point_tables(files%h5, settings, size(points), tables, stat, errmsg)
-         if (stat == 0) call statistics_points(files%h5, '/sweep/statistics', point_x, contact_x, lower_obstacle, &
-                                               upper_obstacle, wear_x, wear_obstacle, stat, errmsg)
+         call create_point_tables(files%h5, settings, size(points), .not. layout%periodic, tables, stat, errmsg)
+         if (stat == 0 .and. .not. layout%periodic) &
+            call statistics_points(files%h5, '/sweep/statistics', point_x, contact_x, lower_obstacle, upper_obstacle, &
+                                   wear_x, wear_obstacle, stat, errmsg)
          if (stat == 0) call create_statistics_tables(files%h5, layout, size(points), tables, stat, errmsg)
          if (stat /= 0) exit write_all
          call ensemble%init(settings, points, layout%size)
@@ -136,7 +135,9 @@ contains
                            outcomes, ensemble, stat, errmsg)
          if (stat == 0 .and. ensemble%axis > 0) call write_ensemble(files%h5, settings, layout, ensemble, stat, errmsg)
          if (stat /= 0) exit write_all
-         call write_poincare(files%h5, settings, points, partial, owner, outcomes, size(point_x), stat, errmsg)
+         if (.not. layout%periodic) &
+            call write_poincare(files%h5, settings, points, partial, owner, outcomes%kept, outcomes%poincare_first, &
+                                size(point_x), stat, errmsg)
          if (stat /= 0) exit write_all
          call write_attributes(files%h5, settings, points, threads, ranks, outcomes%messages, stat, errmsg)
          if (stat /= 0) exit write_all
@@ -177,17 +178,20 @@ contains
    end function why_in_set
 
    !> The datasets of the points and their parameters (`points` rows), empty (written a
-   !! block of points at a time by `write_points`).
-   subroutine create_point_tables(h5, settings, points, tables, stat, errmsg)
+   !! block of points at a time by `write_points`); those of time marching (settled,
+   !! batches, batch_steps, poincare_samples, transient, window) only when `dynamics`.
+   subroutine create_point_tables(h5, settings, points, dynamics, tables, stat, errmsg)
       type(h5_writer), intent(inout) :: h5
       type(sweep_settings), intent(in) :: settings
       integer, intent(in) :: points
+      logical, intent(in) :: dynamics
       type(point_tables), intent(out) :: tables
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       integer(int64) :: rows
       rows = points
       tables%second_axis = len_trim(settings%axis(2)%parameter) > 0
+      tables%dynamics = dynamics
       call real_table(t_parameter, '/sweep/parameter', trim(settings%axis(1)%unit))
       if (stat == 0) call h5%attr_string('/sweep/parameter', 'name', trim(settings%axis(1)%parameter), stat, errmsg)
       if (stat == 0 .and. tables%second_axis) then
@@ -200,13 +204,14 @@ contains
       if (stat == 0) call integer_table(t_status, '/sweep/status')
       if (stat == 0) call h5%attr_string('/sweep/status', 'meaning', status_names, stat, errmsg)
       if (stat == 0) call integer_table(t_start_point, '/sweep/start_point')
+      if (stat == 0) call real_table(t_wall, '/sweep/wall_seconds', 's')
+      if (.not. dynamics) return
       if (stat == 0) call integer_table(t_settled, '/sweep/settled')
       if (stat == 0) call integer_table(t_batches, '/sweep/batches')
       if (stat == 0) call integer_table(t_batch_steps, '/sweep/batch_steps')
       if (stat == 0) call integer_table(t_poincare_samples, '/sweep/poincare_samples')
       if (stat == 0) call real_table(t_transient, '/sweep/transient', 's')
       if (stat == 0) call real_table(t_window, '/sweep/window', 's')
-      if (stat == 0) call real_table(t_wall, '/sweep/wall_seconds', 's')
    contains
       subroutine real_table(t, path, unit)
          integer, intent(in) :: t
@@ -233,11 +238,16 @@ contains
       integer(int64) :: rows
       integer :: e
       rows = points
-      call tables%per_point(t_bin_width)%create(h5, '/sweep/statistics/spectrum/bin_width', 1, rows, stat, errmsg, &
-                                                unit='Hz', vector=.true.)
-      if (stat == 0) call tables%per_point(t_bin_width_rad_s)%create(h5, '/sweep/statistics/spectrum/bin_width_rad_s', &
-                                                                     1, rows, stat, errmsg, unit='rad/s', vector=.true.)
-      if (stat /= 0) return
+      stat = 0
+      errmsg = ''
+      if (tables%dynamics) then
+         call tables%per_point(t_bin_width)%create(h5, '/sweep/statistics/spectrum/bin_width', 1, rows, stat, errmsg, &
+                                                   unit='Hz', vector=.true.)
+         if (stat == 0) call tables%per_point(t_bin_width_rad_s)%create(h5, &
+                                                                        '/sweep/statistics/spectrum/bin_width_rad_s', &
+                                                                        1, rows, stat, errmsg, unit='rad/s', vector=.true.)
+         if (stat /= 0) return
+      end if
       allocate (tables%values(size(layout%entries)), tables%errors(size(layout%entries)))
       do e = 1, size(layout%entries)
          associate (entry => layout%entries(e))
@@ -406,17 +416,8 @@ contains
       call put(t_task, real(points%task, dp))
       call put(t_status, record(r_status, :))
       call put(t_start_point, record(r_start_point, :))
-      where (owner == 0) record(r_settled, :) = -1
-      call put(t_settled, record(r_settled, :))
-      call put(t_batches, record(r_batches, :))
-      where (owner == 0) record(r_block_steps, :) = 1
-      call put(t_batch_steps, record(r_block_steps, :))
-      call put(t_poincare_samples, record(r_poincare_total, :))
-      call put(t_transient, record(r_settle_steps, :)*record(r_dt, :))
-      call put(t_window, record(r_measure_steps, :)*record(r_dt, :))
       call put(t_wall, record(r_wall, :))
-      call put(t_bin_width, record(r_bin_width, :))
-      call put(t_bin_width_rad_s, 2*pi*record(r_bin_width, :))
+      if (tables%dynamics) call put_dynamics()
       do e = 1, size(layout%entries)
          if (stat /= 0) return
          first_value = record_head + layout%entries(e)%offset + 1
@@ -427,6 +428,20 @@ contains
                                                                         layout%size, :), stat, errmsg)
       end do
    contains
+      !> The datasets of time marching (`create_point_tables`).
+      subroutine put_dynamics()
+         where (owner == 0) record(r_settled, :) = -1
+         call put(t_settled, record(r_settled, :))
+         call put(t_batches, record(r_batches, :))
+         where (owner == 0) record(r_block_steps, :) = 1
+         call put(t_batch_steps, record(r_block_steps, :))
+         call put(t_poincare_samples, record(r_poincare_total, :))
+         call put(t_transient, record(r_settle_steps, :)*record(r_dt, :))
+         call put(t_window, record(r_measure_steps, :)*record(r_dt, :))
+         call put(t_bin_width, record(r_bin_width, :))
+         call put(t_bin_width_rad_s, 2*pi*record(r_bin_width, :))
+      end subroutine put_dynamics
+
       !> Rows first .. of the per-point dataset t.
       subroutine put(t, data)
          integer, intent(in) :: t
@@ -482,121 +497,6 @@ contains
                                                         trim(message)//new_line('a')
       end do
    end subroutine tally_block
-
-   !> The kept Poincare samples of every point, one row per sample, in the order of the
-   !! points (`observations` points observed): from the chunks of the journal that holds
-   !! the point as done, its r_poincare_first first rows skipped (earlier windows), then
-   !! r_kept rows, read a chunk at a time.
-   subroutine write_poincare(h5, settings, points, partial, owner, outcomes, observations, stat, errmsg)
-      type(h5_writer), intent(inout) :: h5
-      type(sweep_settings), intent(in) :: settings
-      type(sweep_point), intent(in) :: points(:)
-      type(sweep_partial), intent(inout) :: partial
-      integer, intent(in) :: owner(:)
-      type(point_outcomes), intent(in) :: outcomes
-      integer, intent(in) :: observations
-      integer, intent(out) :: stat
-      character(len=*), intent(out) :: errmsg
-      type(h5_table) :: point, direction, first_value, second_value, time, u, v
-      type(journal_chunks), allocatable :: journals(:)
-      real(dp), allocatable :: rows(:, :)
-      integer(int64) :: row, total, skip, first_row
-      integer :: k, c, count, left
-      logical :: second_axis
-      second_axis = len_trim(settings%axis(2)%parameter) > 0
-      total = sum(int(outcomes%kept, int64))
-      allocate (journals(max(1, maxval([0, owner]))))
-      call point%create(h5, '/sweep/poincare/point', 1, total, stat, errmsg, integers=.true., vector=.true.)
-      if (stat == 0) call direction%create(h5, '/sweep/poincare/direction', 1, total, stat, errmsg, &
-                                           integers=.true., vector=.true.)
-      if (stat == 0) call first_value%create(h5, '/sweep/poincare/parameter', 1, total, stat, errmsg, &
-                                             unit=trim(settings%axis(1)%unit), vector=.true.)
-      if (stat == 0 .and. second_axis) &
-         call second_value%create(h5, '/sweep/poincare/parameter2', 1, total, stat, errmsg, &
-                                  unit=trim(settings%axis(2)%unit), vector=.true.)
-      if (stat == 0) call time%create(h5, '/sweep/poincare/time', 1, total, stat, errmsg, unit='s', vector=.true.)
-      if (stat == 0) call u%create(h5, '/sweep/poincare/displacement', observations, total, stat, errmsg, unit='m')
-      if (stat == 0) call v%create(h5, '/sweep/poincare/velocity', observations, total, stat, errmsg, unit='m/s')
-      row = 1
-      points_loop: do k = 1, size(points)
-         if (stat /= 0 .or. outcomes%kept(k) == 0) cycle
-         associate (chunks => journals(owner(k)))
-            if (.not. chunks%loaded) call load_chunks(chunks, owner(k))
-            if (stat /= 0) exit points_loop
-            skip = outcomes%poincare_first(k)
-            left = outcomes%kept(k)
-            do c = chunks%first(k), chunks%first(k + 1) - 1
-               if (left == 0) exit
-               associate (chunk => chunks%table(:, chunks%order(c)))
-                  if (skip >= nint(chunk(3), int64)) then
-                     skip = skip - nint(chunk(3), int64)
-                     cycle
-                  end if
-                  first_row = nint(chunk(2), int64) + skip
-                  count = int(min(int(left, int64), nint(chunk(3), int64) - skip))
-                  skip = 0
-               end associate
-               if (allocated(rows)) deallocate (rows)
-               allocate (rows(1 + 2*observations, count))
-               call partial%read_poincare(owner(k), first_row, rows, stat, errmsg)
-               if (stat == 0) call write_samples(k, count)
-               if (stat /= 0) exit points_loop
-               left = left - count
-            end do
-         end associate
-      end do points_loop
-      call point%close()
-      call direction%close()
-      call first_value%close()
-      call second_value%close()
-      call time%close()
-      call u%close()
-      call v%close()
-   contains
-      !> The chunk table of journal j, its chunks grouped by point (in their order).
-      subroutine load_chunks(chunks, j)
-         type(journal_chunks), intent(inout) :: chunks
-         integer, intent(in) :: j
-         integer :: c, p
-         integer :: next(size(points))
-         call partial%read_chunks(j, chunks%table, stat, errmsg)
-         if (stat /= 0) return
-         allocate (chunks%first(size(points) + 1), source=0)
-         allocate (chunks%order(size(chunks%table, 2)), source=0)
-         do c = 1, size(chunks%table, 2)
-            p = nint(chunks%table(1, c))
-            if (p >= 1 .and. p <= size(points)) chunks%first(p + 1) = chunks%first(p + 1) + 1
-         end do
-         chunks%first(1) = 1
-         do p = 1, size(points)
-            chunks%first(p + 1) = chunks%first(p) + chunks%first(p + 1)
-         end do
-         next = chunks%first(1:size(points))
-         do c = 1, size(chunks%table, 2)
-            p = nint(chunks%table(1, c))
-            if (p < 1 .or. p > size(points)) cycle
-            chunks%order(next(p)) = c
-            next(p) = next(p) + 1
-         end do
-         chunks%loaded = .true.
-      end subroutine load_chunks
-
-      !> rows(:, 1:count) of point k at `row`.
-      subroutine write_samples(k, count)
-         integer, intent(in) :: k, count
-         call point%write_rows(row, spread(spread(real(k, dp), 1, 1), 2, count), stat, errmsg)
-         if (stat == 0) call direction%write_rows(row, spread(spread(real(points(k)%direction, dp), 1, 1), 2, count), &
-                                                  stat, errmsg)
-         if (stat == 0) call first_value%write_rows(row, spread(spread(points(k)%value(1), 1, 1), 2, count), stat, &
-                                                    errmsg)
-         if (stat == 0 .and. second_axis) &
-            call second_value%write_rows(row, spread(spread(points(k)%value(2), 1, 1), 2, count), stat, errmsg)
-         if (stat == 0) call time%write_rows(row, rows(1:1, :), stat, errmsg)
-         if (stat == 0) call u%write_rows(row, rows(2:1 + observations, :), stat, errmsg)
-         if (stat == 0) call v%write_rows(row, rows(2 + observations:, :), stat, errmsg)
-         row = row + count
-      end subroutine write_samples
-   end subroutine write_poincare
 
    !> The attributes of /sweep (module documentation).
    subroutine write_attributes(h5, settings, points, threads, ranks, messages, stat, errmsg)

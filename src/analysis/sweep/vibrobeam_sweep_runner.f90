@@ -21,10 +21,12 @@
 !! state, a start its scene refuses) is marked failed with the reason; the next point of
 !! its task starts from the last point that succeeded (the scene's initial state if none
 !! did). After SIGINT/SIGTERM the point in progress stops (status 'interrupted', its
-!! statistics so far) and the points not started are not run. A point file that cannot be
+!! statistics so far) and the points not started are not run. A point of &analysis kind =
+!! 'periodic' is its scene's periodic analysis (`run_periodic_point`), its result always
+!! a point file. A point file that cannot be
 !! written is an I/O error: the task stops with stat /= 0 (the sweep fails, exit status 1).
 module vibrobeam_sweep_runner
-   use vibrobeam_status, only: stat_failure, outcome_ok, outcome_failed, outcome_interrupted, outcome_not_run
+   use vibrobeam_status, only: stat_failure, outcome_failed, outcome_interrupted
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_scene, only: scene_type
@@ -34,6 +36,7 @@ module vibrobeam_sweep_runner
    use vibrobeam_recorder, only: dynamics_recorder
    use vibrobeam_dynamics, only: run_dynamics
    use vibrobeam_result_files, only: run_outcome
+   use vibrobeam_periodic_run, only: run_periodic_kind
    use vibrobeam_state_record, only: state_record
    use vibrobeam_contact_set, only: contact_value
    use vibrobeam_statistics, only: statistics_result
@@ -43,33 +46,13 @@ module vibrobeam_sweep_runner
    use vibrobeam_hdf5_reader, only: h5_reader
    use vibrobeam_filesystem, only: file_exists
    use vibrobeam_sweep_settings, only: sweep_settings, sweep_point, point_scene, point_windows, max_settle_windows
+   ! (the point's result and names, re-exported: the sweep's other modules take them from here)
+   use vibrobeam_sweep_point_result, only: point_result, point_file_name, kept_point_file, point_digits, status_ok, &
+      status_failed, status_interrupted, status_not_run, status_names, chunk_rows
    implicit none
    private
    public :: point_result, task_start, point_sink, run_task, point_file_name, kept_point_file, point_digits
    public :: status_ok, status_failed, status_interrupted, status_not_run, status_names, chunk_rows
-
-   ! a point's status: the run outcome of core/vibrobeam_status (the numbers in /sweep/status)
-   integer, parameter :: status_ok = outcome_ok, status_failed = outcome_failed, &
-                         status_interrupted = outcome_interrupted, status_not_run = outcome_not_run
-   character(len=*), parameter :: status_names = '0 ok, 1 failed, 2 interrupted, 3 not run'
-   !> Poincare samples a point holds before it hands them to the sink as one chunk
-   !! (poincare_samples = 'all'): memory of 4096 (1 + 2 observation points) reals a thread.
-   integer, parameter :: chunk_rows = 4096
-
-
-   !> What a point reached.
-   type :: point_result
-      integer :: status = status_not_run
-      character(len=512) :: message = ''
-      integer :: settled = -1                    !! 1 settled, 0 not settled, -1 not tested (steady_tolerance = 0)
-      integer :: start_point = 0                 !! the point whose final state it started from (0: the scene's)
-      integer(int64) :: settle_steps = 0         !! transient used (steps)
-      integer(int64) :: measure_steps = 0        !! window (steps)
-      real(dp) :: dt = 0
-      real(dp) :: wall_seconds = 0
-      type(statistics_result) :: statistics
-      integer(int64) :: samples_written = 0      !! Poincare samples handed to the sink while it ran ('all')
-   end type point_result
 
    !> Where a task starts: its first point to run (the points before it are done), the
    !! last point before it that succeeded (0: none) and that point's final state.
@@ -131,38 +114,6 @@ module vibrobeam_sweep_runner
    end type sample_stream
 
 contains
-
-   !> '0001', '0042', '100000': a point's index with at least 4 digits.
-   pure function point_digits(k) result(digits)
-      integer, intent(in) :: k
-      character(len=:), allocatable :: digits
-      character(len=16) :: buffer
-      write (buffer, '(i4.4)') k
-      digits = trim(adjustl(buffer))
-   end function point_digits
-
-   !> The result file of point k with keep_runs: '<stem>_point<k>.h5' beside the sweep
-   !! file '<stem>.h5', k with at least 4 digits.
-   pure function point_file_name(sweep_file, k) result(name)
-      character(len=*), intent(in) :: sweep_file
-      integer, intent(in) :: k
-      character(len=:), allocatable :: name
-      integer :: n
-      n = len_trim(sweep_file)
-      if (n > 3) then
-         if (sweep_file(n - 2:n) == '.h5') n = n - 3
-      end if
-      name = sweep_file(1:n)//'_point'//point_digits(k)//'.h5'
-   end function point_file_name
-
-   !> Where the keep_runs file of point k is written until the sweep is published:
-   !! 'point<k>.h5' in the sweep's partial directory `directory`.
-   pure function kept_point_file(directory, k) result(name)
-      character(len=*), intent(in) :: directory
-      integer, intent(in) :: k
-      character(len=:), allocatable :: name
-      name = directory//'/point'//point_digits(k)//'.h5'
-   end function kept_point_file
 
    !> Run the points first .. last of task `task` (points(first:last), in order) from
    !! `start` and hand each result to `sink`. `base` is the start state of &initial
@@ -253,6 +204,12 @@ contains
       local%output%progress = .false.
       result%dt = local%time%dt
       result%start_point = start_point
+      if (local%analysis%kind == 'periodic') then
+         call run_periodic_point()
+         call system_clock(clock_end)
+         result%wall_seconds = real(clock_end - clock_start, dp)/rate
+         return
+      end if
       call point_windows(settings, local, result%settle_steps, result%measure_steps, stat, errmsg)
       warnings = ''
       if (stat == 0) call build_problem(local, prepared, warnings, stat, errmsg)
@@ -459,6 +416,44 @@ contains
          if (result%status /= status_ok) return
          call move_state(last_state, final)
       end subroutine run_with_file
+
+      !> &analysis kind = 'periodic': the point's orbit or branch, as a single run of its
+      !! scene finds it (`run_periodic_kind`, from the scene's own start), published into
+      !! `kept_point_file`; its summary in the layout of `init_periodic`. A point whose
+      !! analysis cannot run or be written is marked failed with the reason (the sweep goes
+      !! on); one that does not converge keeps its file (its last iterate, marked failed).
+      subroutine run_periodic_point()
+         type(run_outcome) :: outcome
+         warnings = ''
+         call build_problem(local, prepared, warnings, stat, errmsg)
+         if (stat /= 0) then
+            call failed('the point''s problem: '//trim(errmsg))
+            return
+         end if
+         local%output%file = kept_point_file(directory, k)
+         local%output%text = .false.
+         call run_periodic_kind(local, prepared, outcome, stat, errmsg)
+         if (stat /= 0) then
+            call failed(trim(errmsg))
+            return
+         end if
+         written = file_exists(trim(local%output%file))
+         select case (outcome%status)
+         case (outcome_failed)
+            call failed(trim(outcome%failure))
+         case (outcome_interrupted)
+            result%status = status_interrupted
+            result%message = 'interrupted'
+         case default
+            result%status = status_ok
+         end select
+         call result%statistics%layout%init_periodic()
+         result%statistics%present = .true.
+         result%statistics%values = [outcome%period, outcome%largest_multiplier, real(outcome%newton_iterations, dp), &
+                                     real(outcome%branch_points, dp), real(outcome%bifurcations, dp), &
+                                     real(outcome%steps, dp)]
+         allocate (result%statistics%errors(size(result%statistics%values)), source=0.0_dp)
+      end subroutine run_periodic_point
 
       !> The samples the stream still holds go to the sink; how many it handed on.
       subroutine hand_on_samples()

@@ -9,6 +9,7 @@ module vibrobeam_sweep_text
    use vibrobeam_kinds, only: dp, int64
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_text_derivation, only: derivation, text_sink
+   use vibrobeam_statistics_layout, only: periodic_names
    implicit none
    private
    public :: sweep_files, table_column, column_lines, read_table, axis_label, sweep_block
@@ -61,6 +62,10 @@ contains
       logical :: second_axis
       call run%rows_of('/sweep/parameter', points, stat, errmsg)
       second_axis = run%file%exists('/sweep/parameter2')
+      if (stat == 0 .and. run%file%exists('/sweep/statistics/periodic')) then
+         call orbit_file(run, int(points), second_axis, stat, errmsg)
+         return
+      end if
       if (stat == 0) call run%file%read_reals('/sweep/statistics/points/x', point_x, stat, errmsg)
       if (stat == 0) observation = size(point_x)
       ! a beam of two planes: (rows, 1 + points, 2), a row of y, z at each point in turn
@@ -274,28 +279,73 @@ contains
       logical, intent(in) :: z_plane
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
-      type(text_sink) :: sink
-      real(dp), allocatable :: table(:, :)   ! (column, point) of a block
-      real(dp) :: previous_line
-      integer :: first, count, k
       character(len=:), allocatable :: z_note
       z_note = ''
       if (z_plane) z_note = '; then (a beam of two planes) value and standard error of the RMS tip displacement '// &
                             'in z (m) and of the largest (m); the tip columns before are the y plane''s'
-      call run%open_sink(sink, 'sweep', 'point  line  direction (+1 up, -1 down, 0 independent)  parameter: '// &
-                         first_label//'  parameter2: '//second_label//'  status (0 ok)  settled (1, 0, -1 not '// &
-                         'asked)  transient (s)  then value and '// &
-                         'standard error of: RMS tip displacement (m)  largest tip displacement (m)  impact rate (1/s)'// &
-                         '  episode rate (1/s)  mean impulse per episode (N s)  largest impulse per episode (N s)  '// &
-                         'contact force (N)  power of the loads (W)  power dissipated at the stops (W)  by damping (W)'// &
-                         '  in all (W); then the first dominant frequency (Hz); then value and standard error of '// &
-                         'the compliant stops'' force at x = '//real_text(loaded_x)//' m (0: no spring; docs/statistics.md): '// &
-                         'peak (N)  mean (N)  mean in contact (N)'// &
-                         '  RMS in contact (N)  contact fraction (1)  mean episode duration (s)  longest episode (s); '// &
-                         'then the Poincare samples'' period (0: none, -1: not determined) and mismatch, the 0-1 '// &
-                         'test''s K and lags, the Lyapunov exponent (1/s) and per forcing period with their errors, '// &
-                         'and its periods'//z_note, &
-                         stat, errmsg)
+      call row_file(run, points, columns, 'point  line  direction (+1 up, -1 down, 0 independent)  parameter: '// &
+                    first_label//'  parameter2: '//second_label//'  status (0 ok)  settled (1, 0, -1 not '// &
+                    'asked)  transient (s)  then value and '// &
+                    'standard error of: RMS tip displacement (m)  largest tip displacement (m)  impact rate (1/s)'// &
+                    '  episode rate (1/s)  mean impulse per episode (N s)  largest impulse per episode (N s)  '// &
+                    'contact force (N)  power of the loads (W)  power dissipated at the stops (W)  by damping (W)'// &
+                    '  in all (W); then the first dominant frequency (Hz); then value and standard error of '// &
+                    'the compliant stops'' force at x = '//real_text(loaded_x)//' m (0: no spring; docs/statistics.md): '// &
+                    'peak (N)  mean (N)  mean in contact (N)'// &
+                    '  RMS in contact (N)  contact fraction (1)  mean episode duration (s)  longest episode (s); '// &
+                    'then the Poincare samples'' period (0: none, -1: not determined) and mismatch, the 0-1 '// &
+                    'test''s K and lags, the Lyapunov exponent (1/s) and per forcing period with their errors, '// &
+                    'and its periods'//z_note, stat, errmsg)
+   end subroutine point_file
+
+   !> STEM_sweep.dat of a sweep of periodic analyses (docs/output.md, "Text files"): per
+   !! point its number, line, direction, parameters, status, then /sweep/statistics/periodic
+   !! (`periodic_names`) and its wall time; each point's orbit or branch is in its point file.
+   subroutine orbit_file(run, points, second_axis, stat, errmsg)
+      type(derivation), intent(inout) :: run
+      integer, intent(in) :: points
+      logical, intent(in) :: second_axis
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(table_column) :: columns(6 + size(periodic_names) + 1)
+      character(len=:), allocatable :: first_label, second_label, first_name, second_name
+      integer :: j
+      call axis_label(run, '/sweep/parameter', first_name, first_label, stat, errmsg)
+      second_name = 'none'
+      second_label = 'none'
+      if (stat == 0 .and. second_axis) call axis_label(run, '/sweep/parameter2', second_name, second_label, stat, errmsg)
+      if (stat /= 0) return
+      columns(1) = table_column('point', '')
+      columns(2) = table_column('line', '/sweep/line')
+      columns(3) = table_column('direction', '/sweep/direction')
+      columns(4) = table_column('parameter', '/sweep/parameter', note=first_name)
+      columns(5) = table_column('parameter2', '', note=second_name)
+      if (second_axis) columns(5)%path = '/sweep/parameter2'
+      columns(6) = table_column('status', '/sweep/status')
+      do j = 1, size(periodic_names)
+         columns(6 + j) = table_column(trim(periodic_names(j)), '/sweep/statistics/periodic/'//trim(periodic_names(j)))
+      end do
+      columns(size(columns)) = table_column('wall_seconds', '/sweep/wall_seconds')
+      call row_file(run, points, columns, 'point  line  direction (+1 up, -1 down, 0 independent)  parameter: '// &
+                    first_label//'  parameter2: '//second_label//'  status (0 ok)  then of the point''s orbit (of its '// &
+                    'branch''s first orbit): period (s)  largest Floquet multiplier modulus  Newton iterations; its '// &
+                    'branch''s points and bifurcations (0: no continuation); the time steps it took; its wall time '// &
+                    '(s). The orbit or branch itself is in the point''s file (STEM_point<k>.h5)', stat, errmsg)
+   end subroutine orbit_file
+
+   !> STEM_sweep.dat with the given header: one row per point, a blank line where the line changes.
+   subroutine row_file(run, points, columns, header, stat, errmsg)
+      type(derivation), intent(inout) :: run
+      integer, intent(in) :: points
+      type(table_column), intent(in) :: columns(:)
+      character(len=*), intent(in) :: header
+      integer, intent(out) :: stat
+      character(len=*), intent(out) :: errmsg
+      type(text_sink) :: sink
+      real(dp), allocatable :: table(:, :)   ! (column, point) of a block
+      real(dp) :: previous_line
+      integer :: first, count, k
+      call run%open_sink(sink, 'sweep', header, stat, errmsg)
       if (stat /= 0) return
       call column_lines(run, sink, columns, stat, errmsg)
       if (stat /= 0) then
@@ -316,7 +366,7 @@ contains
          end do
       end do blocks
       call run%close_sink(sink, stat, errmsg)
-   end subroutine point_file
+   end subroutine row_file
 
    !> STEM_poincare.dat: one row per kept Poincare sample.
    subroutine poincare_file(run, samples, columns, first_label, second_label, stat, errmsg)
