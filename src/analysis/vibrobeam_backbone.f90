@@ -93,6 +93,7 @@ contains
          n = size(branch%points)
          target = branch%points(n)%parameter + ds
          call clip_to_bound(target, at_end)
+         if (.not. abs(target - branch%points(n)%parameter) > 0) exit   ! (the start on the bound)
          ! the predictor: the secant through the last two points, or the first scaled
          associate (last => branch%points(n))
             if (n >= 2) then
@@ -103,6 +104,7 @@ contains
                predicted = last%x*(target/last%parameter)
                period = last%period
             end if
+            if (.not. period > 0) period = last%period   ! (a secant gone wild: the last period)
          end associate
          local%periodic%tip_amplitude = target
          local%periodic%period = period
@@ -113,7 +115,7 @@ contains
             branch%status = outcome_interrupted
             exit
          end if
-         if (.not. (orbit%converged .and. orbit%status == outcome_ok .and. period > 0)) then
+         if (.not. (orbit%converged .and. orbit%status == outcome_ok)) then
             ds = ds/2
             halvings = halvings + 1
             if (halvings > max_halvings) then
