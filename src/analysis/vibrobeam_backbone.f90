@@ -54,6 +54,7 @@ contains
       type(scene_type) :: local
       type(periodic_orbit) :: orbit
       type(progress_meter) :: silent
+      type(branch_point) :: point
       real(dp) :: start, ds, first_step, target, ratio, period
       real(dp), allocatable :: predicted(:)
       integer :: halvings, n
@@ -78,7 +79,8 @@ contains
                           trim(orbit%failure)
          return
       end if
-      branch%points = [point_of(orbit, start, 0.0_dp)]
+      call set_point(orbit, start, 0.0_dp, point)
+      branch%points = [point]
       call report()
       ! the correctors: Gauss-Newton from the predictor, given up as the forced corrector is
       local%periodic%max_iterations = min(scene%periodic%max_iterations, corrector_iterations)
@@ -129,7 +131,8 @@ contains
             cycle
          end if
          halvings = 0
-         branch%points = [branch%points, point_of(orbit, target, ds)]
+         call set_point(orbit, target, ds, point)
+         branch%points = [branch%points, point]
          call report()
          if (at_end) exit
          if (orbit%iterations <= easy_iterations) ds = sign(min(step_growth*abs(ds), largest_step*abs(first_step)), ds)
@@ -161,22 +164,24 @@ contains
       end subroutine report
    end subroutine continue_backbone
 
-   !> The branch point of the converged autonomous `orbit` at the amplitude `amplitude`,
-   !! reached by the step `step` (m).
-   function point_of(orbit, amplitude, step) result(point)
+   !> `point`: the branch point of the converged autonomous `orbit` at the amplitude
+   !! `amplitude`, reached by the step `step` (m).
+   subroutine set_point(orbit, amplitude, step, point)
       type(periodic_orbit), intent(in) :: orbit
       real(dp), intent(in) :: amplitude, step
-      type(branch_point) :: point
+      type(branch_point), intent(out) :: point
+      ! (allocated with their source: gfortran's -Wmaybe-uninitialized does not follow an
+      ! assignment's reallocation of a dummy's component)
+      allocate (point%x, source=orbit%x)
+      allocate (point%multipliers, source=orbit%multipliers)
       point%parameter = amplitude
-      point%x = orbit%x
-      point%multipliers = orbit%multipliers
       point%amplitude = maxval(abs(orbit%image%tip(1, :)))
       point%minimum_gap = orbit%image%minimum_gap
       point%period = orbit%map%steps*orbit%dt
       point%step = step
       point%iterations = orbit%iterations
       point%stable_margin = trivial_pair_splitting(point%multipliers)
-   end function point_of
+   end subroutine set_point
 
    !> How far the monodromy's errors moved the two multipliers at 1 of an autonomous orbit
    !! of a conservative scene (its own direction and the family's, a Jordan block: a matrix
