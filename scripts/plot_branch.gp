@@ -12,6 +12,9 @@
 # -e "sweep='STEM2'" the points of a time-marching sweep of the same scene
 # (STEM2_sweep.dat, its tip_displacement_max, up and down branches apart) are drawn over
 # the branch: they lie on its stable parts and jump at its folds.
+# The backbone of an autonomous orbit (the parameter periodic.tip_amplitude, docs/method.md
+# "The backbone") is drawn as a backbone: its frequency 1/T (Hz) against the tip amplitude
+# A (mm), and the largest |mu| against A.
 # usage: gnuplot -e "stem='results/compliant_stop_branch'" scripts/plot_branch.gp
 # needs: branch
 # reads  stem_branch.dat and stem_bifurcations.dat (docs/output.md, "Text files"),
@@ -31,6 +34,10 @@ a = col(branch, 'amplitude')
 s = col(branch, 'stable')
 m = col(branch, 'largest_multiplier')
 xlabel = system("sed -n 's/^# [0-9]*: parameter (\\([^)]*\\)) \\(.*\\)$/\\2 (\\1)/p' '".branch."'")
+# a backbone: the amplitude in mm on x, the frequency 1/T on y
+backbone = strstrt(xlabel, 'periodic.tip_amplitude') > 0
+xs = backbone ? 1e3 : 1
+if (backbone) xlabel = 'tip amplitude A (mm), periodic.tip_amplitude'
 have_found = rows(found) > 0
 branch2 = stem.'_branch_2.dat'
 found2 = stem.'_bifurcations_2.dat'
@@ -38,7 +45,7 @@ have_branch2 = rows(branch2) > 0
 have_found2 = rows(found2) > 0
 set terminal pngcairo size 1200,1000 noenhanced
 set output stem.'_branch.png'
-set multiplot layout 2,1 title 'Continued branch: '.stem
+set multiplot layout 2,1 title (backbone ? 'Backbone: ' : 'Continued branch: ').stem
 set grid
 set xlabel xlabel
 set ylabel 'tip amplitude (mm)'
@@ -75,10 +82,16 @@ if (exists("sweep")) {
    plot_cmd = plot_cmd.", swept using (column(sp)):(column(sd) > 0 ? column(sa)*1e3 : NaN) with points pt 8 ps 1 lc rgb '#ff7f0e' title 'sweep up', ".\
               "swept using (column(sp)):(column(sd) < 0 ? column(sa)*1e3 : NaN) with points pt 10 ps 1 lc rgb '#8c564b' title 'sweep down'"
 }
+if (backbone) {
+   T = col(branch, 'period')
+   set ylabel 'frequency 1/T (Hz)'
+   plot_cmd = "branch using (column(p)*xs):(stable_y(1/column(T), column(s))) with linespoints pt 7 ps 0.6 lw 2 lc rgb '#1f77b4' title 'backbone, stable', ".\
+              "branch using (column(p)*xs):(unstable_y(1/column(T), column(s))) with linespoints pt 7 ps 0.6 lw 2 dt 2 lc rgb '#d62728' title 'unstable'"
+}
 eval('plot '.plot_cmd)
 set ylabel 'largest |mu|'
 set key top right
-multipliers = "branch using (column(p)):(column(m)) with linespoints pt 7 ps 0.6 lw 1 lc rgb '#1f77b4' title 'largest Floquet multiplier modulus', ".\
+multipliers = "branch using (column(p)*xs):(column(m)) with linespoints pt 7 ps 0.6 lw 1 lc rgb '#1f77b4' title 'largest Floquet multiplier modulus', ".\
               "1 with lines dt 2 lc rgb '#d62728' title '|mu| = 1'"
 if (have_branch2) {
    multipliers = multipliers.", branch2 using (column(p)):(column(m)) with linespoints pt 7 ps 0.6 lw 1 lc rgb '#2ca02c' title 'twice the period'"

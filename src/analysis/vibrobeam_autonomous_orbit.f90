@@ -56,21 +56,24 @@ contains
    !! multipliers those of dPhi_T/dx there. Its status says whether Gauss-Newton converged
    !! ('ok') or not ('failed', `failure` says why), or was interrupted. stat /= 0 (errmsg):
    !! a stepper could not be made, a step could not be linearised, or the multipliers
-   !! could not be computed.
-   subroutine find_autonomous_orbit(scene, prepared, orbit, stat, errmsg, meter)
+   !! could not be computed. `start` (optional, the stepper's (U, V)): Gauss-Newton's
+   !! start instead of the scene's start and transient (the backbone's predictor,
+   !! `vibrobeam_backbone`; the period's guess is then the scene's &periodic period).
+   subroutine find_autonomous_orbit(scene, prepared, orbit, stat, errmsg, meter, start)
       type(scene_type), intent(in) :: scene
       type(run_problem), intent(in) :: prepared
       type(periodic_orbit), intent(out) :: orbit
       integer, intent(out) :: stat
       character(len=*), intent(out) :: errmsg
       type(progress_meter), intent(inout) :: meter   !! reports the iterations (a default one: silent)
+      real(dp), intent(in), optional :: start(:)
       orbit%autonomous = .true.
       orbit%map%steps = int(scene%periodic%steps_per_period, int64)
       orbit%map%unknowns = prepared%system%model%unknowns
       ! the energy norm weighs U at the angular frequency of the guess
       orbit%map%omega = 2*pi/scene%periodic%period
       orbit%dt = scene%periodic%period/scene%periodic%steps_per_period
-      call settle_start(scene, prepared, orbit%map%steps, orbit, stat, errmsg)
+      call settle_start(scene, prepared, orbit%map%steps, orbit, stat, errmsg, start)
       if (stat /= 0) return
       if (orbit%status == outcome_ok) call solve(scene, prepared, meter, orbit, stat, errmsg)
       if (stat == 0) call conclude_orbit(orbit, stat, errmsg)

@@ -13,6 +13,8 @@ module vibrobeam_branch_output
    use vibrobeam_scene, only: scene_type
    use vibrobeam_problem, only: run_problem
    use vibrobeam_continuation, only: continuation_branch, continue_branch, bifurcation_names
+   use vibrobeam_branch_point, only: is_stable
+   use vibrobeam_backbone, only: continue_backbone
    use vibrobeam_result_files, only: result_files, run_summary, run_outcome
    use vibrobeam_progress, only: progress_meter
    use vibrobeam_signals, only: interrupt_requested
@@ -37,7 +39,11 @@ contains
       type(run_summary) :: summary
       type(switched_branch) :: second
       call meter%init(scene%output%progress)
-      call continue_branch(scene, prepared, branch, stat, errmsg)
+      if (scene%periodic%autonomous) then
+         call continue_backbone(scene, prepared, branch, stat, errmsg, meter)
+      else
+         call continue_branch(scene, prepared, branch, stat, errmsg)
+      end if
       if (stat /= 0) return
       if (scene%periodic%switch_branch .and. branch%status == outcome_ok) then
          call switch_branch(scene, branch, second, stat, errmsg)
@@ -125,8 +131,9 @@ contains
          if (stat == 0) call files%h5%attr_string(group, 'parameter', trim(branch%axis%parameter), stat, errmsg)
          if (stat == 0) call files%h5%write_real_1d(group//'/amplitude', points%amplitude, 'm', stat, errmsg)
          if (stat == 0) call files%h5%write_real_1d(group//'/period', points%period, 's', stat, errmsg)
-         if (stat == 0) call files%h5%write_int_1d(group//'/stable', [(merge(1, 0, largest(k) < 1), &
-                                                                      k=1, size(points))], stat, errmsg)
+         if (stat == 0) call files%h5%write_int_1d(group//'/stable', merge(1, 0, is_stable(points)), stat, errmsg)
+         if (stat == 0 .and. branch%backbone) &
+            call files%h5%write_real_1d(group//'/stable_margin', points%stable_margin, '1', stat, errmsg)
          if (stat == 0) call files%h5%write_real_1d(group//'/largest_multiplier', [(largest(k), k=1, size(points))], &
                                                     '1', stat, errmsg)
          if (stat == 0) call files%h5%write_real_2d(group//'/floquet_multipliers', multiplier_table(), '1', stat, &

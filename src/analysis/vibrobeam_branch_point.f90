@@ -13,7 +13,7 @@ module vibrobeam_branch_point
    private
    public :: branch_point, bifurcation_point, bifurcation_names, test_count, kind_grazing
    public :: kind_fold, kind_doubling, kind_branch_point
-   public :: set_test_functions, changes_sign, half_period_test
+   public :: set_test_functions, changes_sign, half_period_test, is_stable
 
    !> How many test functions a branch point carries (and kinds of bifurcation there are).
    integer, parameter :: test_count = 5
@@ -44,6 +44,10 @@ module vibrobeam_branch_point
       real(dp) :: period = 0                      !! the orbit's period, k P dt (s)
       real(dp) :: step = 0                        !! the arclength step that reached it (scaled)
       integer :: iterations = 0                   !! corrector's Newton iterations
+      !> stable: every |mu| < 1 on a forced branch (0 here); on the backbone of an autonomous
+      !! orbit (`vibrobeam_backbone`), whose multipliers lie on the unit circle at best, every
+      !! |mu| <= 1 + this, the splitting of its two multipliers at 1 by the monodromy's errors
+      real(dp) :: stable_margin = 0
       !> a branch of 2k periods: Phi_k(x) - x, the map of k periods' move of x (2 J)
       real(dp), allocatable :: half_shift(:)
       !> the test functions (`set_test_functions`), in the order of `bifurcation_names`
@@ -107,6 +111,16 @@ contains
       if (size > 0) rho = shift/size
       half_period_test = merge(1.0_dp, -1.0_dp, same_way)*rho - sqrt(tolerance)
    end function half_period_test
+
+   !> The point is stable (branch_point%stable_margin): its largest |mu| < 1, or on a
+   !! backbone <= 1 + its margin.
+   elemental logical function is_stable(point)
+      type(branch_point), intent(in) :: point
+      real(dp) :: largest
+      largest = 0
+      if (size(point%multipliers, 2) > 0) largest = hypot(point%multipliers(1, 1), point%multipliers(2, 1))
+      is_stable = largest < 1 .or. (point%stable_margin > 0 .and. largest <= 1 + point%stable_margin)
+   end function is_stable
 
    !> a and b of strictly opposite signs (without their product, which overflows for the
    !! clearance of a scene without obstacles, huge).

@@ -102,7 +102,8 @@ contains
       end if
       call write_table('branch'//tail, 'one row per point of the continued branch, in its order: the parameter, the '// &
                        'largest |u| of the tip over the orbit, the period, the largest |mu|, 1 stable '// &
-                       '(every |mu| < 1) or 0, the corrector''s Newton iterations'//gap, points, group//'/parameter', &
+                       '(every |mu| < 1; on a backbone <= 1 + stable_margin) or 0, the corrector''s Newton '// &
+                       'iterations'//gap, points, group//'/parameter', &
                        integers, stat, errmsg)
       if (stat /= 0) return
       bifurcations = [table_column('parameter', found//'/parameter', note=parameter), &

@@ -37,6 +37,8 @@ module vibrobeam_continuation
    implicit none
    private
    public :: continuation_branch, branch_point, bifurcation_point, continue_branch, bifurcation_names
+   ! (the step's rules, which the backbone of an autonomous orbit follows too: `vibrobeam_backbone`)
+   public :: corrector_iterations, easy_iterations, step_growth, largest_step, max_halvings
 
    !> Newton iterations of one corrector before its step is halved: from a predictor on
    !! the tangent the corrector converges quadratically in 2 to 4; more means the step is
@@ -70,6 +72,9 @@ module vibrobeam_continuation
       integer(int64) :: steps_taken = 0                !! every time step of every evaluation
       integer(int64) :: orbit_steps = 0                !! steps of one orbit, k P
       integer :: first_iterations = 0                  !! Newton iterations of the first orbit
+      !> the backbone of an autonomous orbit (`vibrobeam_backbone`): each point's
+      !! stable_margin written, no test functions
+      logical :: backbone = .false.
    end type continuation_branch
 
 contains

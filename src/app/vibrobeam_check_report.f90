@@ -36,6 +36,7 @@ module vibrobeam_check_report
    use vibrobeam_boundary, only: boundary_conditions
    use vibrobeam_highest_frequency, only: highest_frequency
    use vibrobeam_result_estimate, only: result_size, estimate_result_size
+   use vibrobeam_continuation_axis, only: branch_points
    use vibrobeam_resolution_advice, only: resolution_advice_text
    implicit none
    private
@@ -188,7 +189,7 @@ contains
                 ', text '//g(report%size%text_bytes)//')'
          if (scene%analysis%kind == 'periodic') then
             if (len_trim(scene%periodic%parameter) > 0) then
-               line = line//': a branch of at most '//integer_text(scene%periodic%max_points)//' points'
+               line = line//': a branch of at most '//integer_text(branch_points(scene))//' points'
                if (scene%periodic%switch_branch) line = line//' (the switched branch''s points on top, not counted)'
             else
                line = line//': one orbit and its multipliers'
@@ -227,6 +228,11 @@ contains
          else
             text = text//g(scene%periodic%tip_amplitude)//' m'//new_line('a')
          end if
+         if (len_trim(scene%periodic%parameter) > 0) &
+            text = text//'backbone (docs/method.md, "The backbone"): the orbit continued in its tip amplitude, '// &
+                   'first step '//g(scene%periodic%step)//' m, at most '//integer_text(branch_points(scene))// &
+                   ' points; each point Gauss-Newton at its amplitude from the secant through the last two'// &
+                   new_line('a')
          return
       end if
       text = 'periodic orbit: forcing period T = '//g(steps*scene%time%dt)//' s = '//g(real(steps, dp))// &

@@ -360,9 +360,15 @@ contains
          call stop_if_interrupted(outcome%text_skipped)
          call finish(outcome_exit_status(outcome%status))
       end select
-      write (output_unit, '(a,i0,a,i0,a)') 'vibrobeam: branch of ', outcome%branch_points, &
-         ' periodic orbits with ', outcome%bifurcations, ' bifurcations located, '// &
-         fixed_text(outcome%wall_seconds, 2)//' s; written to '//trim(scene%output%file)
+      if (scene%periodic%autonomous) then   ! a backbone: no bifurcation is looked for on it
+         write (output_unit, '(a,i0,a)') 'vibrobeam: backbone of ', outcome%branch_points, &
+            ' autonomous periodic orbits, '//fixed_text(outcome%wall_seconds, 2)//' s; written to '// &
+            trim(scene%output%file)
+      else
+         write (output_unit, '(a,i0,a,i0,a)') 'vibrobeam: branch of ', outcome%branch_points, &
+            ' periodic orbits with ', outcome%bifurcations, ' bifurcations located, '// &
+            fixed_text(outcome%wall_seconds, 2)//' s; written to '//trim(scene%output%file)
+      end if
       call stop_if_interrupted(outcome%text_skipped)
       call finish(exit_ok)
    end subroutine report_continuation

@@ -26,6 +26,7 @@ module vibrobeam_result_estimate
    use vibrobeam_kinds, only: dp, int64, pi
    use vibrobeam_sorting, only: median
    use vibrobeam_scene, only: scene_type, step_count, forcing_of, forcing_period_steps
+   use vibrobeam_continuation_axis, only: branch_points
    use vibrobeam_hdf5_series, only: series_buffer_rows
    use vibrobeam_welch, only: welch_segment
    use vibrobeam_recorder, only: history_paths
@@ -147,14 +148,14 @@ contains
          return
       case ('periodic')
          if (len_trim(scene%periodic%parameter) > 0) then
-            ! a continuation, at most max_points points: /mesh/x; /periodic/branch, 6 values
+            ! a continuation, at most max_points points (a bounded backbone: `branch_points`): /mesh/x; /periodic/branch, 6 values
             ! and the 2J Floquet multipliers (real, imaginary) a point, and a few bifurcations
             ! (5 values each), 13 datasets' headers beside the small metadata;
             ! STEM_branch.dat (6 columns a point), STEM_bifurcations.dat and
             ! STEM_branch_multipliers.dat (5 columns a multiplier, a blank line a point), with
             ! their column lines. With switch_branch the switched branch's points come on top
             ! (not known before the run: it ends at its branch points), not counted.
-            associate (points => real(scene%periodic%max_points, dp), multipliers => 2*real(unknowns, dp))
+            associate (points => real(branch_points(scene), dp), multipliers => 2*real(unknowns, dp))
                estimate%hdf5_bytes = small_metadata_bytes + 13*dataset_header_bytes + &
                                      8*(nodes + points*(6 + 2*multipliers) + 5*4)
                if (scene%output%text) estimate%text_bytes = points*(6*wide + 1) + 4*(5*wide + 1) + &

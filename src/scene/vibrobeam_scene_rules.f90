@@ -8,6 +8,7 @@ module vibrobeam_scene_rules
    use vibrobeam_text, only: real_text, integer_text
    use vibrobeam_schema_visitor, only: is_unset
    use vibrobeam_schema_operations, only: schema_checker
+   use vibrobeam_namelist_tokens, only: lowercase
    use vibrobeam_boundary, only: boundary_conditions
    use vibrobeam_beam_settings, only: check_planes
    use vibrobeam_structure, only: beam_structure
@@ -352,7 +353,8 @@ contains
 
    !> &periodic autonomous = .true. (docs/input.md, "&periodic"; docs/method.md,
    !! "Autonomous periodic orbits"): no harmonic load, the period's guess and the steps of
-   !! one period given, one orbit (no multiple, no continuation), and a conservative scene:
+   !! one period given, one orbit (no multiple) or its backbone (a continuation in its tip
+   !! amplitude alone, no branch switch), and a conservative scene:
    !! a scene that dissipates energy has no free periodic orbit but rest.
    subroutine autonomous_rules(scene, stat, errmsg)
       type(scene_type), intent(in) :: scene
@@ -384,9 +386,14 @@ contains
          if (periodic%period_multiple /= 1) &
             call fail(stat, errmsg, '&periodic period_multiple = '//integer_text(periodic%period_multiple)//free// &
                       'the period is the unknown itself; give 1 (the default)')
-         if (len_trim(periodic%parameter) > 0) &
+         if (len_trim(periodic%parameter) > 0 .and. lowercase(trim(periodic%parameter)) /= 'periodic.tip_amplitude') &
             call fail(stat, errmsg, '&periodic parameter = '''//trim(periodic%parameter)//''''//free// &
-                      'the continuation of autonomous orbits is not built yet; give parameter = '''' (the default)')
+                      'an autonomous orbit is continued in its tip amplitude alone (the backbone of its nonlinear '// &
+                      'normal mode); give parameter = ''periodic.tip_amplitude'', or '''' (one orbit, the default)')
+         if (periodic%switch_branch) &
+            call fail(stat, errmsg, '&periodic switch_branch = .true.'//free//'a backbone has no period doubling '// &
+                      'to switch at (its multipliers lie on the unit circle; no bifurcation is looked for on it); '// &
+                      'give .false. (the default)')
          if (scene%beam%plane_count() /= 1) &
             call fail(stat, errmsg, '&beam planes = '//integer_text(scene%beam%plane_count())//free// &
                       'the phase condition holds the tip''s velocity in y; give 1, for now')

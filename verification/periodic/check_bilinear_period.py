@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The autonomous orbit of a bilinear oscillator against its closed-form period
 (&periodic autonomous; docs/method.md, "Autonomous periodic orbits", where the closed form
-is derived), and the discrete map's second order in the steps per period.
+is derived; bilinear_reference.py computes it), and the discrete map's second order in the
+steps per period.
 
 usage: check_bilinear_period.py VIBROBEAM SCENE.nml [STIFFNESS_FACTOR]
 
@@ -43,20 +44,14 @@ except ImportError:
     print('SKIP: no python3 with h5py (Debian package python3-h5py)')
     sys.exit(77)
 
+from bilinear_reference import BilinearOscillator
+
 vibrobeam, scene = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 factor = float(sys.argv[3]) if len(sys.argv) > 3 else 1.0
 text = open(scene).read()
-
-
-def closed_form(amplitude, ks):
-    """The bilinear oscillator's period at the tip amplitude `amplitude` (module doc)."""
-    if amplitude <= g:
-        return 2 * math.pi / w0
-    qe = ks * g / (k + ks)
-    tc = math.acos((g - qe) / (amplitude - qe)) / w1
-    vg = (amplitude - qe) * w1 * math.sin(w1 * tc)
-    b = math.hypot(g, vg / w0)
-    return 2 * tc + 2 * (math.pi - math.acos(g / b)) / w0
+oscillator = BilinearOscillator(text, factor)
+number = oscillator.number
+w0, w1, g = oscillator.w0, oscillator.w1, oscillator.g
 
 
 def run(work, name, variant):
@@ -76,25 +71,10 @@ def run(work, name, variant):
         return float(f['/periodic'].attrs['period'])
 
 
-def number(name):
-    """The value of `name` (a variable of the scene, first occurrence)."""
-    match = re.search(r'\b' + re.escape(name) + r'\s*=\s*([-+0-9.eE]+)', text)
-    return float(match.group(1))
-
-
-E, rho, area, inertia, length = (number(n) for n in ('youngs_modulus', 'density', 'area', 'inertia', 'length'))
-k = 3 * E * inertia / length**3
-m = 33.0 / 140.0 * rho * area * length
-ks = number('stiffness(1)') * factor
-g = number('level_from(1)')
 amplitude = number('tip_amplitude')
-w0, w1 = math.sqrt(k / m), math.sqrt((k + ks) / m)
-qe = ks * g / (k + ks)
-tc = math.acos((g - qe) / (amplitude - qe)) / w1
-vg = (amplitude - qe) * w1 * math.sin(w1 * tc)
-b = math.hypot(g, vg / w0)
-reference = 2 * tc + 2 * (math.pi - math.acos(g / b)) / w0
-print(f'closed form: T = {reference:.16e} s (w0 {w0:.6f}, w1 {w1:.6f} rad/s, free amplitude {b:.6e} m)')
+reference = oscillator.period(amplitude)
+print(f'closed form: T = {reference:.16e} s (w0 {w0:.6f}, w1 {w1:.6f} rad/s, free amplitude '
+      f'{oscillator.free_amplitude(amplitude):.6e} m)')
 
 failures = []
 errors = {}
@@ -106,10 +86,10 @@ with tempfile.TemporaryDirectory() as work:
             continue
         error = period - reference
         errors[steps] = error
-        leading = reference * (w1 * reference / steps)**2 / 12
-        print(f'P = {steps:4d}: T = {period:.16e} s, error {error:.3e} s, leading-order bound {1.1 * leading:.3e} s')
-        if not abs(error) <= 1.1 * leading:
-            failures.append(f'P = {steps}: |error| {abs(error):.3e} s above {1.1 * leading:.3e} s')
+        bound = oscillator.leading_bound(reference, steps)
+        print(f'P = {steps:4d}: T = {period:.16e} s, error {error:.3e} s, leading-order bound {bound:.3e} s')
+        if not abs(error) <= bound:
+            failures.append(f'P = {steps}: |error| {abs(error):.3e} s above {bound:.3e} s')
     for steps in (100, 200, 400):
         if steps in errors and 2 * steps in errors:
             ratio = errors[steps] / errors[2 * steps]
@@ -130,13 +110,7 @@ with tempfile.TemporaryDirectory() as work:
         period = run(work, f'A{amplitude:g}', variant)
         if period is None:
             continue
-        if amplitude <= g:
-            expected = 2 * steps * math.tan(math.pi / steps) / w0
-            noise = 8 * sys.float_info.epsilon * steps
-            bound = math.sqrt(2) * (tolerance + 2 * noise) / (2 * math.pi * math.cos(math.pi / steps)**2) * expected
-        else:
-            expected = closed_form(amplitude, ks)
-            bound = 1.1 * expected * (w1 * expected / steps)**2 / 12
+        expected, bound = oscillator.reference(amplitude, steps, tolerance)
         error = period - expected
         print(f'  {amplitude:.2e}  {period:.12e}  {expected:.12e}  {error:+.3e}  {bound:.3e}')
         if not abs(error) <= bound:
