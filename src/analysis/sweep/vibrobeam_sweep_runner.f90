@@ -404,18 +404,26 @@ contains
             call samples_of_file(trim(local%output%file))
             if (io_stat /= 0) return
          end if
-         select case (outcome%status)
+         call take_outcome(outcome%status, 'numerical failure at '//trim(outcome%failure))
+         if (result%status /= status_ok) return
+         call move_state(last_state, final)
+      end subroutine run_with_file
+
+      !> The point's status from the run outcome of its file's analysis (`failure`: the
+      !! reason, when it failed).
+      subroutine take_outcome(status, failure)
+         integer, intent(in) :: status
+         character(len=*), intent(in) :: failure
+         select case (status)
          case (outcome_failed)
-            call failed('numerical failure at '//trim(outcome%failure))
+            call failed(failure)
          case (outcome_interrupted)
             result%status = status_interrupted
             result%message = 'interrupted'
          case default
             result%status = status_ok
          end select
-         if (result%status /= status_ok) return
-         call move_state(last_state, final)
-      end subroutine run_with_file
+      end subroutine take_outcome
 
       !> &analysis kind = 'periodic': the point's orbit or branch, as a single run of its
       !! scene finds it (`run_periodic_kind`, from the scene's own start), published into
@@ -438,15 +446,7 @@ contains
             return
          end if
          written = file_exists(trim(local%output%file))
-         select case (outcome%status)
-         case (outcome_failed)
-            call failed(trim(outcome%failure))
-         case (outcome_interrupted)
-            result%status = status_interrupted
-            result%message = 'interrupted'
-         case default
-            result%status = status_ok
-         end select
+         call take_outcome(outcome%status, trim(outcome%failure))
          call result%statistics%layout%init_periodic()
          result%statistics%present = .true.
          result%statistics%values = [outcome%period, outcome%largest_multiplier, real(outcome%newton_iterations, dp), &
