@@ -183,7 +183,9 @@ contains
          if (stat /= 0) return
          do a = 1, 2
             if (len_trim(settings%axis(a)%parameter) == 0) cycle
-            if (settings%axis(a)%group == continued%group .and. settings%axis(a)%name == continued%name .and. &
+            ! (a frequency and its twin in Hz are one input)
+            if (settings%axis(a)%group == continued%group .and. &
+                radians(settings%axis(a)%name) == radians(continued%name) .and. &
                 settings%axis(a)%index == continued%index) then
                stat = stat_failure
                errmsg = '&sweep parameter'//trim(merge('  ', '2 ', a == 1))//' = '''// &
@@ -194,6 +196,17 @@ contains
       end if
    end subroutine periodic_rules
 
+   !> An input's name without the '_hz' of a frequency's twin in Hz.
+   pure function radians(name) result(base)
+      character(len=*), intent(in) :: name
+      character(len=len(name)) :: base
+      integer :: n
+      base = name
+      n = len_trim(name)
+      if (n > 3) then
+         if (name(n - 2:n) == '_hz') base = name(1:n - 3)
+      end if
+   end function radians
 
    !> At most max_sweep_points points (counted in 64 bits: 65536 x 65536 values make 2^32).
    subroutine check_count(settings, stat, errmsg)
