@@ -27,6 +27,7 @@ module vibrobeam_poincare_diagnostics
       logical :: section = .false.             !! the run has a Poincare section (a harmonic load)
       integer :: points = 0                    !! observation points
       real(dp) :: omega = 0, dt = 0
+      integer(int64) :: last_step = 0          !! the last step observed (t = last_step dt)
       type(period_finder) :: period
       type(zero_one_test) :: zero_one
       type(lyapunov_tangent) :: lyapunov
@@ -76,6 +77,7 @@ contains
       integer, intent(in) :: found
       integer :: k
       if (.not. self%section) return
+      self%last_step = stepper%steps
       call self%lyapunov%step(stepper)
       if (found > 0) call self%lyapunov%renormalise(stepper)
       call self%period%observe_step(values)
@@ -98,7 +100,7 @@ contains
          return
       end if
       steps_per_period = 2*pi/(self%omega*self%dt)
-      call self%period%find(steps_per_period, period, mismatch)
+      call self%period%find(steps_per_period, period, mismatch, self%last_step)
       values(at('period')) = period
       values(at('period_mismatch')) = mismatch
       call self%zero_one%result(k, lags)
