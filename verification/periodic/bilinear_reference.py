@@ -12,8 +12,19 @@ and below the gap (A <= g) the free oscillator's 2 pi/w0, which the trapezoidal 
 steps makes the discrete T = 2 P tan(pi/P)/w0 (docs/method.md, "The linear reference").
 """
 import math
+import os
 import re
 import sys
+
+
+def from_command_line(argv):
+    """The arguments VIBROBEAM SCENE.nml [STIFFNESS_FACTOR] of the checks that use this
+    reference: the program's path, the scene's text and its oscillator (k_s times the
+    factor, default 1)."""
+    vibrobeam, scene = os.path.abspath(argv[1]), os.path.abspath(argv[2])
+    factor = float(argv[3]) if len(argv) > 3 else 1.0
+    text = open(scene).read()
+    return vibrobeam, text, BilinearOscillator(text, factor)
 
 
 class BilinearOscillator:

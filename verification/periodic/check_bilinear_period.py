@@ -44,12 +44,9 @@ except ImportError:
     print('SKIP: no python3 with h5py (Debian package python3-h5py)')
     sys.exit(77)
 
-from bilinear_reference import BilinearOscillator
+from bilinear_reference import from_command_line
 
-vibrobeam, scene = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
-factor = float(sys.argv[3]) if len(sys.argv) > 3 else 1.0
-text = open(scene).read()
-oscillator = BilinearOscillator(text, factor)
+vibrobeam, text, oscillator = from_command_line(sys.argv)
 number = oscillator.number
 w0, w1, g = oscillator.w0, oscillator.w1, oscillator.g
 
